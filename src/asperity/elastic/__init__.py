@@ -1,0 +1,22 @@
+"""The elastic half-space: influence coefficients and their FFT convolutions."""
+
+from .convolution import Convolution, grid_spacing, normal_operator, periodic_halfspace_spectrum
+from .kernels import (
+    TangentialInfluence,
+    cerruti_integrals,
+    love_integral,
+    normal_influence,
+    tangential_influence,
+)
+
+__all__ = [
+    "Convolution",
+    "TangentialInfluence",
+    "cerruti_integrals",
+    "grid_spacing",
+    "love_integral",
+    "normal_influence",
+    "normal_operator",
+    "periodic_halfspace_spectrum",
+    "tangential_influence",
+]

@@ -1,0 +1,134 @@
+"""Discrete convolutions of surface loads with influence coefficients, by FFT.
+
+``u[i, j] = sum_{k,l} K[i - k, j - l] p[k, l]`` on an ``nx`` x ``ny`` grid of cells:
+
+- non-periodic (an isolated contact on a half-space): the kernel is laid out on a ``2 nx`` x
+  ``2 ny`` grid in wrap-around order and the load is zero-padded, so the circular convolution
+  equals the linear one exactly (DC-FFT: Liu, Wang & Liu, Wear 243 (2000) 101);
+- periodic (a representative patch of a nominally flat rough interface): the kernel is
+  circular on the ``nx`` x ``ny`` grid.
+
+The kernel spectrum is computed once and cached per grid (:func:`normal_operator`), so a
+solver pays two real FFTs per convolution.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import scipy.fft as sfft
+
+from ..errors import InputError
+from ..materials import Material, contact_modulus
+from .kernels import love_integral
+
+__all__ = ["Convolution", "grid_spacing", "normal_operator", "periodic_halfspace_spectrum"]
+
+
+def grid_spacing(coord, name: str) -> float:
+    """Uniform spacing of a cell-centre coordinate array; raise InputError otherwise."""
+    c = np.asarray(coord, dtype=float)
+    if c.ndim != 1 or c.size < 2:
+        raise InputError(name, "a 1-D array of at least 2 cell-centre coordinates")
+    if not np.all(np.isfinite(c)):
+        raise InputError(name, "finite coordinates")
+    d = np.diff(c)
+    h = d.mean()
+    if h <= 0 or np.max(np.abs(d - h)) > 1e-6 * abs(h):
+        raise InputError(name, "uniformly spaced, increasing coordinates")
+    return float(h)
+
+
+class Convolution:
+    """Convolution with a fixed kernel on a fixed grid, by real FFTs.
+
+    Parameters
+    ----------
+    spectrum : ndarray
+        ``rfft2`` of the kernel on the FFT grid (``(2 nx, 2 ny)`` non-periodic, ``(nx, ny)``
+        periodic), shape ``(fx, fy // 2 + 1)``.
+    shape : tuple of int
+        ``(nx, ny)``, the grid of loads and displacements.
+    periodic : bool
+        Whether the convolution is circular on ``shape``.
+
+    Use :meth:`from_coefficients` to build one from influence coefficients in real space.
+    """
+
+    def __init__(self, spectrum: np.ndarray, shape: tuple[int, int], periodic: bool):
+        self.shape = (int(shape[0]), int(shape[1]))
+        self.periodic = bool(periodic)
+        self.fft_shape = self.shape if periodic else (2 * self.shape[0], 2 * self.shape[1])
+        expected = (self.fft_shape[0], self.fft_shape[1] // 2 + 1)
+        if spectrum.shape != expected:
+            raise ValueError(f"spectrum shape {spectrum.shape} does not match grid {expected}")
+        self.spectrum = spectrum
+
+    @classmethod
+    def from_coefficients(cls, coefficient, dx: float, dy: float, shape, periodic: bool):
+        """Build from a function ``coefficient(X, Y)`` of the offsets (m) field - source.
+
+        Non-periodic: offsets -(n-1)..(n-1) cells in wrap-around order on the padded grid.
+        Periodic: the minimal-image offsets on the grid itself (the kernel is truncated at half
+        the period, not summed over images).
+        """
+        nx, ny = int(shape[0]), int(shape[1])
+        fx, fy = (nx, ny) if periodic else (2 * nx, 2 * ny)
+        ix = np.fft.fftfreq(fx, 1.0 / fx)  # 0, 1, ..., -1 as integers (floats)
+        iy = np.fft.fftfreq(fy, 1.0 / fy)
+        X, Y = np.meshgrid(ix * dx, iy * dy, indexing="ij")
+        kernel = np.asarray(coefficient(X, Y), dtype=float)
+        return cls(sfft.rfft2(kernel, workers=-1), (nx, ny), periodic)
+
+    def spectrum_of(self, load: np.ndarray) -> np.ndarray:
+        """Forward transform of a load on the grid (zero-padded when non-periodic)."""
+        return sfft.rfft2(load, s=self.fft_shape, workers=-1)
+
+    def from_spectrum(self, load_spectrum: np.ndarray) -> np.ndarray:
+        """Displacement on the grid from a load spectrum (kernel product, inverse FFT, crop)."""
+        u = sfft.irfft2(load_spectrum * self.spectrum, s=self.fft_shape, workers=-1)
+        return u if self.periodic else u[: self.shape[0], : self.shape[1]]
+
+    def __call__(self, load: np.ndarray) -> np.ndarray:
+        """Convolve: the displacement due to ``load`` on the grid."""
+        load = np.asarray(load, dtype=float)
+        if load.shape != self.shape:
+            raise ValueError(f"load of shape {load.shape} on a grid of shape {self.shape}")
+        return self.from_spectrum(self.spectrum_of(load))
+
+
+def periodic_halfspace_spectrum(shape, dx: float, dy: float, modulus: float) -> np.ndarray:
+    """rfft2-layout spectrum of the periodic half-space Green's function, m/Pa.
+
+    u(q) = 2 p(q) / (E* |q|) for q != 0 (the 2-D Fourier transform of Boussinesq's
+    1/(pi E* r)); the q = 0 term is set to zero so that displacements are measured from their
+    mean, which a contact solver fixes through the rigid approach.
+    """
+    nx, ny = shape
+    qx = 2 * np.pi * np.fft.fftfreq(nx, d=dx)
+    qy = 2 * np.pi * np.fft.rfftfreq(ny, d=dy)
+    q = np.hypot(qx[:, None], qy[None, :])
+    with np.errstate(divide="ignore"):
+        g = np.where(q > 0, 2.0 / (modulus * q), 0.0)
+    return g
+
+
+@lru_cache(maxsize=16)
+def _normal_operator(nx: int, ny: int, dx: float, dy: float, modulus: float, periodic: bool):
+    if periodic:
+        return Convolution(periodic_halfspace_spectrum((nx, ny), dx, dy, modulus), (nx, ny), True)
+    return Convolution.from_coefficients(
+        lambda X, Y: love_integral(X, Y, dx, dy) / (np.pi * modulus), dx, dy, (nx, ny), False
+    )
+
+
+def normal_operator(x, y, body1: Material, body2: Material, periodic: bool = False) -> Convolution:
+    """The combined normal compliance of two half-spaces as a cached :class:`Convolution`.
+
+    Non-periodic: Love's uniform-pressure cell coefficients I/(pi E*) (exact for piecewise
+    constant pressure). Periodic: the continuum periodic Green's function 2/(E* |q|) with the
+    mean removed, the same model as ContactMechanics and tamaas use.
+    """
+    dx, dy = grid_spacing(x, "x"), grid_spacing(y, "y")
+    return _normal_operator(len(x), len(y), dx, dy, contact_modulus(body1, body2), bool(periodic))

@@ -1,0 +1,196 @@
+"""Influence coefficients of uniformly loaded rectangular cells on an elastic half-space.
+
+A cell of size ``dx`` x ``dy`` centred at the origin carries a uniform pressure or a uniform
+tangential traction. The functions here return the surface displacement at the points
+``(x, y)`` per unit load, obtained by integrating the point-load solutions of Boussinesq and
+Cerruti in closed form over the cell (Love 1929; Johnson 1985, eqs. 3.25, 3.86).
+
+Geometric integrals (pure geometry, in m) are kept apart from the elastic constants so that
+the same arrays serve one body, two bodies, and the EHL differential coefficients.
+
+References
+----------
+A. E. H. Love, Phil. Trans. R. Soc. A 228 (1929) 377-420.
+K. L. Johnson, *Contact Mechanics*, 1985, sec. 3.2 (Boussinesq, Cerruti), eq. 3.25.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..materials import Material, contact_modulus
+
+__all__ = [
+    "love_integral",
+    "cerruti_integrals",
+    "normal_influence",
+    "TangentialInfluence",
+    "tangential_influence",
+]
+
+
+def _corner_sum(fun, x, y, a, b):
+    """sum over the four corners of F(X, Y) with X = x -/+ a, Y = y -/+ b (double integral)."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    return fun(x + a, y + b) - fun(x - a, y + b) - fun(x + a, y - b) + fun(x - a, y - b)
+
+
+def _x_asinh_y_over_x(X, Y):
+    """X asinh(Y/|X|), zero where X == 0 (its limit)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = X * np.arcsinh(Y / np.abs(X))
+    return np.where(X == 0.0, 0.0, out)
+
+
+def _F_inv_r(X, Y):
+    """Antiderivative of 1/r: X asinh(Y/|X|) + Y asinh(X/|Y|) (cancellation-free form)."""
+    return _x_asinh_y_over_x(X, Y) + _x_asinh_y_over_x(Y, X)
+
+
+def _F_xx_r3(X, Y):
+    """Antiderivative of x^2/r^3 in x and y: Y asinh(X/|Y|)."""
+    return _x_asinh_y_over_x(Y, X)
+
+
+def _F_yy_r3(X, Y):
+    """Antiderivative of y^2/r^3: X asinh(Y/|X|)."""
+    return _x_asinh_y_over_x(X, Y)
+
+
+def _F_xy_r3(X, Y):
+    """Antiderivative of x y/r^3: -r."""
+    return -np.hypot(X, Y)
+
+
+def _F_x_r2(X, Y):
+    """Antiderivative of x/r^2: Y ln(r) + X atan(Y/X) (terms in Y alone cancel in the sum)."""
+    r = np.hypot(X, Y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1 = np.where(r == 0.0, 0.0, Y * np.log(np.where(r == 0.0, 1.0, r)))
+        t2 = np.where(X == 0.0, 0.0, X * np.arctan(Y / X))
+    return t1 + t2
+
+
+def _F_y_r2(X, Y):
+    """Antiderivative of y/r^2 (x and y swapped)."""
+    return _F_x_r2(Y, X)
+
+
+def love_integral(x, y, dx, dy):
+    """Geometric integral I = int int 1/r dA over a cell, in m (Love 1929; Johnson eq. 3.25).
+
+    Parameters
+    ----------
+    x, y : array_like
+        Field points relative to the cell centre, m.
+    dx, dy : float
+        Cell size, m.
+
+    Returns
+    -------
+    ndarray
+        I(x, y). The combined normal displacement of two bodies under a uniform pressure p on
+        the cell is w = p I / (pi E*) = 2 p I / (pi E'). At the centre of a square of side s,
+        I = 4 s asinh(1) = 3.5255 s.
+    """
+    return _corner_sum(_F_inv_r, x, y, 0.5 * dx, 0.5 * dy)
+
+
+def cerruti_integrals(x, y, dx, dy):
+    """Geometric integrals of the Cerruti/Boussinesq point-load kernels over a cell.
+
+    Returns
+    -------
+    dict of ndarray
+        ``inv_r`` (1/r), ``xx`` (x^2/r^3), ``yy`` (y^2/r^3), ``xy`` (xy/r^3), ``x_r2`` (x/r^2),
+        ``y_r2`` (y/r^2), each integrated over the cell, evaluated at (x, y) relative to the
+        cell centre.
+    """
+    a, b = 0.5 * dx, 0.5 * dy
+    return {
+        "inv_r": _corner_sum(_F_inv_r, x, y, a, b),
+        "xx": _corner_sum(_F_xx_r3, x, y, a, b),
+        "yy": _corner_sum(_F_yy_r3, x, y, a, b),
+        "xy": _corner_sum(_F_xy_r3, x, y, a, b),
+        "x_r2": _corner_sum(_F_x_r2, x, y, a, b),
+        "y_r2": _corner_sum(_F_y_r2, x, y, a, b),
+    }
+
+
+def normal_influence(x, y, dx, dy, body1: Material, body2: Material):
+    """Combined normal displacement of two bodies per unit pressure on a cell, m/Pa.
+
+    w = I(x, y) / (pi E*), with I from :func:`love_integral` and E* from
+    :func:`asperity.materials.contact_modulus`.
+    """
+    return love_integral(x, y, dx, dy) / (np.pi * contact_modulus(body1, body2))
+
+
+@dataclass(frozen=True)
+class TangentialInfluence:
+    """Surface displacements per unit uniform load on a cell (m/Pa), u_i due to load j.
+
+    ``xx``, ``xy`` (= ``yx``), ``yy``: in-plane displacement due to tangential traction;
+    ``zx``, ``zy``: normal displacement due to tangential traction x, y; ``xz``, ``yz``:
+    in-plane displacement due to pressure (reciprocity gives ``xz = -zx``).
+    """
+
+    xx: np.ndarray
+    xy: np.ndarray
+    yy: np.ndarray
+    zx: np.ndarray
+    zy: np.ndarray
+
+    @property
+    def xz(self) -> np.ndarray:
+        return -self.zx
+
+    @property
+    def yz(self) -> np.ndarray:
+        return -self.zy
+
+
+def _one_body(g, body: Material) -> TangentialInfluence:
+    """Cerruti influence for one body (Johnson eq. 3.86 at z = 0), z positive into the body.
+
+    u_x = q/(2 pi G) [(1 - nu)/r + nu x^2/r^3], u_y = q/(2 pi G) nu x y / r^3,
+    u_z = q (1 - 2 nu)/(4 pi G) x / r^2  (Betti-consistent with Boussinesq's
+    u_x = -p (1 - 2 nu)/(4 pi G) x / r^2).
+    """
+    if body.rigid:
+        zero = np.zeros_like(g["inv_r"])
+        return TangentialInfluence(zero, zero, zero, zero, zero)
+    G, nu = body.shear_modulus, body.poisson_ratio
+    c = 1.0 / (2.0 * np.pi * G)
+    return TangentialInfluence(
+        xx=c * ((1 - nu) * g["inv_r"] + nu * g["xx"]),
+        xy=c * nu * g["xy"],
+        yy=c * ((1 - nu) * g["inv_r"] + nu * g["yy"]),
+        zx=0.5 * c * (1 - 2 * nu) * g["x_r2"],
+        zy=0.5 * c * (1 - 2 * nu) * g["y_r2"],
+    )
+
+
+def tangential_influence(x, y, dx, dy, body1: Material, body2: Material | None = None):
+    """Influence of uniform tangential traction on a cell, m/Pa.
+
+    With one body, its own surface displacements (Cerruti). With two bodies, the *relative*
+    displacement of body 1 with respect to body 2 when the traction q acts on body 1 and -q on
+    body 2: in-plane terms add ((1 - nu)/G compliances), the normal coupling terms subtract and
+    vanish for identical materials ((1 - 2 nu1)/G1 - (1 - 2 nu2)/G2).
+    """
+    g = cerruti_integrals(x, y, dx, dy)
+    one = _one_body(g, body1)
+    if body2 is None:
+        return one
+    two = _one_body(g, body2)
+    return TangentialInfluence(
+        xx=one.xx + two.xx,
+        xy=one.xy + two.xy,
+        yy=one.yy + two.yy,
+        zx=one.zx - two.zx,
+        zy=one.zy - two.zy,
+    )
