@@ -21,13 +21,15 @@ class InputError(ValueError):
         What a valid value looks like, in words.
     got : object, optional
         The value received, shown in the message when given.
+    problem : str, optional
+        A statement of what is wrong used instead of "expected ..." (e.g. "unknown key").
     """
 
-    def __init__(self, field: str, expected: str, got: object = None):
+    def __init__(self, field: str, expected: str, got: object = None, *, problem: str = ""):
         self.field = field
         self.expected = expected
         self.got = got
-        msg = f"{field}: expected {expected}"
+        msg = f"{field}: {problem or 'expected ' + expected}"
         if got is not None:
             msg += f", got {_short(got)}"
         super().__init__(msg)

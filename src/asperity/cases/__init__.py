@@ -1,0 +1,72 @@
+"""Case files: one TOML schema for every analysis, validated with pydantic.
+
+``analysis`` selects the table layout (``"normal"``, ``"tangential"``, ``"ehl-steady"``,
+``"ehl-transient"``, ``"surface"``). :func:`load_case` turns a file, a TOML string or a dict into
+a validated, immutable case whose quantities are SI floats; any error becomes one
+:class:`asperity.InputError` line naming the key path.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any
+
+from pydantic import ValidationError
+
+from ..errors import InputError
+from .fields import first_error
+from .normal import NormalCase
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+__all__ = ["ANALYSES", "load_case", "parse_toml"]
+
+#: Case models by the value of their ``analysis`` key.
+ANALYSES = {"normal": NormalCase}
+
+def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:
+    """Parse TOML text; a syntax error becomes an :class:`InputError` naming the line."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(origin, f"valid TOML ({exc})") from None
+
+
+def load_case(source: str | Path | dict) -> Any:
+    """Validate a case given as a path to a TOML file, TOML text, or a dict.
+
+    Returns
+    -------
+    pydantic model
+        The analysis' case model (e.g. :class:`~asperity.cases.normal.NormalCase`).
+
+    Raises
+    ------
+    InputError
+        Unknown or misspelt keys, missing values, wrong types, out-of-range values, unknown
+        units; the message names the key path.
+    """
+    if isinstance(source, Path) or (isinstance(source, str) and source.endswith(".toml")
+                                     and "\n" not in source):
+        path = Path(source)
+        if not path.is_file():
+            raise InputError("case", "an existing TOML file", str(path))
+        data = parse_toml(path.read_text(encoding="utf-8"), str(path))
+    elif isinstance(source, str):
+        data = parse_toml(source)
+    elif isinstance(source, dict):
+        data = source
+    else:
+        raise InputError("case", "a TOML file path, TOML text or a dict", type(source).__name__)
+    analysis = data.get("analysis")
+    if analysis not in ANALYSES:
+        raise InputError("analysis", "one of " + ", ".join(f'"{a}"' for a in ANALYSES),
+                         analysis)
+    try:
+        return ANALYSES[analysis].model_validate(data)
+    except ValidationError as exc:
+        raise first_error(exc) from None

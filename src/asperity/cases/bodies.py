@@ -1,0 +1,49 @@
+"""Case-file tables shared by every analysis: materials and the numerical grid."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import Field
+
+from ..materials import Material
+from .fields import CaseModel, Quantity
+
+__all__ = ["MaterialSpec", "GridSpec"]
+
+
+class MaterialSpec(CaseModel):
+    """An elastic body: ``youngs_modulus`` (e.g. ``"30e6 psi"``) and ``poisson_ratio``."""
+
+    youngs_modulus: Quantity("pressure", gt=0)
+    poisson_ratio: Annotated[float, Field(gt=-1.0, le=0.5)] = 0.3
+    name: str = "steel"
+
+    def material(self) -> Material:
+        """The :class:`asperity.Material` this table describes."""
+        return Material(self.youngs_modulus, self.poisson_ratio, self.name)
+
+
+class GridSpec(CaseModel):
+    """Cells of the computational grid: counts and extents (m) along x and y.
+
+    ``x_extent`` and ``y_extent`` are the full lengths of the domain, centred on the origin
+    unless ``x_start``/``y_start`` are given.
+    """
+
+    nx: Annotated[int, Field(ge=4, le=8192)] = 128
+    ny: Annotated[int, Field(ge=1, le=8192)] = 128
+    x_extent: Quantity("length", gt=0)
+    y_extent: Quantity("length", gt=0)
+    x_start: Quantity("length") | None = None
+    y_start: Quantity("length") | None = None
+    periodic: bool = False
+
+    def coordinates(self):
+        """Cell-centre coordinates ``(x, y)`` as numpy arrays, m."""
+        import numpy as np
+
+        dx, dy = self.x_extent / self.nx, self.y_extent / self.ny
+        x0 = -0.5 * self.x_extent if self.x_start is None else self.x_start
+        y0 = -0.5 * self.y_extent if self.y_start is None else self.y_start
+        return x0 + dx * (np.arange(self.nx) + 0.5), y0 + dy * (np.arange(self.ny) + 0.5)

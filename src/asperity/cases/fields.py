@@ -1,0 +1,89 @@
+"""Building blocks of case files: quantities with units, strict models, error formatting.
+
+A quantity field accepts a plain number (SI) or a string with a unit (``"2160 lbf"``); it is
+converted once by :func:`asperity.units.to_si`. Models forbid unknown keys, so a misspelt key is
+reported instead of silently ignored.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
+
+from ..errors import InputError
+from ..units import DIMENSIONS, to_si
+
+__all__ = [
+    "CaseModel",
+    "Quantity",
+    "Length",
+    "PositiveLength",
+    "Force",
+    "Pressure",
+    "PositivePressure",
+    "Moment",
+    "Speed",
+    "first_error",
+]
+
+
+class CaseModel(BaseModel):
+    """Base of every case-file table: unknown keys are errors, instances are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+
+
+def _converter(dimension: str):
+    unit = DIMENSIONS[dimension]
+
+    def convert(value):
+        try:
+            return to_si(value, dimension, "")
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected}") from None
+
+    convert.__name__ = f"to_{dimension}"
+    convert.__doc__ = f"Convert to {unit or 'a pure number'}."
+    return convert
+
+
+def Quantity(dimension: str, **constraints):  # noqa: N802 - reads as a type in annotations
+    """An annotated float field measured in ``dimension`` (a key of ``units.DIMENSIONS``).
+
+    Keyword constraints (``gt``, ``ge``, ``lt``, ``le``) apply to the SI value.
+    """
+    return Annotated[float, BeforeValidator(_converter(dimension)), Field(**constraints)]
+
+
+Length = Quantity("length")
+PositiveLength = Quantity("length", gt=0)
+Force = Quantity("force")
+Pressure = Quantity("pressure")
+PositivePressure = Quantity("pressure", gt=0)
+Moment = Quantity("moment")
+Speed = Quantity("speed")
+
+
+_PROBLEMS = {
+    "missing": "missing (a value is required)",
+    "extra_forbidden": "unknown key (check the spelling)",
+}
+
+
+def first_error(exc: ValidationError, prefix: str = "") -> InputError:
+    """Turn pydantic's first validation error into one :class:`InputError` line."""
+    err = exc.errors(include_url=False)[0]
+    loc = ".".join(str(p) for p in err["loc"] if not str(p).startswith("function-"))
+    field = ".".join(p for p in (prefix, loc) if p) or "case"
+    if err["type"] in _PROBLEMS:
+        return InputError(field, "", problem=_PROBLEMS[err["type"]])
+    msg = err["msg"]
+    for lead in ("Value error, ", "Assertion failed, "):
+        msg = msg.removeprefix(lead)
+    msg = msg.split(", unable to")[0].split(", got a number with")[0]
+    msg = msg.removeprefix("expected ").removeprefix("Input should be ")
+    if msg.startswith(("greater", "less")):
+        msg = "a value " + msg
+    got = err.get("input")
+    return InputError(field, msg, None if isinstance(got, dict | list) else got)

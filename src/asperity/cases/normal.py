@@ -1,0 +1,69 @@
+"""Case file of a dry normal contact: an ellipsoid (or sphere) on a flat, smooth or rough."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import model_validator
+
+from .bodies import GridSpec, MaterialSpec
+from .fields import CaseModel, Quantity
+
+__all__ = ["NormalCase", "GeometrySpec", "NormalLoading"]
+
+
+class GeometrySpec(CaseModel):
+    """Undeformed shape: radii of relative curvature ``rx``, ``ry`` (m); a sphere when equal.
+
+    ``shape = "flat"`` gives a nominally flat contact (use with a rough surface and a periodic
+    grid).
+    """
+
+    shape: Literal["sphere", "ellipsoid", "flat"] = "sphere"
+    rx: Quantity("length", gt=0) | None = None
+    ry: Quantity("length", gt=0) | None = None
+
+    @model_validator(mode="after")
+    def _radii(self):
+        if self.shape == "flat":
+            return self
+        if self.rx is None:
+            raise ValueError("expected rx (radius of curvature along x) for a "
+                             f"{self.shape}")
+        if self.shape == "ellipsoid" and self.ry is None:
+            raise ValueError("expected ry (radius of curvature along y) for an ellipsoid")
+        return self
+
+    def radii(self) -> tuple[float, float]:
+        """(rx, ry) in m; a sphere uses rx for both."""
+        if self.shape == "flat":
+            return float("inf"), float("inf")
+        return self.rx, self.ry if self.ry is not None else self.rx
+
+
+class NormalLoading(CaseModel):
+    """Exactly one of ``load`` (N) or ``approach`` (m)."""
+
+    load: Quantity("force", gt=0) | None = None
+    approach: Quantity("length", gt=0) | None = None
+
+    @model_validator(mode="after")
+    def _one(self):
+        if (self.load is None) == (self.approach is None):
+            raise ValueError("expected exactly one of load or approach")
+        return self
+
+
+class NormalCase(CaseModel):
+    """``analysis = "normal"``: frictionless contact of two elastic bodies."""
+
+    analysis: Literal["normal"]
+    title: str = "Dry normal contact"
+    description: str = ""
+    source: str = ""
+    body1: MaterialSpec
+    body2: MaterialSpec
+    geometry: GeometrySpec
+    loading: NormalLoading
+    grid: GridSpec
+    tolerance: Quantity("dimensionless", gt=0, lt=1) = 1e-8

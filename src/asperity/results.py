@@ -1,0 +1,144 @@
+"""Results of a run: an xarray Dataset, a summary of scalars, files written atomically.
+
+Every analysis' runner returns an :class:`Outcome`; :func:`write_outcome` writes
+``result.nc`` (CF-style: units and long names on every variable, coordinates in m),
+``summary.json`` (scalars with unit-suffixed keys) and the figures as PNG. Each file is written
+to a temporary name in the same folder and renamed, so a killed run never leaves half a file.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import tempfile
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+__all__ = ["Comparison", "Outcome", "atomic_path", "write_outcome", "write_json", "variable"]
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """One asperity number next to its reference (closed form, book or paper)."""
+
+    quantity: str
+    value: float
+    reference: float
+    source: str
+    unit: str = ""
+    tolerance: float | None = None
+    note: str = ""
+
+    @property
+    def relative_error(self) -> float:
+        """(value - reference) / |reference| (NaN when the reference is 0)."""
+        return (self.value - self.reference) / abs(self.reference) if self.reference else math.nan
+
+    @property
+    def passed(self) -> bool | None:
+        """Whether |relative error| <= tolerance; None when no tolerance applies."""
+        if self.tolerance is None:
+            return None
+        return bool(abs(self.relative_error) <= self.tolerance)
+
+
+@dataclass
+class Outcome:
+    """What a runner hands to the writers: data, scalars, figures, references.
+
+    Attributes
+    ----------
+    dataset : xarray.Dataset
+        Fields on their coordinates, with ``units`` and ``long_name`` attributes.
+    summary : dict
+        Scalars with unit-suffixed keys (``max_pressure_pa``) plus ``converged``.
+    figures : dict
+        File stem -> (matplotlib Figure, caption).
+    comparisons : list of Comparison
+        Side-by-side checks against references, shown in the report.
+    converged : bool
+        False when a solver did not converge; the command line then exits non-zero.
+    notes : list of str
+        Remarks for the report (assumptions, discrepancies explained).
+    """
+
+    dataset: xr.Dataset
+    summary: dict
+    figures: dict = field(default_factory=dict)
+    comparisons: list = field(default_factory=list)
+    converged: bool = True
+    notes: list = field(default_factory=list)
+
+
+def variable(dims, values, units: str, long_name: str, **attrs) -> xr.Variable:
+    """An xarray Variable with CF ``units`` and ``long_name`` attributes."""
+    return xr.Variable(dims, np.asarray(values), attrs={"units": units, "long_name": long_name,
+                                                         **attrs})
+
+
+@contextmanager
+def atomic_path(path: str | Path):
+    """Yield a temporary path next to ``path``; rename it onto ``path`` if the block succeeds."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def _jsonable(value):
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {k: _jsonable(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_jsonable(v) for v in value]
+    return value
+
+
+def write_json(data: dict, path: str | Path) -> None:
+    """Write ``data`` as indented JSON, atomically (NaN/inf become null)."""
+    with atomic_path(path) as tmp:
+        tmp.write_text(json.dumps(_jsonable(data), indent=2) + "\n", encoding="utf-8")
+
+
+def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
+    """Write a Dataset to netCDF-4 (h5netcdf engine), atomically."""
+    with atomic_path(path) as tmp:
+        dataset.to_netcdf(tmp, engine="h5netcdf")
+
+
+def write_outcome(outcome: Outcome, out_dir: str | Path) -> dict:
+    """Write ``result.nc``, ``summary.json`` and the PNG figures.
+
+    Returns
+    -------
+    dict
+        Name -> path of every file written.
+    """
+    import matplotlib.pyplot as plt
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = {"result": out / "result.nc", "summary": out / "summary.json"}
+    write_netcdf(outcome.dataset, written["result"])
+    write_json(outcome.summary, written["summary"])
+    for stem, (fig, _caption) in outcome.figures.items():
+        path = out / f"{stem}.png"
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format="png", dpi=120, bbox_inches="tight")
+        plt.close(fig)
+        written[stem] = path
+    return written

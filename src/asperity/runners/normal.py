@@ -1,0 +1,97 @@
+"""Runner of ``analysis = "normal"``: ellipsoid on a flat, smooth or rough, by solve_normal."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from ..contact import hertz_point, solve_normal
+from ..results import Comparison, Outcome, variable
+
+__all__ = ["run"]
+
+
+def _undeformed_gap(case, x, y):
+    rx, ry = case.geometry.radii()
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    gap = np.zeros_like(X)
+    if np.isfinite(rx):
+        gap += X**2 / (2 * rx) + Y**2 / (2 * ry)
+    return gap
+
+
+def _centre_row(y):
+    return int(np.argmin(np.abs(y)))
+
+
+def run(case, progress=None) -> Outcome:
+    """Solve the case's normal contact; compare with Hertz when the surfaces are smooth."""
+    x, y = case.grid.coordinates()
+    body1, body2 = case.body1.material(), case.body2.material()
+    gap0 = _undeformed_gap(case, x, y)
+    callback = None
+    if progress is not None:
+        def callback(iteration, residual):
+            progress(iteration, None, f"CG iteration {iteration}, residual {residual:.1e}")
+    res = solve_normal(gap0, x, y, body1, body2, load=case.loading.load,
+                       approach=case.loading.approach, periodic=case.grid.periodic,
+                       tol=case.tolerance, callback=callback)
+    ds = xr.Dataset(
+        {
+            "pressure": variable(("x", "y"), res.pressure, "Pa", "contact pressure"),
+            "gap": variable(("x", "y"), res.gap, "m", "deformed gap"),
+            "undeformed_gap": variable(("x", "y"), gap0, "m", "undeformed gap"),
+            "contact": variable(("x", "y"), res.contact.astype("i1"), "1", "contact indicator",
+                                flag_values=[0, 1], flag_meanings="open contact"),
+        },
+        coords={"x": variable("x", x, "m", "x (first in-plane direction)"),
+                "y": variable("y", y, "m", "y (second in-plane direction)")},
+        attrs={"title": case.title, "analysis": "normal", "Conventions": "CF-1.8",
+               "source": "asperity", "iterations": res.iterations,
+               "converged": int(res.converged)},
+    )
+    summary = {
+        "max_pressure_pa": float(res.pressure.max()),
+        "mean_contact_pressure_pa": float(res.load / res.contact_area) if res.contact_area else 0.0,
+        "contact_area_m2": float(res.contact_area),
+        "contact_area_fraction": float(res.contact.mean()),
+        "approach_m": float(res.approach),
+        "load_n": float(res.load),
+        "iterations": int(res.iterations),
+        "residual": float(res.residual),
+        "converged": bool(res.converged),
+    }
+    comparisons = []
+    reference_line = None
+    rx, ry = case.geometry.radii()
+    if np.isfinite(rx):
+        h = hertz_point(res.load, rx, ry, body1, body2)
+        j = _centre_row(y)
+        i = _centre_row(x)
+        dx, dy = x[1] - x[0], y[1] - y[0]
+        a_num = 0.5 * dx * res.contact[:, j].sum()
+        b_num = 0.5 * dy * res.contact[i, :].sum()
+        reference_line = h.pressure(x, y[j])
+        src = "Hertz (exact elliptical)"
+        comparisons += [
+            Comparison("maximum pressure", summary["max_pressure_pa"], h.p_max, src, "Pa", 0.01),
+            Comparison("semi-axis a (x)", a_num, h.a, src, "m", max(0.01, dx / h.a)),
+            Comparison("semi-axis b (y)", b_num, h.b, src, "m", max(0.01, dy / h.b)),
+            Comparison("approach", res.approach, h.approach, src, "m", 0.01),
+            Comparison("contact area", res.contact_area, h.area, src, "m^2", 0.02),
+        ]
+        summary.update(hertz_max_pressure_pa=h.p_max, hertz_a_m=h.a, hertz_b_m=h.b,
+                       hertz_approach_m=h.approach)
+    from ..plotting.normal import centre_line, pressure_map
+
+    j = _centre_row(y)
+    figures = {
+        "pressure_map": (pressure_map(x, y, res.pressure, res.contact, case.title),
+                         "Contact pressure with the contact boundary."),
+        "centre_line": (centre_line(x, res.pressure[:, j], res.gap[:, j], reference_line),
+                        "Pressure and deformed gap along the centre line y = 0."),
+    }
+    notes = [] if res.converged else [
+        f"The solver did not converge in {res.iterations} iterations "
+        f"(residual {res.residual:.2e}); the numbers above are not trustworthy."]
+    return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes)
