@@ -1,0 +1,417 @@
+"""Isothermal lubricant models: pressure-viscosity, pressure-density, Eyring shear thinning.
+
+Pressures are gauge pressures in Pa. A negative pressure (which a cavitating film cannot carry)
+is treated as zero wherever a model would otherwise leave its range of validity: the viscosity
+and density laws are evaluated at ``max(p, 0)``.
+
+Models
+------
+Barus:
+    eta = eta0 exp(alpha p).
+Roelands (seed eq. 3; Roelands 1966):
+    eta = eta0 exp{ ln(eta0/kappa) [(1 + chi p)^Z - 1] },  Z = alpha / (chi ln(eta0/kappa)),
+    so that d(ln eta)/dp = alpha at p = 0.
+Dowson-Higginson (seed eq. 4; Dowson & Higginson 1966):
+    rho = rho0 (1 + gamma p) / (1 + lambda p).
+Eyring (Conry, Wang & Cusano 1987 linearisation, in two dimensions; see
+:func:`eyring_flow_factors`):
+    shear rate = (tau0/eta) sinh(tau/tau0).
+
+References
+----------
+C. J. A. Roelands, *Correlational aspects of the viscosity-temperature-pressure relationship of
+lubricating oils*, PhD thesis, TU Delft, 1966.
+D. Dowson and G. R. Higginson, *Elasto-hydrodynamic Lubrication*, Pergamon, 1966.
+T. F. Conry, S. Wang and C. Cusano, "A Reynolds-Eyring equation for elastohydrodynamic
+lubrication in line contacts", J. Tribol. 109 (1987) 648-658.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, check_positive
+
+__all__ = [
+    "Lubricant",
+    "barus_viscosity",
+    "roelands_viscosity",
+    "roelands_index",
+    "dowson_higginson_density",
+    "eyring_flow_factors",
+    "eyring_mean_shear_stress",
+    "wall_shear_stress",
+    "friction_coefficient",
+]
+
+ROELANDS_KAPPA = 63.2e-6
+"""Roelands' pole viscosity kappa, Pa s."""
+ROELANDS_CHI = 5.1e-9
+"""Roelands' pressure constant chi = 1/p_r = 1/(196 MPa), 1/Pa."""
+DH_GAMMA = 2.27e-9
+"""Dowson-Higginson gamma, 1/Pa."""
+DH_LAMBDA = 1.68e-9
+"""Dowson-Higginson lambda, 1/Pa."""
+
+
+def _gauge(p):
+    """Pressure as a float array with negative (cavitated) values set to zero."""
+    return np.maximum(np.asarray(p, dtype=float), 0.0)
+
+
+def barus_viscosity(p, eta0, alpha):
+    """Barus viscosity eta = eta0 exp(alpha p).
+
+    Parameters
+    ----------
+    p : array_like
+        Pressure, Pa; negative values are treated as 0.
+    eta0 : float
+        Viscosity at ambient pressure, Pa s.
+    alpha : float
+        Pressure-viscosity coefficient, 1/Pa (>= 0).
+
+    Returns
+    -------
+    ndarray
+        Viscosity, Pa s, shaped like ``p``.
+    """
+    return eta0 * np.exp(alpha * _gauge(p))
+
+
+def roelands_index(eta0, alpha, kappa=ROELANDS_KAPPA, chi=ROELANDS_CHI):
+    """Roelands pressure-viscosity index Z = alpha / (chi ln(eta0/kappa)).
+
+    Chosen so that the Roelands law has the slope d(ln eta)/dp = alpha at p = 0.
+    Requires ``eta0 > kappa``.
+    """
+    eta0 = check_positive("viscosity", eta0)
+    alpha = check_positive("pressure_viscosity", alpha, allow_zero=True)
+    kappa = check_positive("roelands_kappa", kappa)
+    chi = check_positive("roelands_chi", chi)
+    if not eta0 > kappa:
+        raise InputError("viscosity", f"eta0 > roelands_kappa = {kappa} Pa s for Roelands", eta0)
+    return alpha / (chi * np.log(eta0 / kappa))
+
+
+def roelands_viscosity(p, eta0, alpha, kappa=ROELANDS_KAPPA, chi=ROELANDS_CHI):
+    """Roelands viscosity (seed eq. 3).
+
+    eta = eta0 exp{ ln(eta0/kappa) [(1 + chi p)^Z - 1] } with Z from :func:`roelands_index`.
+
+    Parameters
+    ----------
+    p : array_like
+        Pressure, Pa; negative values are treated as 0 (the law is undefined for
+        ``p < -1/chi``).
+    eta0 : float
+        Viscosity at ambient pressure, Pa s (> ``kappa``).
+    alpha : float
+        Pressure-viscosity coefficient at p = 0, 1/Pa.
+    kappa : float, optional
+        Pole viscosity, Pa s (63.2e-6).
+    chi : float, optional
+        Pressure constant, 1/Pa (5.1e-9).
+
+    Returns
+    -------
+    ndarray
+        Viscosity, Pa s.
+    """
+    z = roelands_index(eta0, alpha, kappa, chi)
+    return eta0 * np.exp(np.log(eta0 / kappa) * ((1.0 + chi * _gauge(p)) ** z - 1.0))
+
+
+def dowson_higginson_density(p, rho0=1.0, gamma=DH_GAMMA, lam=DH_LAMBDA):
+    """Dowson-Higginson density rho = rho0 (1 + gamma p) / (1 + lam p) (seed eq. 4).
+
+    Parameters
+    ----------
+    p : array_like
+        Pressure, Pa; negative values are treated as 0.
+    rho0 : float, optional
+        Density at ambient pressure (kg/m^3); the default 1 returns the ratio rho/rho0.
+    gamma, lam : float, optional
+        Coefficients, 1/Pa (2.27e-9 and 1.68e-9); rho/rho0 -> gamma/lam (= 1.35) as p -> inf.
+
+    Returns
+    -------
+    ndarray
+        Density, in the units of ``rho0``.
+    """
+    pg = _gauge(p)
+    return rho0 * (1.0 + gamma * pg) / (1.0 + lam * pg)
+
+
+@dataclass(frozen=True)
+class Lubricant:
+    """An isothermal lubricant: viscosity and density laws and an Eyring stress.
+
+    Parameters
+    ----------
+    viscosity : float
+        eta0, viscosity at ambient pressure, Pa s.
+    pressure_viscosity : float
+        alpha, pressure-viscosity coefficient at p = 0, 1/Pa (0 = isoviscous).
+    viscosity_model : {"roelands", "barus"}
+        Pressure-viscosity law.
+    roelands_kappa, roelands_chi : float
+        Roelands constants kappa (Pa s) and chi (1/Pa).
+    density : float
+        rho0, density at ambient pressure, kg/m^3.
+    compressible : bool
+        Use the Dowson-Higginson density law; otherwise rho = rho0.
+    dh_gamma, dh_lambda : float
+        Dowson-Higginson constants, 1/Pa.
+    eyring_stress : float or None
+        Eyring stress tau0, Pa; ``None`` for a Newtonian lubricant.
+    name : str
+        A label for reports.
+    """
+
+    viscosity: float
+    pressure_viscosity: float
+    viscosity_model: str = "roelands"
+    roelands_kappa: float = ROELANDS_KAPPA
+    roelands_chi: float = ROELANDS_CHI
+    density: float = 850.0
+    compressible: bool = True
+    dh_gamma: float = DH_GAMMA
+    dh_lambda: float = DH_LAMBDA
+    eyring_stress: float | None = None
+    name: str = "lubricant"
+
+    def __post_init__(self):
+        def setf(field, value):
+            object.__setattr__(self, field, value)
+
+        setf("viscosity", check_positive("viscosity", self.viscosity))
+        setf(
+            "pressure_viscosity",
+            check_positive("pressure_viscosity", self.pressure_viscosity, allow_zero=True),
+        )
+        if self.viscosity_model not in ("roelands", "barus"):
+            raise InputError("viscosity_model", '"roelands" or "barus"', self.viscosity_model)
+        setf("roelands_kappa", check_positive("roelands_kappa", self.roelands_kappa))
+        setf("roelands_chi", check_positive("roelands_chi", self.roelands_chi))
+        if self.viscosity_model == "roelands":
+            roelands_index(
+                self.viscosity, self.pressure_viscosity, self.roelands_kappa, self.roelands_chi
+            )
+        setf("density", check_positive("density", self.density))
+        if not isinstance(self.compressible, bool | np.bool_):
+            raise InputError("compressible", "true or false", self.compressible)
+        setf("compressible", bool(self.compressible))
+        setf("dh_gamma", check_positive("dh_gamma", self.dh_gamma, allow_zero=True))
+        setf("dh_lambda", check_positive("dh_lambda", self.dh_lambda, allow_zero=True))
+        if self.eyring_stress is not None:
+            setf("eyring_stress", check_positive("eyring_stress", self.eyring_stress))
+
+    @property
+    def newtonian(self) -> bool:
+        """True when no Eyring stress is given."""
+        return self.eyring_stress is None
+
+    @property
+    def roelands_z(self) -> float:
+        """Roelands index Z (see :func:`roelands_index`)."""
+        return float(
+            roelands_index(
+                self.viscosity, self.pressure_viscosity, self.roelands_kappa, self.roelands_chi
+            )
+        )
+
+    def eta(self, p):
+        """Viscosity at pressure ``p`` (Pa; negative treated as 0), Pa s."""
+        if self.viscosity_model == "barus":
+            return barus_viscosity(p, self.viscosity, self.pressure_viscosity)
+        return roelands_viscosity(
+            p, self.viscosity, self.pressure_viscosity, self.roelands_kappa, self.roelands_chi
+        )
+
+    def density_ratio(self, p):
+        """rho/rho0 at pressure ``p``: Dowson-Higginson when compressible, else 1."""
+        if not self.compressible:
+            return np.ones_like(np.asarray(p, dtype=float))
+        return dowson_higginson_density(p, 1.0, self.dh_gamma, self.dh_lambda)
+
+    def rho(self, p):
+        """Density at pressure ``p``, kg/m^3."""
+        return self.density * self.density_ratio(p)
+
+    def flow_factors(self, p, h, sliding_speed):
+        """Flow factors (sigma_x, sigma_y) of :func:`eyring_flow_factors` at pressure ``p``.
+
+        Uses ``rho(p)`` and ``eta(p)``; Newtonian when ``eyring_stress`` is None.
+        """
+        return eyring_flow_factors(h, self.eta(p), self.rho(p), sliding_speed, self.eyring_stress)
+
+
+def _x_over_asinh(x):
+    """X / asinh(X) for X >= 0, with the limit 1 + X^2/6 near 0 and no 0/0."""
+    small = x < 1e-4
+    safe = np.where(small, 1.0, x)
+    return np.where(small, 1.0 + x * x / 6.0, safe / np.arcsinh(safe))
+
+
+def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):
+    """Poiseuille flow factors of an Eyring film sheared along x.
+
+    Linearisation of the Eyring flux about the sliding (Couette) stress: Conry, Wang & Cusano
+    (1987) for line contacts, written for two dimensions (EHL-NOTES sec. 3). With
+    ``X = eta |du| / (tau0 h)`` and ``S = tau_m / tau0 = asinh X``::
+
+        sigma_x = rho h^3 cosh(S) / (12 eta)        = rho h^3 sqrt(1 + X^2) / (12 eta)
+        sigma_y = rho h^3 sinh(S) / (12 eta S)      = rho h^3 X / (12 eta asinh X)
+
+    These enter the Reynolds equation
+    ``d/dx(sigma_x dp/dx) + d/dy(sigma_y dp/dy) - d/dx(rho u h) - d/dt(rho h) = 0``
+    (seed eq. 2). They are the effective x- and y-fluidities of the Eyring law at the Couette
+    stress (d(shear rate)/d tau along and across the sliding direction) and are exact to first
+    order in G = h |grad p| / tau0; the error grows as G^2 (about 1 % at G = 0.5).
+
+    Both factors are evaluated without dividing by ``h`` (``sigma_x = rho h^2
+    sqrt((h/eta)^2 + (du/tau0)^2) / 12``, ``sigma_y = rho h^2 |du| / (12 tau0 asinh X)``), so
+    ``h = 0`` gives 0, not NaN. For ``tau0 = None`` or ``X -> 0`` both tend to the Newtonian
+    ``rho h^3 / (12 eta)``.
+
+    Parameters
+    ----------
+    h : array_like
+        Film thickness, m (>= 0).
+    eta : array_like
+        Low-shear viscosity, Pa s (> 0).
+    rho : array_like
+        Density (any consistent unit; pass rho/rho0 for a scaled equation).
+    sliding_speed : array_like
+        du = u2 - u1, the sliding speed along x, m/s (its sign does not matter).
+    tau0 : float or None
+        Eyring stress, Pa; None for a Newtonian lubricant.
+
+    Returns
+    -------
+    sigma_x, sigma_y : ndarray
+        Flow factors, in units of rho m^3 / (Pa s).
+    """
+    h = np.asarray(h, dtype=float)
+    eta = np.asarray(eta, dtype=float)
+    if np.any(h < 0):
+        raise InputError("h", "film thickness >= 0")
+    if np.any(~(eta > 0)):
+        raise InputError("eta", "viscosity > 0")
+    if tau0 is None:
+        s = rho * h**3 / (12.0 * eta)
+        return s, s
+    tau0 = check_positive("tau0", tau0)
+    du = np.abs(np.asarray(sliding_speed, dtype=float))
+    sigma_x = rho * h * h * np.sqrt((h / eta) ** 2 + (du / tau0) ** 2) / 12.0
+    wet = h > 0
+    x = eta * du / (tau0 * np.where(wet, h, 1.0))
+    sigma_y = np.where(wet, rho * h**3 / (12.0 * eta) * _x_over_asinh(x), 0.0)
+    return sigma_x, sigma_y
+
+
+def eyring_mean_shear_stress(h, eta, sliding_speed, tau0=None):
+    """Couette (mean) shear stress of the film, tau_m = tau0 asinh(eta du / (tau0 h)).
+
+    Exact for pure sliding of an Eyring fluid (shear rate du/h = (tau0/eta) sinh(tau/tau0));
+    ``eta du / h`` when ``tau0`` is None. Signed like ``sliding_speed = u2 - u1``. At ``h = 0``
+    the stress is unbounded (+-inf; 0 where du = 0): dry nodes need a boundary-friction law.
+
+    Parameters
+    ----------
+    h : array_like
+        Film thickness, m (>= 0).
+    eta : array_like
+        Viscosity, Pa s.
+    sliding_speed : array_like
+        du = u2 - u1, m/s.
+    tau0 : float or None
+        Eyring stress, Pa.
+
+    Returns
+    -------
+    ndarray
+        tau_m, Pa.
+    """
+    h = np.asarray(h, dtype=float)
+    if np.any(h < 0):
+        raise InputError("h", "film thickness >= 0")
+    du = np.asarray(sliding_speed, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        newtonian = np.where(du == 0, 0.0, np.asarray(eta, dtype=float) * du / h)
+    if tau0 is None:
+        return newtonian
+    tau0 = check_positive("tau0", tau0)
+    return tau0 * np.arcsinh(newtonian / tau0)
+
+
+def wall_shear_stress(h, eta, sliding_speed, dpdx, tau0=None):
+    """Shear stress tau_zx of the film at the lower (z = 0) and upper (z = h) surfaces.
+
+    ``tau_zx(0) = tau_m - (h/2) dp/dx`` and ``tau_zx(h) = tau_m + (h/2) dp/dx`` with tau_m from
+    :func:`eyring_mean_shear_stress`: exact for a Newtonian film, first order in
+    G = h |dp/dx| / tau0 for an Eyring film (EHL-NOTES sec. 3). Surface 1 (z = 0, speed u1)
+    feels the traction ``+tau_zx(0)`` along x; surface 2 feels ``-tau_zx(h)``.
+
+    Returns
+    -------
+    tau_lower, tau_upper : ndarray
+        Pa.
+    """
+    tau_m = eyring_mean_shear_stress(h, eta, sliding_speed, tau0)
+    half = 0.5 * np.asarray(h, dtype=float) * np.asarray(dpdx, dtype=float)
+    return tau_m - half, tau_m + half
+
+
+def friction_coefficient(x, p, h, eta, sliding_speed, tau0=None, boundary_friction=0.1):
+    """Traction coefficient of the film on surface 1: mu = sum tau_zx(z=0) / sum p.
+
+    Film nodes (h > 0) carry the wall stress of :func:`wall_shear_stress` with dp/dx by
+    second-order central differences (``numpy.gradient``) along axis 0; dry nodes (h = 0)
+    carry the boundary friction ``boundary_friction * p * sign(du)``. On a uniform grid the
+    area integrals reduce to sums. Positive along +x (for u2 > u1 the film drags surface 1
+    forward).
+
+    Parameters
+    ----------
+    x : array_like
+        Cell-centre coordinates along x (axis 0 of the fields), m, uniform.
+    p, h, eta : array_like
+        Pressure (Pa), film (m) and viscosity (Pa s) on the grid, indexed ``[ix, iy]`` (or
+        ``[ix]`` for a line contact).
+    sliding_speed : float or array_like
+        du = u2 - u1, m/s.
+    tau0 : float or None
+        Eyring stress, Pa.
+    boundary_friction : float
+        Friction coefficient of dry (h = 0) nodes.
+
+    Returns
+    -------
+    float
+        mu.
+    """
+    from ..elastic.convolution import grid_spacing
+
+    p = np.asarray(p, dtype=float)
+    h = np.asarray(h, dtype=float)
+    if h.shape != p.shape:
+        raise InputError("h", f"the shape of p {p.shape}", h.shape)
+    dx = grid_spacing(x, "x")
+    if p.shape[0] != len(x):
+        raise InputError("x", f"{p.shape[0]} coordinates (axis 0 of p)", len(x))
+    boundary_friction = check_positive("boundary_friction", boundary_friction, allow_zero=True)
+    load = p.sum()
+    if not load > 0:
+        raise InputError("p", "a pressure field with a positive resultant")
+    du = np.broadcast_to(np.asarray(sliding_speed, dtype=float), p.shape)
+    wet = h > 0
+    eta = np.broadcast_to(np.asarray(eta, dtype=float), p.shape)
+    tau_wet, _ = wall_shear_stress(
+        np.where(wet, h, 1.0), eta, du, np.gradient(p, dx, axis=0), tau0
+    )
+    tau = np.where(wet, tau_wet, boundary_friction * p * np.sign(du))
+    return float(tau.sum() / load)
