@@ -1,0 +1,201 @@
+"""Closed-form solutions of frictional contact used to validate the numerical solvers.
+
+All functions take SI values. "Relative" shifts and twists are the rigid motion of body 1 with
+respect to body 2 (distant points), the sum of the two bodies' motions relative to the
+interface; closed forms for one body are obtained by passing a rigid ``body2``.
+
+References
+----------
+C. Cattaneo, Rend. Accad. Lincei 27 (1938) 342-348; R. D. Mindlin, J. Appl. Mech. 16 (1949)
+259-268; K. L. Johnson, *Contact Mechanics*, 1985, sec. 7.2 (eqs. 7.38-7.42, Masing 7.54-7.56)
+and sec. 7.3 (torsion, eqs. 7.45-7.50); J. L. Lubkin, J. Appl. Mech. 18 (1951) 183-187.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import quad
+from scipy.optimize import brentq
+from scipy.special import ellipe, ellipk
+
+from ..errors import InputError, check_positive
+from ..materials import Material, tangential_compliance
+
+__all__ = [
+    "CattaneoMindlin",
+    "cattaneo_mindlin",
+    "masing_unloading_shift",
+    "lubkin_moment",
+    "lubkin_twist",
+    "lubkin_stick_radius",
+    "uniform_torsion_moment",
+    "uniform_torsion_twist",
+    "uniform_torsion_stick_radius",
+    "gross_slip_moment_hertz",
+    "gross_slip_moment_uniform",
+]
+
+
+def _shear_compliance(body1: Material, body2: Material | None) -> float:
+    """1/G1 + 1/G2 (a rigid or absent body contributes nothing), 1/Pa."""
+    return sum(0.0 if b is None or b.rigid else 1.0 / b.shear_modulus for b in (body1, body2))
+
+
+@dataclass(frozen=True)
+class CattaneoMindlin:
+    """Cattaneo-Mindlin partial slip of a circular Hertz contact under a tangential force."""
+
+    a: float
+    """Contact radius, m."""
+    stick_radius: float
+    """c = a (1 - Q/(mu P))^(1/3), m."""
+    shift: float
+    """Relative rigid shift of body 1 with respect to body 2 along Q, m."""
+    p0: float
+    """Maximum Hertz pressure 3 P / (2 pi a^2), Pa."""
+    mu: float
+    force: float
+    normal_load: float
+
+    def traction(self, r):
+        """Traction magnitude at radius r, Pa (Johnson eq. 7.39).
+
+        mu p0 sqrt(1 - r^2/a^2) - (c/a) mu p0 sqrt(1 - r^2/c^2) inside the stick circle.
+        """
+        r = np.asarray(r, dtype=float)
+        a, c, f = self.a, self.stick_radius, self.mu * self.p0
+        q = f * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
+        if c > 0:
+            q = q - (c / a) * f * np.sqrt(np.clip(1.0 - (r / c) ** 2, 0.0, None))
+        return q
+
+
+def _cattaneo_shift(force, normal_load, mu, a, compliance):
+    """delta = (3 mu P / (16 a)) C [1 - (1 - Q/(mu P))^(2/3)], C = sum (2 - nu)/G."""
+    ratio = force / (mu * normal_load)
+    return 3.0 * mu * normal_load / (16.0 * a) * compliance * (1.0 - (1.0 - ratio) ** (2.0 / 3.0))
+
+
+def cattaneo_mindlin(normal_load, force, mu, a, body1: Material, body2: Material):
+    """Cattaneo-Mindlin solution for a tangential force below gross slip.
+
+    Parameters
+    ----------
+    normal_load : float
+        P, N.
+    force : float
+        Tangential force Q with 0 <= Q <= mu P, N.
+    mu : float
+        Coefficient of friction.
+    a : float
+        Hertz contact radius, m.
+    body1, body2 : Material
+        The bodies (the decoupled solution is exact for identical materials).
+
+    Returns
+    -------
+    CattaneoMindlin
+        Stick radius, relative shift (Mindlin 1949; Johnson eq. 7.42) and the traction profile.
+    """
+    P = check_positive("normal_load", normal_load)
+    mu = check_positive("mu", mu)
+    a = check_positive("a", a)
+    Q = check_positive("force", force, allow_zero=True)
+    if Q > mu * P:
+        raise InputError("force", f"at most mu * normal_load = {mu * P:g} N (gross slip)", Q)
+    c = a * (1.0 - Q / (mu * P)) ** (1.0 / 3.0)
+    delta = _cattaneo_shift(Q, P, mu, a, tangential_compliance(body1, body2))
+    return CattaneoMindlin(a, c, delta, 3.0 * P / (2.0 * np.pi * a * a), mu, Q, P)
+
+
+def masing_unloading_shift(force, peak_force, normal_load, mu, a, body1, body2):
+    """Shift on unloading from Q* to Q (Masing's rule; Johnson eq. 7.56), m.
+
+    delta_unload(Q) = delta(Q*) - 2 delta_load((Q* - Q)/2), for -Q* <= Q <= Q* <= mu P.
+    """
+    C = tangential_compliance(body1, body2)
+    Qs = check_positive("peak_force", peak_force, allow_zero=True)
+    if Qs > mu * normal_load or not (-Qs <= force <= Qs):
+        raise InputError("force", "-peak_force <= force <= peak_force <= mu * normal_load", force)
+    peak = _cattaneo_shift(Qs, normal_load, mu, a, C)
+    return peak - 2.0 * _cattaneo_shift(0.5 * (Qs - force), normal_load, mu, a, C)
+
+
+def lubkin_moment(c, a, mu, p0):
+    """Twisting moment that leaves a stick circle of radius c (Lubkin 1951), N m.
+
+    M(c) = (8 mu p0 / 3) int_c^a t^2 E(sqrt(1 - t^2/a^2)) dt, with E the complete elliptic
+    integral of the second kind (scipy's ``ellipe`` takes the parameter m = k^2).
+    """
+    if not 0.0 <= c <= a:
+        raise InputError("c", "a stick radius in [0, a]", c)
+    val, _ = quad(lambda t: t * t * ellipe(1.0 - (t / a) ** 2), c, a, epsabs=0.0, epsrel=1e-12)
+    return 8.0 * mu * p0 / 3.0 * val
+
+
+def lubkin_twist(c, a, mu, p0, body1: Material, body2: Material | None = None):
+    """Rigid twist for a stick radius c, rad (Lubkin 1951; Johnson eq. 7.50).
+
+    One body relative to the interface: beta = (mu p0 / (2 G)) [K(k') - E(k')],
+    k' = sqrt(1 - c^2/a^2). With ``body2`` the relative twist of body 1 with respect to body 2,
+    the sum of the two.
+    """
+    if not 0.0 < c <= a:
+        raise InputError("c", "a stick radius in (0, a]", c)
+    m = 1.0 - (c / a) ** 2
+    return 0.5 * mu * p0 * _shear_compliance(body1, body2) * (ellipk(m) - ellipe(m))
+
+
+def lubkin_stick_radius(moment, a, mu, p0):
+    """Invert :func:`lubkin_moment`: the stick radius for a moment below gross slip, m."""
+    M = check_positive("moment", moment, allow_zero=True)
+    limit = lubkin_moment(0.0, a, mu, p0)
+    if M >= limit:
+        raise InputError("moment", f"below the gross-slip moment {limit:g} N m", M)
+    if M == 0.0:
+        return a
+    return brentq(lambda c: lubkin_moment(c, a, mu, p0) - M, 0.0, a, xtol=1e-15 * a, rtol=1e-13)
+
+
+def uniform_torsion_moment(c, a, mu, p):
+    """Moment on a circle of radius a under uniform pressure p with stick radius c, N m.
+
+    M = (4 mu p a / 3) [a^2 arccos(c/a) + c sqrt(a^2 - c^2)] (Johnson sec. 7.3, flat punch
+    pressure replaced by a uniform one).
+    """
+    if not 0.0 <= c <= a:
+        raise InputError("c", "a stick radius in [0, a]", c)
+    return 4.0 * mu * p * a / 3.0 * (a * a * np.arccos(c / a) + c * np.sqrt(a * a - c * c))
+
+
+def uniform_torsion_twist(c, a, mu, p, body1: Material, body2: Material | None = None):
+    """Twist for uniform pressure and stick radius c: beta = (mu p / (2 G)) arccosh(a/c), rad.
+
+    Per body relative to the interface; with ``body2`` the relative twist (sum of both).
+    """
+    if not 0.0 < c <= a:
+        raise InputError("c", "a stick radius in (0, a]", c)
+    return 0.5 * mu * p * _shear_compliance(body1, body2) * np.arccosh(a / c)
+
+
+def uniform_torsion_stick_radius(moment, a, mu, p):
+    """Invert :func:`uniform_torsion_moment` for the stick radius, m."""
+    M = check_positive("moment", moment, allow_zero=True)
+    limit = gross_slip_moment_uniform(mu, p, a)
+    if M >= limit:
+        raise InputError("moment", f"below the gross-slip moment {limit:g} N m", M)
+    if M == 0.0:
+        return a
+    return brentq(lambda c: uniform_torsion_moment(c, a, mu, p) - M, 0.0, a, xtol=1e-15 * a)
+
+
+def gross_slip_moment_hertz(mu, normal_load, a):
+    """Gross-slip moment of a circular Hertz contact, 3 pi mu P a / 16, N m."""
+    return 3.0 * np.pi * mu * normal_load * a / 16.0
+
+
+def gross_slip_moment_uniform(mu, p, a):
+    """Gross-slip moment of a uniformly loaded circle, (2 pi / 3) mu p a^3, N m."""
+    return 2.0 * np.pi / 3.0 * mu * p * a**3

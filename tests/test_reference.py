@@ -1,0 +1,86 @@
+"""Closed forms of frictional contact against independent checks (quadrature, limits)."""
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+
+from asperity.contact import reference as ref
+from asperity.errors import InputError
+from asperity.materials import Material
+
+STEEL = Material(206e9, 0.3, "steel")
+RIGID = Material(float("inf"), 0.3, "rigid")
+A, P, MU = 1e-3, 1000.0, 0.3
+P0 = 3 * P / (2 * np.pi * A * A)
+
+
+@pytest.mark.parametrize("ratio", [0.0, 0.25, 0.5, 0.9, 1.0])
+def test_cattaneo_traction_carries_force(ratio):
+    cm = ref.cattaneo_mindlin(P, ratio * MU * P, MU, A, STEEL, STEEL)
+    total, _ = quad(lambda r: 2 * np.pi * r * cm.traction(r), 0, A, points=[cm.stick_radius],
+                    epsrel=1e-11)
+    assert total == pytest.approx(ratio * MU * P, rel=1e-8, abs=1e-9)
+    assert cm.stick_radius == pytest.approx(A * (1 - ratio) ** (1 / 3))
+
+
+def test_cattaneo_small_force_is_mindlin_stiffness():
+    # full-stick stiffness Q/delta = 8 a / C (Mindlin 1949)
+    Q = 1e-6 * MU * P
+    cm = ref.cattaneo_mindlin(P, Q, MU, A, STEEL, STEEL)
+    C = 2 * (2 - 0.3) / STEEL.shear_modulus
+    assert Q / cm.shift == pytest.approx(8 * A / C, rel=1e-5)
+
+
+def test_masing_loop_closes_and_is_odd():
+    Qs = 0.6 * MU * P
+    peak = ref.cattaneo_mindlin(P, Qs, MU, A, STEEL, STEEL).shift
+    assert ref.masing_unloading_shift(Qs, Qs, P, MU, A, STEEL, STEEL) == pytest.approx(peak)
+    assert ref.masing_unloading_shift(-Qs, Qs, P, MU, A, STEEL, STEEL) == pytest.approx(-peak)
+    # unloading branch is stiffer than the loading curve at the same force
+    assert ref.masing_unloading_shift(0.3 * MU * P, Qs, P, MU, A, STEEL, STEEL) > \
+        ref.cattaneo_mindlin(P, 0.3 * MU * P, MU, A, STEEL, STEEL).shift
+
+
+def test_lubkin_limits():
+    assert ref.lubkin_moment(0.0, A, MU, P0) == pytest.approx(
+        ref.gross_slip_moment_hertz(MU, P, A), rel=1e-10)
+    assert ref.lubkin_moment(A, A, MU, P0) == 0.0
+    # near full stick, M / beta tends to the torsional stiffness (16/3) G a^3 of one body
+    c = A * (1 - 1e-7)
+    beta = ref.lubkin_twist(c, A, MU, P0, STEEL)
+    assert ref.lubkin_moment(c, A, MU, P0) / beta == pytest.approx(
+        16 / 3 * STEEL.shear_modulus * A**3, rel=1e-5)
+    # relative twist of two equal bodies is twice one body's
+    assert ref.lubkin_twist(0.5 * A, A, MU, P0, STEEL, STEEL) == pytest.approx(
+        2 * ref.lubkin_twist(0.5 * A, A, MU, P0, STEEL, RIGID))
+
+
+def test_lubkin_stick_radius_inverts_moment():
+    m = 0.5 * ref.gross_slip_moment_hertz(MU, P, A)
+    c = ref.lubkin_stick_radius(m, A, MU, P0)
+    assert ref.lubkin_moment(c, A, MU, P0) == pytest.approx(m, rel=1e-10)
+
+
+def test_uniform_torsion_limits_and_quadrature():
+    p = 1e8
+    assert ref.uniform_torsion_moment(0.0, A, MU, p) == pytest.approx(
+        ref.gross_slip_moment_uniform(MU, p, A))
+    # full slip moment by quadrature: int mu p r dA
+    full, _ = quad(lambda r: 2 * np.pi * r * r * MU * p, 0, A)
+    assert ref.gross_slip_moment_uniform(MU, p, A) == pytest.approx(full, rel=1e-12)
+    c = A * (1 - 1e-8)
+    beta = ref.uniform_torsion_twist(c, A, MU, p, STEEL)
+    assert ref.uniform_torsion_moment(c, A, MU, p) / beta == pytest.approx(
+        16 / 3 * STEEL.shear_modulus * A**3, rel=1e-4)
+    m = 0.7 * full
+    c = ref.uniform_torsion_stick_radius(m, A, MU, p)
+    assert ref.uniform_torsion_moment(c, A, MU, p) == pytest.approx(m, rel=1e-10)
+
+
+def test_bad_input():
+    with pytest.raises(InputError, match="force"):
+        ref.cattaneo_mindlin(P, 2 * MU * P, MU, A, STEEL, STEEL)
+    with pytest.raises(InputError, match="mu"):
+        ref.cattaneo_mindlin(P, 0.1, -0.1, A, STEEL, STEEL)
+    with pytest.raises(InputError, match="moment"):
+        ref.lubkin_stick_radius(2 * ref.gross_slip_moment_hertz(MU, P, A), A, MU, P0)
