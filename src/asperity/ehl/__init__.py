@@ -1,5 +1,18 @@
 """Elastohydrodynamic lubrication: lubricant models, film-thickness formulas, EHL solvers."""
 
+from .formulas import (
+    FilmThickness,
+    HamrockDowsonGroups,
+    MoesGroups,
+    dowson_higginson_line,
+    hamrock_dowson_groups,
+    hamrock_dowson_point,
+    moes_groups,
+    moes_line,
+    moes_line_film,
+    nijenbanning_film,
+    nijenbanning_point,
+)
 from .lubricant import (
     Lubricant,
     barus_viscosity,
@@ -13,6 +26,17 @@ from .lubricant import (
 )
 
 __all__ = [
+    "FilmThickness",
+    "HamrockDowsonGroups",
+    "MoesGroups",
+    "dowson_higginson_line",
+    "hamrock_dowson_groups",
+    "hamrock_dowson_point",
+    "moes_groups",
+    "moes_line",
+    "moes_line_film",
+    "nijenbanning_film",
+    "nijenbanning_point",
     "Lubricant",
     "barus_viscosity",
     "dowson_higginson_density",
