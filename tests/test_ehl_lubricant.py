@@ -1,0 +1,244 @@
+"""Lubricant models against closed forms and an exact integration of the Eyring film flux."""
+
+import numpy as np
+import pytest
+
+from asperity.ehl import (
+    Lubricant,
+    barus_viscosity,
+    dowson_higginson_density,
+    eyring_flow_factors,
+    eyring_mean_shear_stress,
+    friction_coefficient,
+    roelands_index,
+    roelands_viscosity,
+    wall_shear_stress,
+)
+from asperity.errors import InputError
+
+ETA0, ALPHA = 0.005, 11.1e-9  # seed Table 1 (point contact)
+
+
+# --- viscosity and density -----------------------------------------------------------------
+
+
+def test_barus_slope_and_cavitation():
+    p = np.array([-1e8, 0.0, 0.5e9, 1e9])
+    eta = barus_viscosity(p, ETA0, ALPHA)
+    assert eta[0] == ETA0 and eta[1] == ETA0  # negative pressure treated as 0
+    np.testing.assert_allclose(np.log(eta[3] / eta[2]) / 0.5e9, ALPHA, rtol=1e-12)
+
+
+def test_roelands_index_for_seed_lubricant():
+    # Z = alpha / (chi ln(eta0/kappa)) = 11.1e-9 / (5.1e-9 ln(0.005/63.2e-6))
+    assert roelands_index(ETA0, ALPHA) == pytest.approx(11.1 / (5.1 * np.log(0.005 / 63.2e-6)))
+    assert roelands_index(ETA0, ALPHA) == pytest.approx(0.49795, abs=1e-5)
+
+
+def test_roelands_initial_slope_is_alpha():
+    dp = 1e3
+    eta = roelands_viscosity(np.array([0.0, dp]), ETA0, ALPHA)
+    assert np.log(eta[1] / eta[0]) / dp == pytest.approx(ALPHA, rel=1e-5)
+
+
+def test_roelands_with_unit_index_is_barus():
+    # Z = 1 makes (1 + chi p)^Z - 1 = chi p: Roelands = Barus with alpha = chi ln(eta0/kappa)
+    chi, kappa = 5.1e-9, 63.2e-6
+    alpha = chi * np.log(ETA0 / kappa)
+    p = np.linspace(0, 2e9, 7)
+    np.testing.assert_allclose(
+        roelands_viscosity(p, ETA0, alpha), barus_viscosity(p, ETA0, alpha), rtol=1e-12
+    )
+
+
+def test_roelands_below_barus_at_high_pressure():
+    # Z < 1: ln(eta) is concave in p and lies below its tangent alpha p (the Barus law)
+    p = np.array([0.3e9, 1e9, 2e9])
+    assert np.all(roelands_viscosity(p, ETA0, ALPHA) < barus_viscosity(p, ETA0, ALPHA))
+    assert roelands_viscosity(-1e9, ETA0, ALPHA) == pytest.approx(ETA0)  # p < -1/chi is safe
+
+
+def test_dowson_higginson_density():
+    rho = dowson_higginson_density(np.array([-1e9, 0.0, 1e9, 1e15]), rho0=850.0)
+    assert rho[0] == 850.0 and rho[1] == 850.0
+    assert rho[2] == pytest.approx(850.0 * 3.27 / 2.68, rel=1e-12)
+    assert rho[3] == pytest.approx(850.0 * 2.27 / 1.68, rel=1e-5)  # asymptote gamma/lambda
+
+
+def test_lubricant_dispatch_and_validation():
+    oil = Lubricant(ETA0, ALPHA, eyring_stress=10e6, name="Mobil Jet 2")
+    p = np.array([0.0, 1e9])
+    np.testing.assert_allclose(oil.eta(p), roelands_viscosity(p, ETA0, ALPHA))
+    np.testing.assert_allclose(oil.rho(p), 850.0 * dowson_higginson_density(p))
+    assert oil.roelands_z == pytest.approx(roelands_index(ETA0, ALPHA))
+    assert not oil.newtonian
+    barus = Lubricant(ETA0, ALPHA, viscosity_model="barus", compressible=False)
+    np.testing.assert_allclose(barus.eta(p), barus_viscosity(p, ETA0, ALPHA))
+    np.testing.assert_array_equal(barus.density_ratio(p), 1.0)
+    assert barus.newtonian
+    bad = [
+        ({"viscosity": -1.0}, "viscosity"),
+        ({"pressure_viscosity": -1e-9}, "pressure_viscosity"),
+        ({"viscosity_model": "vogel"}, "viscosity_model"),
+        ({"viscosity": 1e-5}, "viscosity"),  # below Roelands' kappa
+        ({"density": 0.0}, "density"),
+        ({"eyring_stress": 0.0}, "eyring_stress"),
+        ({"compressible": "yes"}, "compressible"),
+        ({"viscosity": float("nan")}, "viscosity"),
+    ]
+    for change, name in bad:
+        kwargs = {"viscosity": ETA0, "pressure_viscosity": ALPHA, **change}
+        with pytest.raises(InputError, match=name):
+            Lubricant(**kwargs)
+
+
+# --- Eyring film: exact flux by quadrature across the film ------------------------------------
+
+_ZETA, _WEIGHT = np.polynomial.legendre.leggauss(48)
+_ZETA, _WEIGHT = 0.5 * (_ZETA + 1.0), 0.5 * _WEIGHT
+
+
+def _exact_eyring(x_slide, gx, gy):
+    """Exact Eyring film in units of tau0: wall stress t0 and pressure flux factors.
+
+    Isotropic Eyring law shear_rate = (tau0/eta) sinh(|tau|/tau0) tau/|tau|, with
+    tau(z) = tau(0) + z grad p. Scaled by tau0, h and tau0 h/eta, the wall stress t0 solves
+    int_0^1 g(t0 + zeta G) dzeta = (X, 0) (the sliding speed), and the flux relative to the
+    mean speed is Q = int_0^1 (1 - zeta) g dzeta - (X, 0)/2, G = h grad p / tau0.
+    Returns t0 and sigma / (rho h^3 / 12 eta) = -12 Q . G / |G|^2 .
+    """
+    grad = np.array([gx, gy])
+
+    def g_and_jacobian(t0):
+        t = t0[:, None] + _ZETA[None, :] * grad[:, None]
+        mag = np.maximum(np.hypot(t[0], t[1]), 1e-300)
+        shx = np.where(mag > 1e-8, np.sinh(mag) / mag, 1.0)  # sinh|t| / |t|
+        g = t * shx
+        unit = t / mag
+        # d g / d t = (sinh m / m) I + (cosh m - sinh m / m) t_hat t_hat^T
+        jac = shx * np.eye(2)[:, :, None] + (np.cosh(mag) - shx) * unit[:, None] * unit[None]
+        return g, jac
+
+    t0 = np.array([np.arcsinh(x_slide) - gx / 2, -gy / 2])
+    for _ in range(50):
+        g, jac = g_and_jacobian(t0)
+        residual = g @ _WEIGHT - [x_slide, 0.0]
+        if np.max(np.abs(residual)) < 1e-13 * max(1.0, x_slide):
+            break
+        t0 = t0 - np.linalg.solve(jac @ _WEIGHT, residual)
+    else:
+        raise AssertionError("Newton did not converge")
+    q = g @ (_WEIGHT * (1.0 - _ZETA)) - np.array([x_slide, 0.0]) / 2
+    return t0, -12.0 * (q @ grad) / (grad @ grad)
+
+
+def _linearised(x_slide):
+    sx, sy = eyring_flow_factors(1.0, 1.0, 1.0, x_slide, 1.0)  # h = eta = rho = tau0 = 1
+    return 12.0 * sx, 12.0 * sy
+
+
+@pytest.mark.parametrize("x_slide", [0.3, 2.0, 20.0])
+def test_flow_factors_match_exact_flux_for_small_pressure_gradient(x_slide):
+    fx, fy = _linearised(x_slide)
+    g = 1e-2
+    _, ex = _exact_eyring(x_slide, g, 0.0)
+    _, ey = _exact_eyring(x_slide, 0.0, g)
+    assert fx == pytest.approx(ex, rel=1e-4)
+    assert fy == pytest.approx(ey, rel=1e-4)
+
+
+def test_flow_factor_error_grows_like_g_squared():
+    # EHL-NOTES sec. 3: <= 1.3 % at G = 0.5, <= 5.1 % at G = 1 (over sliding speeds)
+    for g, bound in ((0.1, 6e-4), (0.5, 0.013), (1.0, 0.051)):
+        worst = 0.0
+        for x_slide in (0.1, 1.0, 5.0, 50.0):
+            fx, fy = _linearised(x_slide)
+            for lin, (gx, gy) in ((fx, (g, 0.0)), (fy, (0.0, g))):
+                worst = max(worst, abs(lin / _exact_eyring(x_slide, gx, gy)[1] - 1.0))
+        assert worst < bound, (g, worst)
+
+
+def test_flow_factor_limits():
+    h = np.array([0.0, 1e-9, 1e-6])
+    rho, eta, tau0 = 850.0, 0.01, 5e6
+    newtonian = rho * h**3 / (12 * eta)
+    for sx_sy in (eyring_flow_factors(h, eta, rho, 3.0, None), eyring_flow_factors(h, eta, rho,
+                                                                                      0.0, tau0)):
+        np.testing.assert_allclose(sx_sy[0], newtonian, rtol=1e-14, atol=0)
+        np.testing.assert_allclose(sx_sy[1], newtonian, rtol=1e-14, atol=0)
+    # tiny X: sqrt(1 + X^2) and X / asinh X -> 1 + O(X^2)
+    sx, sy = eyring_flow_factors(1e-6, eta, rho, 1e-9, tau0)
+    assert sx == pytest.approx(rho * 1e-18 / (12 * eta), rel=1e-12)
+    assert sy == pytest.approx(rho * 1e-18 / (12 * eta), rel=1e-12)
+    # h -> 0 with sliding: finite, zero at h = 0, and sigma_x -> rho h^2 |du| / (12 tau0)
+    sx, sy = eyring_flow_factors(h, eta, rho, -3.0, tau0)
+    assert np.all(np.isfinite(sx)) and np.all(np.isfinite(sy))
+    assert sx[0] == 0.0 and sy[0] == 0.0
+    assert sx[1] == pytest.approx(rho * 1e-18 * 3.0 / (12 * tau0), rel=1e-6)
+    # X >> 1: sigma_x / sigma_y -> ln 2X (relative error ~ 1/(2 X^2))
+    sx, sy = eyring_flow_factors(1e-12, eta, rho, 3.0, tau0)
+    assert sx / sy == pytest.approx(np.log(2 * eta * 3.0 / (tau0 * 1e-12)), rel=1e-6)
+    with pytest.raises(InputError, match="h"):
+        eyring_flow_factors(-1e-9, eta, rho, 1.0, tau0)
+    with pytest.raises(InputError, match="tau0"):
+        eyring_flow_factors(1e-6, eta, rho, 1.0, -1.0)
+
+
+def test_lubricant_flow_factors_use_pressure_dependent_properties():
+    oil = Lubricant(ETA0, ALPHA, eyring_stress=10e6)
+    p, h = np.array([0.0, 1e9]), np.array([1e-6, 0.5e-6])
+    sx, sy = oil.flow_factors(p, h, 5.0)
+    ex, ey = eyring_flow_factors(h, oil.eta(p), oil.rho(p), 5.0, 10e6)
+    np.testing.assert_array_equal(sx, ex)
+    np.testing.assert_array_equal(sy, ey)
+
+
+# --- shear stress and friction --------------------------------------------------------------
+
+
+def test_mean_shear_stress_is_exact_couette_stress():
+    h, eta, du, tau0 = 0.4e-6, 0.2, 2.5, 10e6
+    tau = eyring_mean_shear_stress(h, eta, du, tau0)
+    assert tau0 / eta * np.sinh(tau / tau0) == pytest.approx(du / h, rel=1e-13)
+    assert eyring_mean_shear_stress(h, eta, -du, tau0) == pytest.approx(-tau)
+    assert eyring_mean_shear_stress(h, eta, du) == pytest.approx(eta * du / h)
+    assert eyring_mean_shear_stress(0.0, eta, du, tau0) == np.inf
+    assert eyring_mean_shear_stress(0.0, eta, 0.0, tau0) == 0.0
+
+
+def test_wall_shear_stress_newtonian_is_exact():
+    # Couette-Poiseuille: tau(z) = eta du/h + (z - h/2) dp/dx exactly
+    h, eta, du, dpdx = 1e-6, 0.05, 2.0, 3e12
+    lower, upper = wall_shear_stress(h, eta, du, dpdx)
+    assert lower == pytest.approx(eta * du / h - h * dpdx / 2, rel=1e-14)
+    assert upper - lower == pytest.approx(h * dpdx, rel=1e-14)
+
+
+def test_wall_shear_stress_eyring_against_exact_film():
+    # in tau0 units: tau_m - G/2 vs the exact wall stress, error O(G^2)
+    for x_slide in (0.5, 10.0):
+        for g in (1e-2, 0.2):
+            t0, _ = _exact_eyring(x_slide, g, 0.0)
+            lower, _ = wall_shear_stress(1.0, 1.0, x_slide, g, tau0=1.0)
+            assert lower == pytest.approx(t0[0], abs=0.1 * g**2)
+
+
+def test_friction_coefficient_newtonian_and_dry_nodes():
+    x = np.linspace(-1e-3, 1e-3, 201)
+    a = 0.8e-3
+    p = 1e9 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))[:, None] * np.ones((1, 3))
+    h = np.full_like(p, 0.5e-6)
+    eta, du = 0.1, 1.0
+    # symmetric p: the Poiseuille terms cancel, mu = sum(eta du / h) / sum(p)
+    mu = friction_coefficient(x, p, h, eta, du)
+    assert mu == pytest.approx(eta * du / 0.5e-6 * p.size / p.sum(), rel=1e-10)
+    # one dry node carries boundary_friction * p there
+    h_dry = h.copy()
+    h_dry[100, 1] = 0.0
+    mu_dry = friction_coefficient(x, p, h_dry, eta, du, boundary_friction=0.1)
+    expected = (eta * du / 0.5e-6 * (p.size - 1) + 0.1 * p[100, 1]) / p.sum()
+    assert mu_dry == pytest.approx(expected, rel=1e-10)
+    with pytest.raises(InputError, match="h"):
+        friction_coefficient(x, p, h[:, :2], eta, du)
+    with pytest.raises(InputError, match="p"):
+        friction_coefficient(x, 0 * p, h, eta, du)
