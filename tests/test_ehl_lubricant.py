@@ -162,8 +162,10 @@ def test_flow_factor_limits():
     h = np.array([0.0, 1e-9, 1e-6])
     rho, eta, tau0 = 850.0, 0.01, 5e6
     newtonian = rho * h**3 / (12 * eta)
-    for sx_sy in (eyring_flow_factors(h, eta, rho, 3.0, None), eyring_flow_factors(h, eta, rho,
-                                                                                      0.0, tau0)):
+    for sx_sy in (
+        eyring_flow_factors(h, eta, rho, 3.0, None),
+        eyring_flow_factors(h, eta, rho, 0.0, tau0),
+    ):
         np.testing.assert_allclose(sx_sy[0], newtonian, rtol=1e-14, atol=0)
         np.testing.assert_allclose(sx_sy[1], newtonian, rtol=1e-14, atol=0)
     # tiny X: sqrt(1 + X^2) and X / asinh X -> 1 + O(X^2)

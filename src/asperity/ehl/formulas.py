@@ -118,8 +118,9 @@ def hamrock_dowson_groups(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus
     -------
     HamrockDowsonGroups
     """
-    rx, u, eta0, alpha, e = _common(rx, mean_speed, eta0, alpha, reduced_modulus,
-                                    alpha_zero_ok=True)
+    rx, u, eta0, alpha, e = _common(
+        rx, mean_speed, eta0, alpha, reduced_modulus, alpha_zero_ok=True
+    )
     w = check_positive("load", load)
     ry = check_positive("ry", ry)
     # k depends on rx/ry only; any modulus will do (E* = E'/2 against a rigid body)
@@ -143,8 +144,9 @@ def moes_groups(load, rx, mean_speed, eta0, alpha, reduced_modulus, *, line=Fals
     MoesGroups
         M, L and the film scale rx sqrt(2U) (m) that turns a dimensionless film H into h.
     """
-    rx, u, eta0, alpha, e = _common(rx, mean_speed, eta0, alpha, reduced_modulus,
-                                    alpha_zero_ok=True)
+    rx, u, eta0, alpha, e = _common(
+        rx, mean_speed, eta0, alpha, reduced_modulus, alpha_zero_ok=True
+    )
     w = check_positive("load_per_length" if line else "load", load)
     two_u = 2.0 * eta0 * u / (e * rx)
     if line:
@@ -202,8 +204,9 @@ def dowson_higginson_line(load_per_length, radius, mean_speed, eta0, alpha, redu
     FilmThickness
         ``minimum`` in m (``central`` is None).
     """
-    r, u, eta0, alpha, e = _common(radius, mean_speed, eta0, alpha, reduced_modulus,
-                                   alpha_zero_ok=False)
+    r, u, eta0, alpha, e = _common(
+        radius, mean_speed, eta0, alpha, reduced_modulus, alpha_zero_ok=False
+    )
     w = check_positive("load_per_length", load_per_length)
     U, G, W = eta0 * u / (e * r), alpha * e, w / (e * r)
     hm = 2.65 * U**0.70 * G**0.54 * W**-0.13
@@ -265,8 +268,7 @@ def moes_line(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus)
     FilmThickness
         ``central`` in m, with M, L and H.
     """
-    g = moes_groups(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus,
-                    line=True)
+    g = moes_groups(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus, line=True)
     h = float(moes_line_film(g.M, g.L))
     return FilmThickness(
         central=h * g.film_scale,

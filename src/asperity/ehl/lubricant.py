@@ -410,8 +410,6 @@ def friction_coefficient(x, p, h, eta, sliding_speed, tau0=None, boundary_fricti
     du = np.broadcast_to(np.asarray(sliding_speed, dtype=float), p.shape)
     wet = h > 0
     eta = np.broadcast_to(np.asarray(eta, dtype=float), p.shape)
-    tau_wet, _ = wall_shear_stress(
-        np.where(wet, h, 1.0), eta, du, np.gradient(p, dx, axis=0), tau0
-    )
+    tau_wet, _ = wall_shear_stress(np.where(wet, h, 1.0), eta, du, np.gradient(p, dx, axis=0), tau0)
     tau = np.where(wet, tau_wet, boundary_friction * p * np.sign(du))
     return float(tau.sum() / load)
