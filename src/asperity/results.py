@@ -58,7 +58,8 @@ class Outcome:
     summary : dict
         Scalars with unit-suffixed keys (``max_pressure_pa``) plus ``converged``.
     figures : dict
-        File stem -> (matplotlib Figure, caption).
+        File stem -> (callable returning a matplotlib Figure, caption). Figures are drawn only
+        when written, so parameter studies that skip them pay nothing.
     comparisons : list of Comparison
         Side-by-side checks against references, shown in the report.
     converged : bool
@@ -88,6 +89,9 @@ def atomic_path(path: str | Path):
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the usual permissions
     try:
         yield Path(tmp)
         os.replace(tmp, path)
@@ -120,8 +124,8 @@ def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
         dataset.to_netcdf(tmp, engine="h5netcdf")
 
 
-def write_outcome(outcome: Outcome, out_dir: str | Path) -> dict:
-    """Write ``result.nc``, ``summary.json`` and the PNG figures.
+def write_outcome(outcome: Outcome, out_dir: str | Path, figures: bool = True) -> dict:
+    """Write ``result.nc``, ``summary.json`` and (unless ``figures=False``) the PNG figures.
 
     Returns
     -------
@@ -135,7 +139,8 @@ def write_outcome(outcome: Outcome, out_dir: str | Path) -> dict:
     written = {"result": out / "result.nc", "summary": out / "summary.json"}
     write_netcdf(outcome.dataset, written["result"])
     write_json(outcome.summary, written["summary"])
-    for stem, (fig, _caption) in outcome.figures.items():
+    for stem, (draw, _caption) in (outcome.figures.items() if figures else ()):
+        fig = draw()
         path = out / f"{stem}.png"
         with atomic_path(path) as tmp:
             fig.savefig(tmp, format="png", dpi=120, bbox_inches="tight")

@@ -12,7 +12,7 @@ from functools import lru_cache
 
 from .errors import InputError
 
-__all__ = ["to_si", "DIMENSIONS"]
+__all__ = ["DIMENSIONS", "registry", "to_si"]
 
 #: What a case-file field measures -> its SI unit (a pint unit string; "" for pure numbers).
 DIMENSIONS = {
@@ -36,7 +36,8 @@ DIMENSIONS = {
 
 
 @lru_cache(maxsize=1)
-def _registry():
+def registry():
+    """The shared pint UnitRegistry."""
     import pint
 
     return pint.UnitRegistry()
@@ -82,11 +83,10 @@ def to_si(value, dimension: str, field: str) -> float:
 def _parse(text: str, si_unit: str, field: str) -> float:
     import pint
 
-    ureg = _registry()
+    ureg = registry()
     try:
         q = ureg.Quantity(text.strip())
-    except (pint.errors.PintError, ValueError, TypeError, SyntaxError, AttributeError,
-            KeyError, ZeroDivisionError, IndexError, OverflowError):
+    except Exception:  # pint's parser raises many kinds (even AssertionError) on odd text
         raise InputError(field, f"a number with a known unit (e.g. '1.0 {si_unit or '1'}')",
                          text) from None
     if not isinstance(q, pint.Quantity):  # a bare number in a string

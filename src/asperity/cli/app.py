@@ -113,6 +113,77 @@ def example(name: Annotated[str, typer.Argument(help="Example name (see asperity
     sys.stdout.write(example_text(name))
 
 
+@app.command()
+@guarded
+def validate(
+    select: Annotated[str | None, typer.Option("--select", "-k",
+                                               help="Only checks whose name contains this.")] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Machine-readable output.")] = False,
+):
+    """Run the analytical and published-number checks; print the validation table."""
+    import json
+
+    from ..validation import run_checks
+
+    rows = run_checks(select)
+    failed = [r for _, r in rows if r.passed is False]
+    if as_json:
+        sys.stdout.write(json.dumps([
+            {"case": name, "quantity": r.quantity, "reference": r.reference, "asperity": r.value,
+             "unit": r.unit, "relative_error": r.relative_error, "tolerance": r.tolerance,
+             "passed": r.passed, "source": r.source} for name, r in rows], indent=2) + "\n")
+    else:
+        table = Table(title=f"asperity validation: {len(rows) - len(failed)} of {len(rows)} pass")
+        for col in ("case", "quantity", "reference", "asperity", "unit", "rel. error",
+                    "tolerance", ""):
+            table.add_column(col)
+        for name, r in rows:
+            mark = "[green]pass[/]" if r.passed else "[red]FAIL[/]" if r.passed is False else "-"
+            table.add_row(name, r.quantity, f"{r.reference:.6g}", f"{r.value:.6g}", r.unit,
+                          f"{r.relative_error:+.2e}",
+                          "" if r.tolerance is None else f"{r.tolerance:.1e}", mark)
+        console.print(table)
+    if failed:
+        raise typer.Exit(1)
+
+
+@app.command()
+@guarded
+def sweep(
+    study: Annotated[Path, typer.Argument(help="Study file (TOML): base case + axes.")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="Output folder.")] = Path(
+        "asperity-sweep"),
+    scheduler: Annotated[str | None, typer.Option(
+        "--scheduler", help="Address of a running Dask scheduler (default: a local cluster).")
+    ] = None,
+    workers: Annotated[int, typer.Option(help="Workers of the local cluster.")] = 2,
+    serial: Annotated[bool, typer.Option("--serial", help="Run in this process, no Dask.")
+                      ] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
+):
+    """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc."""
+    from ..sweep import load_study, run_study
+    from .progress import progress_bar
+
+    spec = load_study(study)
+    console.print(f"[bold]{spec.title}[/bold]: {len(spec.cases)} cases ({spec.mode})")
+    with progress_bar(console, disable=quiet) as progress:
+        if serial:
+            ds = run_study(spec, out, progress=progress)
+        else:
+            from dask.distributed import Client, LocalCluster
+
+            if scheduler:
+                with Client(scheduler) as client:
+                    ds = run_study(spec, out, client=client, progress=progress)
+            else:
+                with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, Client(cluster) as client:
+                    ds = run_study(spec, out, client=client, progress=progress)
+    failed = int((ds["state"] == "failed").sum())
+    console.print(f"wrote {out / 'study.nc'}: {len(spec.cases) - failed} done, {failed} failed")
+
+
 def main() -> None:
     """Entry point of the console script."""
     app()

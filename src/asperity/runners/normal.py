@@ -86,9 +86,10 @@ def run(case, progress=None) -> Outcome:
 
     j = _centre_row(y)
     figures = {
-        "pressure_map": (pressure_map(x, y, res.pressure, res.contact, case.title),
+        "pressure_map": (lambda: pressure_map(x, y, res.pressure, res.contact, case.title),
                          "Contact pressure with the contact boundary."),
-        "centre_line": (centre_line(x, res.pressure[:, j], res.gap[:, j], reference_line),
+        "centre_line": (lambda: centre_line(x, res.pressure[:, j], res.gap[:, j],
+                                            reference_line),
                         "Pressure and deformed gap along the centre line y = 0."),
     }
     notes = [] if res.converged else [

@@ -1,0 +1,5 @@
+"""``python -m asperity.cli``: the same as the ``asperity`` command."""
+
+from . import main
+
+main()

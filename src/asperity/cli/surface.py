@@ -1,0 +1,259 @@
+"""``asperity surface``: roughness statistics, surface generation and plots.
+
+Quantities may be plain SI numbers or strings with units (``--spacing "0.5 um"``). Bad input
+prints one line ``error: <field>: expected ...`` on stderr and exits with status 2.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable
+from functools import wraps
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from ..errors import InputError
+from ..units import to_si
+
+__all__ = ["surface_app"]
+
+surface_app = typer.Typer(add_completion=False, no_args_is_help=True,
+                          help="Rough surfaces: statistics, generation, plots.")
+
+#: Parameters with the dimension of length (printed in um, JSON keys suffixed _m).
+_LENGTHS = {"Ra", "Rq", "Rp", "Rv", "Rz", "Rt", "Sa", "Sq", "Sp", "Sv", "Sz"}
+KINDS = ("gaussian", "self-affine", "ground", "builtin", "turned")
+
+
+def _one_line_errors(command: Callable) -> Callable:
+    """Turn an InputError (or OSError) into one ``error: ...`` line on stderr, exit status 2."""
+
+    @wraps(command)
+    def wrapper(*args, **kwargs):
+        try:
+            return command(*args, **kwargs)
+        except InputError as err:
+            typer.echo(f"error: {err}", err=True)
+            raise typer.Exit(code=2) from None
+        except OSError as err:
+            typer.echo(f"error: file: expected a readable/writable path, got {err}", err=True)
+            raise typer.Exit(code=2) from None
+
+    return wrapper
+
+
+def _length(value: str | None, field: str) -> float | None:
+    return None if value is None else to_si(_numeric(value), "length", field)
+
+
+def _quantity(value: str | None, dimension: str, field: str) -> float | None:
+    return None if value is None else to_si(_numeric(value), dimension, field)
+
+
+def _numeric(value: str):
+    try:
+        return float(value)
+    except ValueError:
+        return value
+
+
+def _spacing(spacing: str | None, spacing_y: str | None):
+    dx = _length(spacing, "--spacing")
+    dy = _length(spacing_y, "--spacing-y")
+    if dy is not None and dx is None:
+        raise InputError("--spacing", "a spacing along x when --spacing-y is given")
+    return dx if dy is None else (dx, dy)
+
+
+def _statistics(surface) -> dict:
+    from ..surfaces import Profile, autocorrelation_length, roughness_parameters
+
+    params = roughness_parameters(surface)
+    ell = autocorrelation_length(surface)
+    spacing = [surface.spacing] if isinstance(surface, Profile) else list(surface.spacing)
+    out = {
+        "kind": "profile" if isinstance(surface, Profile) else "topography",
+        "points": list(surface.z.shape),
+        "spacing_m": spacing,
+        "periodic": surface.periodic,
+    }
+    for key, value in params.items():
+        out[f"{key}_m" if key in _LENGTHS else key] = value
+    out["correlation_length_m"] = None if math.isnan(ell) else ell
+    return out
+
+
+def _table(stats: dict, title: str) -> Table:
+    table = Table(title=title)
+    table.add_column("parameter")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    for key, value in stats.items():
+        if key in ("kind", "points", "spacing_m", "periodic"):
+            continue
+        if value is None:
+            table.add_row(key, "n/a", "")
+        elif key.endswith("_m"):
+            table.add_row(key[:-2], f"{value * 1e6:.4g}", "um")
+        elif key == "Sdr":
+            table.add_row(key, f"{value * 100:.4g}", "%")
+        else:
+            table.add_row(key, f"{value:.4g}", "")
+    points = " x ".join(str(n) for n in stats["points"])
+    spacing = " x ".join(f"{s * 1e6:.4g}" for s in stats["spacing_m"])
+    table.caption = f"{stats['kind']}, {points} points, spacing {spacing} um"
+    return table
+
+
+@surface_app.command()
+@_one_line_errors
+def stats(
+    file: Annotated[Path, typer.Argument(
+        help="Profile or topography file (text, .npy, .npz, ...).")],
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON (SI units) instead.")] = False,
+    spacing: Annotated[str | None, typer.Option(
+        help="Grid spacing, e.g. '0.5 um' (files without x).")] = None,
+    spacing_y: Annotated[str | None, typer.Option(
+        help="Grid spacing along y, if different.")] = None,
+):
+    """Roughness parameters (ISO 4287 / 25178) of a measured profile or topography."""
+    from ..surfaces import read_surface
+
+    surface = read_surface(file, _spacing(spacing, spacing_y))
+    result = _statistics(surface)
+    if as_json:
+        typer.echo(json.dumps({"file": str(file), **result}, indent=2))
+    else:
+        Console().print(_table(result, f"Roughness of {file.name}"))
+
+
+def _require(value, option: str, kind: str):
+    if value is None:
+        raise InputError(option, f"a value for a {kind} surface")
+    return value
+
+
+@surface_app.command()
+@_one_line_errors
+def generate(
+    kind: Annotated[str, typer.Argument(help=f"One of: {', '.join(KINDS)}.")],
+    out: Annotated[Path, typer.Option("--out", help="Output file (.txt, .csv, .dat, .npy, .npz).")],
+    length: Annotated[str, typer.Option(help="Length along x.")] = "1 mm",
+    width: Annotated[str | None, typer.Option(help="Width along y: makes a topography.")] = None,
+    spacing: Annotated[str, typer.Option(help="Grid spacing.")] = "1 um",
+    rms: Annotated[str | None, typer.Option(help="RMS height (gaussian, self-affine).")] = None,
+    rms_slope: Annotated[str | None, typer.Option(
+        help="RMS slope instead of rms height (self-affine).")] = None,
+    correlation_length: Annotated[str | None, typer.Option(help="ACF decay length to 0.2.")] = None,
+    correlation_length_y: Annotated[str | None, typer.Option(
+        help="Correlation length along y.")] = None,
+    hurst: Annotated[float, typer.Option(help="Hurst exponent (self-affine).")] = 0.8,
+    rolloff: Annotated[str | None, typer.Option(help="Roll-off wavelength (self-affine).")] = None,
+    cutoff: Annotated[str | None, typer.Option(
+        help="Short wavelength cut-off (self-affine).")] = None,
+    ra: Annotated[str | None, typer.Option(help="Target Ra (ground).")] = None,
+    run_in: Annotated[float, typer.Option(help="Run-in fraction 0..1 (ground).")] = 0.0,
+    name: Annotated[str, typer.Option(help="Built-in profile A, B or C (builtin).")] = "C",
+    feed: Annotated[str | None, typer.Option(help="Feed per revolution (turned).")] = None,
+    nose_radius: Annotated[str | None, typer.Option(help="Tool nose radius (turned).")] = None,
+    natural_frequency: Annotated[str | None, typer.Option(
+        help="Tool natural frequency: dynamic model.")] = None,
+    mass: Annotated[str, typer.Option(help="Tool modal mass (dynamic turned).")] = "250 kg",
+    damping_ratio: Annotated[float, typer.Option(
+        help="Tool damping ratio (dynamic turned).")] = 0.05,
+    depth_of_cut: Annotated[str, typer.Option(help="Depth of cut (dynamic turned).")] = "0.305 mm",
+    cutting_speed: Annotated[str, typer.Option(
+        help="Cutting speed (dynamic turned).")] = "61 m/min",
+    diameter: Annotated[str, typer.Option(help="Workpiece diameter (dynamic turned).")] = "50 mm",
+    waviness_wavelength: Annotated[str | None, typer.Option(
+        help="Add waviness of this wavelength.")] = None,
+    waviness_amplitude: Annotated[str, typer.Option(help="Waviness amplitude.")] = "0",
+    waviness_direction: Annotated[str, typer.Option(help="Waviness along x or y.")] = "x",
+    seed: Annotated[int, typer.Option(help="Random seed.")] = 0,
+):
+    """Generate a synthetic surface and write it to --out."""
+    from .. import surfaces as s
+
+    if kind not in KINDS:
+        raise InputError("KIND", f"one of {', '.join(KINDS)}", kind)
+    L = _length(length, "--length")
+    h = _length(spacing, "--spacing")
+    W = _length(width, "--width")
+    ell = _length(correlation_length, "--correlation-length")
+    if kind == "gaussian":
+        rms_m = _require(_length(rms, "--rms"), "--rms", kind)
+        ell = _require(ell, "--correlation-length", kind)
+        if W is None:
+            surface = s.gaussian_profile(L, h, rms_m, ell, seed=seed)
+        else:
+            ell_y = _length(correlation_length_y, "--correlation-length-y") or ell
+            surface = s.gaussian_topography((L, W), h, rms_m, (ell, ell_y), seed=seed)
+    elif kind == "self-affine":
+        options = {"rms_height": _length(rms, "--rms"),
+                   "rms_slope": _quantity(rms_slope, "dimensionless", "--rms-slope"),
+                   "rolloff_wavelength": _length(rolloff, "--rolloff"),
+                   "short_cutoff": _length(cutoff, "--cutoff"), "seed": seed}
+        if W is None:
+            surface = s.self_affine_profile(L, h, hurst, **options)
+        else:
+            surface = s.self_affine_topography((L, W), h, hurst, **options)
+    elif kind in ("ground", "builtin"):
+        if kind == "ground":
+            surface = s.transverse_ground_profile(
+                L, h, _require(_length(ra, "--ra"), "--ra", kind),
+                ell if ell is not None else 15e-6, run_in=run_in, seed=seed)
+        else:
+            surface = s.builtin_profile(name, L, h)
+        if W is not None:
+            surface = surface.extrude(s.cell_centres(max(2, round(W / h)), h))
+    else:
+        f = _require(_length(feed, "--feed"), "--feed", kind)
+        r = _require(_length(nose_radius, "--nose-radius"), "--nose-radius", kind)
+        fn = _quantity(natural_frequency, "frequency", "--natural-frequency")
+        if fn is None:
+            surface = s.turned_profile(f, r, L, h)
+        else:
+            surface = s.turned_profile_dynamic(
+                f, r, _length(depth_of_cut, "--depth-of-cut"),
+                _quantity(cutting_speed, "speed", "--cutting-speed"),
+                _length(diameter, "--diameter"), L, h, fn,
+                damping_ratio=damping_ratio, mass=_quantity(mass, "mass", "--mass"),
+                seed=seed).profile
+    if waviness_wavelength is not None:
+        surface = s.add_waviness(surface, _length(waviness_wavelength, "--waviness-wavelength"),
+                                 _length(waviness_amplitude, "--waviness-amplitude"),
+                                 direction=waviness_direction)
+    s.write_surface(surface, out)
+    Console().print(_table(_statistics(surface), f"Generated {kind} surface -> {out}"))
+
+
+@surface_app.command()
+@_one_line_errors
+def plot(
+    file: Annotated[Path, typer.Argument(help="Profile or topography file.")],
+    out: Annotated[Path, typer.Option("--out", help="Figure file (.png, .pdf, .svg).")],
+    spacing: Annotated[str | None, typer.Option(help="Grid spacing (files without x).")] = None,
+    spacing_y: Annotated[str | None, typer.Option(
+        help="Grid spacing along y, if different.")] = None,
+    spectrum: Annotated[bool, typer.Option("--spectrum", help="Plot the PSD instead.")] = False,
+):
+    """Plot a profile trace or a height map (or its power spectrum)."""
+    import matplotlib.pyplot as plt
+
+    from ..plotting.surfaces import plot_spectrum, plot_surface
+    from ..surfaces import read_surface
+
+    surface = read_surface(file, _spacing(spacing, spacing_y))
+    fig = plot_spectrum(surface) if spectrum else plot_surface(surface, title=file.name)
+    try:
+        fig.savefig(out, dpi=150)
+    except (ValueError, OSError) as err:
+        raise InputError("--out", "a writable figure file (.png, .pdf, .svg)", str(err)) from err
+    finally:
+        plt.close(fig)
+    typer.echo(f"wrote {out}")

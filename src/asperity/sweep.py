@@ -1,0 +1,251 @@
+"""Parameter studies: a base case, parameter axes, the cases run on Dask, one combined netCDF.
+
+A study file (TOML)::
+
+    title = "Contact area vs load"
+    base = "rough-flat-normal"          # a built-in example or a case file (relative path)
+    mode = "cross"                      # every combination; "zip" pairs the axes element-wise
+
+    [[axis]]
+    key = "loading.load"                # dotted path into the case
+    values = ["5 N", "10 N", "20 N"]    # or: range = {start = 5, stop = 20, num = 4, unit = "N"}
+
+Each case runs in its own folder ``OUT/cases/NNNN`` (``summary.json`` and ``result.nc``) and is
+marked done by ``status.json`` written last, so an interrupted study resumes where it stopped and
+never runs a finished case twice. A failing case is recorded with its error and does not stop the
+others. The scalars of all cases are combined into ``OUT/study.nc`` with the swept parameters as
+dimensions (``mode = "cross"``) or along a ``case`` dimension (``mode = "zip"``).
+"""
+
+from __future__ import annotations
+
+import copy
+import itertools
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from .errors import InputError
+from .results import atomic_path, write_json, write_netcdf
+
+__all__ = ["Study", "load_study", "run_study", "run_one", "combine"]
+
+
+@dataclass(frozen=True)
+class Study:
+    """A validated study: its cases (dicts, ready for ``load_case``) and axis coordinates."""
+
+    title: str
+    mode: str
+    axes: tuple  # of (name, values-as-given)
+    cases: tuple  # of (case_id, case dict, {axis name: value})
+
+
+def _set_path(data: dict, dotted: str, value) -> None:
+    keys = dotted.split(".")
+    node = data
+    for k in keys[:-1]:
+        if not isinstance(node.get(k), dict):
+            node[k] = {}
+        node = node[k]
+    node[keys[-1]] = value
+
+
+def _axis_values(axis: dict, index: int) -> list:
+    where = f"axis[{index}]"
+    if "values" in axis and "range" in axis:
+        raise InputError(where, "either values or range, not both")
+    if "values" in axis:
+        values = axis["values"]
+        if not isinstance(values, list) or not values:
+            raise InputError(f"{where}.values", "a non-empty list", values)
+        return values
+    if "range" in axis:
+        r = axis["range"]
+        try:
+            start, stop, num = float(r["start"]), float(r["stop"]), int(r["num"])
+        except (KeyError, TypeError, ValueError):
+            raise InputError(f"{where}.range", "a table {start, stop, num[, unit, scale]}",
+                             r) from None
+        if num < 1:
+            raise InputError(f"{where}.range.num", "an integer >= 1", num)
+        scale = r.get("scale", "linear")
+        if scale not in ("linear", "log"):
+            raise InputError(f"{where}.range.scale", '"linear" or "log"', scale)
+        vals = (np.geomspace(start, stop, num) if scale == "log" else np.linspace(start, stop, num))
+        unit = r.get("unit")
+        return [f"{v:.12g} {unit}" if unit else float(v) for v in vals]
+    raise InputError(where, "a values list or a range table")
+
+
+def load_study(path: str | Path) -> Study:
+    """Read and validate a study file; every case is validated before anything runs."""
+    from .cases import load_case, parse_toml
+    from .examples import example_text
+
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("study", "an existing TOML file", str(path))
+    spec = parse_toml(path.read_text(encoding="utf-8"), str(path))
+    unknown = set(spec) - {"title", "base", "mode", "axis", "description"}
+    if unknown:
+        raise InputError(sorted(unknown)[0], "", problem="unknown key (check the spelling)")
+    base = spec.get("base")
+    if not isinstance(base, str):
+        raise InputError("base", "a built-in example name or a case file path", base)
+    base_path = (path.parent / base)
+    text = base_path.read_text(encoding="utf-8") if base_path.is_file() else example_text(base)
+    base_case = parse_toml(text, base)
+    mode = spec.get("mode", "cross")
+    if mode not in ("cross", "zip"):
+        raise InputError("mode", '"cross" or "zip"', mode)
+    axes_spec = spec.get("axis")
+    if not isinstance(axes_spec, list) or not axes_spec:
+        raise InputError("axis", "at least one [[axis]] table with key and values")
+    axes = []
+    for i, ax in enumerate(axes_spec):
+        if not isinstance(ax, dict) or not isinstance(ax.get("key"), str):
+            raise InputError(f"axis[{i}].key", "a dotted key path such as 'loading.load'")
+        axes.append((ax["key"], _axis_values(ax, i)))
+    if mode == "zip" and len({len(v) for _, v in axes}) != 1:
+        raise InputError("axis", "axes of equal length for mode = \"zip\"")
+    combos = (zip(*(v for _, v in axes), strict=True) if mode == "zip"
+              else itertools.product(*(v for _, v in axes)))
+    cases = []
+    for n, combo in enumerate(combos):
+        case = copy.deepcopy(base_case)
+        for (key, _), value in zip(axes, combo, strict=True):
+            _set_path(case, key, value)
+        try:
+            load_case(case)
+        except InputError as exc:
+            raise InputError(f"case {n} ({exc.field})", exc.expected, exc.got,
+                             problem=str(exc).split(": ", 1)[1]) from None
+        cases.append((f"{n:04d}", case, dict(zip((k for k, _ in axes), combo, strict=True))))
+    return Study(spec.get("title", path.stem), mode, tuple(axes), tuple(cases))
+
+
+def run_one(case: dict, folder: str) -> dict:
+    """Run one case into ``folder``; return its status (done, summary, or the error).
+
+    Runs in a Dask worker. Errors are caught and recorded, never raised.
+    """
+    from .cases import load_case
+    from .results import write_outcome
+    from .runners import run_case
+
+    folder = Path(folder)
+    try:
+        outcome = run_case(load_case(case))
+        write_outcome(outcome, folder, figures=False)
+        status = {"state": "done", "converged": bool(outcome.converged),
+                  "summary": outcome.summary}
+    except Exception as exc:  # recorded for the study, the other cases go on
+        status = {"state": "failed", "error": f"{type(exc).__name__}: {exc}"}
+    write_json(status, folder / "status.json")
+    return status
+
+
+def _status(folder: Path) -> dict | None:
+    try:
+        return json.loads((folder / "status.json").read_text(encoding="utf-8"))
+    except (FileNotFoundError, json.JSONDecodeError):
+        return None
+
+
+def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> xr.Dataset:
+    """Run the study's unfinished cases on Dask and combine all results.
+
+    Parameters
+    ----------
+    study : Study
+    out : path
+        Output folder; ``cases/NNNN`` per case and ``study.nc``.
+    client : dask.distributed.Client, optional
+        Where to run; ``None`` runs the cases one after the other in this process.
+    progress : callable, optional
+        ``progress(done, total, description)``.
+    """
+    out = Path(out)
+    todo = [(cid, case) for cid, case, _ in study.cases
+            if (_status(out / "cases" / cid) or {}).get("state") != "done"]
+    total, done = len(study.cases), len(study.cases) - len(todo)
+    if progress:
+        progress(done, total, f"{study.title}: {done} of {total} cases done")
+    if client is None:
+        for cid, case in todo:
+            run_one(case, str(out / "cases" / cid))
+            done += 1
+            if progress:
+                progress(done, total, f"{study.title}: case {cid}")
+    else:
+        from dask.distributed import as_completed
+
+        futures = {client.submit(run_one, case, str(out / "cases" / cid), pure=False,
+                                 key=f"asperity-case-{cid}-{id(study)}"): cid
+                   for cid, case in todo}
+        for future in as_completed(futures):
+            future.result()
+            done += 1
+            if progress:
+                progress(done, total, f"{study.title}: case {futures[future]}")
+    ds = combine(study, out)
+    write_netcdf(ds, out / "study.nc")
+    with atomic_path(out / "study.json") as tmp:
+        tmp.write_text(json.dumps({"title": study.title, "mode": study.mode,
+                                   "cases": [c for c, _, _ in study.cases]}, indent=2))
+    return ds
+
+
+def _coordinate(values: list):
+    from .units import registry
+
+    try:
+        return np.array([float(v) for v in values]), ""
+    except (TypeError, ValueError):
+        pass
+    try:
+        ureg = registry()
+        qs = [ureg.Quantity(v) for v in values]
+        base = qs[0].to_base_units()
+        return np.array([q.to(base.units).magnitude for q in qs]), f"{base.units:~}"
+    except Exception:  # labels that are not quantities stay strings
+        return np.array([str(v) for v in values]), ""
+
+
+def combine(study: Study, out: str | Path) -> xr.Dataset:
+    """Gather every case's scalars into one Dataset with the axes as dimensions."""
+    out = Path(out)
+    statuses = [_status(out / "cases" / cid) or {"state": "missing"} for cid, _, _ in study.cases]
+    keys: list[str] = []
+    for s in statuses:
+        for k, v in (s.get("summary") or {}).items():
+            if isinstance(v, int | float | bool) and k not in keys:
+                keys.append(k)
+    names = [k.replace(".", "__") for k, _ in study.axes]
+    coords = {}
+    for name, (_key, values) in zip(names, study.axes, strict=True):
+        arr, unit = _coordinate(values)
+        coords[name] = (name if study.mode == "cross" else "case", arr,
+                        {"units": unit or "1", "long_name": _key})
+    shape = (tuple(len(v) for _, v in study.axes) if study.mode == "cross"
+             else (len(study.cases),))
+    dims = tuple(names) if study.mode == "cross" else ("case",)
+
+    def field(fn, dtype=float):
+        return np.array([fn(s) for s in statuses], dtype=dtype).reshape(shape)
+
+    data = {}
+    for k in keys:
+        data[k] = (dims, field(lambda s, k=k: (s.get("summary") or {}).get(k, math.nan)),
+                   {"long_name": k})
+    data["state"] = (dims, field(lambda s: s["state"], object).astype(str),
+                     {"long_name": "done, failed or missing"})
+    data["error"] = (dims, field(lambda s: s.get("error", ""), object).astype(str),
+                     {"long_name": "error message of a failed case"})
+    return xr.Dataset(data, coords=coords, attrs={"title": study.title, "mode": study.mode})
+

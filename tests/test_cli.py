@@ -1,0 +1,70 @@
+"""The command line: the default run writes its files; bad input is one line and exit 2."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+import xarray as xr
+from typer.testing import CliRunner
+
+from asperity.cli import app
+
+runner = CliRunner()
+
+
+def test_default_run_writes_every_file(tmp_path):
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    for name in ("result.nc", "summary.json", "report.html", "pressure_map.png",
+                 "centre_line.png"):
+        assert (out / name).is_file(), name
+    summary = json.loads((out / "summary.json").read_text())
+    for key in ("max_pressure_pa", "contact_area_m2", "approach_m", "load_n", "converged"):
+        assert key in summary
+    assert summary["converged"] is True
+    with xr.open_dataset(out / "result.nc") as ds:
+        assert ds["pressure"].attrs["units"] == "Pa"
+        assert ds["x"].attrs["units"] == "m"
+        for name in ds.variables:
+            assert "units" in ds[name].attrs and "long_name" in ds[name].attrs, name
+    html = (out / "report.html").read_text()
+    assert "data:image/png;base64," in html and "Hertz" in html
+
+
+def test_examples_and_example(tmp_path):
+    result = runner.invoke(app, ["examples"])
+    assert result.exit_code == 0 and "gear-dry-hertz" in result.output
+    result = runner.invoke(app, ["example", "gear-dry-hertz"])
+    assert result.exit_code == 0 and 'analysis = "normal"' in result.output
+
+
+BAD_EDITS = [
+    ('rx = "19.1 mm"', 'rx = "19.1 parsec per kg"', "geometry.rx"),
+    ('load = "962 N"', 'load = "-962 N"', "loading.load"),
+    ('load = "962 N"', 'lod = "962 N"', "loading"),
+    ("nx = 128", "nx = nan", "grid.nx"),
+    ('shape = "ellipsoid"', 'shape = "ellipsoid"\ncolour = "red"', "geometry.colour"),
+]
+
+
+@pytest.mark.parametrize("old, new, field", BAD_EDITS)
+def test_bad_case_file_exits_2_with_one_line(tmp_path, old, new, field):
+    text = runner.invoke(app, ["example", "gear-dry-hertz"]).output
+    assert old in text
+    case = tmp_path / "bad.toml"
+    case.write_text(text.replace(old, new))
+    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
+                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 2, proc.stderr
+    lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith(f"error: {field}"), proc.stderr
+    assert "Traceback" not in proc.stderr + proc.stdout
+
+
+def test_missing_case_file_and_unknown_example():
+    assert runner.invoke(app, ["run", "does-not-exist.toml"]).exit_code == 2
+    result = runner.invoke(app, ["example", "nope"])
+    assert result.exit_code == 2

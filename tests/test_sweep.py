@@ -1,0 +1,123 @@
+"""Parameter studies: Dask matches serial, failures are recorded, interrupted studies resume."""
+
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from asperity.errors import InputError
+from asperity.sweep import load_study, run_study
+
+BASE = """
+analysis = "normal"
+title = "small sphere"
+[body1]
+youngs_modulus = "210 GPa"
+[body2]
+youngs_modulus = "210 GPa"
+[geometry]
+shape = "sphere"
+rx = "10 mm"
+[loading]
+load = "20 N"
+[grid]
+nx = 24
+ny = 24
+x_extent = "0.5 mm"
+y_extent = "0.5 mm"
+"""
+
+
+def _study(tmp_path, axes, mode="cross"):
+    (tmp_path / "base.toml").write_text(BASE)
+    path = tmp_path / "study.toml"
+    path.write_text(f'title = "t"\nbase = "base.toml"\nmode = "{mode}"\n' + axes)
+    return load_study(path)
+
+
+AXES = """
+[[axis]]
+key = "loading.load"
+values = ["5 N", "10 N", "20 N"]
+[[axis]]
+key = "geometry.rx"
+range = {start = 5, stop = 10, num = 2, unit = "mm"}
+"""
+
+
+def test_cross_study_has_the_axes_as_dimensions(tmp_path):
+    study = _study(tmp_path, AXES)
+    assert len(study.cases) == 6
+    ds = run_study(study, tmp_path / "out")
+    assert ds["max_pressure_pa"].dims == ("loading__load", "geometry__rx")
+    assert np.allclose(ds["loading__load"], [5, 10, 20])
+    assert np.allclose(ds["geometry__rx"], [0.005, 0.01])
+    assert (ds["state"] == "done").all()
+    # Hertz: p_max grows like P^(1/3) at fixed radius
+    p = ds["max_pressure_pa"].sel(geometry__rx=0.01).values
+    assert p[2] / p[0] == pytest.approx(4 ** (1 / 3), rel=0.03)
+    with xr.open_dataset(tmp_path / "out" / "study.nc") as saved:
+        assert saved["load_n"].shape == (3, 2)
+
+
+def test_dask_two_workers_match_serial(tmp_path):
+    from dask.distributed import Client, LocalCluster
+
+    study = _study(tmp_path, AXES)
+    serial = run_study(study, tmp_path / "serial")
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                      dashboard_address=None) as cluster, Client(cluster) as client:
+        parallel = run_study(study, tmp_path / "dask", client=client)
+    for key in ("max_pressure_pa", "contact_area_m2", "approach_m"):
+        np.testing.assert_allclose(parallel[key], serial[key], rtol=1e-12)
+
+
+def test_failing_case_is_recorded_and_others_run(tmp_path, monkeypatch):
+    import asperity.runners
+
+    real = asperity.runners.run_case
+
+    def flaky(case, progress=None):
+        if case.loading.load == 10.0:
+            raise RuntimeError("solver exploded")
+        return real(case, progress)
+
+    monkeypatch.setattr(asperity.runners, "run_case", flaky)
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = [5, 10, 20]\n')
+    ds = run_study(study, tmp_path / "out")
+    assert list(ds["state"].values) == ["done", "failed", "done"]
+    assert "solver exploded" in str(ds["error"].values[1])
+    assert np.isnan(ds["max_pressure_pa"].values[1]) and ds["max_pressure_pa"].values[2] > 0
+
+
+def test_bad_study_is_one_line(tmp_path):
+    with pytest.raises(InputError, match="case 1"):
+        _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "5 kg"]\n')
+    with pytest.raises(InputError, match="axis"):
+        _study(tmp_path, "")
+
+
+def test_interrupted_study_resumes_each_case_once(tmp_path):
+    axes = '[[axis]]\nkey = "loading.load"\nrange = {start = 5, stop = 40, num = 8, unit = "N"}\n'
+    study = _study(tmp_path, axes)
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "asperity.cli", "sweep", str(tmp_path / "study.toml"),
+           "--out", str(out), "--serial", "--quiet"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    deadline = time.time() + 120
+    while time.time() < deadline and len(list(out.glob("cases/*/status.json"))) < 2:
+        time.sleep(0.05)
+    proc.kill()
+    proc.wait()
+    finished = {p.parent.name: p.stat().st_mtime_ns for p in out.glob("cases/*/status.json")}
+    assert 2 <= len(finished) < 8, "the run was not interrupted mid-way"
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    after = {p.parent.name: p.stat().st_mtime_ns for p in out.glob("cases/*/status.json")}
+    assert sorted(after) == [c for c, _, _ in study.cases]
+    assert all(after[c] == t for c, t in finished.items()), "a finished case ran again"
+    with xr.open_dataset(out / "study.nc") as ds:
+        assert (ds["state"] == "done").all() and ds.sizes["loading__load"] == 8
