@@ -24,8 +24,11 @@ from .lubricant import (
     roelands_viscosity,
     wall_shear_stress,
 )
+from .problem import LineContact, PointContact
+from .solver import EHLState, SteadyResult, solve_steady
 
 __all__ = [
+    "EHLState", "LineContact", "PointContact", "SteadyResult", "solve_steady",
     "FilmThickness",
     "HamrockDowsonGroups",
     "MoesGroups",

@@ -1,6 +1,7 @@
 """The elastic half-space: influence coefficients and their FFT convolutions."""
 
 from .convolution import Convolution, grid_spacing, normal_operator, periodic_halfspace_spectrum
+from .differential import differential_coefficients, line_differential_coefficients
 from .kernels import (
     TangentialInfluence,
     cerruti_integrals,
@@ -10,6 +11,7 @@ from .kernels import (
 )
 
 __all__ = [
+    "differential_coefficients", "line_differential_coefficients",
     "Convolution",
     "TangentialInfluence",
     "cerruti_integrals",

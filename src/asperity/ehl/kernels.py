@@ -1,0 +1,286 @@
+"""Compiled relaxation sweeps of the coupled (p, h) EHL equations (Holmes et al. 2003, Eq. 7).
+
+All quantities are dimensionless (see :mod:`asperity.ehl.problem`). At an interior node P the
+finite-difference Reynolds equation (docs/ehl.md) and the differential deflection equation read
+
+    A0 p_P + B0 h_P = R^          (Reynolds, theta-scheme in time)
+    C0 p_P + D0 h_P = E^          (Delta_h h = Delta_h phi + curvature + c sum f p)
+
+with, for faces ``xi_e = (eps_P + eps_E)/(2 dX^2)`` etc. and second-order upwind weights
+``(c0, c1, c2) = (3/2, 2, 1/2)`` (first order ``(1, 1, 0)`` next to the inlet boundary):
+
+    A0 = -theta sum xi_nb
+    B0 = -theta lam rho_P c0 / dX - mass rho_P
+    R^ = -theta [sum xi_nb p_nb + lam (c1 (rho h)_W - c2 (rho h)_WW) / dX] - rhs_t
+    C0 = -c f_00,  D0 = -2/dX^2 - 2/dY^2
+    E^ = efar - (h_E + h_W)/dX^2 - (h_N + h_S)/dY^2
+
+``mass = lam/dT`` and ``rhs_t = (1 - theta) L^n + mass (rho h)^n`` carry the time terms (zero
+for a steady solve) and ``efar = Delta_h phi + curvature + c (sum f p)_lagged`` the far-field
+deflection refreshed by FFT. A node whose coupled update gives p < 0 is cavitated (p = 0,
+h from the deflection equation); one that gives h < 0 is in contact (h = 0, p from the
+deflection equation, Holmes et al. Eq. 8).
+
+Two sweeps are provided: the seed's point update (:func:`point_sweep`) and an x-line update
+(:func:`line_sweep`) that solves every ``y = const`` row of nodes at once, with the
+Reynolds x-couplings, the deflection Laplacian in x and the ``|k| <= K`` near-field pressure
+coefficients along x implicit, by banded Gaussian elimination with partial pivoting.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+FLUID, CAVITATED, CONTACT = 0, 1, 2
+
+
+@numba.njit(cache=True)
+def _upwind(i):
+    """Upwind weights (c0, c1, c2) of d(rho h)/dX at node i (first order next to the inlet)."""
+    if i >= 2:
+        return 1.5, 2.0, 0.5
+    return 1.0, 1.0, 0.0
+
+
+@numba.njit(cache=True)
+def _faces(eps_x, eps_y, i, j, dx2, dy2):
+    """Face conductances xi_e, xi_w, xi_n, xi_s at node (i, j) (arithmetic face averages)."""
+    ep = eps_x[i, j]
+    xe = 0.5 * (ep + eps_x[i + 1, j]) / dx2
+    xw = 0.5 * (ep + eps_x[i - 1, j]) / dx2
+    if eps_y.shape[1] > 1:
+        eq = eps_y[i, j]
+        xn = 0.5 * (eq + eps_y[i, j + 1]) / dy2
+        xs = 0.5 * (eq + eps_y[i, j - 1]) / dy2
+    else:
+        xn = 0.0
+        xs = 0.0
+    return xe, xw, xn, xs
+
+
+@numba.njit(cache=True)
+def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_self):
+    """One lexicographic Gauss-Seidel sweep of the coupled nodal update (Holmes et al. Eq. 7-8).
+
+    Rows j in turn, nodes along each row in the entrainment direction (+x). Updates ``p``
+    and ``h`` in place on interior nodes and returns the largest change of p and of h.
+    ``c_self = C0 = -c f_00 > 0``. With one row (``ny == 1``) it is the line-contact sweep.
+    """
+    nx, ny = p.shape
+    dx2 = dx * dx
+    two_d = ny > 1
+    dy2 = dy * dy if two_d else 1.0
+    inv_dy2 = 1.0 / dy2 if two_d else 0.0
+    d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    j0, j1 = (1, ny - 1) if two_d else (0, 1)
+    dp_max = 0.0
+    dh_max = 0.0
+    for j in range(j0, j1):
+        for i in range(1, nx - 1):
+            xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
+            c0, c1, c2 = _upwind(i)
+            rho_w_h = rho[i - 1, j] * h[i - 1, j]
+            rho_ww_h = rho[i - 2, j] * h[i - 2, j] if i >= 2 else 0.0
+            nb = xe * p[i + 1, j] + xw * p[i - 1, j]
+            hy = 0.0
+            if two_d:
+                nb += xn * p[i, j + 1] + xs * p[i, j - 1]
+                hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2
+            a0 = -theta * (xe + xw + xn + xs)
+            b0 = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
+            r = -theta * (nb + lam * (c1 * rho_w_h - c2 * rho_ww_h) / dx) - rhs_t[i, j]
+            e = efar[i, j] - (h[i + 1, j] + h[i - 1, j]) / dx2 - hy
+            det = a0 * d0 - b0 * c_self
+            pn = (r * d0 - b0 * e) / det
+            hn = (a0 * e - c_self * r) / det
+            if pn < 0.0:
+                pn = 0.0
+                hn = e / d0
+            if hn < 0.0:
+                hn = 0.0
+                pn = max(e / c_self, 0.0)
+            dp_max = max(dp_max, abs(pn - p[i, j]))
+            dh_max = max(dh_max, abs(hn - h[i, j]))
+            p[i, j] = pn
+            h[i, j] = hn
+    return dp_max, dh_max
+
+
+@numba.njit(cache=True)
+def _band_solve(ab, b, kl, ku):
+    """Solve a banded system in place by Gaussian elimination with partial pivoting.
+
+    ``ab[r, c - r + kl]`` holds A[r, c] for ``-kl <= c - r <= ku + kl`` (the extra ``kl``
+    super-diagonals take the fill-in of row interchanges, as in LAPACK ``gbsv``). Overwrites
+    ``b`` with the solution.
+    """
+    n = b.size
+    for k in range(n):
+        last = min(k + kl, n - 1)
+        piv = k
+        best = abs(ab[k, kl])
+        for r in range(k + 1, last + 1):
+            v = abs(ab[r, k - r + kl])
+            if v > best:
+                best = v
+                piv = r
+        cmax = min(k + kl + ku, n - 1)
+        if piv != k:
+            for c in range(k, cmax + 1):
+                t = ab[k, c - k + kl]
+                ab[k, c - k + kl] = ab[piv, c - piv + kl]
+                ab[piv, c - piv + kl] = t
+            t = b[k]
+            b[k] = b[piv]
+            b[piv] = t
+        diag = ab[k, kl]
+        for r in range(k + 1, last + 1):
+            m = ab[r, k - r + kl] / diag
+            if m != 0.0:
+                for c in range(k + 1, cmax + 1):
+                    ab[r, c - r + kl] -= m * ab[k, c - k + kl]
+                b[r] -= m * b[k]
+    for k in range(n - 1, -1, -1):
+        s = b[k]
+        cmax = min(k + kl + ku, n - 1)
+        for c in range(k + 1, cmax + 1):
+            s -= ab[k, c - k + kl] * b[c]
+        b[k] = s / ab[k, kl]
+
+
+@numba.njit(cache=True)
+def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
+                  f_near, j, kind, ab, b, kl):
+    """Assemble the banded system of row j; unknowns interleaved (p_i at 2i, h_i at 2i+1)."""
+    nx, ny = p.shape
+    dx2 = dx * dx
+    two_d = ny > 1
+    dy2 = dy * dy if two_d else 1.0
+    inv_dy2 = 1.0 / dy2 if two_d else 0.0
+    d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    kn = f_near.size - 1
+    ab[:, :] = 0.0
+    for i in range(nx):
+        rp = 2 * i
+        rh = rp + 1
+        if i == 0 or i == nx - 1:
+            ab[rp, kl] = 1.0
+            b[rp] = 0.0
+            ab[rh, kl] = 1.0
+            b[rh] = h[i, j]
+            continue
+        # deflection row: (h_E + h_W)/dX^2 + D0 h_P - c sum_|k|<=K f_k p_{i+k} = E^
+        hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2 if two_d else 0.0
+        ab[rh, kl] = d0
+        ab[rh, kl + 2] = 1.0 / dx2
+        ab[rh, kl - 2] = 1.0 / dx2
+        for k in range(-kn, kn + 1):
+            ii = i + k
+            if 0 < ii < nx - 1:
+                ab[rh, 2 * ii - rh + kl] -= c_el * f_near[abs(k)]
+        b[rh] = efar[i, j] - hy
+        if kind[i] == CAVITATED:
+            ab[rp, kl] = 1.0
+            b[rp] = 0.0
+            continue
+        if kind[i] == CONTACT:
+            ab[rp, rh - rp + kl] = 1.0
+            b[rp] = 0.0
+            continue
+        xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
+        c0, c1, c2 = _upwind(i)
+        ab[rp, kl] = -theta * (xe + xw + xn + xs)
+        ab[rp, kl + 2] = theta * xe
+        ab[rp, kl - 2] = theta * xw
+        ab[rp, kl + 1] = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
+        ab[rp, kl - 1] = theta * lam * c1 * rho[i - 1, j] / dx
+        if i >= 2:
+            ab[rp, kl - 3] = -theta * lam * c2 * rho[i - 2, j] / dx
+        nb = 0.0
+        if two_d:
+            nb = xn * p[i, j + 1] + xs * p[i, j - 1]
+        b[rp] = -theta * nb - rhs_t[i, j]
+
+
+@numba.njit(cache=True)
+def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
+               kind):
+    """One Gauss-Seidel sweep of x-line relaxation (rows j = const, in increasing j).
+
+    Each row is solved for all its (p, h) at once with an active set: nodes are fluid,
+    cavitated (p = 0) or in contact (h = 0). Fluid nodes that come out with p < 0 (h < 0)
+    become cavitated (in contact) and the row is solved again; cavitated or contact nodes are
+    released when the point update of Eq. 7 at the current iterate gives p > 0 (h > 0).
+    ``kind`` (int8, shape p.shape) persists the active set between sweeps. ``f_near[k]`` are
+    the implicit coefficients f_{k,0}, k = 0..K; ``efar`` must exclude them. Returns the
+    largest change of p and of h.
+    """
+    nx, ny = p.shape
+    kn = f_near.size - 1
+    kl = max(3, 2 * kn + 1)
+    ku = max(2, 2 * kn - 1)
+    n = 2 * nx
+    ab = np.zeros((n, 2 * kl + ku + 1))
+    b = np.zeros(n)
+    two_d = ny > 1
+    dx2 = dx * dx
+    dy2 = dy * dy if two_d else 1.0
+    inv_dy2 = 1.0 / dy2 if two_d else 0.0
+    d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    c_self = -c_el * f_near[0]
+    j0, j1 = (1, ny - 1) if two_d else (0, 1)
+    dp_max = 0.0
+    dh_max = 0.0
+    for j in range(j0, j1):
+        row_kind = kind[:, j]
+        # release of cavitated / contact nodes by the point update at the current iterate
+        for i in range(1, nx - 1):
+            if row_kind[i] == FLUID:
+                continue
+            xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
+            c0, c1, c2 = _upwind(i)
+            nb = xe * p[i + 1, j] + xw * p[i - 1, j]
+            hy = 0.0
+            if two_d:
+                nb += xn * p[i, j + 1] + xs * p[i, j - 1]
+                hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2
+            rho_ww_h = rho[i - 2, j] * h[i - 2, j] if i >= 2 else 0.0
+            a0 = -theta * (xe + xw + xn + xs)
+            b0 = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
+            r = -theta * (nb + lam * (c1 * rho[i - 1, j] * h[i - 1, j] - c2 * rho_ww_h) / dx)
+            r -= rhs_t[i, j]
+            e = efar[i, j] - (h[i + 1, j] + h[i - 1, j]) / dx2 - hy
+            for k in range(-kn, kn + 1):
+                if k != 0 and 0 < i + k < nx - 1:
+                    e += c_el * f_near[abs(k)] * p[i + k, j]
+            det = a0 * d0 - b0 * c_self
+            if row_kind[i] == CAVITATED and (r * d0 - b0 * e) / det > 0.0:
+                row_kind[i] = FLUID
+            elif row_kind[i] == CONTACT and (a0 * e - c_self * r) / det > 0.0:
+                row_kind[i] = FLUID
+        for _ in range(4):
+            _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
+                          f_near, j, row_kind, ab, b, kl)
+            _band_solve(ab, b, kl, ku)
+            changed = False
+            for i in range(1, nx - 1):
+                if row_kind[i] == FLUID and b[2 * i] < 0.0:
+                    row_kind[i] = CAVITATED
+                    changed = True
+                elif row_kind[i] != CONTACT and b[2 * i + 1] < 0.0:
+                    row_kind[i] = CONTACT
+                    changed = True
+                elif row_kind[i] == CONTACT and b[2 * i] < 0.0:
+                    row_kind[i] = CAVITATED
+                    changed = True
+            if not changed:
+                break
+        for i in range(1, nx - 1):
+            pn = max(b[2 * i], 0.0)
+            hn = max(b[2 * i + 1], 0.0)
+            dp_max = max(dp_max, abs(pn - p[i, j]))
+            dh_max = max(dh_max, abs(hn - h[i, j]))
+            p[i, j] = pn
+            h[i, j] = hn
+    return dp_max, dh_max

@@ -1,0 +1,312 @@
+"""Steady EHL problems: geometry, operating conditions, Hertz scales and dimensionless groups.
+
+A problem is given in SI at the API and solved in Hertzian dimensionless variables
+(Venner & Lubrecht 2000, ch. 4)::
+
+    X = x/a, Y = y/a, P = p/p_h, H = h Rx/a^2, rho_bar = rho/rho0, eta_bar = eta/eta0
+
+with ``a`` the Hertz half-width along x (the entrainment direction) and ``p_h`` the Hertz
+maximum pressure. The film equation then reads
+``H = H0 + X^2/2 + (Rx/Ry) Y^2/2 + c sum D P`` with ``c = 2 p_h Rx / (pi E' a)`` and the
+Reynolds equation ``d/dX(eps_x dP/dX) + d/dY(eps_y dP/dY) - lam d(rho_bar H)/dX = 0`` with
+``eps = sigma 12 eta0 Rx^3 / (rho0 a^6)`` and ``lam = 12 eta0 u_mean Rx^2 / (a^3 p_h)``.
+
+Dimensionless groups follow Hamrock & Dowson (U, G, W) and Moes (M, L) with the mean speed
+``u_mean = (u1 + u2)/2``: ``U = eta0 u_mean/(E' Rx)``, ``G = alpha E'``, ``W = w/(E' Rx^2)``
+(point) or ``w'/(E' R)`` (line); point ``M = W (2U)^-3/4``, line ``M = W' (2U)^-1/2``,
+``L = G (2U)^1/4``.
+
+References
+----------
+C. H. Venner, A. A. Lubrecht, *Multilevel Methods in Lubrication*, Elsevier, 2000.
+M. J. A. Holmes et al., J. Tribol. 127 (2005) 61-69 (the seed: Table 1, domain and mesh).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..contact.hertz import hertz_line, hertz_point
+from ..errors import InputError, check_positive
+from ..materials import Material, contact_modulus
+from .lubricant import Lubricant
+
+__all__ = ["LineContact", "PointContact"]
+
+
+def _check_common(u1, u2, body1, body2, lubricant):
+    u1 = float(u1)
+    u2 = float(u2)
+    if not (np.isfinite(u1) and np.isfinite(u2)):
+        raise InputError("u1, u2", "finite surface speeds in m/s", (u1, u2))
+    if not 0.5 * (u1 + u2) > 0:
+        raise InputError(
+            "u1, u2", "a positive mean entrainment speed (u1 + u2)/2 > 0 for a lubricated contact",
+            (u1, u2),
+        )
+    if not isinstance(body1, Material) or not isinstance(body2, Material):
+        raise InputError("body1, body2", "asperity.Material instances")
+    if not isinstance(lubricant, Lubricant):
+        raise InputError("lubricant", "an asperity.ehl.Lubricant")
+    contact_modulus(body1, body2)
+    return u1, u2
+
+
+def _check_domain(domain, half_x, half_y):
+    """Validate ((x0, x1), (y0, y1)) in m: finite, increasing, holding the Hertz area."""
+    try:
+        (x0, x1), (y0, y1) = domain
+        x0, x1, y0, y1 = (float(v) for v in (x0, x1, y0, y1))
+    except (TypeError, ValueError):
+        raise InputError("domain", "((x_min, x_max), (y_min, y_max)) in m", domain) from None
+    if not np.all(np.isfinite([x0, x1, y0, y1])):
+        raise InputError("domain", "finite bounds", domain)
+    if not (x0 < -half_x and x1 > half_x):
+        raise InputError(
+            "domain", f"x bounds enclosing the Hertz contact -a..a (a = {half_x:.4g} m)", domain
+        )
+    if half_y is not None and not (y0 < -half_y and y1 > half_y):
+        raise InputError(
+            "domain", f"y bounds enclosing the Hertz contact -b..b (b = {half_y:.4g} m)", domain
+        )
+    return (x0, x1), (y0, y1)
+
+
+class _Contact:
+    """Shared behaviour of point and line contacts (speeds, lubricant, scales)."""
+
+    @property
+    def mean_speed(self) -> float:
+        """Entrainment (mean) speed (u1 + u2)/2, m/s."""
+        return 0.5 * (self.u1 + self.u2)
+
+    @property
+    def sliding_speed(self) -> float:
+        """Sliding speed u2 - u1, m/s."""
+        return self.u2 - self.u1
+
+    @property
+    def slide_roll_ratio(self) -> float:
+        """xi = (u2 - u1)/u_mean."""
+        return self.sliding_speed / self.mean_speed
+
+    @property
+    def reduced_modulus(self) -> float:
+        """E' = 2 E*, Pa."""
+        return 2.0 * contact_modulus(self.body1, self.body2)
+
+    @property
+    def film_scale(self) -> float:
+        """h = film_scale * H: a^2 / Rx, m."""
+        return self.a**2 / self.rx
+
+    @property
+    def elastic_factor(self) -> float:
+        """c = 2 p_h Rx / (pi E' a), the factor of the dimensionless deflection sum."""
+        return 2.0 * self.p_hertz * self.rx / (np.pi * self.reduced_modulus * self.a)
+
+    @property
+    def lam(self) -> float:
+        """Reynolds wedge factor lam = 12 eta0 u_mean Rx^2 / (a^3 p_h)."""
+        eta0 = self.lubricant.viscosity
+        return 12.0 * eta0 * self.mean_speed * self.rx**2 / (self.a**3 * self.p_hertz)
+
+    @property
+    def U(self) -> float:
+        """Hamrock-Dowson speed parameter eta0 u_mean / (E' Rx)."""
+        return self.lubricant.viscosity * self.mean_speed / (self.reduced_modulus * self.rx)
+
+    @property
+    def G(self) -> float:
+        """Material parameter alpha E'."""
+        return self.lubricant.pressure_viscosity * self.reduced_modulus
+
+    @property
+    def L(self) -> float:
+        """Moes material parameter L = G (2U)^(1/4)."""
+        return self.G * (2.0 * self.U) ** 0.25
+
+
+@dataclass(frozen=True)
+class PointContact(_Contact):
+    """Smooth elliptical (point) EHL contact, entrainment along x.
+
+    Parameters
+    ----------
+    rx, ry : float
+        Radii of relative curvature along x (entrainment) and y, m.
+    load : float
+        Normal load w, N.
+    u1, u2 : float
+        Surface speeds along x, m/s; their mean must be positive.
+    body1, body2 : Material
+        The two elastic bodies.
+    lubricant : Lubricant
+        The lubricant (viscosity, density and Eyring laws).
+    """
+
+    rx: float
+    ry: float
+    load: float
+    u1: float
+    u2: float
+    body1: Material
+    body2: Material
+    lubricant: Lubricant
+
+    def __post_init__(self):
+        object.__setattr__(self, "rx", check_positive("rx", self.rx))
+        object.__setattr__(self, "ry", check_positive("ry", self.ry))
+        if not np.isfinite(self.ry):
+            raise InputError("ry", "a finite radius (use LineContact for a line contact)")
+        object.__setattr__(self, "load", check_positive("load", self.load))
+        u1, u2 = _check_common(self.u1, self.u2, self.body1, self.body2, self.lubricant)
+        object.__setattr__(self, "u1", u1)
+        object.__setattr__(self, "u2", u2)
+        object.__setattr__(
+            self, "hertz", hertz_point(self.load, self.rx, self.ry, self.body1, self.body2)
+        )
+
+    @property
+    def a(self) -> float:
+        """Hertz semi-axis along x, m."""
+        return self.hertz.a
+
+    @property
+    def b(self) -> float:
+        """Hertz semi-axis along y, m."""
+        return self.hertz.b
+
+    @property
+    def p_hertz(self) -> float:
+        """Hertz maximum pressure, Pa."""
+        return self.hertz.p_max
+
+    @property
+    def curvature(self) -> float:
+        """Dimensionless Laplacian of the undeformed gap, 1 + Rx/Ry."""
+        return 1.0 + self.rx / self.ry
+
+    @property
+    def load_integral(self) -> float:
+        """Target of the dimensionless load: integral of P dX dY = 2 pi b / (3 a)."""
+        return 2.0 * np.pi * self.b / (3.0 * self.a)
+
+    @property
+    def W(self) -> float:
+        """Hamrock-Dowson load parameter w / (E' Rx^2)."""
+        return self.load / (self.reduced_modulus * self.rx**2)
+
+    @property
+    def M(self) -> float:
+        """Moes load parameter M = W (2U)^(-3/4)."""
+        return self.W * (2.0 * self.U) ** -0.75
+
+    def default_domain(self):
+        """The seed's domain -2.5a < x < 1.5a, -2b < y < 2b (m)."""
+        return (-2.5 * self.a, 1.5 * self.a), (-2.0 * self.b, 2.0 * self.b)
+
+    def grid(self, nx: int, ny: int, domain=None):
+        """Node (cell-centre) coordinates ``x``, ``y`` in m on ``domain`` (default: the seed's).
+
+        The end nodes lie on the domain bounds; the seed's mesh dx = a/200, dy = b/50 is
+        ``nx, ny = 801, 201`` on the default domain.
+        """
+        (x0, x1), (y0, y1) = _check_domain(
+            self.default_domain() if domain is None else domain, self.a, self.b
+        )
+        nx, ny = _check_nodes(nx, "nx"), _check_nodes(ny, "ny")
+        return np.linspace(x0, x1, nx), np.linspace(y0, y1, ny)
+
+
+@dataclass(frozen=True)
+class LineContact(_Contact):
+    """Smooth line (infinitely long cylinder) EHL contact, entrainment along x.
+
+    Parameters
+    ----------
+    radius : float
+        Radius of relative curvature along x, m.
+    load_per_length : float
+        Load per unit length w', N/m.
+    u1, u2, body1, body2, lubricant
+        As for :class:`PointContact`.
+    """
+
+    radius: float
+    load_per_length: float
+    u1: float
+    u2: float
+    body1: Material
+    body2: Material
+    lubricant: Lubricant
+
+    def __post_init__(self):
+        object.__setattr__(self, "radius", check_positive("radius", self.radius))
+        object.__setattr__(
+            self, "load_per_length", check_positive("load_per_length", self.load_per_length)
+        )
+        u1, u2 = _check_common(self.u1, self.u2, self.body1, self.body2, self.lubricant)
+        object.__setattr__(self, "u1", u1)
+        object.__setattr__(self, "u2", u2)
+        object.__setattr__(
+            self,
+            "hertz",
+            hertz_line(self.load_per_length, self.radius, self.body1, self.body2),
+        )
+
+    @property
+    def rx(self) -> float:
+        """Radius along x, m (the ``radius``)."""
+        return self.radius
+
+    @property
+    def a(self) -> float:
+        """Hertz half-width, m."""
+        return self.hertz.a
+
+    @property
+    def p_hertz(self) -> float:
+        """Hertz maximum pressure, Pa."""
+        return self.hertz.p_max
+
+    @property
+    def curvature(self) -> float:
+        """Dimensionless second derivative of the undeformed gap, 1."""
+        return 1.0
+
+    @property
+    def load_integral(self) -> float:
+        """Target of the dimensionless load: integral of P dX = pi/2."""
+        return 0.5 * np.pi
+
+    @property
+    def W(self) -> float:
+        """Load parameter w' / (E' R)."""
+        return self.load_per_length / (self.reduced_modulus * self.radius)
+
+    @property
+    def M(self) -> float:
+        """Moes load parameter M = W' (2U)^(-1/2)."""
+        return self.W * (2.0 * self.U) ** -0.5
+
+    def default_domain(self):
+        """The seed's -2.5a < x < 1.5a (the y bounds are unused), m."""
+        return (-2.5 * self.a, 1.5 * self.a), (0.0, 0.0)
+
+    def grid(self, nx: int, ny: int = 1, domain=None):
+        """Node coordinates ``x`` (m) on the x-range of ``domain``; ``y = [0.]``."""
+        if ny != 1:
+            raise InputError("ny", "1 for a line contact", ny)
+        (x0, x1), _ = _check_domain(
+            self.default_domain() if domain is None else domain, self.a, None
+        )
+        return np.linspace(x0, x1, _check_nodes(nx, "nx")), np.zeros(1)
+
+
+def _check_nodes(n, field):
+    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 9:
+        raise InputError(field, "an integer number of nodes >= 9", n)
+    return int(n)

@@ -1,0 +1,472 @@
+"""Steady isothermal EHL of smooth point and line contacts by the coupled differential method.
+
+The elastic deflection is imposed in differential form (Holmes et al. 2003, Eq. 1), the
+Reynolds equation with Eyring flow factors (Eq. 2), and both are relaxed together node by node
+(Eq. 7) or row by row (x-line relaxation), with cavitation (p >= 0) and contact (h >= 0,
+Eq. 8). The far-field pressure sum and the Dirichlet edge values of h are refreshed by FFT
+every ``refresh`` sweeps; the rigid separation ``H0`` is shifted at every node to balance the
+load. The discretisation is documented in ``docs/ehl.md``.
+
+:class:`EHLState` keeps everything a time-stepping solver needs to advance (p, h, H0, the
+far-field arrays, the active set, the time-term switches ``theta``, ``mass`` and ``rhs_t``).
+
+References
+----------
+M. J. A. Holmes, H. P. Evans, T. G. Hughes, R. W. Snidle, Proc. IMechE J 217 (2003) 289-303.
+H. P. Evans, T. G. Hughes, Proc. IMechE C 214 (2000) 563-584.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..elastic.convolution import Convolution, grid_spacing
+from ..elastic.differential import (
+    differential_coefficients,
+    line_differential_coefficients,
+    strip_integral,
+)
+from ..elastic.kernels import love_integral
+from ..errors import InputError, check_positive
+from . import formulas
+from .kernels import line_sweep, point_sweep
+from .lubricant import eyring_flow_factors, friction_coefficient
+from .problem import LineContact, PointContact
+
+__all__ = ["EHLState", "SteadyResult", "solve_steady"]
+
+
+class EHLState:
+    """Dimensionless state of an EHL solve on one grid (see :mod:`asperity.ehl.problem`).
+
+    Parameters
+    ----------
+    problem : PointContact or LineContact
+        The contact.
+    x, y : ndarray
+        Node (cell-centre) coordinates, m; ``y = [0.]`` for a line contact.
+    near : int
+        Number K of pressure coefficients ``f_{k,0}``, ``1 <= |k| <= K``, kept implicit along x
+        by the line relaxation (0: only the centre coefficient, the seed's point update).
+
+    Attributes
+    ----------
+    P, H : ndarray
+        Dimensionless pressure and film, indexed ``[ix, iy]``.
+    H0 : float
+        Dimensionless rigid separation.
+    kind : ndarray of int8
+        Active set: 0 fluid, 1 cavitated, 2 contact.
+    theta, mass, rhs_t
+        Time-scheme weight, ``lam/dT`` and the explicit part of the time-discrete Reynolds
+        equation; ``1, 0, 0`` for a steady solve.
+    """
+
+    def __init__(self, problem, x, y, near: int = 0):
+        self.problem = problem
+        self.line = isinstance(problem, LineContact)
+        self.x = np.asarray(x, dtype=float)
+        self.y = np.asarray(y, dtype=float)
+        a = problem.a
+        self.X = self.x / a
+        self.Y = self.y / a
+        self.dX = grid_spacing(self.x, "x") / a
+        self.dY = 1.0 if self.line else grid_spacing(self.y, "y") / a
+        shape = (self.X.size, self.Y.size)
+        self.c = problem.elastic_factor
+        self.lam = problem.lam
+        # Convolutions with the dimensionless geometric kernels D (film) and f (Laplacian of D)
+        if self.line:
+            self._d_conv = Convolution.from_coefficients(
+                lambda X, Y: strip_integral(X, self.dX), self.dX, 1.0, shape, False
+            )
+            self._f_conv = Convolution.from_coefficients(
+                lambda X, Y: line_differential_coefficients(X, self.dX), self.dX, 1.0, shape,
+                False,
+            )
+            self.f_near = line_differential_coefficients(np.arange(near + 1) * self.dX, self.dX)
+        else:
+            self._d_conv = Convolution.from_coefficients(
+                lambda X, Y: love_integral(X, Y, self.dX, self.dY), self.dX, self.dY, shape, False
+            )
+            self._f_conv = Convolution.from_coefficients(
+                lambda X, Y: differential_coefficients(X, Y, self.dX, self.dY),
+                self.dX, self.dY, shape, False,
+            )
+            self.f_near = differential_coefficients(
+                np.arange(near + 1) * self.dX, 0.0, self.dX, self.dY
+            )
+        Xg, Yg = np.meshgrid(self.X, self.Y, indexing="ij")
+        ry_ratio = 0.0 if self.line else problem.rx / problem.ry
+        self.geometry = 0.5 * Xg**2 + 0.5 * ry_ratio * Yg**2
+        self.roughness = np.zeros(shape)  # phi / (a^2/Rx); zero for smooth surfaces
+        self.P = np.zeros(shape)
+        self.H = np.zeros(shape)
+        self.H0 = 0.0
+        self.kind = np.zeros(shape, dtype=np.int8)
+        self.theta = 1.0
+        self.mass = 0.0
+        self.rhs_t = np.zeros(shape)
+        self.efar = np.zeros(shape)
+        self.refreshes = 0
+        self.edge = np.zeros(shape, dtype=bool)
+        self.edge[[0, -1], :] = True
+        if not self.line:
+            self.edge[:, [0, -1]] = True
+
+    @property
+    def cell_area(self) -> float:
+        """Dimensionless cell area dX dY (dX for a line contact)."""
+        return self.dX if self.line else self.dX * self.dY
+
+    def load(self) -> float:
+        """Dimensionless load sum P dX dY (compare with ``problem.load_integral``)."""
+        return float(self.P.sum() * self.cell_area)
+
+    def rigid_film(self, W) -> np.ndarray:
+        """H = H0 + geometry + phi + c D*P for the deflection sum ``W = D*P``."""
+        return self.H0 + self.geometry + self.roughness + self.c * W
+
+    def laplacian_roughness(self) -> np.ndarray:
+        """5-point Laplacian of the nodal roughness array (zero on the edges)."""
+        r = self.roughness
+        out = np.zeros_like(r)
+        out[1:-1] = (r[2:] - 2 * r[1:-1] + r[:-2]) / self.dX**2
+        if not self.line:
+            out[:, 1:-1] += (r[:, 2:] - 2 * r[:, 1:-1] + r[:, :-2]) / self.dY**2
+            out[:, [0, -1]] = 0.0
+        out[[0, -1]] = 0.0
+        return out
+
+    def refresh(self):
+        """FFT refresh of the far-field sum ``efar`` and of the Dirichlet edge films.
+
+        ``efar = Delta_h phi + curvature + c (S - sum_{|k|<=K} f_k0 P_{i+k})`` with
+        ``S = f * P`` the full sum at the current pressure; the edges get
+        ``H = H0 + geometry + phi + c D * P`` (EHL-NOTES sec. 2).
+        """
+        spectrum = self._f_conv.spectrum_of(self.P)
+        S = self._f_conv.from_spectrum(spectrum)
+        W = self._d_conv(self.P)
+        near = self.f_near[0] * self.P
+        for k in range(1, self.f_near.size):
+            near[k:] += self.f_near[k] * self.P[:-k]
+            near[:-k] += self.f_near[k] * self.P[k:]
+        self.efar = self.laplacian_roughness() + self.problem.curvature + self.c * (S - near)
+        self.H[self.edge] = self.rigid_film(W)[self.edge]
+        self.refreshes += 1
+
+    def film_from_pressure(self) -> np.ndarray:
+        """The integral film H0 + geometry + phi + c D*P (for checks and initial guesses)."""
+        return self.rigid_film(self._d_conv(self.P))
+
+    def shift_separation(self, delta: float):
+        """Add ``delta`` to H0 and to the film at every node (Delta_h const = 0)."""
+        self.H0 += delta
+        self.H += delta
+
+    def flow_coefficients(self):
+        """Dimensionless (eps_x, eps_y, rho_bar) at the current (P, H), lagged in a sweep."""
+        prob = self.problem
+        lub = prob.lubricant
+        p = self.P * prob.p_hertz
+        h = np.maximum(self.H, 0.0) * prob.film_scale
+        eta = lub.eta(p)
+        rho = lub.density_ratio(p)
+        sx, sy = eyring_flow_factors(h, eta, rho, prob.sliding_speed, lub.eyring_stress)
+        scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
+        return sx * scale, sy * scale, rho
+
+    def sweep(self, method: str):
+        """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|."""
+        ex, ey, rho = self.flow_coefficients()
+        if method == "point":
+            return point_sweep(
+                self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
+                self.theta, self.mass, -self.c * self.f_near[0],
+            )
+        return line_sweep(
+            self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
+            self.theta, self.mass, self.c, self.f_near, self.kind,
+        )
+
+    def hertz_start(self, film: float):
+        """Hertzian pressure and the film it deflects to, with central film ``film`` (dimless)."""
+        prob = self.problem
+        Xg, Yg = np.meshgrid(self.X, self.Y, indexing="ij")
+        r2 = Xg**2 if self.line else Xg**2 + (Yg * prob.a / prob.b) ** 2
+        self.P = np.sqrt(np.clip(1.0 - r2, 0.0, None))
+        self.P[self.edge] = 0.0
+        self.H0 = 0.0
+        H = self.film_from_pressure()
+        self.H0 = film - _at_centre(self, H)
+        self.H = H + self.H0
+        self.kind[:] = 0
+        self.kind[self.P <= 0] = 1
+
+    def interpolate_from(self, coarse: EHLState):
+        """Initial guess by (bi)linear interpolation of a coarser solution."""
+        self.H0 = coarse.H0
+        if self.line:
+            self.P = np.interp(self.X, coarse.X, coarse.P[:, 0])[:, None]
+            self.H = np.interp(self.X, coarse.X, coarse.H[:, 0])[:, None]
+        else:
+            self.P = _bilinear(coarse.X, coarse.Y, coarse.P, self.X, self.Y)
+            self.H = _bilinear(coarse.X, coarse.Y, coarse.H, self.X, self.Y)
+        self.P[self.edge] = 0.0
+        self.kind[:] = 0
+        self.kind[self.P <= 0] = 1
+
+
+def _bilinear(xc, yc, field, x, y):
+    """Bilinear interpolation of ``field[ix, iy]`` from grid (xc, yc) onto (x, y)."""
+    tmp = np.array([np.interp(x, xc, field[:, j]) for j in range(field.shape[1])]).T
+    return np.array([np.interp(y, yc, tmp[i]) for i in range(tmp.shape[0])])
+
+
+def _at_centre(state: EHLState, field) -> float:
+    """Value of a nodal field at the Hertz centre (0, 0), bilinear."""
+    row = np.array([np.interp(0.0, state.X, field[:, j]) for j in range(field.shape[1])])
+    return float(row[0]) if state.line else float(np.interp(0.0, state.Y, row))
+
+
+def _centre_line(state: EHLState, field) -> np.ndarray:
+    """A nodal field along y = 0 (linear interpolation between rows)."""
+    if state.line:
+        return field[:, 0]
+    return np.array([np.interp(0.0, state.Y, field[i]) for i in range(field.shape[0])])
+
+
+@dataclass(frozen=True)
+class SteadyResult:
+    """Steady EHL solution, SI units.
+
+    Attributes
+    ----------
+    x, y : ndarray
+        Node coordinates, m (``y = [0.]`` for a line contact).
+    pressure, film : ndarray
+        p (Pa) and h (m), indexed ``[ix, iy]``.
+    central_film : float
+        h at the Hertz centre (0, 0), m.
+    minimum_film_centreline : float
+        Minimum of h along y = 0, m.
+    minimum_film : float
+        Minimum of h over the whole domain (the side lobes of a point contact), m.
+    max_pressure : float
+        Pa.
+    load_error : float
+        (computed load - applied load) / applied load.
+    friction_coefficient : float
+        Traction on surface 1 over load: Eyring mean shear plus the Poiseuille term, with a
+        boundary-friction coefficient on dry nodes (:func:`asperity.ehl.friction_coefficient`).
+    separation : float
+        Rigid separation h0 (may be negative), m.
+    sweeps, fft_refreshes : int
+        Relaxation sweeps and far-field FFT refreshes on the finest grid; ``total_sweeps``
+        over all grids.
+    converged : bool
+        Whether pressure change, film change and load error all fell below the tolerance.
+    residual : float
+        Final convergence measure (the largest of the three, relative).
+    history : ndarray
+        Rows (sweep, max |dP|, max |dH|/H_c, load error) at every refresh on the finest grid.
+    levels : tuple
+        Node counts (nx, ny) of the grids solved, coarse to fine.
+    method : str
+        Relaxation used (``"line"`` or ``"point"``).
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    pressure: np.ndarray
+    film: np.ndarray
+    central_film: float
+    minimum_film: float
+    minimum_film_centreline: float
+    max_pressure: float
+    load_error: float
+    friction_coefficient: float
+    separation: float
+    sweeps: int
+    total_sweeps: int
+    fft_refreshes: int
+    converged: bool
+    residual: float
+    history: np.ndarray
+    levels: tuple
+    method: str
+
+    def centre_line(self):
+        """(x, p, h) along y = 0 (interpolated between rows), SI."""
+        if self.y.size == 1:
+            return self.x, self.pressure[:, 0], self.film[:, 0]
+        p = np.array([np.interp(0.0, self.y, row) for row in self.pressure])
+        h = np.array([np.interp(0.0, self.y, row) for row in self.film])
+        return self.x, p, h
+
+
+def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0):
+    """Relax one grid to convergence; return (converged, residual, sweeps, history)."""
+    target = state.problem.load_integral
+    history = []
+    residual = np.inf
+    sweeps = 0
+    while sweeps < max_sweeps:
+        state.refresh()
+        for _ in range(refresh):
+            dp, dh = state.sweep(method)
+            sweeps += 1
+            load_err = (state.load() - target) / target
+            state.shift_separation(gain * load_err)
+        hc = max(_at_centre(state, state.H), 1e-12)
+        residual = max(dp, dh / hc, abs(load_err))
+        history.append((sweeps, dp, dh / hc, load_err))
+        if callback is not None:
+            callback(sweep_offset + sweeps, residual)
+        if not np.all(np.isfinite(state.P)) or not np.all(np.isfinite(state.H)):
+            return False, np.inf, sweeps, history
+        if residual < tol:
+            state.refresh()
+            return True, residual, sweeps, history
+    state.refresh()
+    return False, residual, sweeps, history
+
+
+def solve_steady(
+    problem,
+    *,
+    nx: int = 129,
+    ny: int = 65,
+    domain=None,
+    method: str = "line",
+    levels: int = 1,
+    near: int = 4,
+    tol: float = 1e-5,
+    max_sweeps: int = 5000,
+    refresh: int = 10,
+    load_gain: float = 0.05,
+    initial_film: float | None = None,
+    boundary_friction: float = 0.1,
+    callback=None,
+) -> SteadyResult:
+    """Steady smooth EHL solution of a point or line contact.
+
+    Parameters
+    ----------
+    problem : PointContact or LineContact
+        The contact (SI).
+    nx, ny : int
+        Nodes along x and y on the finest grid (``ny`` is ignored for a line contact); the
+        seed's mesh is 801 x 201 on its domain.
+    domain : ((x0, x1), (y0, y1)), optional
+        In m; default ``problem.default_domain()`` (-2.5a..1.5a, -2b..2b). Must hold the
+        Hertz contact.
+    method : {"line", "point"}
+        x-line relaxation (default) or the seed's point update (Eq. 7).
+    levels : int
+        Grid sequencing: solve first on ``levels - 1`` grids coarsened by 2 in each direction
+        (node counts ``(n - 1)/2 + 1``) and interpolate each solution as the next start.
+    near : int
+        Number of x-neighbour pressure coefficients kept implicit by the line relaxation.
+    tol : float
+        Convergence when max |dP| per sweep, max |dH| / H_c and the relative load error are
+        all below ``tol`` at a far-field refresh.
+    max_sweeps : int
+        Sweep limit per grid; a solve that reaches it returns ``converged=False``.
+    refresh : int
+        Sweeps between FFT refreshes of the far field and the edge films.
+    load_gain : float
+        Separation shift per sweep per unit relative load error (dimensionless film units).
+    initial_film : float, optional
+        Central film of the Hertzian start, m; default Nijenbanning's (point) or Moes' (line)
+        Newtonian central film.
+    boundary_friction : float
+        Friction coefficient assumed where h = 0 (dry nodes).
+    callback : callable, optional
+        ``callback(iteration, residual)`` after every refresh.
+
+    Returns
+    -------
+    SteadyResult
+    """
+    if not isinstance(problem, PointContact | LineContact):
+        raise InputError("problem", "a PointContact or LineContact")
+    if method not in ("line", "point"):
+        raise InputError("method", '"line" or "point"', method)
+    tol = check_positive("tol", tol)
+    load_gain = check_positive("load_gain", load_gain)
+    for field, value in (("levels", levels), ("max_sweeps", max_sweeps), ("refresh", refresh)):
+        if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
+            raise InputError(field, "an integer >= 1", value)
+    if isinstance(near, bool) or not isinstance(near, int | np.integer) or near < 0:
+        raise InputError("near", "an integer >= 0", near)
+    line = isinstance(problem, LineContact)
+    if line:
+        ny = 1
+    grids = [(nx, ny)]
+    for _ in range(levels - 1):
+        cx, cy = grids[-1]
+        if (cx - 1) % 2 or (not line and (cy - 1) % 2):
+            raise InputError("nx, ny", f"node counts 2^k m + 1 for {levels} levels", (nx, ny))
+        grids.append(((cx - 1) // 2 + 1, cy if line else (cy - 1) // 2 + 1))
+    grids.reverse()
+    if initial_film is None:
+        h_start = _film_estimate(problem) / problem.film_scale
+    else:
+        h_start = check_positive("initial_film", initial_film) / problem.film_scale
+    k_near = near if method == "line" else 0
+    state = None
+    total = 0
+    for gx, gy in grids:
+        x, y = problem.grid(gx, gy, domain)
+        new = EHLState(problem, x, y, k_near)
+        if state is None:
+            new.hertz_start(h_start)
+        else:
+            new.interpolate_from(state)
+        state = new
+        converged, residual, sweeps, history = _relax(
+            state, method, tol=tol, max_sweeps=max_sweeps, refresh=refresh, gain=load_gain,
+            callback=callback, sweep_offset=total,
+        )
+        total += sweeps
+    return _result(state, converged, residual, sweeps, total, history, grids, method,
+                   boundary_friction)
+
+
+def _film_estimate(problem) -> float:
+    """Central film of the Hertzian start, m: Moes (line) or Nijenbanning (point).
+
+    Nijenbanning's fit covers ``ry >= rx``; for ``ry < rx`` it is evaluated at ``ry = rx``,
+    which is good enough for a start value.
+    """
+    lub = problem.lubricant
+    args = (problem.mean_speed, lub.viscosity, lub.pressure_viscosity, problem.reduced_modulus)
+    if isinstance(problem, LineContact):
+        return formulas.moes_line(problem.load_per_length, problem.radius, *args).central
+    ry = max(problem.ry, problem.rx)
+    return formulas.nijenbanning_point(problem.load, problem.rx, ry, *args).central
+
+
+def _result(state, converged, residual, sweeps, total, history, grids, method, mu_b):
+    prob = state.problem
+    p = state.P * prob.p_hertz
+    h = state.H * prob.film_scale
+    hc = _at_centre(state, h)
+    centre = _centre_line(state, h)
+    load_err = (state.load() - prob.load_integral) / prob.load_integral
+    mu = friction_coefficient(
+        state.x, p, np.maximum(h, 0.0), prob.lubricant.eta(p), prob.sliding_speed,
+        prob.lubricant.eyring_stress, boundary_friction=mu_b,
+    )
+    return SteadyResult(
+        x=state.x, y=state.y, pressure=p, film=h, central_film=hc,
+        minimum_film=float(h.min()), minimum_film_centreline=float(centre.min()),
+        max_pressure=float(p.max()), load_error=float(load_err), friction_coefficient=mu,
+        separation=state.H0 * prob.film_scale, sweeps=sweeps, total_sweeps=total,
+        fft_refreshes=state.refreshes, converged=bool(converged), residual=float(residual),
+        history=np.array(history), levels=tuple(grids), method=method,
+    )
