@@ -60,16 +60,19 @@ def _unpack(heights, x, y, periodic):
 def residual_heights(heights, periodic: bool = False) -> np.ndarray:
     """Heights minus the least-squares mean line (1-D) or plane (2-D); minus the mean if periodic.
 
-    The fit uses grid indices, which on a uniform grid is the same fit as on coordinates.
+    On a full uniform grid the centred index coordinates are orthogonal to each other and to
+    the constant, so the least-squares coefficients are plain projections onto them.
     """
     z = np.asarray(heights, dtype=float)
+    r = z - z.mean()
     if periodic:
-        return z - z.mean()
-    grids = np.meshgrid(*[np.arange(n, dtype=float) - 0.5 * (n - 1) for n in z.shape],
-                        indexing="ij")
-    basis = np.stack([np.ones(z.size)] + [g.ravel() for g in grids], axis=1)
-    coef, *_ = np.linalg.lstsq(basis, z.ravel(), rcond=None)
-    return z - (basis @ coef).reshape(z.shape)
+        return r
+    for axis, n in enumerate(z.shape):
+        shape = [1] * z.ndim
+        shape[axis] = n
+        t = (np.arange(n, dtype=float) - 0.5 * (n - 1)).reshape(shape)
+        r = r - t * (np.sum(z * t) / (np.sum(t * t) * z.size / n))
+    return r
 
 
 def _forward_differences(r, h, axis, periodic):
@@ -78,9 +81,9 @@ def _forward_differences(r, h, axis, periodic):
     return np.diff(r, axis=axis) / h
 
 
-def _amplitude(r, prefix: str) -> dict:
+def _amplitude(r, prefix: str, scale: float) -> dict:
     rq = float(np.sqrt(np.mean(r**2)))
-    if rq == 0.0:
+    if rq <= 1e-13 * scale:
         raise InputError("heights", "a surface that is not flat after removing the mean "
                                     "line/plane (Rq > 0)")
     return {
@@ -116,14 +119,15 @@ def roughness_parameters(heights, x=None, y=None, *, periodic=False) -> dict:
         within each (ISO 4287 with the evaluation length = 5 sampling lengths), or Rt when a
         sampling length would hold fewer than 10 points.
         Areas: ``Sa, Sq, Ssk, Sku, Sp, Sv, Sz`` (Sz = Sp + Sv) and with ``x``, ``y`` also
-        ``Sdq`` (rms gradient, sqrt(<dz/dx^2> + <dz/dy^2>)) and ``Sdr`` (developed interfacial
-        area ratio, as a fraction, from the gradient averaged over each grid cell). Lengths in
-        m, ratios dimensionless.
+        ``Sdq`` (rms gradient sqrt(<dz/dx^2 + dz/dy^2>) over the nodes where both forward
+        differences exist, as SurfaceTopography's ``rms_gradient``) and ``Sdr`` (developed
+        interfacial area ratio, as a fraction, from the gradient averaged over each grid cell).
+        Lengths in m, ratios dimensionless.
     """
     z, x, y, periodic = _unpack(heights, x, y, periodic)
     r = residual_heights(z, periodic)
     if r.ndim == 1:
-        out = _amplitude(r, "R")
+        out = _amplitude(r, "R", np.max(np.abs(z)))
         out["Rt"] = out["Rp"] + out["Rv"]
         if r.size >= N_SAMPLING * MIN_POINTS_PER_SAMPLING:
             out["Rz"] = float(np.mean([s.max() - s.min() for s in np.array_split(r, N_SAMPLING)]))
@@ -133,12 +137,14 @@ def roughness_parameters(heights, x=None, y=None, *, periodic=False) -> dict:
             dz = _forward_differences(r, grid_spacing(x, "x"), 0, periodic)
             out["Rdq"] = float(np.sqrt(np.mean(dz**2)))
         return out
-    out = _amplitude(r, "S")
+    out = _amplitude(r, "S", np.max(np.abs(z)))
     out["Sz"] = out["Sp"] + out["Sv"]
     if x is not None:
         gx = _forward_differences(r, grid_spacing(x, "x"), 0, periodic)
         gy = _forward_differences(r, grid_spacing(y, "y"), 1, periodic)
-        out["Sdq"] = float(np.sqrt(np.mean(gx**2) + np.mean(gy**2)))
+        # Gradient vectors at the nodes where both forward differences exist.
+        node_x, node_y = (gx, gy) if periodic else (gx[:, :-1], gy[:-1, :])
+        out["Sdq"] = float(np.sqrt(np.mean(node_x**2 + node_y**2)))
         # Gradient per grid cell: mean of the differences on its two opposite edges.
         if periodic:
             cx = 0.5 * (gx + np.roll(gx, -1, axis=1))
