@@ -83,21 +83,21 @@ def _axis_values(axis: dict, index: int) -> list:
 
 
 def load_study(path: str | Path) -> Study:
-    """Read and validate a study file; every case is validated before anything runs."""
+    """Read and validate a study file (or a built-in study by name); every case is validated
+    before anything runs."""
     from .cases import load_case, parse_toml
-    from .examples import example_text
+    from .examples import example_text, study_text
 
     path = Path(path)
-    if not path.is_file():
-        raise InputError("study", "an existing TOML file", str(path))
-    spec = parse_toml(path.read_text(encoding="utf-8"), str(path))
+    text = path.read_text(encoding="utf-8") if path.is_file() else study_text(str(path))
+    spec = parse_toml(text, str(path))
     unknown = set(spec) - {"title", "base", "mode", "axis", "description"}
     if unknown:
         raise InputError(sorted(unknown)[0], "", problem="unknown key (check the spelling)")
     base = spec.get("base")
     if not isinstance(base, str):
         raise InputError("base", "a built-in example name or a case file path", base)
-    base_path = (path.parent / base)
+    base_path = path.parent / base
     text = base_path.read_text(encoding="utf-8") if base_path.is_file() else example_text(base)
     base_case = parse_toml(text, base)
     mode = spec.get("mode", "cross")

@@ -56,10 +56,11 @@ def load_case(source: str | Path | dict) -> Any:
         if not path.is_file():
             raise InputError("case", "an existing TOML file", str(path))
         data = parse_toml(path.read_text(encoding="utf-8"), str(path))
+        base_dir = str(path.resolve().parent)
     elif isinstance(source, str):
-        data = parse_toml(source)
+        data, base_dir = parse_toml(source), None
     elif isinstance(source, dict):
-        data = source
+        data, base_dir = source, None
     else:
         raise InputError("case", "a TOML file path, TOML text or a dict", type(source).__name__)
     analysis = data.get("analysis")
@@ -67,6 +68,6 @@ def load_case(source: str | Path | dict) -> Any:
         raise InputError("analysis", "one of " + ", ".join(f'"{a}"' for a in ANALYSES),
                          analysis)
     try:
-        return ANALYSES[analysis].model_validate(data)
+        return ANALYSES[analysis].model_validate(data, context={"base_dir": base_dir})
     except ValidationError as exc:
         raise first_error(exc) from None

@@ -8,6 +8,7 @@ from pydantic import model_validator
 
 from .bodies import GridSpec, MaterialSpec
 from .fields import CaseModel, Quantity
+from .roughness import RoughnessSpec
 
 __all__ = ["NormalCase", "GeometrySpec", "NormalLoading"]
 
@@ -66,4 +67,5 @@ class NormalCase(CaseModel):
     geometry: GeometrySpec
     loading: NormalLoading
     grid: GridSpec
+    roughness: RoughnessSpec | None = None
     tolerance: Quantity("dimensionless", gt=0, lt=1) = 1e-8

@@ -92,7 +92,7 @@ def _print_summary(summary: dict) -> None:
 @guarded
 def examples():
     """List the built-in examples."""
-    from ..examples import DEFAULT_EXAMPLE, list_examples
+    from ..examples import DEFAULT_EXAMPLE, list_examples, list_studies
 
     table = Table(title="asperity examples (asperity example NAME prints one)")
     for col in ("name", "analysis", "description", "source"):
@@ -102,6 +102,12 @@ def examples():
         name += " [long]" if ex.long_running else ""
         table.add_row(name, ex.analysis, ex.description or ex.title, ex.source)
     console.print(table)
+    studies = Table(title="parameter studies (asperity sweep NAME)")
+    studies.add_column("name")
+    studies.add_column("description", overflow="fold")
+    for name, description in list_studies():
+        studies.add_row(name, description)
+    console.print(studies)
 
 
 @app.command()
@@ -150,7 +156,8 @@ def validate(
 @app.command()
 @guarded
 def sweep(
-    study: Annotated[Path, typer.Argument(help="Study file (TOML): base case + axes.")],
+    study: Annotated[Path, typer.Argument(help="Study file (TOML): base case + axes, or the "
+                                          "name of a built-in study.")],
     out: Annotated[Path, typer.Option("--out", "-o", help="Output folder.")] = Path(
         "asperity-sweep"),
     scheduler: Annotated[str | None, typer.Option(
@@ -165,6 +172,9 @@ def sweep(
     from ..sweep import load_study, run_study
     from .progress import progress_bar
 
+    import logging
+
+    logging.getLogger("distributed").setLevel(logging.ERROR)
     spec = load_study(study)
     console.print(f"[bold]{spec.title}[/bold]: {len(spec.cases)} cases ({spec.mode})")
     with progress_bar(console, disable=quiet) as progress:
@@ -182,6 +192,16 @@ def sweep(
                     ds = run_study(spec, out, client=client, progress=progress)
     failed = int((ds["state"] == "failed").sum())
     console.print(f"wrote {out / 'study.nc'}: {len(spec.cases) - failed} done, {failed} failed")
+
+
+def _mount_sub_apps() -> None:
+    from .surface import surface_app
+
+    app.add_typer(surface_app, name="surface",
+                  help="Roughness of measured or generated surfaces: stats, generate, plot.")
+
+
+_mount_sub_apps()
 
 
 def main() -> None:

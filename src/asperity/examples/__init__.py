@@ -11,7 +11,8 @@ from importlib import resources
 
 from ..errors import InputError
 
-__all__ = ["DEFAULT_EXAMPLE", "Example", "list_examples", "example_text"]
+__all__ = ["DEFAULT_EXAMPLE", "Example", "example_text", "list_examples", "list_studies",
+           "study_text"]
 
 #: What ``asperity run`` runs when no case is given.
 DEFAULT_EXAMPLE = "gear-dry-hertz"
@@ -54,3 +55,26 @@ def example_text(name: str) -> str:
             return path.read_text(encoding="utf-8")
     names = ", ".join(p.name.removesuffix(".toml") for p in _files())
     raise InputError("example", f"one of: {names}", name)
+
+
+def _study_files():
+    folder = resources.files(__name__) / "studies"
+    return sorted((p for p in folder.iterdir() if p.name.endswith(".toml")), key=lambda p: p.name)
+
+
+def list_studies() -> list[tuple[str, str]]:
+    """Built-in parameter studies: (name, description) pairs."""
+    from ..cases import parse_toml
+
+    return [(p.name.removesuffix(".toml"),
+             parse_toml(p.read_text(encoding="utf-8"), p.name).get("description", ""))
+            for p in _study_files()]
+
+
+def study_text(name: str) -> str:
+    """The TOML text of a built-in study."""
+    for path in _study_files():
+        if path.name == f"{name}.toml":
+            return path.read_text(encoding="utf-8")
+    names = ", ".join(p.name.removesuffix(".toml") for p in _study_files())
+    raise InputError("study", f"a study file or one of: {names}", name)

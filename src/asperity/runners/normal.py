@@ -6,17 +6,21 @@ import numpy as np
 import xarray as xr
 
 from ..contact import hertz_point, solve_normal
+from ..cases.roughness import surface_heights
 from ..results import Comparison, Outcome, variable
 
 __all__ = ["run"]
 
 
 def _undeformed_gap(case, x, y):
+    """Ellipsoid gap x^2/(2 rx) + y^2/(2 ry) minus the roughness heights (m)."""
     rx, ry = case.geometry.radii()
     X, Y = np.meshgrid(x, y, indexing="ij")
     gap = np.zeros_like(X)
     if np.isfinite(rx):
         gap += X**2 / (2 * rx) + Y**2 / (2 * ry)
+    if case.roughness is not None:
+        gap -= surface_heights(case.roughness, x, y)
     return gap
 
 
@@ -64,7 +68,7 @@ def run(case, progress=None) -> Outcome:
     comparisons = []
     reference_line = None
     rx, ry = case.geometry.radii()
-    if np.isfinite(rx):
+    if np.isfinite(rx) and case.roughness is None:
         h = hertz_point(res.load, rx, ry, body1, body2)
         j = _centre_row(y)
         i = _centre_row(x)

@@ -1,0 +1,123 @@
+"""Case-file table ``[roughness]``: a generated, built-in or measured rough surface.
+
+The surface is evaluated on the case's grid (cell centres) and its heights are subtracted from
+the undeformed gap (peaks close the gap). Generated surfaces are periodic over the grid and
+reproducible from ``seed``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Literal
+
+import numpy as np
+from pydantic import Field, ValidationInfo, field_validator, model_validator
+
+from .fields import CaseModel, Quantity
+
+__all__ = ["RoughnessSpec", "WavinessSpec", "surface_heights"]
+
+
+class WavinessSpec(CaseModel):
+    """A sinusoid of ``wavelength`` and ``amplitude`` varying along ``direction``."""
+
+    wavelength: Quantity("length", gt=0)
+    amplitude: Quantity("length", ge=0)
+    direction: Literal["x", "y"] = "y"
+
+
+class RoughnessSpec(CaseModel):
+    """Which surface: ``kind`` and its parameters (unused ones must be left out).
+
+    - ``gaussian``: ``rms``, ``correlation_length`` (or ``correlation_length_y`` too), ``acf``
+    - ``self-affine``: ``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
+      ``short_cutoff``
+    - ``ground``: transverse-ground profile along x with ``ra``, ``correlation_length``,
+      ``run_in`` (0 fresh .. <1 strongly run-in)
+    - ``builtin``: ``profile`` "A", "B" or "C" (synthetic stand-ins of the mixed-EHL seed)
+    - ``file``: ``path`` (text, npy, npz, or an instrument format), ``spacing`` if the file has
+      no coordinates
+    All kinds take ``scale`` (multiplies the heights), ``seed`` and an optional ``waviness``.
+    """
+
+    kind: Literal["gaussian", "self-affine", "ground", "builtin", "file"]
+    rms: Quantity("length", gt=0) | None = None
+    rms_slope: Quantity("dimensionless", gt=0) | None = None
+    ra: Quantity("length", gt=0) | None = None
+    correlation_length: Quantity("length", gt=0) | None = None
+    correlation_length_y: Quantity("length", gt=0) | None = None
+    acf: Literal["gaussian", "exponential"] = "gaussian"
+    hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
+    rolloff_wavelength: Quantity("length", gt=0) | None = None
+    short_cutoff: Quantity("length", gt=0) | None = None
+    run_in: Annotated[float, Field(ge=0, lt=1)] = 0.0
+    profile: Literal["A", "B", "C"] | None = None
+    path: str | None = None
+    spacing: Quantity("length", gt=0) | None = None
+    scale: Annotated[float, Field(ge=0, le=1e3)] = 1.0
+    seed: Annotated[int, Field(ge=0)] = 0
+    waviness: WavinessSpec | None = None
+
+    @field_validator("path")
+    @classmethod
+    def _relative_to_case(cls, value, info: ValidationInfo):
+        """A relative path is relative to the case file's folder."""
+        base = (info.context or {}).get("base_dir")
+        if value is None or base is None or Path(value).is_absolute():
+            return value
+        return str(Path(base) / value)
+
+    @model_validator(mode="after")
+    def _required(self):
+        need = {"gaussian": ("rms", "correlation_length"), "self-affine": ("hurst",),
+                "ground": ("ra",), "builtin": ("profile",), "file": ("path",)}[self.kind]
+        for key in need:
+            if getattr(self, key) is None:
+                raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
+        if self.kind == "self-affine" and (self.rms is None) == (self.rms_slope is None):
+            raise ValueError("expected exactly one of rms or rms_slope for a self-affine surface")
+        return self
+
+
+def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
+    """Heights (m) of the specified surface at the cell centres ``x`` by ``y``."""
+    from .. import surfaces as s
+
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    dx = x[1] - x[0]
+    dy = y[1] - y[0] if len(y) > 1 else dx
+    size, spacing = (len(x) * dx, len(y) * dy), (dx, dy)
+    if spec.kind == "gaussian":
+        ell = (spec.correlation_length, spec.correlation_length_y or spec.correlation_length)
+        surf = s.gaussian_topography(size, spacing, spec.rms, ell, acf=spec.acf, seed=spec.seed)
+    elif spec.kind == "self-affine":
+        surf = s.self_affine_topography(size, spacing, spec.hurst, rms_height=spec.rms,
+                                        rms_slope=spec.rms_slope,
+                                        rolloff_wavelength=spec.rolloff_wavelength,
+                                        short_cutoff=spec.short_cutoff, seed=spec.seed)
+    elif spec.kind == "ground":
+        kwargs = {} if spec.correlation_length is None else {
+            "correlation_length": spec.correlation_length}
+        surf = s.transverse_ground_profile(size[0], dx, spec.ra, run_in=spec.run_in,
+                                           seed=spec.seed, **kwargs)
+    elif spec.kind == "builtin":
+        surf = s.builtin_profile(spec.profile, length=size[0] + dx, spacing=min(dx, 0.5e-6))
+    else:
+        surf = s.read_surface(spec.path, spec.spacing)
+    if spec.waviness is not None:
+        w = spec.waviness
+        if isinstance(surf, s.Profile) and w.direction == "y":
+            surf = surf.extrude(y - y[0] + dy / 2)
+        surf = s.add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
+    z = _on_grid(surf, x - x[0] + dx / 2, y - y[0] + dy / 2, s)
+    return spec.scale * z
+
+
+def _on_grid(surf, xs, ys, s) -> np.ndarray:
+    """Heights on the grid, sampled by spline unless the surface already has its shape."""
+    if isinstance(surf, s.Profile):
+        line = surf.z if surf.z.shape == xs.shape else surf.sample(xs)
+        return np.repeat(line[:, None], len(ys), axis=1)
+    if surf.z.shape == (len(xs), len(ys)):
+        return np.array(surf.z)
+    return surf.sample(xs, ys)

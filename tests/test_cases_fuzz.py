@@ -1,0 +1,87 @@
+"""Hypothesis-generated case files never end in a traceback: a valid run or one clear line."""
+
+import copy
+import math
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from asperity.cases import load_case, parse_toml
+from asperity.errors import InputError
+from asperity.examples import example_text, list_examples
+from asperity.runners import run_case
+
+UNITS = ["", " N", " lbf", " mm", " in", " psi", " GPa", " m/s", " 1/GPa", " kg", " furlong",
+         " Pa s", " um", " %", " deg", " s"]
+
+values = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(min_value=-10**6, max_value=10**6),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.text(max_size=12),
+    st.builds(lambda v, u: f"{v:g}{u}", st.floats(-1e9, 1e9), st.sampled_from(UNITS)),
+    st.lists(st.integers(), max_size=3),
+    st.dictionaries(st.text(max_size=5), st.integers(), max_size=2),
+)
+
+
+def _paths(data, prefix=()):
+    for key, value in data.items():
+        yield (*prefix, key)
+        if isinstance(value, dict):
+            yield from _paths(value, (*prefix, key))
+
+
+@st.composite
+def mutated_cases(draw):
+    name = draw(st.sampled_from([e.name for e in list_examples() if not e.long_running]))
+    case = copy.deepcopy(parse_toml(example_text(name)))
+    for _ in range(draw(st.integers(1, 3))):
+        paths = list(_paths(case))
+        path = draw(st.sampled_from(paths))
+        node = case
+        for key in path[:-1]:
+            node = node[key]
+        action = draw(st.sampled_from(["set", "delete", "add"]))
+        if action == "delete":
+            node.pop(path[-1], None)
+        elif action == "set":
+            value = draw(values)
+            if value is None:
+                node.pop(path[-1], None)
+            else:
+                node[path[-1]] = value
+        else:
+            new = draw(st.text(min_size=1, max_size=8))
+            value = draw(values)
+            if value is not None:
+                node[new] = value
+    return case
+
+
+def _small(case) -> bool:
+    grid = getattr(case, "grid", None)
+    return grid is None or grid.nx * grid.ny <= 48 * 48
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mutated_cases())
+def test_mutated_case_is_valid_or_one_clear_line(data):
+    try:
+        case = load_case(data)
+    except InputError as exc:
+        message = str(exc)
+        assert "\n" not in message and ": " in message
+        field = message.split(": ")[0]
+        assert field and "Traceback" not in message
+        return
+    if _small(case):
+        try:
+            outcome = run_case(case)
+        except InputError as exc:
+            assert "\n" not in str(exc)
+            return
+        for key, value in outcome.summary.items():
+            if isinstance(value, float) and key.endswith(("_pa", "_m", "_m2", "_n")):
+                assert math.isfinite(value) or not outcome.converged, key
