@@ -64,7 +64,7 @@ def load_case(source: str | Path | dict) -> Any:
     else:
         raise InputError("case", "a TOML file path, TOML text or a dict", type(source).__name__)
     analysis = data.get("analysis")
-    if analysis not in ANALYSES:
+    if not isinstance(analysis, str) or analysis not in ANALYSES:
         raise InputError("analysis", "one of " + ", ".join(f'"{a}"' for a in ANALYSES),
                          analysis)
     try:
