@@ -142,12 +142,18 @@ def _feed_mark_envelope(x, first_pass, feed, radius, offsets):
     return z
 
 
+def _first_pass(feed, radius):
+    """Axial position of the first pass: a multiple of the feed, one nose radius before x = 0."""
+    return -math.ceil(radius / feed) * feed
+
+
 def turned_profile(feed, nose_radius, length, spacing, *, end_relief_angle=None) -> Profile:
     """Kinematic feed-mark profile of turning: circular arcs of radius r every feed f.
 
     Its peak-to-valley height is ``r - sqrt(r^2 - f^2/4)``, which eq. (4.1) approximates by
-    ``f^2/(8 r)`` (relative error about f^2 / (16 r^2)). Heights have zero mean; the profile is
-    periodic when its length is a whole number of feeds.
+    ``f^2/(8 r)`` (relative error about f^2 / (16 r^2)). The nose centres (valleys) lie at the
+    multiples of the feed, x = k f. Heights have zero mean; the profile is periodic when its
+    length is a whole number of feeds.
 
     Parameters
     ----------
@@ -165,8 +171,9 @@ def turned_profile(feed, nose_radius, length, spacing, *, end_relief_angle=None)
     if n < 4:
         raise InputError("length", "at least 4 grid spacings", length)
     x = cell_centres(n, spacing)
-    passes = int(math.ceil((n * spacing + 2 * nose_radius) / feed)) + 2
-    z = _feed_mark_envelope(x, -nose_radius, feed, nose_radius, np.zeros(passes))
+    first = _first_pass(feed, nose_radius)
+    passes = int(math.ceil((n * spacing - 2 * first) / feed)) + 2
+    z = _feed_mark_envelope(x, first, feed, nose_radius, np.zeros(passes))
     turns = n * spacing / feed
     return Profile(x, z - z.mean(), periodic=abs(turns - round(turns)) < 1e-9 * turns)
 
@@ -244,7 +251,8 @@ def turned_profile_dynamic(feed, nose_radius, depth_of_cut, cutting_speed, workp
     tool at rest. The response is integrated exactly for the piecewise-constant force (see
     :func:`_sdof_response`), with at least 40 steps per natural period. The workpiece turns at
     ``cutting_speed / (pi workpiece_diameter)`` rev/s; along one generatrix, pass k leaves the
-    arc of the nose radius centred at ``k * feed``, displaced by the tool position u(t_k) at
+    arc of the nose radius centred at ``x_0 + k * feed`` (x_0 the multiple of the feed one nose
+    radius before x = 0, where the tool starts), displaced by the tool position u(t_k) at
     that revolution, and the surface is the lowest envelope of all arcs (material removed by
     any pass stays removed). This is Seireg's description of Fig. 4.2: the tool edge displaced
     by the relative vibration, added to the kinematic roughness.
@@ -308,7 +316,8 @@ def turned_profile_dynamic(feed, nose_radius, depth_of_cut, cutting_speed, workp
 
     revs_per_s = speed / (np.pi * diameter)
     period = 1.0 / revs_per_s
-    passes = int(math.ceil((n * spacing + 2 * nose_radius) / feed)) + 2
+    first = _first_pass(feed, nose_radius)
+    passes = int(math.ceil((n * spacing - 2 * first) / feed)) + 2
     steps_per_rev = int(math.ceil(period * max(40.0 * fn, 2.0 * bandwidth)))
     dt = period / steps_per_rev
     hold = max(1, int(round(1.0 / (2.0 * bandwidth * dt))))
@@ -320,7 +329,6 @@ def turned_profile_dynamic(feed, nose_radius, depth_of_cut, cutting_speed, workp
     offsets = u[:: steps_per_rev]
 
     x = cell_centres(n, spacing)
-    first = -nose_radius
     z = _feed_mark_envelope(x, first, feed, nose_radius, offsets)
     return TurnedSurface(
         profile=Profile(x, z - z.mean()),

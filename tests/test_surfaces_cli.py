@@ -1,0 +1,98 @@
+"""``asperity surface`` commands through typer's CliRunner, on a throwaway app."""
+
+import json
+
+import numpy as np
+import pytest
+import typer
+from typer.testing import CliRunner
+
+from asperity.cli.surface import surface_app
+from asperity.surfaces import read_surface, roughness_parameters, write_surface
+from asperity.surfaces.generate import gaussian_topography
+
+app = typer.Typer()
+app.add_typer(surface_app, name="surface")
+
+
+@pytest.fixture
+def runner():
+    return CliRunner()
+
+
+def test_generate_then_stats(runner, tmp_path):
+    out = tmp_path / "c.txt"
+    res = runner.invoke(app, ["surface", "generate", "builtin", "--name", "C", "--length",
+                              "1 mm", "--spacing", "0.5 um", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    assert "Rdq" in res.stdout
+    res = runner.invoke(app, ["surface", "stats", str(out), "--json"])
+    assert res.exit_code == 0, res.output
+    stats = json.loads(res.stdout)
+    assert stats["kind"] == "profile" and stats["points"] == [2000]
+    assert stats["Ra_m"] == pytest.approx(0.31e-6, rel=1e-9)
+    assert stats["Rdq"] == pytest.approx(roughness_parameters(read_surface(out))["Rdq"])
+    table = runner.invoke(app, ["surface", "stats", str(out)])
+    assert table.exit_code == 0 and "Ra" in table.stdout and "0.31" in table.stdout
+
+
+def test_stats_of_heights_with_a_spacing(runner, tmp_path):
+    t = gaussian_topography((40e-6, 30e-6), 1e-6, 0.2e-6, 5e-6)
+    write_surface(t, tmp_path / "t.npy")
+    res = runner.invoke(app, ["surface", "stats", str(tmp_path / "t.npy"), "--json",
+                              "--spacing", "1 um"])
+    assert res.exit_code == 0, res.output
+    stats = json.loads(res.stdout)
+    assert stats["Sq_m"] == pytest.approx(roughness_parameters(t.z, t.x, t.y)["Sq"])
+    assert stats["spacing_m"] == pytest.approx([1e-6, 1e-6])
+
+
+@pytest.mark.parametrize("args", [
+    ["gaussian", "--rms", "0.5 um", "--correlation-length", "10 um", "--width", "50 um",
+     "--length", "80 um"],
+    ["self-affine", "--rms-slope", "0.1", "--hurst", "0.7", "--length", "0.2 mm"],
+    ["ground", "--ra", "0.4 um", "--run-in", "0.3", "--waviness-wavelength", "0.1 mm",
+     "--waviness-amplitude", "0.1 um"],
+    ["turned", "--feed", "0.127 mm", "--nose-radius", "0.794 mm", "--natural-frequency",
+     "28 Hz", "--length", "3 mm"],
+])
+def test_generate_kinds(runner, tmp_path, args):
+    out = tmp_path / "s.npz"
+    res = runner.invoke(app, ["surface", "generate", *args, "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    surface = read_surface(out)
+    assert np.all(np.isfinite(surface.z))
+
+
+def test_plot_writes_a_png(runner, tmp_path):
+    write_surface(gaussian_topography(30e-6, 1e-6, 0.2e-6, 5e-6), tmp_path / "t.npz")
+    for extra in ([], ["--spectrum"]):
+        png = tmp_path / f"t{len(extra)}.png"
+        res = runner.invoke(app, ["surface", "plot", str(tmp_path / "t.npz"), "--out", str(png),
+                                  *extra])
+        assert res.exit_code == 0, res.output
+        assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.parametrize("args, message", [
+    (["stats", "missing.txt"], "error: file: expected an existing file"),
+    (["generate", "bogus", "--out", "x.txt"], "error: KIND: expected one of"),
+    (["generate", "gaussian", "--out", "x.txt"], "error: --rms: expected a value"),
+    (["generate", "gaussian", "--rms", "1 kg", "--correlation-length", "1 um", "--out",
+      "x.txt"], "error: --rms: expected a quantity convertible to m"),
+    (["generate", "builtin", "--name", "Z", "--out", "x.txt"], "error: name: expected one of"),
+])
+def test_bad_input_is_one_line_and_exit_2(runner, tmp_path, monkeypatch, args, message):
+    monkeypatch.chdir(tmp_path)
+    res = runner.invoke(app, ["surface", *args])
+    assert res.exit_code == 2
+    assert res.stderr.startswith(message)
+    assert len(res.stderr.strip().splitlines()) == 1
+    assert "Traceback" not in res.output
+
+
+def test_ragged_file_error_names_the_line(runner, tmp_path):
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 1\n1 2 3\n")
+    res = runner.invoke(app, ["surface", "stats", str(bad)])
+    assert res.exit_code == 2 and "bad.txt:2: expected 2 columns" in res.stderr

@@ -1,0 +1,133 @@
+"""Reading and writing surfaces: round trips, formats, error messages; SurfaceTopography."""
+
+import sys
+
+import numpy as np
+import pytest
+
+from asperity.errors import InputError
+from asperity.surfaces import (
+    Profile,
+    Topography,
+    gaussian_profile,
+    gaussian_topography,
+    read_surface,
+    residual_heights,
+    roughness_parameters,
+    write_surface,
+)
+
+
+@pytest.fixture
+def profile():
+    return gaussian_profile(0.2e-3, 0.5e-6, 0.3e-6, 5e-6, seed=2)
+
+
+@pytest.fixture
+def topography():
+    return gaussian_topography((60e-6, 40e-6), (1e-6, 2e-6), 0.3e-6, 8e-6, seed=2)
+
+
+@pytest.mark.parametrize("suffix", [".txt", ".csv", ".dat", ".npz"])
+def test_round_trip_keeps_everything(tmp_path, profile, topography, suffix):
+    for surface in (profile, topography):
+        path = write_surface(surface, tmp_path / f"s{suffix}")
+        back = read_surface(path)
+        assert type(back) is type(surface) and back.periodic == surface.periodic
+        np.testing.assert_array_equal(back.z, surface.z)
+        np.testing.assert_allclose(back.x, surface.x, rtol=1e-12)
+        if isinstance(surface, Topography):
+            np.testing.assert_allclose(back.y, surface.y, rtol=1e-12)
+
+
+def test_npy_keeps_heights_and_needs_a_spacing(tmp_path, profile, topography):
+    write_surface(profile, tmp_path / "p.npy")
+    with pytest.raises(InputError, match="spacing: expected a grid spacing"):
+        read_surface(tmp_path / "p.npy")
+    back = read_surface(tmp_path / "p.npy", spacing=profile.spacing)
+    np.testing.assert_allclose(back.x, profile.x, rtol=1e-12)
+    write_surface(topography, tmp_path / "t.npy")
+    back = read_surface(tmp_path / "t.npy", spacing=topography.spacing)
+    assert back.spacing == pytest.approx(topography.spacing)
+
+
+def test_text_variants(tmp_path):
+    one = tmp_path / "z.txt"
+    one.write_text("height\n1e-6\n2e-6\n-1e-6\n0.5e-6\n")
+    p = read_surface(one, spacing=2e-6)
+    assert isinstance(p, Profile) and p.z.tolist() == [1e-6, 2e-6, -1e-6, 0.5e-6]
+    assert p.x.tolist() == pytest.approx([1e-6, 3e-6, 5e-6, 7e-6])
+    two = tmp_path / "xz.csv"
+    two.write_text("x;z\n0;1e-6\n1e-6;2e-6\n2e-6;0\n")
+    assert read_surface(two).spacing == pytest.approx(1e-6)
+    matrix = tmp_path / "m.asc"
+    matrix.write_text("1 2 3\n4 5 6\n7 8 9\n10 11 12\n")
+    t = read_surface(matrix, spacing=(1e-6, 3e-6))
+    assert isinstance(t, Topography) and t.shape == (4, 3) and t.z[1, 2] == 6
+
+
+def test_text_errors_name_the_file_and_line(tmp_path):
+    ragged = tmp_path / "ragged.txt"
+    ragged.write_text("# a comment\n0 1\n1 2\n2 3 4\n")
+    with pytest.raises(InputError, match=r"ragged\.txt:4: expected 2 columns like line 2"):
+        read_surface(ragged)
+    words = tmp_path / "words.csv"
+    words.write_text("x,z\n0,1\n1,abc\n")
+    with pytest.raises(InputError, match=r"words\.csv:3: expected numbers only, got 'abc'"):
+        read_surface(words)
+    nan = tmp_path / "nan.txt"
+    nan.write_text("0 1\n1 nan\n")
+    with pytest.raises(InputError, match=r"nan\.txt:2: expected finite"):
+        read_surface(nan)
+    uneven = tmp_path / "uneven.txt"
+    uneven.write_text("0 1\n1 2\n3 3\n")
+    with pytest.raises(InputError, match="x: expected uniformly spaced"):
+        read_surface(uneven)
+    with pytest.raises(InputError, match="file: expected an existing file"):
+        read_surface(tmp_path / "missing.txt")
+    with pytest.raises(InputError, match="path"):
+        write_surface(Profile(np.arange(3.0), np.zeros(3)), tmp_path / "p.xyz")
+
+
+def test_instrument_formats_need_surface_topography(tmp_path, monkeypatch):
+    (tmp_path / "scan.x3p").write_bytes(b"PK")
+    monkeypatch.setitem(sys.modules, "SurfaceTopography", None)  # import fails
+    with pytest.raises(InputError, match=r"pip install asperity\[instruments\]"):
+        read_surface(tmp_path / "scan.x3p")
+
+
+# --- cross-check against SurfaceTopography (optional peer) ---------------------------------
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # SurfaceTopography's own aliases
+def test_parameters_agree_with_surface_topography(profile, topography):
+    st = pytest.importorskip("SurfaceTopography")
+    # Same data: the heights after asperity's mean-line/plane removal, non-periodic; and the
+    # periodic surfaces as generated.
+    r = residual_heights(profile.z)
+    mine = roughness_parameters(r, profile.x)
+    line = st.UniformLineScan(r, profile.length, periodic=False)
+    assert mine["Rq"] == pytest.approx(line.rms_height_from_profile(), rel=1e-6)
+    assert mine["Rdq"] == pytest.approx(line.rms_slope_from_profile(), rel=1e-6)
+    periodic_line = st.UniformLineScan(profile.z, profile.length, periodic=True)
+    assert roughness_parameters(profile)["Rdq"] == pytest.approx(
+        periodic_line.rms_slope_from_profile(), rel=1e-6)
+    (nx, ny), (dx, dy) = topography.shape, topography.spacing
+    rz = residual_heights(topography.z)
+    mine2 = roughness_parameters(rz, topography.x, topography.y)
+    area = st.Topography(rz, (nx * dx, ny * dy), periodic=False)
+    assert mine2["Sq"] == pytest.approx(area.rms_height_from_area(), rel=1e-6)
+    assert mine2["Sdq"] == pytest.approx(area.rms_gradient(), rel=1e-6)
+    periodic_area = st.Topography(topography.z, (nx * dx, ny * dy), periodic=True)
+    assert roughness_parameters(topography)["Sdq"] == pytest.approx(
+        periodic_area.rms_gradient(), rel=1e-6)
+
+
+def test_reads_x3p_through_surface_topography(tmp_path, topography):
+    st = pytest.importorskip("SurfaceTopography")
+    (nx, ny), (dx, dy) = topography.shape, topography.spacing
+    st.Topography(topography.z, (nx * dx, ny * dy), unit="m").to_x3p(tmp_path / "scan.x3p")
+    back = read_surface(tmp_path / "scan.x3p")
+    assert isinstance(back, Topography) and back.shape == topography.shape
+    np.testing.assert_allclose(back.z, topography.z, rtol=1e-6, atol=1e-6 * 0.3e-6)
+    assert back.spacing == pytest.approx(topography.spacing, rel=1e-9)
