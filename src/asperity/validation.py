@@ -29,26 +29,30 @@ class Check:
     name: str
     source: str
     function: Callable[[], list]
+    slow: bool = False
 
 
 CHECKS: list[Check] = []
 
 
-def check(name: str, source: str):
-    """Register a validation function under ``name``."""
+def check(name: str, source: str, slow: bool = False):
+    """Register a validation function under ``name`` (``slow``: minutes, not seconds)."""
 
     def register(fn):
-        CHECKS.append(Check(name, source, fn))
+        CHECKS.append(Check(name, source, fn, slow))
         return fn
 
     return register
 
 
-def run_checks(select: str | None = None) -> list[tuple[str, Comparison]]:
-    """Run all checks (or those whose name contains ``select``); (check name, row) pairs."""
+def run_checks(select: str | None = None, slow: bool = False) -> list[tuple[str, Comparison]]:
+    """Run the checks (those whose name contains ``select``; slow ones only when asked).
+
+    Returns (check name, row) pairs.
+    """
     rows = []
     for c in CHECKS:
-        if select and select not in c.name:
+        if (select and select not in c.name) or (c.slow and not slow):
             continue
         rows += [(c.name, row) for row in c.function()]
     return rows
@@ -86,3 +90,22 @@ def _hertz_gear():
     return [Comparison("semi-axis a", h.a * 1e3, 0.3364, src, "mm", 2e-4),
             Comparison("semi-axis b", h.b * 1e3, 1.3045, src, "mm", 1e-4),
             Comparison("maximum pressure", h.p_max / 1e9, 1.0466, src, "GPa", 1e-4)]
+
+
+# ------------------------------------------------------------------------- normal contact
+@check("normal-hertz-ellipse", "numerical vs exact Hertz (gear-case ellipse, ~50 cells on 2a)")
+def _normal_hertz_ellipse():
+    from .contact import hertz_point, solve_normal
+    from .materials import Material
+
+    m = Material(227e9, 0.0, "E'=227 GPa")
+    h = hertz_point(962.0, 0.0191, 0.151, m, m)
+    nx, ny = 80, 64
+    x = (np.arange(nx) + 0.5 - nx / 2) * (3.0 * h.a / nx)
+    y = (np.arange(ny) + 0.5 - ny / 2) * (3.0 * h.b / ny)
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    res = solve_normal(X**2 / 0.0382 + Y**2 / 0.302, x, y, m, m, load=962.0)
+    src = "Hertz (exact elliptical)"
+    return [Comparison("maximum pressure", res.pressure.max(), h.p_max, src, "Pa", 0.01),
+            Comparison("approach", res.approach, h.approach, src, "m", 0.01),
+            Comparison("contact area", res.contact_area, h.area, src, "m^2", 0.02)]

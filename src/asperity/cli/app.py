@@ -71,7 +71,8 @@ def run(
     with progress_bar(console, disable=quiet) as progress:
         outcome = run_case(model, progress=progress)
     files = write_outcome(outcome, out)
-    files["report"] = write_report(model.title, model.model_dump(mode="json"), outcome, files,
+    files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
+                                   outcome, files,
                                    Path(out) / "report.html")
     _print_summary(outcome.summary)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
@@ -125,13 +126,15 @@ def validate(
     select: Annotated[str | None, typer.Option("--select", "-k",
                                                help="Only checks whose name contains this.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Machine-readable output.")] = False,
+    slow: Annotated[bool, typer.Option("--slow", help="Include the paper-mesh checks "
+                                                      "(minutes).")] = False,
 ):
     """Run the analytical and published-number checks; print the validation table."""
     import json
 
     from ..validation import run_checks
 
-    rows = run_checks(select)
+    rows = run_checks(select, slow=slow)
     failed = [r for _, r in rows if r.passed is False]
     if as_json:
         sys.stdout.write(json.dumps([
@@ -148,7 +151,7 @@ def validate(
             table.add_row(name, r.quantity, f"{r.reference:.6g}", f"{r.value:.6g}", r.unit,
                           f"{r.relative_error:+.2e}",
                           "" if r.tolerance is None else f"{r.tolerance:.1e}", mark)
-        console.print(table)
+        Console(width=max(console.width, 140)).print(table)
     if failed:
         raise typer.Exit(1)
 

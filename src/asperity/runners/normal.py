@@ -86,6 +86,15 @@ def run(case, progress=None) -> Outcome:
         ]
         summary.update(hertz_max_pressure_pa=h.p_max, hertz_a_m=h.a, hertz_b_m=h.b,
                        hertz_approach_m=h.approach)
+    elif np.isfinite(rx):  # rough: show how far roughness takes the contact from smooth Hertz
+        h = hertz_point(res.load, rx, ry, body1, body2)
+        src, note = "smooth Hertz", "rough vs smooth, not a check"
+        comparisons += [
+            Comparison("maximum pressure", summary["max_pressure_pa"], h.p_max, src, "Pa",
+                       note=note),
+            Comparison("real contact area", res.contact_area, h.area, src, "m^2", note=note),
+            Comparison("approach", res.approach, h.approach, src, "m", note=note),
+        ]
     from ..plotting.normal import centre_line, pressure_map
 
     j = _centre_row(y)
