@@ -32,7 +32,7 @@ class InputError(ValueError):
         msg = f"{field}: {problem or 'expected ' + expected}"
         if got is not None:
             msg += f", got {_short(got)}"
-        super().__init__(msg)
+        super().__init__(" ".join(msg.splitlines()))  # always one line
 
 
 def _short(value: object, limit: int = 60) -> str:

@@ -71,10 +71,16 @@ _PROBLEMS = {
 }
 
 
+def _key(part) -> str:
+    """A key as written in a case file; odd keys (spaces, control characters) quoted."""
+    text = str(part)
+    return text if text.replace("_", "").replace("-", "").isalnum() else repr(text)
+
+
 def first_error(exc: ValidationError, prefix: str = "") -> InputError:
     """Turn pydantic's first validation error into one :class:`InputError` line."""
     err = exc.errors(include_url=False)[0]
-    loc = ".".join(str(p) for p in err["loc"] if not str(p).startswith("function-"))
+    loc = ".".join(_key(p) for p in err["loc"] if not str(p).startswith("function-"))
     field = ".".join(p for p in (prefix, loc) if p) or "case"
     if err["type"] in _PROBLEMS:
         return InputError(field, "", problem=_PROBLEMS[err["type"]])
