@@ -341,13 +341,13 @@ def solve_steady(
     nx: int = 129,
     ny: int = 65,
     domain=None,
-    method: str = "line",
+    method: str | None = None,
     levels: int = 1,
     near: int = 4,
     tol: float = 1e-5,
     max_sweeps: int = 5000,
     refresh: int = 10,
-    load_gain: float = 0.05,
+    load_gain: float | None = None,
     initial_film: float | None = None,
     boundary_friction: float = 0.1,
     callback=None,
@@ -364,8 +364,10 @@ def solve_steady(
     domain : ((x0, x1), (y0, y1)), optional
         In m; default ``problem.default_domain()`` (-2.5a..1.5a, -2b..2b). Must hold the
         Hertz contact.
-    method : {"line", "point"}
-        x-line relaxation (default) or the seed's point update (Eq. 7).
+    method : {"line", "point"}, optional
+        x-line relaxation or the seed's point update (Eq. 7). Default: ``"line"`` for a point
+        contact, ``"point"`` for a line contact (x-line relaxation of the single row of a line
+        contact diverges: every off-centre pressure coefficient is then lagged at once).
     levels : int
         Grid sequencing: solve first on ``levels - 1`` grids coarsened by 2 in each direction
         (node counts ``(n - 1)/2 + 1``) and interpolate each solution as the next start.
@@ -378,8 +380,9 @@ def solve_steady(
         Sweep limit per grid; a solve that reaches it returns ``converged=False``.
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films.
-    load_gain : float
-        Separation shift per sweep per unit relative load error (dimensionless film units).
+    load_gain : float, optional
+        Separation shift per sweep per unit relative load error (dimensionless film units);
+        default 0.05 (point contact), 0.01 (line contact).
     initial_film : float, optional
         Central film of the Hertzian start, m; default Nijenbanning's (point) or Moes' (line)
         Newtonian central film.
@@ -394,6 +397,11 @@ def solve_steady(
     """
     if not isinstance(problem, PointContact | LineContact):
         raise InputError("problem", "a PointContact or LineContact")
+    line = isinstance(problem, LineContact)
+    if method is None:
+        method = "point" if line else "line"
+    if load_gain is None:
+        load_gain = 0.01 if line else 0.05
     if method not in ("line", "point"):
         raise InputError("method", '"line" or "point"', method)
     tol = check_positive("tol", tol)
@@ -403,7 +411,6 @@ def solve_steady(
             raise InputError(field, "an integer >= 1", value)
     if isinstance(near, bool) or not isinstance(near, int | np.integer) or near < 0:
         raise InputError("near", "an integer >= 0", near)
-    line = isinstance(problem, LineContact)
     if line:
         ny = 1
     grids = [(nx, ny)]
