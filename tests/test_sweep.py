@@ -1,5 +1,6 @@
 """Parameter studies: Dask matches serial, failures are recorded, interrupted studies resume."""
 
+import json
 import subprocess
 import sys
 import time
@@ -112,6 +113,8 @@ def test_interrupted_study_resumes_each_case_once(tmp_path):
         time.sleep(0.05)
     proc.kill()
     proc.wait()
+    states = {p.parent.name: json.loads(p.read_text()) for p in out.glob("cases/*/status.json")}
+    assert all(s["state"] == "done" for s in states.values()), states
     finished = {p.parent.name: p.stat().st_mtime_ns for p in out.glob("cases/*/status.json")}
     assert 2 <= len(finished) < 8, "the run was not interrupted mid-way"
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
