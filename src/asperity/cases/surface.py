@@ -1,0 +1,300 @@
+"""Case file of a surface analysis: which surface (``[surface]``) and how to evaluate it.
+
+``analysis = "surface"`` characterises one or more profiles or a topography: ISO roughness
+parameters, the power spectrum, the waviness/roughness split of the ISO 16610-21 Gaussian
+filter, and for turned surfaces the kinematic feed-mark roughness (Seireg eq. 4.1) and the
+roughness along the workpiece under tool vibration (Seireg Fig. 4.2).
+
+Every key of ``[surface]`` belongs to some kinds; a key given for a kind that does not use it
+is an error naming that key, as is a required key left out. Generated surfaces are bounded in
+size (:data:`MAX_POINTS`, :data:`MAX_STEPS`) so that a case always runs in seconds.
+"""
+
+from __future__ import annotations
+
+import math
+from importlib import resources
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import Field, ValidationError, ValidationInfo, field_validator, model_validator
+from pydantic_core import InitErrorDetails, PydanticCustomError
+
+from .fields import CaseModel, Quantity
+
+__all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
+
+#: Most points of a generated profile, and of a generated topography.
+MAX_POINTS = {"profile": 2**20, "topography": 2**22}
+#: Most time steps of one tool-vibration simulation (see :func:`SurfaceSpec.simulated_steps`).
+MAX_STEPS = 5_000_000
+#: Default cells per feed of a turned profile (odd, so that the cusps fall on grid points).
+CELLS_PER_FEED = 201
+#: Default number of feeds of a turned profile.
+FEEDS = 20
+
+_BUILTIN = {"length": 5e-3, "spacing": 0.5e-6}  # defaults of asperity.surfaces.builtin_profile
+
+#: kind -> (required keys, optional keys) of [surface]
+KEYS = {
+    "gaussian": ({"length", "spacing", "rms", "correlation_length"},
+                 {"width", "acf", "seed"}),
+    "self-affine": ({"length", "spacing", "hurst"},
+                    {"width", "rms", "rms_slope", "rolloff_wavelength", "short_cutoff", "seed"}),
+    "ground": ({"length", "spacing", "ra"}, {"correlation_length", "run_in", "seed"}),
+    "builtin": ({"profile"}, {"length", "spacing"}),
+    "file": ({"path"}, {"spacing"}),
+    "turned": ({"feed", "nose_radius"}, {"length", "spacing", "end_relief_angle"}),
+}
+#: Keys of the tool-vibration model of a turned surface: all required with natural_frequency.
+DYNAMIC_REQUIRED = ("natural_frequency", "depth_of_cut", "cutting_speed", "workpiece_diameter",
+                    "mass")
+DYNAMIC_OPTIONAL = ("damping_ratio", "seed")
+
+Frequency = Quantity("frequency", gt=0)
+
+
+def _key_error(key: str | tuple, message: str, value=None) -> ValidationError:
+    """A validation error located at ``key`` (a name or a path), so that its line names it."""
+    loc = key if isinstance(key, tuple) else (key,)
+    if message == "missing":
+        detail = InitErrorDetails(type="missing", loc=loc, input=None)
+    else:
+        detail = InitErrorDetails(type=PydanticCustomError("value_error", message), loc=loc,
+                                  input=value)
+    return ValidationError.from_exception_data("case", [detail])
+
+
+def _as_list(value):
+    """Accept one value where a list is expected."""
+    return value if isinstance(value, list | tuple) else [value]
+
+
+class SurfaceSpec(CaseModel):
+    """The surface to analyse: ``kind`` and the keys of that kind (others must be left out).
+
+    - ``gaussian``: ``length``, ``spacing``, ``rms``, ``correlation_length`` (lag where the
+      autocorrelation falls to 0.2); optional ``acf`` ("gaussian" or "exponential"), ``seed``,
+      and ``width`` (with ``correlation_length_y``) for a topography instead of a profile.
+    - ``self-affine``: ``length``, ``spacing``, ``hurst`` and exactly one of ``rms`` or
+      ``rms_slope``; optional ``rolloff_wavelength``, ``short_cutoff``, ``width``, ``seed``.
+    - ``ground``: transverse-ground profile, ``length``, ``spacing``, ``ra``; optional
+      ``correlation_length`` (default 15 um), ``run_in`` (0 fresh .. <1 strongly run-in),
+      ``seed``.
+    - ``builtin``: ``profile`` "A", "B", "C" or a list of them (synthetic stand-ins of the
+      mixed-EHL seed's Fig. 1 traces); optional ``length`` (5 mm), ``spacing`` (0.5 um).
+    - ``file``: ``path`` (text, npy, npz, or an instrument format), relative to the case file;
+      ``spacing`` if the file has no coordinates.
+    - ``turned``: feed marks of a tool of ``nose_radius`` at ``feed`` per revolution, optional
+      ``end_relief_angle`` (checks f <= 2 r sin(kappa_e), Seireg eq. 4.1), ``length`` (default
+      20 feeds, rounded to whole feeds) and ``spacing`` (default feed/201, reduced to an odd
+      fraction of the feed so that the cusps fall on grid points). With ``natural_frequency``
+      (one value or a list to compare) the tool vibrates (Jang & Seireg's model, see
+      :func:`asperity.surfaces.turned_profile_dynamic`), which needs ``depth_of_cut``,
+      ``cutting_speed``, ``workpiece_diameter``, ``mass`` and takes ``damping_ratio`` (0.05)
+      and ``seed``.
+    """
+
+    kind: Literal["gaussian", "self-affine", "ground", "builtin", "file", "turned"]
+    length: Quantity("length", gt=0) | None = None
+    spacing: Quantity("length", gt=0) | None = None
+    width: Quantity("length", gt=0) | None = None
+    rms: Quantity("length", gt=0) | None = None
+    rms_slope: Quantity("dimensionless", gt=0) | None = None
+    ra: Quantity("length", gt=0) | None = None
+    correlation_length: Quantity("length", gt=0) | None = None
+    correlation_length_y: Quantity("length", gt=0) | None = None
+    acf: Literal["gaussian", "exponential"] | None = None
+    hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
+    rolloff_wavelength: Quantity("length", gt=0) | None = None
+    short_cutoff: Quantity("length", gt=0) | None = None
+    run_in: Annotated[float, Field(ge=0, lt=1)] | None = None
+    profile: Annotated[tuple[Literal["A", "B", "C"], ...], Field(min_length=1)] | None = None
+    path: str | None = None
+    feed: Quantity("length", gt=0) | None = None
+    nose_radius: Quantity("length", gt=0) | None = None
+    end_relief_angle: Quantity("angle", gt=0, le=math.pi / 2) | None = None
+    natural_frequency: Annotated[tuple[Frequency, ...],
+                                 Field(min_length=1, max_length=8)] | None = None
+    depth_of_cut: Quantity("length", gt=0) | None = None
+    cutting_speed: Quantity("speed", gt=0) | None = None
+    workpiece_diameter: Quantity("length", gt=0) | None = None
+    damping_ratio: Annotated[float, Field(gt=0, lt=1)] | None = None
+    mass: Quantity("mass", gt=0) | None = None
+    seed: Annotated[int, Field(ge=0)] | None = None
+
+    @field_validator("profile", "natural_frequency", mode="before")
+    @classmethod
+    def _one_or_list(cls, value):
+        return None if value is None else _as_list(value)
+
+    @field_validator("profile", "natural_frequency")
+    @classmethod
+    def _distinct(cls, value):
+        if value is not None and len(set(value)) != len(value):
+            raise ValueError("expected distinct values")
+        return value
+
+    @field_validator("path")
+    @classmethod
+    def _existing_file(cls, value, info: ValidationInfo):
+        """The file, which must exist: a relative path is relative to the case file's folder,
+        or for a case without a file (TOML text, a built-in example) to the working directory
+        and failing that to the folder of the built-in examples (their shipped data)."""
+        if value is None:
+            return value
+        path = Path(value)
+        if not path.is_absolute():
+            base = (info.context or {}).get("base_dir")
+            if base is not None:
+                path = Path(base) / path
+            elif not path.is_file():
+                shipped = resources.files("asperity.examples") / value
+                path = Path(str(shipped)) if shipped.is_file() else path
+        if not path.is_file():
+            raise ValueError("expected an existing file")
+        return str(path)
+
+    @model_validator(mode="after")
+    def _keys_of_kind(self):
+        required, optional = KEYS[self.kind]
+        allowed = required | optional | {"kind"}
+        if self.kind == "turned" and self.natural_frequency is not None:
+            allowed |= set(DYNAMIC_REQUIRED) | set(DYNAMIC_OPTIONAL)
+            required = required | set(DYNAMIC_REQUIRED)
+        if self.kind == "gaussian" and self.width is not None:
+            allowed |= {"correlation_length_y"}
+        for key in type(self).model_fields:  # in declaration order: the first bad key is reported
+            if key in self.model_fields_set and key not in allowed:
+                value = getattr(self, key)
+                if key in DYNAMIC_REQUIRED + DYNAMIC_OPTIONAL and self.kind == "turned":
+                    raise _key_error(key, "expected natural_frequency too (the tool-vibration "
+                                          "model); leave it out for kinematic turning", value)
+                if key == "correlation_length_y" and self.kind == "gaussian":
+                    raise _key_error(key, "expected width too (a topography)", value)
+                raise _key_error(key, f"expected no {key} for kind = \"{self.kind}\"", value)
+        for key in sorted(required):
+            if getattr(self, key) is None:
+                raise _key_error(key, "missing")
+        if self.kind == "self-affine" and (self.rms is None) == (self.rms_slope is None):
+            raise _key_error("rms", "expected exactly one of rms or rms_slope", self.rms)
+        if self.kind == "turned":
+            self._check_turning()
+        self._check_size()
+        return self
+
+    def _check_turning(self):
+        """Eq. (4.1)'s validity and a spacing that resolves the feed marks."""
+        limit = 2.0 * self.nose_radius
+        if self.end_relief_angle is not None:
+            limit *= math.sin(self.end_relief_angle)
+        if self.feed > limit:
+            raise _key_error("feed", f"f <= 2 r sin(kappa_e) = {limit:.4g} m, a feed mark formed "
+                                     "by the nose radius (Seireg eq. 4.1)", self.feed)
+        if self.spacing is not None and self.spacing > self.feed / 10:
+            raise _key_error("spacing", f"at most feed / 10 = {self.feed / 10:.4g} m, to "
+                                        "resolve the feed marks", self.spacing)
+
+    def _check_size(self):
+        length, spacing = self.profile_length(), self.profile_spacing()
+        if length is None:
+            return
+        n = length / spacing
+        if n < 8:
+            raise _key_error("length", f"at least 8 spacings ({8 * spacing:.4g} m)", self.length)
+        shape = "profile" if self.width is None else "topography"
+        points = n if self.width is None else n * self.width / spacing
+        if self.width is not None and self.width / spacing < 8:
+            raise _key_error("width", f"at least 8 spacings ({8 * spacing:.4g} m)", self.width)
+        if points > MAX_POINTS[shape]:
+            raise _key_error("length" if self.width is None else "width",
+                             f"at most {MAX_POINTS[shape]} points in the {shape} (got "
+                             f"{points:.3g}); raise spacing or shorten it", self.length)
+        if self.kind == "turned":
+            # The feed-mark envelope visits about 2 r / f + 3 arcs at every point.
+            arcs = 2.0 * math.ceil(self.nose_radius / self.feed) + 3
+            if n * arcs > 5e7:
+                raise _key_error("length", "fewer points times arcs of the nose radius per "
+                                           f"point (got {n:.3g} x {arcs:.0f} > 5e7)",
+                                 self.length)
+            if self.natural_frequency is not None and self.simulated_steps() > MAX_STEPS:
+                raise _key_error("length", f"a cut of at most {MAX_STEPS} time steps (got "
+                                           f"{self.simulated_steps():.3g}); shorten it or raise "
+                                           "cutting_speed", self.length)
+
+    def profile_spacing(self) -> float | None:
+        """Grid spacing (m) of a generated surface; None for a file (taken from the file)."""
+        if self.kind == "file":
+            return None
+        if self.kind == "builtin":
+            return self.spacing or _BUILTIN["spacing"]
+        if self.kind == "turned":
+            cells = CELLS_PER_FEED if self.spacing is None else self.feed / self.spacing
+            return self.feed / (2 * math.ceil((cells - 1) / 2) + 1)
+        return self.spacing
+
+    def profile_length(self) -> float | None:
+        """Length (m) of a generated surface along x; None for a file."""
+        if self.kind == "file":
+            return None
+        if self.kind == "builtin":
+            return self.length or _BUILTIN["length"]
+        if self.kind == "turned":
+            feeds = FEEDS if self.length is None else max(1, round(self.length / self.feed))
+            return feeds * self.feed
+        return self.length
+
+    def simulated_steps(self) -> float:
+        """Time steps of one tool-vibration simulation, by the step rule of
+        :func:`~asperity.surfaces.turned_profile_dynamic`: at least 40 steps per natural period
+        and 2 per correlation time of its default 1 kHz force noise, over every revolution."""
+        period = math.pi * self.workpiece_diameter / self.cutting_speed
+        revolutions = self.profile_length() / self.feed + 2 * self.nose_radius / self.feed + 2
+        rate = max(40.0 * max(self.natural_frequency), 2.0 * 1000.0)
+        return revolutions * math.ceil(period * rate)
+
+    def labels(self) -> list[str]:
+        """Names of the surfaces this spec makes, in order (the first is analysed in full)."""
+        if self.kind == "builtin":
+            return list(self.profile)
+        if self.kind == "turned":
+            dynamic = [f"{fn:g} Hz" for fn in self.natural_frequency or ()]
+            return [*dynamic, "kinematic"]
+        return [self.kind]
+
+
+class EvaluationSpec(CaseModel):
+    """How to evaluate profiles (all optional).
+
+    - ``cutoff``: the ISO 16610-21 Gaussian filter's cut-off wavelength lambda_c; the
+      parameters are then those of the roughness profile (profile minus the filter's mean line,
+      the waviness), evaluated without half a cut-off at each end of a non-periodic profile.
+    - ``sampling_length``: parameters are computed in consecutive sampling lengths and averaged
+      (ISO 4287; Rz is the mean of the peak-to-valley heights); otherwise over the whole
+      evaluation length.
+    - ``window``: length of the windows of the roughness along a turned workpiece (Seireg
+      Fig. 4.2); default about a twentieth of the length, in whole feeds.
+    """
+
+    cutoff: Quantity("length", gt=0) | None = None
+    sampling_length: Quantity("length", gt=0) | None = None
+    window: Quantity("length", gt=0) | None = None
+
+
+class SurfaceCase(CaseModel):
+    """``analysis = "surface"``: roughness parameters, spectrum, filtering, turning models."""
+
+    analysis: Literal["surface"]
+    title: str = "Surface analysis"
+    description: str = ""
+    source: str = ""
+    surface: SurfaceSpec
+    evaluation: EvaluationSpec = EvaluationSpec()
+
+    @model_validator(mode="after")
+    def _window_for_turning(self):
+        if self.evaluation.window is not None and self.surface.natural_frequency is None:
+            raise _key_error(("evaluation", "window"), "expected no window without "
+                             "surface.natural_frequency (the windows of the roughness along a "
+                             "vibrating turned workpiece)", self.evaluation.window)
+        return self

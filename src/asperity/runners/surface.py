@@ -1,0 +1,436 @@
+"""Runner of ``analysis = "surface"``: roughness parameters, spectra, filtering, turning models.
+
+The surfaces a case names (one, or several on the same grid: built-in profiles A, B, C, or a
+turned profile at several tool natural frequencies plus the kinematic one) are characterised by
+the ISO parameters (:func:`asperity.surfaces.roughness_parameters`), their power spectrum and
+autocorrelation length; a cut-off splits profiles into waviness and roughness with the ISO
+16610-21 Gaussian filter. Turned surfaces are compared with Seireg's eq. (4.1) and Table 4.1,
+and vibrating ones are evaluated along the workpiece as in his Fig. 4.2.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+
+from .. import surfaces as s
+from ..cases.surface import SurfaceSpec
+from ..errors import InputError
+from ..results import Comparison, Outcome, variable
+
+__all__ = ["run"]
+
+#: ISO parameter name without its R/S/P/W prefix -> long name
+_NAMES = {
+    "a": "arithmetic mean height",
+    "q": "root-mean-square height",
+    "sk": "skewness",
+    "ku": "kurtosis",
+    "p": "maximum peak height",
+    "v": "maximum valley depth",
+    "z": "maximum height",
+    "t": "total height",
+    "dq": "root-mean-square slope",
+    "dr": "developed interfacial area ratio",
+}
+_LENGTHS = {"a", "q", "p", "v", "z", "t"}
+_TURNING = "Boring, turning"
+_SYNTHETIC = ("Profiles A, B and C are synthetic stand-ins generated to the paper's Ra values; "
+              "the measured traces of Holmes et al. (2005) are not published as data.")
+_DYNAMIC = ("The tool-vibration model follows Seireg's description of Jang & Seireg's "
+            "simulation (tool assembly as a damped single-degree-of-freedom oscillator under a "
+            "random thrust force); its force parameters are illustrative defaults, so the "
+            "curves show trends, not the book's numbers.")
+
+
+@dataclass(frozen=True)
+class _Evaluated:
+    """What is computed for one surface."""
+
+    parameters: dict  # of the evaluated (roughness) profile or of the topography
+    primary: dict  # of the unfiltered surface
+    waviness: s.Profile | None
+    roughness: s.Profile | None
+    spectrum: s.PowerSpectrum
+    correlation_length: float
+
+
+def _key(name: str, tag: str = "") -> str:
+    """Summary key of an ISO parameter: ``Ra`` -> ``ra_m``, ``Rsk`` -> ``rsk``."""
+    unit = "_m" if name[1:] in _LENGTHS else ""
+    return name.lower() + (f"_{tag}" if tag else "") + unit
+
+
+def _tag(label: str) -> str:
+    """A label as part of a key: "28 Hz" -> "28hz", "A" -> "a"."""
+    return re.sub(r"[^a-z0-9]+", "_", label.lower().replace(" hz", "hz")).strip("_")
+
+
+def _prefixed(exc: InputError) -> InputError:
+    """An error of a generator, renamed to the case key it comes from."""
+    names = {"rms_height": "rms", "size": "length"}
+    field = names.get(exc.field, exc.field)
+    if field in SurfaceSpec.model_fields:
+        return InputError(f"surface.{field}", exc.expected, exc.got)
+    return exc
+
+
+def _generated(spec) -> s.Profile | s.Topography:
+    """The gaussian, self-affine, ground, built-in or file surface of ``spec``."""
+    length, h = spec.profile_length(), spec.profile_spacing()
+    seed = spec.seed or 0
+    if spec.kind == "gaussian":
+        if spec.width is None:
+            return s.gaussian_profile(length, h, spec.rms, spec.correlation_length,
+                                      acf=spec.acf or "gaussian", seed=seed)
+        ell = (spec.correlation_length, spec.correlation_length_y or spec.correlation_length)
+        return s.gaussian_topography((length, spec.width), h, spec.rms, ell,
+                                     acf=spec.acf or "gaussian", seed=seed)
+    if spec.kind == "self-affine":
+        options = {"rms_height": spec.rms, "rms_slope": spec.rms_slope, "seed": seed,
+                   "rolloff_wavelength": spec.rolloff_wavelength,
+                   "short_cutoff": spec.short_cutoff}
+        if spec.width is None:
+            return s.self_affine_profile(length, h, spec.hurst, **options)
+        return s.self_affine_topography((length, spec.width), h, spec.hurst, **options)
+    if spec.kind == "ground":
+        ell = 15e-6 if spec.correlation_length is None else spec.correlation_length
+        return s.transverse_ground_profile(length, h, spec.ra, ell, run_in=spec.run_in or 0.0,
+                                           seed=seed)
+    surface = s.read_surface(spec.path, spec.spacing)
+    if max(surface.z.shape) > 2**22 or surface.z.size > 2**22:
+        raise InputError("surface.path", "a surface of at most 2**22 points", surface.z.shape)
+    return surface
+
+
+def _surfaces(spec, progress) -> tuple[dict, list]:
+    """Label -> surface (all on one grid), and the TurnedSurface of each natural frequency."""
+    labels = spec.labels()
+    total = len(labels)
+    made, turned = {}, []
+    try:
+        if spec.kind == "builtin":
+            for label in labels:
+                made[label] = s.builtin_profile(label, spec.profile_length(),
+                                                spec.profile_spacing())
+                if progress is not None:
+                    progress(len(made), total, f"profile {label}")
+        elif spec.kind == "turned":
+            length, h = spec.profile_length(), spec.profile_spacing()
+            for fn, label in zip(spec.natural_frequency or (), labels, strict=False):
+                res = s.turned_profile_dynamic(
+                    spec.feed, spec.nose_radius, spec.depth_of_cut, spec.cutting_speed,
+                    spec.workpiece_diameter, length, h, fn,
+                    damping_ratio=spec.damping_ratio or 0.05, mass=spec.mass,
+                    seed=spec.seed or 0)
+                turned.append(res)
+                made[label] = res.profile
+                if progress is not None:
+                    progress(len(made), total, f"tool vibration at {label}")
+            made["kinematic"] = s.turned_profile(spec.feed, spec.nose_radius, length, h,
+                                                 end_relief_angle=spec.end_relief_angle)
+        else:
+            made[labels[0]] = _generated(spec)
+    except InputError as exc:
+        raise _prefixed(exc) from None
+    return made, turned
+
+
+def _trimmed(profile: s.Profile, margin: float) -> s.Profile:
+    """The profile without ``margin`` at each end (the filter's run-in and run-out)."""
+    keep = (profile.x - profile.x[0] >= margin) & (profile.x[-1] - profile.x >= margin)
+    return s.Profile(profile.x[keep], profile.z[keep])
+
+
+def _parameters(profile: s.Profile, sampling_length) -> dict:
+    """ISO 4287 parameters over the whole profile, or averaged over sampling lengths.
+
+    With a sampling length every parameter is the mean of its values in the consecutive
+    sampling lengths (each referenced to its least-squares line), except Rz, the mean of their
+    peak-to-valley heights, and Rt, the total height over the whole evaluation length.
+    """
+    whole = s.roughness_parameters(profile)
+    if sampling_length is None:
+        return whole
+    per = int(round(sampling_length / profile.spacing))
+    if per < 8 or per > profile.x.size:
+        raise InputError("evaluation.sampling_length", "between 8 spacings and the evaluated "
+                         f"length ({profile.length:.4g} m)", sampling_length)
+    count = profile.x.size // per
+    parts = [s.roughness_parameters(profile.z[k * per:(k + 1) * per],
+                                    profile.x[k * per:(k + 1) * per]) for k in range(count)]
+    out = {key: float(np.mean([p[key] for p in parts])) for key in whole}
+    out["Rz"] = float(np.mean([p["Rt"] for p in parts]))
+    out["Rt"] = whole["Rt"]
+    return out
+
+
+def _evaluate(surface, evaluation) -> _Evaluated:
+    """Parameters, waviness/roughness split, spectrum and correlation length of a surface.
+
+    The spectrum is that of the whole (primary) surface; the parameters and the correlation
+    length are those of the evaluated roughness profile when a cut-off is given.
+    """
+    spectrum = s.power_spectrum(surface, window=None if surface.periodic else "hann")
+    primary = s.roughness_parameters(surface)
+    if isinstance(surface, s.Topography):
+        for key in ("cutoff", "sampling_length"):
+            value = getattr(evaluation, key)
+            if value is not None:
+                raise InputError(f"evaluation.{key}", "no value for a topography (the filter "
+                                 "and sampling lengths apply to profiles)", value)
+        return _Evaluated(primary, primary, None, None, spectrum,
+                          s.autocorrelation_length(surface))
+    cutoff = evaluation.cutoff
+    waviness = roughness = None
+    evaluated = surface
+    if cutoff is not None:
+        if cutoff < 2 * surface.spacing:
+            raise InputError("evaluation.cutoff", "at least two spacings "
+                             f"({2 * surface.spacing:.4g} m)", cutoff)
+        if not surface.periodic and cutoff > surface.length / 2:
+            raise InputError("evaluation.cutoff", "at most half the length of a non-periodic "
+                             f"profile ({surface.length / 2:.4g} m)", cutoff)
+        waviness, roughness = s.split_waviness(surface, cutoff)
+        evaluated = roughness if surface.periodic else _trimmed(roughness, cutoff / 2)
+    return _Evaluated(_parameters(evaluated, evaluation.sampling_length), primary, waviness,
+                      roughness, spectrum, s.autocorrelation_length(evaluated))
+
+
+def _window(spec, evaluation, length: float) -> float:
+    """Window of the roughness along the workpiece: given, or about length / 20 in feeds."""
+    if evaluation.window is None:
+        return spec.feed * max(1, round(length / (20 * spec.feed)))
+    if not 3 * spec.profile_spacing() <= evaluation.window <= length:
+        raise InputError("evaluation.window", "between 3 spacings and the profile length "
+                         f"({length:.4g} m)", evaluation.window)
+    return evaluation.window
+
+
+def _dataset(case, surfaces, evaluated, along) -> xr.Dataset:
+    """Heights, spectra, filtered profiles, parameters (and Rt along a workpiece) per surface."""
+    labels = list(surfaces)
+    first = surfaces[labels[0]]
+    heights = np.stack([surf.z for surf in surfaces.values()])
+    spatial = ("x",) if isinstance(first, s.Profile) else ("x", "y")
+    spec0 = evaluated[labels[0]].spectrum
+    psd_unit = "m3" if spec0.dim == 1 else "m4"
+    coords = {
+        "surface": variable("surface", np.array(labels, dtype=object), "1", "surface name"),
+        "x": variable("x", first.x, "m", "x (first in-plane direction)"),
+        "q": variable("q", spec0.q, "rad m-1", "wavevector 2 pi / wavelength"),
+    }
+    if isinstance(first, s.Topography):
+        coords["y"] = variable("y", first.y, "m", "y (second in-plane direction)")
+    data = {
+        "height": variable(("surface", *spatial), heights, "m", "surface height (metal below)"),
+        "psd": variable(("surface", "q"), np.stack([e.spectrum.psd for e in evaluated.values()]),
+                        psd_unit, "power spectral density of heights" +
+                        (" (radial average)" if spec0.dim == 2 else "")),
+    }
+    if evaluated[labels[0]].waviness is not None:
+        data["waviness"] = variable(("surface", "x"), np.stack(
+            [e.waviness.z for e in evaluated.values()]), "m",
+            "waviness: mean line of the ISO 16610-21 Gaussian filter")
+        data["roughness"] = variable(("surface", "x"), np.stack(
+            [e.roughness.z for e in evaluated.values()]), "m", "roughness: profile minus waviness")
+    for name in evaluated[labels[0]].parameters:
+        unit = "m" if name[1:] in _LENGTHS else "1"
+        data[name.lower()] = variable("surface", [e.parameters[name] for e in evaluated.values()],
+                                      unit, f"{name}, {_NAMES.get(name[1:].lower(), name)}")
+    data["correlation_length"] = variable(
+        "surface", [e.correlation_length for e in evaluated.values()], "m",
+        "autocorrelation length (decay to 0.2)")
+    if along is not None:
+        centres, values, frequencies = along
+        coords["window"] = variable("window", centres, "m",
+                                    "centre of the evaluation window along the workpiece")
+        data["rt_along"] = variable(("surface", "window"), values, "m",
+                                    "Rt in consecutive windows along the workpiece")
+        data["natural_frequency"] = variable("surface", frequencies, "Hz",
+                                             "natural frequency of the tool assembly")
+    attrs = {"title": case.title, "analysis": "surface", "Conventions": "CF-1.8",
+             "source": "asperity", "kind": case.surface.kind}
+    settings = {"seed": case.surface.seed, "cutoff_m": case.evaluation.cutoff,
+                "sampling_length_m": case.evaluation.sampling_length}
+    attrs.update({key: value for key, value in settings.items() if value is not None})
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _summary(spec, surfaces, evaluated) -> dict:
+    labels = list(surfaces)
+    first, ev = surfaces[labels[0]], evaluated[labels[0]]
+    summary = {"kind": spec.kind, "surfaces": labels, "points": list(first.z.shape)}
+    if isinstance(first, s.Profile):
+        summary.update(spacing_m=first.spacing, length_m=first.length)
+    else:
+        summary.update(spacing_m=list(first.spacing),
+                       size_m=[first.x.size * first.spacing[0], first.y.size * first.spacing[1]])
+    summary["periodic"] = first.periodic
+    summary.update({_key(name): value for name, value in ev.parameters.items()})
+    if ev.waviness is not None:
+        waviness = s.roughness_parameters(ev.waviness)
+        for name in ("a", "q", "t"):
+            summary[f"p{name}_m"] = ev.primary[f"R{name}"]
+            summary[f"w{name}_m"] = waviness[f"R{name}"]
+    if math.isfinite(ev.correlation_length):
+        summary["correlation_length_m"] = ev.correlation_length
+    if len(labels) > 1:
+        for label in labels:
+            params = evaluated[label].parameters
+            for name in params:
+                if name[1:] in ("a", "q", "t", "sk", "ku"):
+                    summary[_key(name, _tag(label))] = params[name]
+    return summary
+
+
+def _turning(spec, surfaces, turned, evaluation):
+    """Summary entries, comparisons and Rt-along data of a turned case."""
+    f, r = spec.feed, spec.nose_radius
+    rt_ref = f * f / (8 * r)
+    ra_ref = f * f / (18 * math.sqrt(3) * r)
+    kin = s.roughness_parameters(surfaces["kinematic"])
+    summary = {"feed_m": f, "nose_radius_m": r, "kinematic_rt_m": rt_ref,
+               "kinematic_ra_m": ra_ref}
+    arc = f"circle vs parabola differ by about f^2/(16 r^2) = {100 * f * f / (16 * r * r):.2g} %"
+    comparisons = [
+        Comparison("kinematic Rt of the feed marks", kin["Rt"], rt_ref,
+                   "Seireg eq. (4.1), Rmax = f^2/(8 r)", "m", 0.01, arc),
+        Comparison("kinematic Ra of the feed marks", kin["Ra"], ra_ref,
+                   "parabolic feed marks, Ra = f^2/(18 sqrt(3) r)", "m", 0.01, arc),
+    ]
+    table = s.process_roughness(_TURNING)
+    ra = s.roughness_parameters(next(iter(surfaces.values())))["Ra"] / s.machining.MICROINCH
+    lo, hi = table.ra_min_microinch, table.ra_max_microinch
+    where = "inside" if lo <= ra <= hi else "below" if ra < lo else "above"
+    note = f"Ra of {next(iter(surfaces))} is {where} the range {lo:g}-{hi:g} uin"
+    comparisons += [
+        Comparison("Ra vs Table 4.1 boring/turning, lowest", ra, lo, "Seireg Table 4.1", "uin",
+                   note=note),
+        Comparison("Ra vs Table 4.1 boring/turning, highest", ra, hi, "Seireg Table 4.1",
+                   "uin", note=note),
+    ]
+    if not turned:
+        return summary, comparisons, None
+    length = surfaces["kinematic"].length
+    window = _window(spec, evaluation, length)
+    summary["window_m"] = window
+    along = {label: s.roughness_along(profile, window, "Rt")
+             for label, profile in surfaces.items()}
+    for res, label in zip(turned, surfaces, strict=False):  # the vibrating ones come first
+        tag = _tag(label)
+        mean = float(np.mean(along[label][1]))
+        summary[f"rt_along_mean_{tag}_m"] = mean
+        summary[f"static_deflection_{tag}_m"] = res.static_deflection
+        comparisons.append(Comparison(
+            f"mean Rt along the workpiece, {label}", mean, rt_ref, "Seireg eq. (4.1) and "
+            "Fig. 4.2", "m", note="tool vibration adds to the kinematic roughness; the book "
+            "finds it essentially kinematic above 150 Hz"))
+    frequencies = [*(float(fn) for fn in spec.natural_frequency), math.nan]
+    centres = along["kinematic"][0]
+    values = np.stack([v for _, v in along.values()])
+    return summary, comparisons, (centres, values, frequencies)
+
+
+def _reference_ra(spec, surfaces, evaluated) -> list:
+    """Target-Ra (built-in, ground) and expected-rms (random) comparisons."""
+    out = []
+    if spec.kind == "builtin":
+        for label in surfaces:
+            target = s.BUILTIN_PROFILES[label]["ra"]
+            out.append(Comparison(f"Ra of profile {label}", evaluated[label].primary["Ra"],
+                                  target, "Holmes, Evans & Snidle (2005), Fig. 1 text", "m",
+                                  0.01, "synthetic stand-in generated to this Ra"))
+    elif spec.kind == "ground":
+        out.append(Comparison("Ra", evaluated["ground"].primary["Ra"], spec.ra,
+                              "target Ra of the case", "m", 0.01))
+    elif spec.kind in ("gaussian", "self-affine") and spec.rms is not None:
+        name = "Rq" if spec.width is None else "Sq"
+        out.append(Comparison(name, evaluated[spec.kind].primary[name], spec.rms,
+                              "expected rms of the random surface", "m",
+                              note="one realisation of a random surface, not a check"))
+    return out
+
+
+def _figures(case, surfaces, evaluated, turned, window) -> dict:
+    from ..plotting.surfaces import (
+        plot_profiles,
+        plot_spectrum,
+        plot_topography,
+        plot_turning_roughness,
+    )
+
+    labels = list(surfaces)
+    first = surfaces[labels[0]]
+    figures = {}
+    if isinstance(first, s.Topography):
+        figures["topography"] = (lambda: plot_topography(first, case.title),
+                                 "Height map of the surface.")
+    else:
+        shown = surfaces
+        caption = "Profiles offset for clarity, metal below the curves."
+        if case.surface.kind == "turned":
+            span = min(first.length, 10 * case.surface.feed)
+            shown = {k: _trimmed_to(p, span) for k, p in surfaces.items()}
+            caption = f"The first {span * 1e3:.3g} mm of each profile; " + caption
+        if case.surface.kind == "builtin":
+            caption += " Compare Holmes, Evans & Snidle (2005), Fig. 1."
+        figures["profiles"] = (lambda: plot_profiles(shown, title=case.title), caption)
+    ev = evaluated[labels[0]]
+    if ev.waviness is not None:
+        cut = case.evaluation.cutoff
+        split = {"primary": first, f"waviness, lambda_c = {cut * 1e3:.3g} mm": ev.waviness,
+                 "roughness": ev.roughness}
+        figures["waviness"] = (lambda: plot_profiles(split, title=f"Gaussian filter: {labels[0]}"),
+                               "Primary profile, its waviness (the ISO 16610-21 Gaussian mean "
+                               "line) and roughness, offset for clarity.")
+    for label, surf in surfaces.items():
+        stem = "spectrum" if len(labels) == 1 else f"spectrum_{_tag(label)}"
+        figures[stem] = (lambda surf=surf, label=label: plot_spectrum(
+            surf, title=f"Power spectral density: {label}"),
+            f"Power spectral density of {label}" +
+            ("" if surf.periodic else " (Hann window)") + ".")
+    if turned:
+        figures["roughness_along"] = (
+            lambda: plot_turning_roughness(turned, window, labels[:len(turned)]),
+            f"Rt in consecutive {window * 1e3:.3g} mm windows along the workpiece for each tool "
+            "natural frequency, with the kinematic f^2/(8r) dashed (cf. Seireg Fig. 4.2).")
+    return figures
+
+
+def _trimmed_to(profile: s.Profile, span: float) -> s.Profile:
+    keep = profile.x - profile.x[0] < span
+    return s.Profile(profile.x[keep], profile.z[keep])
+
+
+def run(case, progress=None) -> Outcome:
+    """Characterise the case's surfaces; compare with the closed forms that apply."""
+    spec = case.surface
+    surfaces, turned = _surfaces(spec, progress)
+    evaluated = {label: _evaluate(surf, case.evaluation) for label, surf in surfaces.items()}
+    summary = _summary(spec, surfaces, evaluated)
+    comparisons = _reference_ra(spec, surfaces, evaluated)
+    along, window, notes = None, None, []
+    if spec.kind == "turned":
+        extra, rows, along = _turning(spec, surfaces, turned, case.evaluation)
+        summary.update(extra)
+        comparisons += rows
+        window = summary.get("window_m")
+        if spec.spacing is not None and not math.isclose(spec.profile_spacing(), spec.spacing):
+            notes.append(f"The spacing was reduced to {spec.profile_spacing():.4g} m, an odd "
+                         "fraction of the feed, so that the feed-mark cusps fall on grid points.")
+        if turned:
+            notes.append(_DYNAMIC)
+    if spec.kind == "builtin":
+        notes.append(_SYNTHETIC)
+    if case.evaluation.cutoff is not None:
+        notes.append("Parameters are those of the roughness profile (Gaussian filter, cut-off "
+                     f"{case.evaluation.cutoff:.4g} m); pa/pq/pt are of the primary profile and "
+                     "wa/wq/wt of the waviness.")
+    dataset = _dataset(case, surfaces, evaluated, along)
+    figures = _figures(case, surfaces, evaluated, turned, window)
+    return Outcome(dataset, summary, figures, comparisons, notes=notes)
