@@ -109,3 +109,77 @@ def _normal_hertz_ellipse():
     return [Comparison("maximum pressure", res.pressure.max(), h.p_max, src, "Pa", 0.01),
             Comparison("approach", res.approach, h.approach, src, "m", 0.01),
             Comparison("contact area", res.contact_area, h.area, src, "m^2", 0.02)]
+
+
+# ------------------------------------------------------------------------ rough surfaces
+@check("surface-sine-parameters", "REFERENCE.md, Roughness (sine: Ra 2A/pi, Rq A/sqrt 2, Rku 1.5)")
+def _sine_parameters():
+    from .surfaces import Profile, cell_centres, roughness_parameters
+
+    amplitude, wavelength = 1.0e-6, 100e-6
+    x = cell_centres(1000, wavelength / 200)  # five whole periods, periodic
+    sine = roughness_parameters(Profile(x, amplitude * np.sin(2 * np.pi * x / wavelength), True))
+    # Two harmonics z = A cos t + B cos 2t: <z^3> = 3 A^2 B / 4, <z^2> = (A^2 + B^2) / 2.
+    t = 2 * np.pi * x / wavelength
+    two = roughness_parameters(Profile(x, np.cos(t) + 0.5 * np.cos(2 * t), True))
+    src = "closed form"
+    return [Comparison("Ra of a sine / A", sine["Ra"] / amplitude, 2 / np.pi, src, "1", 1e-4),
+            Comparison("Rq of a sine / A", sine["Rq"] / amplitude, 1 / np.sqrt(2), src, "1",
+                       1e-9),
+            Comparison("Rku of a sine", sine["Rku"], 1.5, src, "1", 1e-9),
+            Comparison("Rsk of cos t + cos(2t)/2", two["Rsk"], 0.375 / 0.625**1.5, src, "1",
+                       1e-9)]
+
+
+@check("turning-kinematic", "Seireg eq. (4.1); parabolic feed marks (Rsk 2 sqrt 5 / 7, Rku 15/7)")
+def _turning_kinematic():
+    from .surfaces import roughness_parameters, turned_profile
+
+    feed, radius = 0.02e-3, 0.8e-3  # f/r small: circle and parabola differ by ~(f/r)^2
+    p = roughness_parameters(turned_profile(feed, radius, 20 * feed, feed / 1001))
+    book = roughness_parameters(turned_profile(0.127e-3, 0.794e-3, 2.54e-3, 0.127e-3 / 201))
+    src = "parabolic feed marks"
+    return [Comparison("Rt / (f^2 / 8 r)", p["Rt"] / (feed**2 / (8 * radius)), 1.0,
+                       "Seireg eq. (4.1)", "1", 1e-3),
+            Comparison("Ra / (f^2 / (18 sqrt 3 r))", p["Ra"] / (feed**2 / (18 * np.sqrt(3)
+                                                                          * radius)), 1.0, src,
+                       "1", 1e-3),
+            Comparison("Rsk", p["Rsk"], 2 * np.sqrt(5) / 7, src, "1", 1e-3),
+            Comparison("Rku", p["Rku"], 15 / 7, src, "1", 1e-3),
+            Comparison("Rt, f = 0.127 mm, r = 0.794 mm", book["Rt"] * 1e6,
+                       0.127e-3**2 / (8 * 0.794e-3) * 1e6, "Seireg eq. (4.1), Fig. 4.2 tool",
+                       "um", 0.01)]
+
+
+@check("gaussian-filter-50pct", "ISO 16610-21: 50 % transmission at the cut-off")
+def _gaussian_filter_half():
+    from .surfaces import gaussian_filter, gaussian_transmission
+
+    cutoff, h = 0.8e-3, 2e-6
+    x = (np.arange(4000) + 0.5) * h  # 8 mm: ten whole cut-off wavelengths
+    z = np.sin(2 * np.pi * x / cutoff)
+    rows = [Comparison("transmission formula at lambda_c", float(gaussian_transmission(cutoff,
+                                                                                       cutoff)),
+                       0.5, "exp(-pi alpha^2) = 1/2", "1", 1e-12)]
+    for periodic in (True, False):
+        mean_line = gaussian_filter(z, x, cutoff, periodic=periodic)
+        # Amplitude of the mean line away from the ends (one cut-off each side), by least squares.
+        inner = slice(None) if periodic else slice(400, -400)
+        basis = np.column_stack([np.sin(2 * np.pi * x / cutoff), np.cos(2 * np.pi * x / cutoff)])
+        coef = np.linalg.lstsq(basis[inner], mean_line[inner], rcond=None)[0]
+        rows.append(Comparison(f"mean-line amplitude of a lambda_c sine, "
+                               f"{'periodic' if periodic else 'end-corrected'}",
+                               float(np.hypot(*coef)), 0.5, "ISO 16610-21", "1",
+                               1e-9 if periodic else 1e-6))
+    return rows
+
+
+@check("builtin-profile-ra", "Holmes, Evans & Snidle (2005) Fig. 1: Ra 0.32, 0.22, 0.31 um")
+def _builtin_profile_ra():
+    from .surfaces import builtin_profile, roughness_parameters
+
+    targets = {"A": 0.32, "B": 0.22, "C": 0.31}
+    return [Comparison(f"Ra of profile {name}",
+                       roughness_parameters(builtin_profile(name))["Ra"] * 1e6, ra,
+                       "Holmes et al. (2005), synthetic stand-in", "um", 0.01)
+            for name, ra in targets.items()]

@@ -17,6 +17,7 @@ from pydantic import ValidationError
 from ..errors import InputError
 from .fields import first_error
 from .normal import NormalCase
+from .surface import SurfaceCase
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -26,7 +27,7 @@ else:  # pragma: no cover
 __all__ = ["ANALYSES", "load_case", "parse_toml"]
 
 #: Case models by the value of their ``analysis`` key.
-ANALYSES = {"normal": NormalCase}
+ANALYSES = {"normal": NormalCase, "surface": SurfaceCase}
 
 def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:
     """Parse TOML text; a syntax error becomes an :class:`InputError` naming the line."""
