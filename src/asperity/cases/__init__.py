@@ -15,6 +15,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from ..errors import InputError
+from .ehl import EHLSteadyCase
 from .fields import first_error
 from .normal import NormalCase
 from .surface import SurfaceCase
@@ -27,7 +28,7 @@ else:  # pragma: no cover
 __all__ = ["ANALYSES", "load_case", "parse_toml"]
 
 #: Case models by the value of their ``analysis`` key.
-ANALYSES = {"normal": NormalCase, "surface": SurfaceCase}
+ANALYSES = {"normal": NormalCase, "surface": SurfaceCase, "ehl-steady": EHLSteadyCase}
 
 def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:
     """Parse TOML text; a syntax error becomes an :class:`InputError` naming the line."""

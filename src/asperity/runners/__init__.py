@@ -12,7 +12,7 @@ from importlib import import_module
 __all__ = ["RUNNERS", "run_case"]
 
 #: analysis key -> module holding its ``run`` function
-RUNNERS = {"normal": "normal", "surface": "surface"}
+RUNNERS = {"normal": "normal", "surface": "surface", "ehl-steady": "ehl_steady"}
 
 
 def run_case(case, progress=None):

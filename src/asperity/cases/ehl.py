@@ -1,0 +1,343 @@
+"""Case files of lubricated (EHL) contacts: lubricant, contact, speeds, grid and solver tables.
+
+The tables :class:`LubricantSpec`, :class:`ContactSpec` and :class:`SpeedSpec`, and the base
+:class:`EHLCaseBase` that combines them with the bodies into a
+:class:`~asperity.ehl.PointContact` or :class:`~asperity.ehl.LineContact`, are shared by every
+EHL analysis; :class:`EHLSteadyCase` (``analysis = "ehl-steady"``) adds the mesh and the solver
+options of :func:`asperity.ehl.solve_steady`.
+
+Example (the smooth gear-disk contact of Holmes et al. 2005, Table 1)::
+
+    analysis = "ehl-steady"
+    reduced_modulus = "227 GPa"
+
+    [contact]
+    type = "point"
+    rx = "19.1 mm"
+    ry = "151 mm"
+    load = "962 N"
+
+    [speeds]
+    u = "25 m/s"        # mean entrainment speed (u1 + u2)/2
+    xi = 0.25           # slide/roll ratio (u1 - u2)/u
+
+    [lubricant]
+    eta0 = "0.005 Pa s"
+    alpha = "11.1 1/GPa"
+    tau0 = "10 MPa"
+
+    [grid]
+    nx = 257            # or cells_per_a = 64 (dx = a/64)
+    ny = 129            # or cells_per_b = 32
+
+    [solver]
+    levels = 3
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from ..ehl.lubricant import DH_GAMMA, DH_LAMBDA, ROELANDS_CHI, ROELANDS_KAPPA, Lubricant
+from ..ehl.problem import LineContact, PointContact
+from ..errors import InputError
+from ..materials import Material
+from .bodies import MaterialSpec
+from .fields import CaseModel, Quantity
+
+__all__ = [
+    "ContactSpec",
+    "EHLCaseBase",
+    "EHLGridSpec",
+    "EHLSteadyCase",
+    "LubricantSpec",
+    "SolverSpec",
+    "SpeedSpec",
+]
+
+
+class LubricantSpec(CaseModel):
+    """``[lubricant]``: viscosity and density laws and the Eyring stress (seed Eqs. 3-4).
+
+    ``eta0`` ambient viscosity, ``alpha`` pressure-viscosity coefficient (``"11.1 1/GPa"``),
+    ``viscosity_model`` ``"roelands"`` (constants ``kappa``, ``chi``) or ``"barus"``,
+    ``density_model`` ``"dowson-higginson"`` (constants ``gamma``, ``lambda``) or
+    ``"incompressible"``, ``tau0`` the Eyring stress (``"none"`` or absent: Newtonian).
+    """
+
+    name: str = "lubricant"
+    eta0: Quantity("viscosity", gt=0)
+    alpha: Quantity("inverse_pressure", ge=0)
+    viscosity_model: Literal["roelands", "barus"] = "roelands"
+    kappa: Quantity("viscosity", gt=0) = ROELANDS_KAPPA
+    chi: Quantity("inverse_pressure", gt=0) = ROELANDS_CHI
+    density_model: Literal["dowson-higginson", "incompressible"] = "dowson-higginson"
+    rho0: Quantity("density", gt=0) = 850.0
+    gamma: Quantity("inverse_pressure", ge=0) = DH_GAMMA
+    lambda_: Quantity("inverse_pressure", ge=0) = Field(DH_LAMBDA, alias="lambda")
+    tau0: Quantity("pressure", gt=0) | None = None
+
+    @field_validator("tau0", mode="before")
+    @classmethod
+    def _none_word(cls, value):
+        if isinstance(value, str) and value.strip().lower() == "none":
+            return None
+        return value
+
+    @model_validator(mode="after")
+    def _roelands_range(self):
+        if self.viscosity_model == "roelands" and not self.eta0 > self.kappa:
+            raise ValueError(f"expected eta0 > kappa = {self.kappa:g} Pa s for the Roelands law "
+                             '(or viscosity_model = "barus")')
+        return self
+
+    def lubricant(self) -> Lubricant:
+        """The :class:`asperity.ehl.Lubricant` this table describes."""
+        return Lubricant(
+            viscosity=self.eta0, pressure_viscosity=self.alpha,
+            viscosity_model=self.viscosity_model, roelands_kappa=self.kappa,
+            roelands_chi=self.chi, density=self.rho0,
+            compressible=self.density_model == "dowson-higginson", dh_gamma=self.gamma,
+            dh_lambda=self.lambda_, eyring_stress=self.tau0, name=self.name,
+        )
+
+
+class ContactSpec(CaseModel):
+    """``[contact]``: shape and load.
+
+    ``type = "point"``: radii of relative curvature ``rx`` (entrainment direction) and ``ry``,
+    normal ``load`` (N). ``type = "line"``: ``radius`` (or ``rx``) and ``load_per_length``
+    (``"527 kN/m"``).
+    """
+
+    type: Literal["point", "line"] = "point"
+    rx: Quantity("length", gt=0) | None = None
+    ry: Quantity("length", gt=0) | None = None
+    radius: Quantity("length", gt=0) | None = None
+    load: Quantity("force", gt=0) | None = None
+    load_per_length: Quantity("force_per_length", gt=0) | None = None
+
+    @model_validator(mode="after")
+    def _complete(self):
+        if self.type == "point":
+            for key in ("rx", "ry", "load"):
+                if getattr(self, key) is None:
+                    raise ValueError(f"expected {key} for a point contact")
+            for key in ("radius", "load_per_length"):
+                if getattr(self, key) is not None:
+                    raise ValueError(f'expected no {key} for a point contact (type = "line"?)')
+        else:
+            if (self.rx is None) == (self.radius is None):
+                raise ValueError("expected exactly one of radius or rx for a line contact")
+            if self.load_per_length is None:
+                raise ValueError("expected load_per_length (N/m) for a line contact")
+            for key in ("ry", "load"):
+                if getattr(self, key) is not None:
+                    raise ValueError(f"expected no {key} for a line contact")
+        return self
+
+    @property
+    def line(self) -> bool:
+        """True for a line contact."""
+        return self.type == "line"
+
+
+class SpeedSpec(CaseModel):
+    """``[speeds]``: mean speed ``u`` and slide/roll ratio ``xi``, or both surface speeds.
+
+    With ``u`` and ``xi`` (default 0, pure rolling): ``u1 = u (1 + xi/2)``,
+    ``u2 = u (1 - xi/2)``, i.e. ``xi = (u1 - u2)/u``. The mean speed must be positive: a
+    lubricated contact needs entrainment.
+    """
+
+    u: Quantity("speed") | None = None
+    xi: Quantity("dimensionless") | None = None
+    u1: Quantity("speed") | None = None
+    u2: Quantity("speed") | None = None
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        mean_form = self.u is not None or self.xi is not None
+        surface_form = self.u1 is not None or self.u2 is not None
+        if mean_form == surface_form:
+            raise ValueError("expected either u (and xi) or u1 and u2")
+        if surface_form and (self.u1 is None or self.u2 is None):
+            raise ValueError("expected both u1 and u2")
+        if mean_form and self.u is None:
+            raise ValueError("expected u, the mean entrainment speed, with xi")
+        if not sum(self.surface_speeds()) > 0:
+            raise ValueError("expected a positive mean entrainment speed (u1 + u2)/2 > 0: a "
+                             "lubricated contact needs entrainment (for a dry contact use "
+                             'analysis = "normal")')
+        return self
+
+    def surface_speeds(self) -> tuple[float, float]:
+        """(u1, u2) in m/s."""
+        if self.u1 is not None:
+            return self.u1, self.u2
+        xi = 0.0 if self.xi is None else self.xi
+        return self.u * (1.0 + 0.5 * xi), self.u * (1.0 - 0.5 * xi)
+
+
+class EHLCaseBase(CaseModel):
+    """Tables shared by the EHL analyses: bodies (or ``reduced_modulus``), contact, speeds and
+    lubricant; :meth:`problem` builds the contact problem."""
+
+    title: str = "EHL contact"
+    description: str = ""
+    source: str = ""
+    reduced_modulus: Quantity("pressure", gt=0) | None = None
+    body1: MaterialSpec | None = None
+    body2: MaterialSpec | None = None
+    contact: ContactSpec
+    speeds: SpeedSpec
+    lubricant: LubricantSpec
+
+    @model_validator(mode="after")
+    def _bodies(self):
+        bodies = (self.body1 is not None, self.body2 is not None)
+        if self.reduced_modulus is None and bodies != (True, True):
+            raise ValueError("expected [body1] and [body2], or reduced_modulus (E')")
+        if self.reduced_modulus is not None and any(bodies):
+            raise ValueError("expected either reduced_modulus or [body1]/[body2], not both")
+        return self
+
+    def bodies(self) -> tuple[Material, Material]:
+        """The two bodies; ``reduced_modulus`` E' gives two equal bodies with E = E', nu = 0."""
+        if self.reduced_modulus is not None:
+            m = Material(self.reduced_modulus, 0.0, f"E' = {self.reduced_modulus:.4g} Pa")
+            return m, m
+        return self.body1.material(), self.body2.material()
+
+    def problem(self) -> PointContact | LineContact:
+        """The :class:`~asperity.ehl.PointContact` or :class:`~asperity.ehl.LineContact`."""
+        u1, u2 = self.speeds.surface_speeds()
+        body1, body2 = self.bodies()
+        lub = self.lubricant.lubricant()
+        c = self.contact
+        if c.line:
+            radius = c.radius if c.radius is not None else c.rx
+            return LineContact(radius, c.load_per_length, u1, u2, body1, body2, lub)
+        return PointContact(c.rx, c.ry, c.load, u1, u2, body1, body2, lub)
+
+
+class EHLGridSpec(CaseModel):
+    """``[grid]``: nodes and domain of an EHL solve, in units of the Hertz semi-axes.
+
+    The domain is ``x_min a < x < x_max a``, ``y_min b < y < y_max b`` (default the seed's
+    -2.5a..1.5a, -2b..2b; y is unused for a line contact) and must hold the Hertz contact.
+    The mesh is ``nx`` x ``ny`` nodes with end nodes on the bounds, or a spacing
+    ``cells_per_a`` (dx = a/cells_per_a) and ``cells_per_b``; the seed's mesh a/200 x b/50 is
+    ``nx = 801``, ``ny = 201``. A line contact has ``ny = 1``.
+    """
+
+    nx: Annotated[int, Field(ge=9, le=8193)] = 129
+    ny: Annotated[int, Field(ge=1, le=4097)] = 65
+    x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
+    x_max: Annotated[float, Field(gt=1.0, le=100.0)] = 1.5
+    y_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.0
+    y_max: Annotated[float, Field(gt=1.0, le=100.0)] = 2.0
+
+    @model_validator(mode="before")
+    @classmethod
+    def _spacing(cls, data):
+        """Turn ``cells_per_a``/``cells_per_b`` into node counts over the domain."""
+        if not isinstance(data, dict):
+            return data
+        data = dict(data)
+        for cells_key, nodes_key, lo, hi, default in (
+            ("cells_per_a", "nx", "x_min", "x_max", (-2.5, 1.5)),
+            ("cells_per_b", "ny", "y_min", "y_max", (-2.0, 2.0)),
+        ):
+            if cells_key not in data:
+                continue
+            if nodes_key in data:
+                raise ValueError(f"expected either {nodes_key} or {cells_key}, not both")
+            cells = data.pop(cells_key)
+            if isinstance(cells, bool):
+                raise ValueError(f"expected a number for {cells_key}")
+            try:
+                span = float(data.get(hi, default[1])) - float(data.get(lo, default[0]))
+                cells = float(cells)
+            except (TypeError, ValueError):
+                raise ValueError(f"expected numbers for {cells_key}, {lo}, {hi}") from None
+            if not (cells > 0 and math.isfinite(cells) and math.isfinite(span)):
+                raise ValueError(f"expected a positive {cells_key} (cells per semi-axis)")
+            data[nodes_key] = min(round(span * cells), 10**6) + 1
+        return data
+
+    def nodes(self, line: bool) -> tuple[int, int]:
+        """(nx, ny) of the solve; ny = 1 for a line contact."""
+        return self.nx, 1 if line else self.ny
+
+    def domain(self, a: float, b: float | None):
+        """((x0, x1), (y0, y1)) in m for Hertz semi-axes a, b (b None: line contact)."""
+        if b is None:
+            return (self.x_min * a, self.x_max * a), (0.0, 0.0)
+        return (self.x_min * a, self.x_max * a), (self.y_min * b, self.y_max * b)
+
+
+class SolverSpec(CaseModel):
+    """``[solver]``: options of :func:`asperity.ehl.solve_steady`.
+
+    ``levels`` grids in the sequence (node counts ``2^(levels-1) m + 1``), ``tolerance``,
+    ``max_sweeps`` per grid (default 5000 for a point contact and 40000 for a line contact,
+    whose point relaxation needs many sweeps), ``method`` ``"line"``/``"point"`` (default by
+    contact type) and the ``boundary_friction`` coefficient of dry nodes.
+    """
+
+    levels: Annotated[int, Field(ge=1, le=6)] = 1
+    tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
+    max_sweeps: Annotated[int, Field(ge=1, le=200_000)] | None = None
+    method: Literal["line", "point"] | None = None
+    boundary_friction: Annotated[float, Field(ge=0, le=10)] = 0.1
+
+    def sweep_limit(self, line: bool) -> int:
+        """``max_sweeps``, or its default for the contact type."""
+        if self.max_sweeps is not None:
+            return self.max_sweeps
+        return 40_000 if line else 5_000
+
+
+class ReferenceSpec(CaseModel):
+    """``[reference]``: published numbers for this case, compared in the report."""
+
+    source: str
+    central_film: Quantity("length", gt=0) | None = None
+    minimum_film_centreline: Quantity("length", gt=0) | None = None
+    minimum_film: Quantity("length", gt=0) | None = None
+    max_pressure: Quantity("pressure", gt=0) | None = None
+    tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.05
+
+
+class EHLSteadyCase(EHLCaseBase):
+    """``analysis = "ehl-steady"``: smooth steady EHL of a point or line contact."""
+
+    analysis: Literal["ehl-steady"]
+    title: str = "Steady EHL contact"
+    grid: EHLGridSpec = EHLGridSpec()
+    solver: SolverSpec = SolverSpec()
+    reference: ReferenceSpec | None = None
+
+    @model_validator(mode="after")
+    def _mesh(self):
+        line = self.contact.line
+        if line and "ny" in self.grid.model_fields_set and self.grid.ny != 1:
+            raise ValueError("expected grid.ny = 1 (or no ny) for a line contact")
+        step = 2 ** (self.solver.levels - 1)
+        for key, n in zip(("nx", "ny"), self.grid.nodes(line), strict=True):
+            if key == "ny" and line:
+                continue
+            if (n - 1) % step or (n - 1) // step + 1 < 9:
+                raise ValueError(
+                    f"expected grid.{key} = {step} m + 1 with m >= 8 for solver.levels = "
+                    f"{self.solver.levels} (e.g. {8 * step + 1}, {16 * step + 1}, "
+                    f"{32 * step + 1}); got {n}")
+        try:
+            self.problem()
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
+        return self

@@ -1,0 +1,151 @@
+"""Figures of a steady EHL solution in the style of the mixed-EHL seed's Fig. 2.
+
+Contour maps of pressure (GPa) and film thickness (um) over x/a and y/b, where the Hertz
+ellipse is the unit circle (drawn heavy); profiles along the entrainment centre line y = 0
+(pressure and film on their own axes, Hertz pressure dashed); and a transverse section at
+x = 0 that shows the side constrictions of a point contact.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .style import new_figure, plt
+
+__all__ = ["contour_maps", "centre_line_profiles", "transverse_section"]
+
+
+def _hertz_circle(ax):
+    t = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax.plot(np.cos(t), np.sin(t), "k-", lw=2.4, label="Hertz contact")
+
+
+def _film_levels(film_um, h_c_um):
+    """Film contour levels from the minimum to twice the central film (the contact region)."""
+    lo = float(np.min(film_um))
+    hi = max(2.0 * h_c_um, lo * 1.5, lo + 1e-6)
+    return np.linspace(lo, hi, 17)
+
+
+def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
+    """Pressure (GPa, upper) and film (um, lower) contours over x/a, y/b with the Hertz ellipse.
+
+    Parameters
+    ----------
+    x, y : ndarray
+        Node coordinates, m.
+    pressure, film : ndarray
+        p (Pa) and h (m), indexed ``[ix, iy]``.
+    a, b : float
+        Hertz semi-axes along x and y, m.
+    central_film : float
+        h at the centre, m (sets the film contour range).
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    X, Y = np.meshgrid(np.asarray(x) / a, np.asarray(y) / b, indexing="ij")
+    fig, (ax_p, ax_h) = plt.subplots(2, 1, figsize=(6.4, 8.0), layout="constrained",
+                                     sharex=True)
+    p_gpa = np.asarray(pressure) / 1e9
+    levels = np.linspace(0.0, max(p_gpa.max(), 1e-12), 12)[1:]
+    filled = ax_p.contourf(X, Y, p_gpa, levels=np.r_[0.0, levels], cmap="magma_r")
+    lines = ax_p.contour(X, Y, p_gpa, levels=levels[::2], colors="k", linewidths=0.5)
+    ax_p.clabel(lines, fmt="%.2f", fontsize=7)
+    fig.colorbar(filled, ax=ax_p, label="pressure (GPa)")
+    _hertz_circle(ax_p)
+    ax_p.set(ylabel="y / b", title=f"{title}: pressure (GPa)")
+
+    h_um = np.asarray(film) * 1e6
+    h_levels = _film_levels(h_um, central_film * 1e6)
+    filled = ax_h.contourf(X, Y, np.clip(h_um, None, h_levels[-1]), levels=h_levels,
+                           cmap="viridis")
+    lines = ax_h.contour(X, Y, h_um, levels=h_levels[1::3], colors="k", linewidths=0.5)
+    ax_h.clabel(lines, fmt="%.2f", fontsize=7)
+    fig.colorbar(filled, ax=ax_h, label="film thickness (um)")
+    _hertz_circle(ax_h)
+    ax_h.set(xlabel="x / a  (entrainment ->)", ylabel="y / b", title="film thickness (um)")
+    for ax in (ax_p, ax_h):
+        ax.set_aspect("equal")
+    return fig
+
+
+def centre_line_profiles(x, pressure, film, a, hertz_pressure=None, title="Centre line y = 0"):
+    """Pressure (GPa) and film (um) along the centre line, on two stacked axes over x/a.
+
+    Parameters
+    ----------
+    x : ndarray
+        Node coordinates, m.
+    pressure, film : ndarray
+        p (Pa) and h (m) along y = 0.
+    a : float
+        Hertz semi-axis (half-width) along x, m.
+    hertz_pressure : ndarray, optional
+        The dry Hertz pressure on the same nodes, Pa (dashed).
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, (ax_p, ax_h) = plt.subplots(2, 1, figsize=(6.4, 5.6), layout="constrained",
+                                     sharex=True, height_ratios=(3, 2))
+    xa = np.asarray(x) / a
+    ax_p.plot(xa, np.asarray(pressure) / 1e9, "k-", lw=1.8, label="EHL pressure")
+    if hertz_pressure is not None:
+        ax_p.plot(xa, np.asarray(hertz_pressure) / 1e9, "r--", lw=1.0, label="dry Hertz")
+    ax_p.set(ylabel="pressure (GPa)", title=title)
+    ax_p.legend(loc="upper left", fontsize=8)
+    h_um = np.asarray(film) * 1e6
+    ax_h.plot(xa, h_um, "b-", lw=1.4)
+    i_min = int(np.argmin(h_um))
+    ax_h.annotate(f"h_min = {h_um[i_min]:.3f} um", (xa[i_min], h_um[i_min]),
+                  xytext=(-90, 25), textcoords="offset points", fontsize=8,
+                  arrowprops={"arrowstyle": "->", "lw": 0.8})
+    inside = np.abs(xa) <= 1.0
+    top = 3.0 * float(np.median(h_um[inside])) if inside.any() else float(h_um.max())
+    ax_h.set(xlabel="x / a  (entrainment ->)", ylabel="film (um)",
+             ylim=(0.0, max(top, 1.2 * float(h_um.min()), 1e-9)))
+    for ax in (ax_p, ax_h):
+        ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
+    return fig
+
+
+def transverse_section(y, pressure, film, b, title="Transverse section x = 0"):
+    """Pressure (GPa) and film (um) across the contact at x = 0, over y/b (side view).
+
+    Parameters
+    ----------
+    y : ndarray
+        Node coordinates across the entrainment direction, m.
+    pressure, film : ndarray
+        p (Pa) and h (m) along x = 0.
+    b : float
+        Hertz semi-axis along y, m.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, ax = new_figure(6.4, 3.8)
+    yb = np.asarray(y) / b
+    ax.plot(yb, np.asarray(pressure) / 1e9, "k-", lw=1.8, label="pressure")
+    ax.set(xlabel="y / b", ylabel="pressure (GPa)", title=title)
+    ax2 = ax.twinx()
+    h_um = np.asarray(film) * 1e6
+    ax2.plot(yb, h_um, "b-", lw=1.2, label="film")
+    inside = np.abs(yb) <= 1.0
+    top = 3.0 * float(np.median(h_um[inside])) if inside.any() else float(h_um.max())
+    ax2.set_ylim(0.0, max(top, 1e-9))
+    ax2.set_ylabel("film (um)", color="b")
+    ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
+    lines = ax.get_lines() + ax2.get_lines()
+    ax.legend(lines, [ln.get_label() for ln in lines], loc="upper right", fontsize=8)
+    return fig
