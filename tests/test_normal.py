@@ -1,0 +1,205 @@
+"""Dry normal contact (Polonsky-Keer CCG) against Hertz, against itself, and on rough surfaces."""
+
+import numpy as np
+import pytest
+
+from asperity.contact import hertz_point, solve_normal
+from asperity.errors import InputError
+from asperity.materials import Material, contact_modulus
+
+BODY = Material(200e9, 0.3)
+
+
+def centred(n, length):
+    """n cell centres (n odd puts one at 0) on a segment of the given length."""
+    return (np.arange(n) - (n - 1) / 2) * length / n
+
+
+def hertz_problem(rx, ry, load, cells_across=50, span=1.5):
+    """Gap x^2/(2 rx) + y^2/(2 ry) with ~cells_across cells over each contact diameter."""
+    hz = hertz_point(load, rx, ry, BODY, BODY)
+    n = int(round(span * cells_across)) | 1
+    x = centred(n, span * 2 * hz.a)
+    y = centred(n, span * 2 * hz.b)
+    gap0 = x[:, None] ** 2 / (2 * rx) + y[None, :] ** 2 / (2 * ry)
+    return hz, gap0, x, y
+
+
+def semi_axis(coord, pressure_line):
+    """Semi-axis from p^2 = p0^2 (1 - s^2/c^2) fitted on the inner 80 % of the contact."""
+    inside = pressure_line > 0
+    extent = np.abs(coord[inside]).max()
+    use = inside & (np.abs(coord) < 0.8 * extent)
+    slope, intercept = np.polyfit(coord[use] ** 2, pressure_line[use] ** 2, 1)
+    return np.sqrt(-intercept / slope)
+
+
+@pytest.mark.parametrize("rx, ry", [(0.01, 0.01), (0.0191, 0.151)])
+def test_hertz_non_periodic(rx, ry):
+    """p_max, semi-axes and approach within 1 % of Hertz with 50 cells across the contact."""
+    hz, gap0, x, y = hertz_problem(rx, ry, 962.0)
+    res = solve_normal(gap0, x, y, BODY, BODY, load=962.0)
+    assert res.converged and res.residual < 1e-8
+    ix, iy = len(x) // 2, len(y) // 2
+    assert res.max_pressure == pytest.approx(hz.p_max, rel=0.01)
+    assert semi_axis(x, res.pressure[:, iy]) == pytest.approx(hz.a, rel=0.01)
+    assert semi_axis(y, res.pressure[ix, :]) == pytest.approx(hz.b, rel=0.01)
+    assert res.approach == pytest.approx(hz.approach, rel=0.01)
+    assert res.contact_area == pytest.approx(hz.area, rel=0.02)
+    assert res.load == pytest.approx(962.0, rel=1e-12)
+    # the deformed gap closes where the pressure acts
+    assert np.abs(res.gap[res.contact]).max() < 1e-6 * hz.approach
+
+
+def rough_surface(n, length, hurst, seed):
+    """Periodic self-affine heights (std 1 um) by spectral filtering of white noise."""
+    rng = np.random.default_rng(seed)
+    qx = np.fft.fftfreq(n, length / n)
+    qy = np.fft.rfftfreq(n, length / n)
+    q = np.hypot(qx[:, None], qy[None, :])
+    amplitude = np.zeros_like(q)
+    amplitude[q > 0] = q[q > 0] ** (-1.0 - hurst)
+    noise = rng.normal(size=q.shape) + 1j * rng.normal(size=q.shape)
+    heights = np.fft.irfft2(amplitude * noise, s=(n, n))
+    return heights * (1e-6 / heights.std())
+
+
+LENGTH = 1e-4
+
+
+@pytest.fixture(scope="module")
+def rough():
+    n = 128
+    heights = rough_surface(n, LENGTH, 0.8, seed=1)
+    x = (np.arange(n) + 0.5) * LENGTH / n
+    return heights.max() - heights, x
+
+
+@pytest.mark.parametrize(
+    "mean_pressure, fraction",
+    [(1e8, (0.005, 0.02)), (1.2e9, (0.07, 0.14)), (2.5e10, (0.85, 0.95)),
+     (4e10, (0.97, 0.999)), (1e11, (1.0, 1.0))],
+)
+def test_rough_periodic_converges_from_sparse_to_full_contact(rough, mean_pressure, fraction):
+    """~1 %, ~10 %, ~90 %, ~99 % and full contact all converge to the tolerance.
+
+    Near full contact is where ContactMechanics' CCG stagnates (its issue 3).
+    """
+    gap0, x = rough
+    load = mean_pressure * LENGTH**2
+    seen = []
+    res = solve_normal(gap0, x, x, BODY, BODY, load=load, periodic=True,
+                       callback=lambda it, r: seen.append((it, r)))
+    assert res.converged and res.residual < 1e-8
+    assert res.iterations < 150
+    assert [it for it, _ in seen] == list(range(1, res.iterations + 1))
+    assert fraction[0] <= res.contact_fraction <= fraction[1]
+    # equilibrium
+    assert res.pressure.sum() * (x[1] - x[0]) ** 2 == pytest.approx(load, rel=1e-8)
+    # complementarity: p >= 0; no pressure where the gap is open; no penetration
+    scale = np.ptp(res.displacement)
+    assert res.pressure.min() >= 0.0
+    assert np.all(res.gap[~res.contact] > -1e-8 * scale)
+    assert np.sqrt(np.mean(res.gap[res.contact] ** 2)) < 1e-8 * scale
+    assert np.all(res.pressure[res.gap > 1e-6 * scale] == 0.0)
+    # the periodic displacement has zero mean; the approach shifts the mean gap
+    assert abs(res.displacement.mean()) < 1e-12 * scale
+    assert res.approach == pytest.approx(gap0.mean() - res.gap.mean(), rel=1e-9)
+
+
+def test_full_contact_is_the_linear_solution(rough):
+    """In full contact p = P/A - K^-1 (gap0 - mean gap0): check in Fourier space."""
+    gap0, x = rough
+    mean_pressure = 1e11
+    res = solve_normal(gap0, x, x, BODY, BODY, load=mean_pressure * LENGTH**2, periodic=True)
+    assert res.contact.all()
+    n = len(x)
+    q = 2 * np.pi * np.hypot(np.fft.fftfreq(n, LENGTH / n)[:, None],
+                             np.fft.rfftfreq(n, LENGTH / n)[None, :])
+    spectrum = np.fft.rfft2(gap0 - gap0.mean())
+    stiffness = contact_modulus(BODY, BODY) * q / 2
+    expected = mean_pressure - np.fft.irfft2(stiffness * spectrum, s=(n, n))
+    np.testing.assert_allclose(res.pressure, expected, rtol=0, atol=1e-6 * mean_pressure)
+
+
+def test_load_and_approach_control_agree_periodic(rough):
+    gap0, x = rough
+    by_load = solve_normal(gap0, x, x, BODY, BODY, load=1.2e9 * LENGTH**2, periodic=True)
+    by_approach = solve_normal(gap0, x, x, BODY, BODY, approach=by_load.approach, periodic=True)
+    assert by_approach.converged
+    assert by_approach.load == pytest.approx(by_load.load, rel=1e-6)
+    assert np.array_equal(by_approach.contact, by_load.contact)
+    scale = np.abs(by_load.pressure).max()
+    np.testing.assert_allclose(by_approach.pressure, by_load.pressure, rtol=0, atol=1e-6 * scale)
+
+
+def test_load_and_approach_control_agree_non_periodic():
+    hz, gap0, x, y = hertz_problem(0.0191, 0.151, 962.0, cells_across=30)
+    by_load = solve_normal(gap0, x, y, BODY, BODY, load=962.0)
+    by_approach = solve_normal(gap0, x, y, BODY, BODY, approach=by_load.approach)
+    assert by_approach.converged
+    assert by_approach.approach == by_load.approach
+    assert by_approach.load == pytest.approx(962.0, rel=1e-6)
+    np.testing.assert_allclose(by_approach.pressure, by_load.pressure, rtol=0,
+                               atol=1e-6 * hz.p_max)
+
+
+def test_no_contact_under_approach_control():
+    hz, gap0, x, y = hertz_problem(0.01, 0.01, 10.0, cells_across=10)
+    res = solve_normal(gap0 + 1e-6, x, y, BODY, BODY, approach=0.5e-6)
+    assert res.converged and res.load == 0.0 and not res.contact.any()
+
+
+def test_iteration_limit_reports_non_convergence(rough):
+    gap0, x = rough
+    res = solve_normal(gap0, x, x, BODY, BODY, load=1.2e9 * LENGTH**2, periodic=True,
+                       max_iterations=3)
+    assert not res.converged
+    assert res.iterations == 3 and res.residual > 1e-8
+
+
+def test_agrees_with_contactmechanics(rough):
+    """Same discrete problem (periodic continuum kernel) solved by ContactMechanics' CCG."""
+    pytest.importorskip("ContactMechanics")
+    from ContactMechanics import PeriodicFFTElasticHalfSpace
+    from ContactMechanics.Optimization import constrained_conjugate_gradients
+
+    gap0, x = rough
+    n, load = len(x), 1.2e9 * LENGTH**2
+    substrate = PeriodicFFTElasticHalfSpace((n, n), contact_modulus(BODY, BODY),
+                                            physical_sizes=(LENGTH, LENGTH))
+    peer = constrained_conjugate_gradients(substrate, -gap0, external_force=load,
+                                           pentol=1e-9 * gap0.std())
+    assert peer.success
+    peer_pressure = peer.jac / (LENGTH / n) ** 2
+    ours = solve_normal(gap0, x, x, BODY, BODY, load=load, periodic=True)
+    error = np.linalg.norm(ours.pressure - peer_pressure) / np.linalg.norm(peer_pressure)
+    assert error < 1e-5
+    assert abs(np.count_nonzero(peer_pressure > 0) - np.count_nonzero(ours.contact)) <= 2
+
+
+def test_bad_input(rough):
+    gap0, x = rough
+    ok = {"load": 1.0}
+    with pytest.raises(InputError, match="gap0"):
+        solve_normal(np.where(gap0 > gap0.mean(), np.nan, gap0), x, x, BODY, BODY, **ok)
+    with pytest.raises(InputError, match="gap0"):
+        solve_normal(gap0[:, :-1], x, x, BODY, BODY, **ok)
+    with pytest.raises(InputError, match="load"):
+        solve_normal(gap0, x, x, BODY, BODY, load=-1.0)
+    with pytest.raises(InputError, match="load, approach"):
+        solve_normal(gap0, x, x, BODY, BODY)
+    with pytest.raises(InputError, match="load, approach"):
+        solve_normal(gap0, x, x, BODY, BODY, load=1.0, approach=1e-6)
+    with pytest.raises(InputError, match="approach"):
+        solve_normal(gap0, x, x, BODY, BODY, approach=float("nan"))
+    with pytest.raises(InputError, match="approach"):  # periodic: mean gap must stay open
+        solve_normal(gap0, x, x, BODY, BODY, approach=gap0.mean(), periodic=True)
+    bent = x.copy()
+    bent[5] += 0.3 * (x[1] - x[0])
+    with pytest.raises(InputError, match="x"):
+        solve_normal(gap0, bent, x, BODY, BODY, **ok)
+    with pytest.raises(InputError, match="tol"):
+        solve_normal(gap0, x, x, BODY, BODY, tol=0.0, **ok)
+    with pytest.raises(InputError, match="max_iterations"):
+        solve_normal(gap0, x, x, BODY, BODY, max_iterations=0, **ok)
