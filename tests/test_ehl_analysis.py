@@ -1,0 +1,191 @@
+"""The ehl-steady analysis: case tables, units, bad input, runner output and figures."""
+
+import copy
+
+import numpy as np
+import pytest
+
+from asperity.cases import load_case, parse_toml
+from asperity.ehl import LineContact, PointContact
+from asperity.errors import InputError
+from asperity.examples import example_text
+from asperity.runners import run_case
+
+
+def _example(name, **tables):
+    """A built-in example as a dict, with some tables updated."""
+    data = copy.deepcopy(parse_toml(example_text(name)))
+    for table, values in tables.items():
+        if values is None:
+            data.pop(table, None)
+        elif isinstance(values, dict):
+            data.setdefault(table, {}).update(values)
+        else:
+            data[table] = values
+    return data
+
+
+def test_units_and_speeds_of_the_point_example():
+    case = load_case(_example("holmes-smooth-point"))
+    prob = case.problem()
+    assert isinstance(prob, PointContact)
+    assert prob.rx == pytest.approx(0.0191) and prob.ry == pytest.approx(0.151)
+    assert prob.reduced_modulus == pytest.approx(227e9)
+    lub = prob.lubricant
+    assert lub.pressure_viscosity == pytest.approx(11.1e-9)
+    assert lub.viscosity == pytest.approx(0.005)
+    assert lub.eyring_stress == pytest.approx(10e6)
+    assert lub.roelands_chi == pytest.approx(5.1e-9) and lub.dh_lambda == pytest.approx(1.68e-9)
+    assert lub.compressible and lub.viscosity_model == "roelands"
+    # u1 = u (1 + xi/2), u2 = u (1 - xi/2)
+    assert (prob.u1, prob.u2) == pytest.approx((28.125, 21.875))
+    # Table 1 of the seed: a = 0.335 mm, b = 1.31 mm, p_hz = 1.05 GPa
+    assert prob.a == pytest.approx(0.335e-3, rel=5e-3)
+    assert prob.b == pytest.approx(1.31e-3, rel=5e-3)
+    assert prob.p_hertz == pytest.approx(1.05e9, rel=5e-3)
+
+
+def test_line_example_and_alternative_forms():
+    case = load_case(_example("holmes-smooth-line"))
+    prob = case.problem()
+    assert isinstance(prob, LineContact)
+    assert prob.load_per_length == pytest.approx(527e3)
+    assert prob.a == pytest.approx(0.335e-3, rel=5e-3)
+    assert case.grid.nodes(True) == (257, 1)
+    # u1/u2 instead of u/xi, bodies instead of E', Barus/incompressible/Newtonian
+    data = _example("holmes-smooth-point",
+                    lubricant={"viscosity_model": "barus", "density_model": "incompressible",
+                               "tau0": "none"})
+    data.pop("reduced_modulus")
+    data["speeds"] = {"u1": "10 m/s", "u2": "30 m/s"}
+    data["body1"] = {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3}
+    data["body2"] = {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3}
+    prob = load_case(data).problem()
+    assert (prob.u1, prob.u2) == (10.0, 30.0) and prob.mean_speed == 20.0
+    assert prob.reduced_modulus == pytest.approx(210e9 / 0.91)
+    assert prob.lubricant.newtonian and not prob.lubricant.compressible
+    assert prob.lubricant.viscosity_model == "barus"
+
+
+def test_mesh_from_spacing():
+    data = _example("holmes-smooth-point", grid={"cells_per_a": 200, "cells_per_b": 50},
+                    solver={"levels": 4})
+    del data["grid"]["nx"], data["grid"]["ny"]
+    case = load_case(data)
+    assert case.grid.nodes(False) == (801, 201)  # the seed's mesh a/200 x b/50
+
+
+@pytest.mark.parametrize("table, change, field", [
+    ("speeds", {"u": "0 m/s"}, "speeds"),                     # no entrainment
+    ("speeds", {"u": "-3 m/s"}, "speeds"),
+    ("lubricant", {"eta0": "-0.005 Pa s"}, "lubricant.eta0"),  # negative viscosity
+    ("lubricant", {"alpha": "11.1 GPa"}, "lubricant.alpha"),   # wrong dimension
+    ("lubricant", {"eta0": "1e-5 Pa s"}, "lubricant"),          # below Roelands' kappa
+    ("lubricant", {"tau0": "0 MPa"}, "lubricant.tau0"),
+    ("grid", {"x_min": -0.5}, "grid.x_min"),                    # domain cuts the Hertz area
+    ("grid", {"y_max": 0.9}, "grid.y_max"),
+    ("grid", {"nx": 258}, "case"),                              # not 2^(levels-1) m + 1
+    ("grid", {"cells_per_a": 64}, "grid"),                      # both nx and cells_per_a
+    ("contact", {"type": "line"}, "contact"),                   # point data for a line
+    ("contact", {"load": "-962 N"}, "contact.load"),
+    ("contact", {"rx": "19.1 kg"}, "contact.rx"),
+    ("solver", {"levels": 0}, "solver.levels"),
+    ("solver", {"max_sweeps": 10**7}, "solver.max_sweeps"),
+    ("speeds", {"xi": 0.25, "u1": "1 m/s"}, "speeds"),
+    ("lubricant", {"viscosity": 0.005}, "lubricant.viscosity"),  # misspelt key
+])
+def test_bad_input_is_one_clear_line(table, change, field):
+    with pytest.raises(InputError) as info:
+        load_case(_example("holmes-smooth-point", **{table: change}))
+    message = str(info.value)
+    assert message.startswith(field + ":") and "\n" not in message
+
+
+def test_bad_input_bodies_and_line_ny():
+    with pytest.raises(InputError, match="reduced_modulus"):
+        load_case(_example("holmes-smooth-point", reduced_modulus=None))
+    with pytest.raises(InputError, match="ny"):
+        load_case(_example("holmes-smooth-line", grid={"ny": 16}))
+
+
+@pytest.fixture(scope="module")
+def point_outcome():
+    """The point example on a coarse 65 x 33 mesh (dx = a/16)."""
+    data = _example("holmes-smooth-point", grid={"nx": 65, "ny": 33}, solver={"levels": 2})
+    return run_case(load_case(data))
+
+
+def test_point_runner_outputs(point_outcome):
+    out = point_outcome
+    assert out.converged
+    ds = out.dataset
+    assert ds["pressure"].dims == ("x", "y") and ds["pressure"].shape == (65, 33)
+    assert ds["pressure"].attrs["units"] == "Pa" and ds["film"].attrs["units"] == "m"
+    assert ds["x"].attrs["units"] == "m" and "long_name" in ds["film"].attrs
+    s = out.summary
+    for key in ("central_film_thickness_m", "minimum_film_thickness_m",
+                "minimum_film_thickness_centreline_m", "max_pressure_pa",
+                "friction_coefficient", "load_error", "sweeps", "converged",
+                "hertz_max_pressure_pa", "hertz_a_m", "hertz_b_m", "moes_M", "moes_L"):
+        assert key in s, key
+    assert s["minimum_film_thickness_m"] <= s["minimum_film_thickness_centreline_m"]
+    assert s["minimum_film_thickness_centreline_m"] < s["central_film_thickness_m"]
+    assert abs(s["load_error"]) < 1e-5
+    # Moes groups from their definition with 2U = eta0 (u1 + u2) / (E' Rx)
+    two_u = 0.005 * 50.0 / (227e9 * 0.0191)
+    assert s["moes_L"] == pytest.approx(11.1e-9 * 227e9 * two_u**0.25, rel=1e-9)
+    assert s["moes_M"] == pytest.approx(962.0 / (227e9 * 0.0191**2) * two_u**-0.75, rel=1e-9)
+    # pressure integrates to the load
+    x, y = ds["x"].values, ds["y"].values
+    total = ds["pressure"].values.sum() * (x[1] - x[0]) * (y[1] - y[0])
+    assert total == pytest.approx(962.0, rel=1e-4)
+    # the paper's rows are checked; the Newtonian formulas are info rows
+    paper = [c for c in out.comparisons if c.source == "Holmes et al., Fig. 2"]
+    assert [c.quantity for c in paper] == ["central film", "minimum film on y = 0",
+                                           "maximum pressure"]
+    assert all(c.tolerance == 0.05 for c in paper)
+    sources = {c.source.split()[0] for c in out.comparisons if c.tolerance is None}
+    assert {"Nijenbanning,", "Hamrock-Dowson", "dry"} <= sources
+    # dx = a/16 is far coarser than the paper's a/200: the films are 8 % low, p_max is exact
+    assert [c.passed for c in paper] == [False, False, True]
+    assert all(abs(c.relative_error) < 0.1 for c in paper)
+
+
+def test_point_figures_draw(point_outcome):
+    import matplotlib.pyplot as plt
+
+    assert set(point_outcome.figures) == {"centre_line", "contours", "transverse"}
+    for draw, caption in point_outcome.figures.values():
+        fig = draw()
+        assert caption and len(fig.axes) >= 2
+        plt.close(fig)
+
+
+def test_line_runner_and_moes_rows():
+    data = _example("holmes-smooth-line", grid={"nx": 129}, solver={"levels": 1})
+    out = run_case(load_case(data))
+    assert out.converged
+    assert out.dataset["film"].shape == (129, 1)
+    assert set(out.figures) == {"centre_line"}
+    rows = {c.source: c for c in out.comparisons}
+    assert rows["Moes (1992)"].tolerance is None  # Roelands + Eyring vs a Newtonian fit
+    assert "moes_central_film_m" in out.summary
+    # seed, Fig. 10: the line contact's film is that of the point contact's centre line
+    assert out.summary["central_film_thickness_m"] == pytest.approx(0.48e-6, rel=0.03)
+
+
+def test_not_converged_is_reported():
+    data = _example("holmes-smooth-point", grid={"nx": 33, "ny": 17},
+                    solver={"levels": 1, "max_sweeps": 10})
+    out = run_case(load_case(data))
+    assert not out.converged and out.summary["converged"] is False
+    assert any("did not converge" in n for n in out.notes)
+
+
+def test_xi_study_sweeps_the_slide_roll_ratio():
+    from asperity.sweep import load_study
+
+    study = load_study("holmes-smooth-xi")
+    xis = [load_case(case).speeds.xi for _, case, _ in study.cases]
+    assert xis == [0.1, 0.25, 0.5]
+    assert np.all([load_case(c).contact.type == "point" for _, c, _ in study.cases])
