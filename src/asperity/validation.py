@@ -183,3 +183,35 @@ def _builtin_profile_ra():
                        roughness_parameters(builtin_profile(name))["Ra"] * 1e6, ra,
                        "Holmes et al. (2005), synthetic stand-in", "um", 0.01)
             for name, ra in targets.items()]
+
+
+# ------------------------------------------------------------------------------ steady EHL
+@check("ehl-moes-line", "Moes (1992) central film, Newtonian Barus line contact, M = 10, L = 10")
+def _ehl_moes_line():
+    from .ehl import LineContact, Lubricant, moes_line, solve_steady
+    from .materials import Material
+
+    body = Material(2e11, 0.3)
+    e_prime, alpha, eta0, radius, m_load, l_mat = 2e11 / 0.91, 2e-8, 0.04, 0.01, 10.0, 10.0
+    two_u = (l_mat / (alpha * e_prime)) ** 4
+    u = 0.5 * two_u * e_prime * radius / eta0
+    load = m_load * two_u**0.5 * e_prime * radius
+    lub = Lubricant(eta0, alpha, viscosity_model="barus", compressible=False)
+    prob = LineContact(radius, load, u, u, body, body, lub)
+    res = solve_steady(prob, nx=257, max_sweeps=40000,
+                       domain=((-4.0 * prob.a, 1.5 * prob.a), (0.0, 0.0)))
+    ref = moes_line(load, radius, u, eta0, alpha, e_prime).central
+    return [Comparison("central film (257 nodes, converged)" if res.converged
+                       else "central film (NOT converged)", res.central_film, ref,
+                       "Moes (1992) via Venner & Lubrecht (2000)", "m", 0.05)]
+
+
+@check("ehl-holmes-smooth-point", "Holmes, Evans & Snidle (2005) Fig. 2, smooth gear-disk contact",
+       slow=True)
+def _ehl_holmes_point():
+    from .cases import load_case
+    from .examples import example_text
+    from .runners import run_case
+
+    out = run_case(load_case(example_text("holmes-smooth-point")))
+    return [row for row in out.comparisons if row.tolerance is not None]
