@@ -51,7 +51,7 @@ class NormalContactResult:
     pressure: np.ndarray
     """Contact pressure, Pa."""
     gap: np.ndarray
-    """Deformed gap ``gap0 + displacement - approach``, m (zero in contact)."""
+    """Deformed gap ``gap0 + displacement - approach``, m (zero in contact, to ``tol``)."""
     displacement: np.ndarray
     """Combined normal displacement of the two surfaces, m (zero-mean when periodic)."""
     contact: np.ndarray
@@ -124,14 +124,30 @@ def _gap_on_contact(u, h, p, shift, g):
 def _direction(g, p, t, beta):
     """Conjugate direction t = g + beta t on the contact set, zero off it (PK step 4).
 
-    Returns the sum of t.
+    Returns the sums over the contact set of t, g t and g.
     """
-    total = 0.0
+    t_sum = 0.0
+    gt_sum = 0.0
+    g_sum = 0.0
     for i in range(g.size):
-        ti = g[i] + beta * t[i] if p[i] > 0.0 else 0.0
-        t[i] = ti
-        total += ti
-    return total
+        if p[i] > 0.0:
+            ti = g[i] + beta * t[i]
+            t[i] = ti
+            t_sum += ti
+            gt_sum += g[i] * ti
+            g_sum += g[i]
+        else:
+            t[i] = 0.0
+    return t_sum, gt_sum, g_sum
+
+
+def _direction_with_load(g, p, t, beta, n, load_control):
+    """Set the direction t (zero sum on the contact set under load control); return g.t."""
+    t_sum, g_dot_t, g_sum = _direction(g, p, t, beta)
+    if load_control:  # keep the load: shift t to zero sum on the n contact points
+        _shift_on_contact(t, p, -t_sum / n)
+        g_dot_t -= g_sum * t_sum / n
+    return g_dot_t
 
 
 @numba.njit(cache=True)
@@ -368,15 +384,9 @@ def solve_normal(
 
         beta = 0.0 if iteration == 1 else gsq / g_old
         g_old = gsq
-        t_sum = _direction(g, p, t, beta)
-        if load_control:  # keep the load: directions of zero sum on the contact set
-            _shift_on_contact(t, p, -t_sum / n)
-        g_dot_t = float(np.dot(g, t))
+        g_dot_t = _direction_with_load(g, p, t, beta, n, load_control)
         if beta and not g_dot_t > 0.0:  # not a descent direction: restart (steepest descent)
-            t_sum = _direction(g, p, t, 0.0)
-            if load_control:
-                _shift_on_contact(t, p, -t_sum / n)
-            g_dot_t = float(np.dot(g, t))
+            g_dot_t = _direction_with_load(g, p, t, 0.0, n, load_control)
         t_spectrum = transform(t)
         ffts += 1
         t_k_t = _energy(t_spectrum, fft.energy_weight)  # = sum (K t) t (PK step 6)
