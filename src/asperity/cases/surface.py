@@ -24,10 +24,13 @@ from .fields import CaseModel, Quantity
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
 
-#: Most points of a generated profile, and of a generated topography.
-MAX_POINTS = {"profile": 2**20, "topography": 2**22}
-#: Most time steps of one tool-vibration simulation (see :func:`SurfaceSpec.simulated_steps`).
+#: Most points of a surface (profile or topography).
+MAX_POINTS = 2**20
+#: Most time steps of the tool-vibration simulations of a case (:meth:`SurfaceSpec.simulated_steps`
+#: each).
 MAX_STEPS = 5_000_000
+#: Fastest spindle of the tool-vibration model, rev/s (60 000 rpm).
+MAX_SPINDLE = 1000.0
 #: Default cells per feed of a turned profile (odd, so that the cusps fall on grid points).
 CELLS_PER_FEED = 201
 #: Default number of feeds of a turned profile.
@@ -99,9 +102,9 @@ class SurfaceSpec(CaseModel):
     length: Quantity("length", gt=0) | None = None
     spacing: Quantity("length", gt=0) | None = None
     width: Quantity("length", gt=0) | None = None
-    rms: Quantity("length", gt=0) | None = None
-    rms_slope: Quantity("dimensionless", gt=0) | None = None
-    ra: Quantity("length", gt=0) | None = None
+    rms: Quantity("length", ge=1e-12, le=1e-2) | None = None
+    rms_slope: Quantity("dimensionless", gt=0, le=100) | None = None
+    ra: Quantity("length", ge=1e-12, le=1e-2) | None = None
     correlation_length: Quantity("length", gt=0) | None = None
     correlation_length_y: Quantity("length", gt=0) | None = None
     acf: Literal["gaussian", "exponential"] | None = None
@@ -111,16 +114,16 @@ class SurfaceSpec(CaseModel):
     run_in: Annotated[float, Field(ge=0, lt=1)] | None = None
     profile: Annotated[tuple[Literal["A", "B", "C"], ...], Field(min_length=1)] | None = None
     path: str | None = None
-    feed: Quantity("length", gt=0) | None = None
-    nose_radius: Quantity("length", gt=0) | None = None
+    feed: Quantity("length", gt=0, le=0.01) | None = None
+    nose_radius: Quantity("length", gt=0, le=0.1) | None = None
     end_relief_angle: Quantity("angle", gt=0, le=math.pi / 2) | None = None
     natural_frequency: Annotated[tuple[Frequency, ...],
                                  Field(min_length=1, max_length=8)] | None = None
-    depth_of_cut: Quantity("length", gt=0) | None = None
-    cutting_speed: Quantity("speed", gt=0) | None = None
-    workpiece_diameter: Quantity("length", gt=0) | None = None
+    depth_of_cut: Quantity("length", gt=0, le=0.1) | None = None
+    cutting_speed: Quantity("speed", gt=0, le=100) | None = None
+    workpiece_diameter: Quantity("length", gt=0, le=10) | None = None
     damping_ratio: Annotated[float, Field(gt=0, lt=1)] | None = None
-    mass: Quantity("mass", gt=0) | None = None
+    mass: Quantity("mass", ge=1e-6, le=1e6) | None = None
     seed: Annotated[int, Field(ge=0)] | None = None
 
     @field_validator("profile", "natural_frequency", mode="before")
@@ -191,6 +194,12 @@ class SurfaceSpec(CaseModel):
         if self.feed > limit:
             raise _key_error("feed", f"f <= 2 r sin(kappa_e) = {limit:.4g} m, a feed mark formed "
                                      "by the nose radius (Seireg eq. 4.1)", self.feed)
+        if self.natural_frequency is not None:
+            spindle = self.cutting_speed / (math.pi * self.workpiece_diameter)
+            if spindle > MAX_SPINDLE:
+                raise _key_error("cutting_speed", f"a spindle speed V / (pi D) of at most "
+                                 f"{MAX_SPINDLE:g} rev/s (got {spindle:.3g})",
+                                 self.cutting_speed)
         if self.spacing is not None and self.spacing > self.feed / 10:
             raise _key_error("spacing", f"at most feed / 10 = {self.feed / 10:.4g} m, to "
                                         "resolve the feed marks", self.spacing)
@@ -206,9 +215,9 @@ class SurfaceSpec(CaseModel):
         points = n if self.width is None else n * self.width / spacing
         if self.width is not None and self.width / spacing < 8:
             raise _key_error("width", f"at least 8 spacings ({8 * spacing:.4g} m)", self.width)
-        if points > MAX_POINTS[shape]:
+        if points > MAX_POINTS:
             raise _key_error("length" if self.width is None else "width",
-                             f"at most {MAX_POINTS[shape]} points in the {shape} (got "
+                             f"at most {MAX_POINTS} points in the {shape} (got "
                              f"{points:.3g}); raise spacing or shorten it", self.length)
         if self.kind == "turned":
             # The feed-mark envelope visits about 2 r / f + 3 arcs at every point.
@@ -217,10 +226,12 @@ class SurfaceSpec(CaseModel):
                 raise _key_error("length", "fewer points times arcs of the nose radius per "
                                            f"point (got {n:.3g} x {arcs:.0f} > 5e7)",
                                  self.length)
-            if self.natural_frequency is not None and self.simulated_steps() > MAX_STEPS:
-                raise _key_error("length", f"a cut of at most {MAX_STEPS} time steps (got "
-                                           f"{self.simulated_steps():.3g}); shorten it or raise "
-                                           "cutting_speed", self.length)
+            if self.natural_frequency is not None:
+                steps = self.simulated_steps() * len(self.natural_frequency)
+                if steps > MAX_STEPS:
+                    raise _key_error("length", f"at most {MAX_STEPS} time steps over all "
+                                     f"natural frequencies (got {steps:.3g}); shorten it or "
+                                     "raise cutting_speed", self.length)
 
     def profile_spacing(self) -> float | None:
         """Grid spacing (m) of a generated surface; None for a file (taken from the file)."""

@@ -18,7 +18,7 @@ import numpy as np
 import xarray as xr
 
 from .. import surfaces as s
-from ..cases.surface import SurfaceSpec
+from ..cases.surface import MAX_POINTS, SurfaceSpec
 from ..errors import InputError
 from ..results import Comparison, Outcome, variable
 
@@ -102,8 +102,12 @@ def _generated(spec) -> s.Profile | s.Topography:
         return s.transverse_ground_profile(length, h, spec.ra, ell, run_in=spec.run_in or 0.0,
                                            seed=seed)
     surface = s.read_surface(spec.path, spec.spacing)
-    if max(surface.z.shape) > 2**22 or surface.z.size > 2**22:
-        raise InputError("surface.path", "a surface of at most 2**22 points", surface.z.shape)
+    if surface.z.size > MAX_POINTS:
+        raise InputError("surface.path", f"a surface of at most {MAX_POINTS} points",
+                         surface.z.shape)
+    if np.abs(surface.z).max() > 1.0:
+        raise InputError("surface.path", "heights in metres (|z| <= 1 m)",
+                         float(np.abs(surface.z).max()))
     return surface
 
 
@@ -149,9 +153,11 @@ def _trimmed(profile: s.Profile, margin: float) -> s.Profile:
 def _parameters(profile: s.Profile, sampling_length) -> dict:
     """ISO 4287 parameters over the whole profile, or averaged over sampling lengths.
 
-    With a sampling length every parameter is the mean of its values in the consecutive
-    sampling lengths (each referenced to its least-squares line), except Rz, the mean of their
-    peak-to-valley heights, and Rt, the total height over the whole evaluation length.
+    With a sampling length the profile is levelled once (least-squares line, or its mean when
+    periodic) and cut into consecutive sampling lengths; the amplitude parameters are the means
+    of their values in each (referenced to its own mean, without a tilt, as in
+    :func:`~asperity.surfaces.roughness_along`), Rz the mean of the peak-to-valley heights, and
+    Rt and Rdq are those of the whole evaluation length.
     """
     whole = s.roughness_parameters(profile)
     if sampling_length is None:
@@ -160,10 +166,12 @@ def _parameters(profile: s.Profile, sampling_length) -> dict:
     if per < 8 or per > profile.x.size:
         raise InputError("evaluation.sampling_length", "between 8 spacings and the evaluated "
                          f"length ({profile.length:.4g} m)", sampling_length)
+    levelled = s.residual_heights(profile.z, profile.periodic)
     count = profile.x.size // per
-    parts = [s.roughness_parameters(profile.z[k * per:(k + 1) * per],
-                                    profile.x[k * per:(k + 1) * per]) for k in range(count)]
-    out = {key: float(np.mean([p[key] for p in parts])) for key in whole}
+    parts = [s.roughness_parameters(levelled[k * per:(k + 1) * per], periodic=True)
+             for k in range(count)]
+    out = {key: float(np.mean([p[key] for p in parts])) if key in parts[0] else value
+           for key, value in whole.items()}
     out["Rz"] = float(np.mean([p["Rt"] for p in parts]))
     out["Rt"] = whole["Rt"]
     return out
@@ -189,8 +197,8 @@ def _evaluate(surface, evaluation) -> _Evaluated:
     waviness = roughness = None
     evaluated = surface
     if cutoff is not None:
-        if cutoff < 2 * surface.spacing:
-            raise InputError("evaluation.cutoff", "at least two spacings "
+        if cutoff <= 2 * surface.spacing * (1 + 1e-9):
+            raise InputError("evaluation.cutoff", "more than two spacings "
                              f"({2 * surface.spacing:.4g} m)", cutoff)
         if not surface.periodic and cutoff > surface.length / 2:
             raise InputError("evaluation.cutoff", "at most half the length of a non-periodic "

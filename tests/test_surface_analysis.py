@@ -1,0 +1,261 @@
+"""analysis = "surface": examples run and pass their references; parameters against closed forms;
+bad [surface] tables give one line naming the key."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+from typer.testing import CliRunner
+
+from asperity import surfaces as s
+from asperity.cases import load_case
+from asperity.cli import app
+from asperity.errors import InputError
+from asperity.examples import example_text
+from asperity.runners import run_case
+from asperity.surfaces.filters import ALPHA
+
+EXAMPLES = ["seireg-turning-vibration", "seireg-turning-kinematic", "holmes-profiles",
+            "measured-profile"]
+
+
+def _run(text):
+    return run_case(load_case(text))
+
+
+def _check_dataset(ds):
+    for name in ds.variables:
+        assert {"units", "long_name"} <= set(ds[name].attrs), name
+    assert ds["x"].attrs["units"] == "m"
+    assert ds["height"].attrs["units"] == "m"
+
+
+@pytest.fixture(scope="module")
+def outcomes():
+    return {name: _run(example_text(name)) for name in EXAMPLES}
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_example_runs_and_passes_its_references(outcomes, name):
+    outcome = outcomes[name]
+    assert outcome.converged
+    _check_dataset(outcome.dataset)
+    for key in ("ra_m", "rq_m", "rt_m", "rsk", "rku", "spacing_m"):
+        assert key in outcome.summary, key
+    for key, value in outcome.summary.items():
+        if isinstance(value, float):
+            assert math.isfinite(value), key
+    for row in outcome.comparisons:
+        assert row.passed is not False, (row.quantity, row.value, row.reference)
+    assert outcome.figures and all(callable(draw) for draw, _ in outcome.figures.values())
+
+
+def test_kinematic_example_against_eq_4_1(outcomes):
+    out = outcomes["seireg-turning-kinematic"]
+    f, r = 0.127e-3, 0.794e-3
+    assert out.summary["kinematic_rt_m"] == pytest.approx(f * f / (8 * r), rel=1e-12)
+    # Circular arcs: the cusps (f/2 from a valley) fall on grid points, the valleys half a
+    # cell h/2 beside the nearest ones.
+    h = out.summary["spacing_m"]
+    assert h == pytest.approx(f / 201)
+    arc = r - math.sqrt(r * r - f * f / 4) - (r - math.sqrt(r * r - h * h / 4))
+    assert out.summary["rt_m"] == pytest.approx(arc, rel=1e-9)
+    assert out.summary["periodic"] is True
+    rows = {c.quantity: c for c in out.comparisons}
+    assert rows["kinematic Rt of the feed marks"].tolerance == 0.01
+    table = [c for c in out.comparisons if "Table 4.1" in c.quantity]
+    assert {c.reference for c in table} == {16.0, 250.0} and all(c.passed is None for c in table)
+
+
+def test_vibration_example_is_rougher_at_low_natural_frequency(outcomes):
+    out = outcomes["seireg-turning-vibration"]
+    sm = out.summary
+    kin = sm["kinematic_rt_m"]
+    assert sm["rt_along_mean_28hz_m"] > sm["rt_along_mean_34hz_m"] > sm["rt_along_mean_150hz_m"]
+    assert sm["rt_along_mean_150hz_m"] == pytest.approx(kin, rel=0.1)
+    ds = out.dataset
+    assert list(ds["surface"].values) == ["28 Hz", "34 Hz", "150 Hz", "kinematic"]
+    assert ds["rt_along"].dims == ("surface", "window")
+    assert ds["window"].size == 19  # 157 feeds = 19.94 mm in 1 mm windows
+    # The kinematic profile is the same in every window: Rt is the cusp height everywhere.
+    np.testing.assert_allclose(ds["rt_along"].sel(surface="kinematic"), sm["rt_kinematic_m"],
+                               rtol=1e-9)
+    assert np.isnan(ds["natural_frequency"].sel(surface="kinematic"))
+
+
+def test_holmes_profiles_keep_their_ra_and_order_of_slopes(outcomes):
+    out = outcomes["holmes-profiles"]
+    sm = out.summary
+    assert (sm["ra_a_m"], sm["ra_b_m"], sm["ra_c_m"]) == pytest.approx((0.32e-6, 0.22e-6,
+                                                                        0.31e-6), rel=1e-9)
+    rdq = out.dataset["rdq"].values
+    assert rdq[2] > rdq[1] > rdq[0]  # C sharpest, A most run-in
+    assert sm["rsk_a"] < 0 and sm["rsk_b"] < 0
+    assert [c.quantity for c in out.comparisons] == [f"Ra of profile {p}" for p in "ABC"]
+
+
+def test_measured_profile_is_read_filtered_and_split(outcomes):
+    out = outcomes["measured-profile"]
+    ds = out.dataset
+    np.testing.assert_allclose(ds["waviness"] + ds["roughness"], ds["height"], atol=1e-15)
+    raw = np.loadtxt(str(load_case(example_text("measured-profile")).surface.path),
+                     delimiter=",")
+    np.testing.assert_array_equal(ds["height"].values[0], raw[:, 1])
+    sm = out.summary
+    assert sm["ra_m"] < sm["pa_m"] and sm["wt_m"] > 0  # the waviness is gone from Ra
+    assert "cutoff_m" in ds.attrs and "waviness" in out.figures
+
+
+def _sine_file(tmp_path, amplitudes, wavelengths, n=4000, h=1e-6):
+    x = s.cell_centres(n, h)
+    z = sum(a * np.sin(2 * np.pi * x / w) for a, w in zip(amplitudes, wavelengths, strict=True))
+    path = tmp_path / "sine.txt"
+    s.write_surface(s.Profile(x, z, periodic=True), path)
+    return path
+
+
+def test_sampling_lengths_of_a_sine_give_the_closed_forms(tmp_path):
+    a, lam = 0.5e-6, 100e-6
+    path = _sine_file(tmp_path, [a], [lam])
+    out = _run(f'analysis = "surface"\n[surface]\nkind = "file"\npath = "{path}"\n'
+               f'[evaluation]\nsampling_length = {4 * lam}\n')
+    sm = out.summary
+    assert sm["ra_m"] == pytest.approx(2 * a / math.pi, rel=5e-4)  # 100 points a period
+    assert sm["rq_m"] == pytest.approx(a / math.sqrt(2), rel=1e-4)
+    assert sm["rz_m"] == pytest.approx(2 * a, rel=1e-3)  # ISO 4287: mean peak-to-valley
+    assert sm["rku"] == pytest.approx(1.5, rel=1e-4)
+
+
+def test_cutoff_removes_the_long_wave_by_the_gaussian_transmission(tmp_path):
+    cutoff = 0.8e-3
+    long_w, short_w = 4e-3, 50e-6  # periodic over the 4 mm profile
+    a_long, a_short = 2e-6, 0.3e-6
+    path = _sine_file(tmp_path, [a_long, a_short], [long_w, short_w])
+    out = _run(f'analysis = "surface"\n[surface]\nkind = "file"\npath = "{path}"\n'
+               f'[evaluation]\ncutoff = "0.8 mm"\n')
+
+    def passed(lam):  # the roughness keeps 1 - mean-line transmission
+        return 1 - math.exp(-math.pi * (ALPHA * cutoff / lam) ** 2)
+
+    rq = math.hypot(a_long * passed(long_w), a_short * passed(short_w)) / math.sqrt(2)
+    assert out.summary["rq_m"] == pytest.approx(rq, rel=1e-9)
+    assert out.summary["pq_m"] == pytest.approx(math.hypot(a_long, a_short) / math.sqrt(2),
+                                                rel=1e-9)
+
+
+def test_topography_gives_areal_parameters():
+    out = _run('analysis = "surface"\n[surface]\nkind = "gaussian"\nlength = "0.2 mm"\n'
+               'width = "0.1 mm"\nspacing = "2 um"\nrms = "0.5 um"\ncorrelation_length = "10 um"'
+               '\ncorrelation_length_y = "40 um"\nseed = 4\n')
+    sm = out.summary
+    assert {"sa_m", "sq_m", "ssk", "sku", "sdq", "sdr"} <= set(sm)
+    assert out.dataset["height"].dims == ("surface", "x", "y")
+    assert "topography" in out.figures
+    row = out.comparisons[0]
+    assert row.quantity == "Sq" and row.passed is None
+    assert row.value == pytest.approx(0.5e-6, rel=0.3)
+
+
+def test_cutoff_on_a_topography_is_one_clear_error():
+    text = ('analysis = "surface"\n[surface]\nkind = "self-affine"\nlength = "0.1 mm"\n'
+            'width = "0.1 mm"\nspacing = "2 um"\nhurst = 0.8\nrms = "0.5 um"\n'
+            '[evaluation]\ncutoff = "20 um"\n')
+    with pytest.raises(InputError, match=r"^evaluation\.cutoff: "):
+        _run(text)
+
+
+def test_turned_spacing_is_snapped_to_an_odd_fraction_of_the_feed():
+    out = _run('analysis = "surface"\n[surface]\nkind = "turned"\nfeed = "0.1 mm"\n'
+               'nose_radius = "0.8 mm"\nspacing = "1 um"\nlength = "1.04 mm"\n')
+    assert out.summary["spacing_m"] == pytest.approx(0.1e-3 / 101)
+    assert out.summary["length_m"] == pytest.approx(1.0e-3)
+    assert any("odd fraction of the feed" in note for note in out.notes)
+    assert all(c.passed is not False for c in out.comparisons)
+
+
+def test_relative_path_is_relative_to_the_case_file(tmp_path):
+    _sine_file(tmp_path, [1e-6], [100e-6])
+    case = tmp_path / "case.toml"
+    case.write_text('analysis = "surface"\n[surface]\nkind = "file"\npath = "sine.txt"\n')
+    assert load_case(case).surface.path == str(tmp_path / "sine.txt")
+
+
+TURNED = """analysis = "surface"
+[surface]
+kind = "turned"
+feed = "0.127 mm"
+nose_radius = "0.794 mm"
+natural_frequency = [28, 34]
+depth_of_cut = "0.305 mm"
+cutting_speed = "61 m/min"
+workpiece_diameter = "50 mm"
+mass = "250 kg"
+[evaluation]
+window = "0.5 mm"
+"""
+
+
+@pytest.mark.parametrize("old, new, field", [
+    ('feed = "0.127 mm"', 'feed = "0.127 mm"\nrms = "1 um"', "surface.rms"),
+    ('mass = "250 kg"', "", "surface.mass"),
+    ('natural_frequency = [28, 34]', 'natural_frequency = [28, 28]', "surface.natural_frequency"),
+    ('natural_frequency = [28, 34]', 'natural_frequency = [28, "x"]',
+     "surface.natural_frequency.1"),
+    ('"0.794 mm"', '"0.01 mm"', "surface.feed"),
+    ('"61 m/min"', '"0.001 m/min"', "surface.length"),
+    ('"61 m/min"', '"61 kg"', "surface.cutting_speed"),
+    ('kind = "turned"', 'kind = "milled"', "surface.kind"),
+    ('window = "0.5 mm"', 'windw = "0.5 mm"', "evaluation.windw"),
+    ('feed = "0.127 mm"', 'feed = "0.127 mm"\nspacing = "0.1 mm"', "surface.spacing"),
+])
+def test_bad_surface_case_gives_one_line_naming_the_key(old, new, field):
+    assert old in TURNED
+    with pytest.raises(InputError) as exc:
+        load_case(TURNED.replace(old, new))
+    message = str(exc.value)
+    assert message.startswith(field + ":") and "\n" not in message, message
+
+
+@pytest.mark.parametrize("text, field", [
+    ('kind = "builtin"\nprofile = "D"', "surface.profile.0"),
+    ('kind = "builtin"\nprofile = "A"\nmass = 3', "surface.mass"),
+    ('kind = "file"\npath = "no-such-file.csv"', "surface.path"),
+    ('kind = "gaussian"\nlength = 1e-3\nspacing = 1e-6\nrms = 1e-6', "surface.correlation_length"),
+    ('kind = "gaussian"\nlength = 1e-3\nspacing = 1e-6\nrms = 1e-6\ncorrelation_length = 1e-5\n'
+     'correlation_length_y = 1e-5', "surface.correlation_length_y"),
+    ('kind = "gaussian"\nlength = 1e3\nspacing = 1e-6\nrms = 1e-6\ncorrelation_length = 1e-5',
+     "surface.length"),
+    ('kind = "self-affine"\nlength = 1e-3\nspacing = 1e-6\nhurst = 0.8', "surface.rms"),
+    ('kind = "builtin"\nprofile = "A"\n[evaluation]\nwindow = 1e-3', "evaluation.window"),
+])
+def test_bad_kind_keys_name_the_key(text, field):
+    with pytest.raises(InputError) as exc:
+        load_case(f'analysis = "surface"\n[surface]\n{text}\n')
+    assert str(exc.value).startswith(field + ":"), str(exc.value)
+
+
+@pytest.mark.parametrize("evaluation, field", [
+    ('cutoff = "1 um"', "evaluation.cutoff"),          # below two spacings
+    ('cutoff = "3 mm"', "evaluation.cutoff"),          # over half a non-periodic profile
+    ('sampling_length = "1 m"', "evaluation.sampling_length"),
+])
+def test_bad_evaluation_is_one_line_at_run_time(evaluation, field):
+    text = example_text("measured-profile").split("[evaluation]")[0]
+    with pytest.raises(InputError, match=rf"^{field}: "):
+        _run(text + "[evaluation]\n" + evaluation + "\n")
+
+
+def test_cli_run_writes_the_report(tmp_path):
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", "holmes-profiles", "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    html = (out / "report.html").read_text()
+    assert html.count("data:image/png;base64,") == 4  # profiles + three spectra
+    assert "Ra of profile C" in html and "class=pass" in html
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["ra_c_m"] == pytest.approx(0.31e-6)
+    with xr.open_dataset(out / "result.nc") as ds:
+        _check_dataset(ds)
+        assert list(ds["surface"].values) == ["A", "B", "C"]
