@@ -218,13 +218,14 @@ class SurfaceSpec(CaseModel):
         if points > MAX_POINTS:
             raise _key_error("length" if self.width is None else "width",
                              f"at most {MAX_POINTS} points in the {shape} (got "
-                             f"{points:.3g}); raise spacing or shorten it", self.length)
+                             f"{points:.3g}); raise spacing or shorten it",
+                             self.length if self.width is None else self.width)
         if self.kind == "turned":
             # The feed-mark envelope visits about 2 r / f + 3 arcs at every point.
             arcs = 2.0 * math.ceil(self.nose_radius / self.feed) + 3
             if n * arcs > 5e7:
-                raise _key_error("length", "fewer points times arcs of the nose radius per "
-                                           f"point (got {n:.3g} x {arcs:.0f} > 5e7)",
+                raise _key_error("length", "at most 5e7 evaluations of nose arcs (got "
+                                           f"{n:.3g} points x {arcs:.0f} arcs); shorten it",
                                  self.length)
             if self.natural_frequency is not None:
                 steps = self.simulated_steps() * len(self.natural_frequency)

@@ -21,6 +21,7 @@ from .. import surfaces as s
 from ..cases.surface import MAX_POINTS, SurfaceSpec
 from ..errors import InputError
 from ..results import Comparison, Outcome, variable
+from ..surfaces.machining import MICROINCH
 
 __all__ = ["run"]
 
@@ -296,12 +297,12 @@ def _summary(spec, surfaces, evaluated) -> dict:
     return summary
 
 
-def _turning(spec, surfaces, turned, evaluation):
+def _turning(spec, surfaces, evaluated, turned, evaluation):
     """Summary entries, comparisons and Rt-along data of a turned case."""
     f, r = spec.feed, spec.nose_radius
     rt_ref = f * f / (8 * r)
     ra_ref = f * f / (18 * math.sqrt(3) * r)
-    kin = s.roughness_parameters(surfaces["kinematic"])
+    kin = evaluated["kinematic"].primary
     summary = {"feed_m": f, "nose_radius_m": r, "kinematic_rt_m": rt_ref,
                "kinematic_ra_m": ra_ref}
     arc = f"circle vs parabola differ by about f^2/(16 r^2) = {100 * f * f / (16 * r * r):.2g} %"
@@ -312,10 +313,11 @@ def _turning(spec, surfaces, turned, evaluation):
                    "parabolic feed marks, Ra = f^2/(18 sqrt(3) r)", "m", 0.01, arc),
     ]
     table = s.process_roughness(_TURNING)
-    ra = s.roughness_parameters(next(iter(surfaces.values())))["Ra"] / s.machining.MICROINCH
+    first = next(iter(surfaces))
+    ra = evaluated[first].parameters["Ra"] / MICROINCH
     lo, hi = table.ra_min_microinch, table.ra_max_microinch
     where = "inside" if lo <= ra <= hi else "below" if ra < lo else "above"
-    note = f"Ra of {next(iter(surfaces))} is {where} the range {lo:g}-{hi:g} uin"
+    note = f"Ra of {first} is {where} the range {lo:g}-{hi:g} uin"
     comparisons += [
         Comparison("Ra vs Table 4.1 boring/turning, lowest", ra, lo, "Seireg Table 4.1", "uin",
                    note=note),
@@ -411,6 +413,7 @@ def _figures(case, surfaces, evaluated, turned, window) -> dict:
 
 
 def _trimmed_to(profile: s.Profile, span: float) -> s.Profile:
+    """The first ``span`` of a profile (for drawing)."""
     keep = profile.x - profile.x[0] < span
     return s.Profile(profile.x[keep], profile.z[keep])
 
@@ -424,7 +427,7 @@ def run(case, progress=None) -> Outcome:
     comparisons = _reference_ra(spec, surfaces, evaluated)
     along, window, notes = None, None, []
     if spec.kind == "turned":
-        extra, rows, along = _turning(spec, surfaces, turned, case.evaluation)
+        extra, rows, along = _turning(spec, surfaces, evaluated, turned, case.evaluation)
         summary.update(extra)
         comparisons += rows
         window = summary.get("window_m")
