@@ -127,8 +127,8 @@ def test_mesh_convergence_fine_pair():
 def test_slide_roll_ratio_sensitivity():
     """xi = 0.1, 0.25, 0.5 (seed Table 1): films within 0.5 %, friction grows with xi.
 
-    Measured at 257 x 129: see the report (films identical to < 0.2 %, mu 0.007, 0.014, 0.021
-    at 129 x 65).
+    Measured at 257 x 129: hc 0.4793 um for all three (spread 0.003 %), hmin on y = 0
+    0.4172, 0.4171, 0.4167 um (0.12 %), mu 0.0073, 0.0138, 0.0204.
     """
     results = [solve_steady(_gear_point(xi), nx=257, ny=129, levels=3) for xi in (0.1, 0.25, 0.5)]
     assert all(r.converged for r in results)
