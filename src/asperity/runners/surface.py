@@ -398,8 +398,11 @@ def _figures(case, surfaces, evaluated, turned, window) -> dict:
         figures["waviness"] = (lambda: plot_profiles(split, title=f"Gaussian filter: {labels[0]}"),
                                "Primary profile, its waviness (the ISO 16610-21 Gaussian mean "
                                "line) and roughness, offset for clarity.")
-    for label, surf in surfaces.items():
-        stem = "spectrum" if len(labels) == 1 else f"spectrum_{_tag(label)}"
+    # One spectrum per surface; of a turned case only the first (the dataset holds them all).
+    drawn = labels[:1] if case.surface.kind == "turned" else labels
+    for label in drawn:
+        surf = surfaces[label]
+        stem = "spectrum" if len(drawn) == 1 else f"spectrum_{_tag(label)}"
         figures[stem] = (lambda surf=surf, label=label: plot_spectrum(
             surf, title=f"Power spectral density: {label}"),
             f"Power spectral density of {label}" +
