@@ -323,7 +323,7 @@ def turned_profile_dynamic(feed, nose_radius, depth_of_cut, cutting_speed, workp
     hold = max(1, int(round(1.0 / (2.0 * bandwidth * dt))))
     total = (passes - 1) * steps_per_rev + 1
     rng = np.random.default_rng(seed)
-    noise = np.repeat(rng.standard_normal(-(-total // hold)), hold)[:total]
+    noise = rng.standard_normal(-(-total // hold))[np.arange(total) // hold]  # held values
     mean_force = specific_force * feed * depth
     u = _sdof_response(mean_force * (1.0 + variation * noise), dt, omega, zeta, mass)
     offsets = u[:: steps_per_rev]
