@@ -26,9 +26,13 @@ from .lubricant import (
 )
 from .problem import LineContact, PointContact
 from .solver import EHLState, SteadyResult, solve_steady
+from .statistics import ContactStatistics, flow_vectors, hertz_mask
+from .transient import TransientResult, solve_transient
 
 __all__ = [
     "EHLState", "LineContact", "PointContact", "SteadyResult", "solve_steady",
+    "ContactStatistics", "flow_vectors", "hertz_mask",
+    "TransientResult", "solve_transient",
     "FilmThickness",
     "HamrockDowsonGroups",
     "MoesGroups",

@@ -1,0 +1,134 @@
+"""Statistics of a transient mixed-EHL run: contact counts, film distribution, flow vectors.
+
+The seed (Holmes, Evans & Snidle, J. Tribol. 127 (2005) 61) counts, at every mesh point, the
+number of timesteps of the fully rough period in which the surfaces are in contact (``h = 0``,
+its Eq. 8), the contact count ``Q``, and normalises it by the analysis time (Figs. 4-8,
+``Q/ms``); Table 2 gives the percentage of timesteps with contact at one or more mesh points.
+Fig. 14 draws the lubricant flow vectors, the Poiseuille + Couette mass flow per unit width.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .lubricant import eyring_flow_factors
+from .problem import LineContact
+
+__all__ = ["ContactStatistics", "flow_vectors", "hertz_mask"]
+
+
+def hertz_mask(problem, x, y) -> np.ndarray:
+    """True at nodes inside the Hertz contact, ``(x/a)^2 + (y/b)^2 <= 1`` (``|x| <= a``, line).
+
+    Parameters
+    ----------
+    problem : PointContact or LineContact
+    x, y : ndarray
+        Node coordinates, m.
+    """
+    Xg, Yg = np.meshgrid(np.asarray(x) / problem.a, np.asarray(y), indexing="ij")
+    if isinstance(problem, LineContact):
+        return np.abs(Xg) <= 1.0
+    return Xg**2 + (Yg / problem.b) ** 2 <= 1.0
+
+
+def flow_vectors(problem, x, y, pressure, film):
+    """Lubricant flow per unit width at the nodes, density-weighted (seed Fig. 14).
+
+    ``q_x = (rho/rho0) u_mean h - sigma_x dp/dx``, ``q_y = -sigma_y dp/dy`` with the Eyring flow
+    factors of :func:`asperity.ehl.eyring_flow_factors` (divided by rho0) and central
+    differences (one-sided on the edges); zero where ``h = 0``.
+
+    Parameters
+    ----------
+    problem : PointContact or LineContact
+    x, y : ndarray
+        Node coordinates, m.
+    pressure, film : ndarray
+        p (Pa) and h (m), indexed ``[ix, iy]``.
+
+    Returns
+    -------
+    qx, qy : ndarray
+        Flow per unit width in m^2/s (mass flow over rho0); ``qy = 0`` for a line contact.
+    """
+    lub = problem.lubricant
+    h = np.maximum(film, 0.0)
+    rho = lub.density_ratio(pressure)
+    sx, sy = eyring_flow_factors(h, lub.eta(pressure), rho, problem.sliding_speed,
+                                 lub.eyring_stress)
+    qx = rho * problem.mean_speed * h - sx * np.gradient(pressure, x, axis=0)
+    if pressure.shape[1] > 1:
+        qy = -sy * np.gradient(pressure, y, axis=1)
+    else:
+        qy = np.zeros_like(qx)
+    dry = film <= 0.0
+    qx[dry] = 0.0
+    qy[dry] = 0.0
+    return qx, qy
+
+
+class ContactStatistics:
+    """Accumulator of the counting-period statistics over the nodes of one grid.
+
+    Parameters
+    ----------
+    shape : tuple of int
+        Node-array shape ``(nx, ny)``.
+    film_edges : ndarray
+        Bin edges (m) of the film-thickness histogram; films beyond the last edge are counted
+        in the last bin.
+    region : ndarray of bool
+        Nodes whose film enters the histogram (normally the Hertz contact).
+
+    Attributes
+    ----------
+    count : ndarray of int64
+        Contact count Q per node: timesteps with ``h = 0`` at the node.
+    steps : int
+        Timesteps accumulated.
+    steps_with_contact : int
+        Timesteps with contact at one or more nodes.
+    film_counts : ndarray of int64
+        Film histogram over ``region`` and the accumulated timesteps.
+    """
+
+    def __init__(self, shape, film_edges, region):
+        self.film_edges = np.asarray(film_edges, dtype=float)
+        self.region = np.asarray(region, dtype=bool)
+        self.count = np.zeros(shape, dtype=np.int64)
+        self.steps = 0
+        self.steps_with_contact = 0
+        self.film_counts = np.zeros(self.film_edges.size - 1, dtype=np.int64)
+
+    def add(self, film, contact):
+        """Accumulate one timestep: film (m) and the contact mask (True where ``h = 0``)."""
+        self.count += contact
+        self.steps += 1
+        self.steps_with_contact += bool(contact.any())
+        edges = self.film_edges
+        values = np.clip(film[self.region], edges[0], edges[-1])
+        self.film_counts += np.histogram(values, edges)[0]
+
+    def contact_time_fraction(self) -> float:
+        """Fraction of the accumulated timesteps with contact at one or more nodes (Table 2)."""
+        return self.steps_with_contact / self.steps if self.steps else 0.0
+
+    def count_rate(self, dt: float) -> np.ndarray:
+        """Contact count per node normalised by the analysis time, per ms (Figs. 4-8)."""
+        if not self.steps:
+            return np.zeros(self.count.shape)
+        return self.count / (self.steps * dt * 1e3)
+
+    def arrays(self) -> dict:
+        """The accumulator as plain arrays (for a checkpoint)."""
+        return {"stat_count": self.count, "stat_steps": np.int64(self.steps),
+                "stat_steps_with_contact": np.int64(self.steps_with_contact),
+                "stat_film_counts": self.film_counts}
+
+    def restore(self, arrays):
+        """Set the accumulator from :meth:`arrays` output."""
+        self.count = np.array(arrays["stat_count"], dtype=np.int64)
+        self.steps = int(arrays["stat_steps"])
+        self.steps_with_contact = int(arrays["stat_steps_with_contact"])
+        self.film_counts = np.array(arrays["stat_film_counts"], dtype=np.int64)

@@ -1,0 +1,546 @@
+"""Transient mixed EHL of rough surfaces moving through a point or line contact.
+
+The seed's procedure (Holmes, Evans & Snidle, J. Tribol. 127 (2005) 61): start from the smooth
+steady solution, feed the roughness of both surfaces in from the inlet boundary as they move at
+their own speeds ``u1``, ``u2``, run until the slower rough surface has crossed the whole domain
+("fully rough"), then count contacts over a further period. Each timestep solves the coupled
+differential deflection / time-dependent Reynolds equations of :mod:`asperity.ehl.solver`
+(docs/ehl.md) with the squeeze term by the theta-scheme, Crank-Nicolson (``theta = 1/2``) by
+default, which with the second-order upwind wedge term is unconditionally stable
+(EHL-NOTES sec. 4). Where the update gives ``h < 0`` the node is in contact: ``h = 0`` and ``p``
+from the deflection equation alone (seed Eq. 8).
+
+Time discretisation (dimensionless, ``T = t u_mean / a``, node P)::
+
+    theta L^{n+1} + (1 - theta) L^n - lam [(rho H)^{n+1} - (rho H)^n] / dT = 0
+
+with ``L`` the discrete Reynolds operator (Poiseuille + wedge). The explicit part enters the
+nodal update through ``EHLState.rhs_t = (1 - theta) L^n + (lam/dT) (rho H)^n``; ``L^n`` is
+taken as zero at nodes that were cavitated or in contact at level n (the Reynolds equation
+does not hold there).
+
+Roughness. Surface k (height ``z_k``, metal below, as :class:`~asperity.surfaces.Profile` or
+:class:`~asperity.surfaces.Topography`) moves at ``u_k`` along +x. At time t the node at x
+carries the surface point that crossed the inlet ``x_in`` (the first node) at
+``t - (x - x_in)/u_k``; points that have not yet reached the inlet at t = 0 are rough, those
+downstream are smooth. With ``d = u_k t - (x - x_in)`` the distance travelled past the inlet,
+the height is ``z_k(s_end - d)`` for ``d >= 0`` (``s_end`` the last data point, so the profile
+enters end first) and 0 for ``d < 0``; heights between data points come from the surface's
+cubic splines. The gap gains ``phi = -(z1 + z2)`` (two surfaces facing each other), which enters
+the deflection equation as its 5-point Laplacian and the Dirichlet edge films.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, check_positive
+from ..surfaces.topography import Profile, Topography
+from .checkpoint import fingerprint, load_checkpoint, save_checkpoint
+from .kernels import CAVITATED, CONTACT
+from .problem import LineContact, PointContact
+from .solver import EHLState, _centre_line, _film_estimate, solve_steady
+from .statistics import ContactStatistics, flow_vectors, hertz_mask
+
+__all__ = ["TransientResult", "solve_transient"]
+
+#: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
+DIVERGED = 1e3
+
+
+class MovingSurface:
+    """A rough surface entering the domain at the inlet and moving along +x at ``speed``.
+
+    Parameters
+    ----------
+    surface : Profile or Topography
+        Heights, metal below. A profile is extruded across y (transverse-ground surface).
+    speed : float
+        Surface speed along x, m/s (> 0).
+    x, y : ndarray
+        Node coordinates of the solver grid, m; the inlet is ``x[0]``.
+    duration : float
+        Time the run lasts, s; a non-periodic surface must be long enough to feed it.
+    field : str
+        Name of the argument, for error messages.
+    """
+
+    def __init__(self, surface, speed, x, y, duration, field):
+        if not isinstance(surface, Profile | Topography):
+            raise InputError(field, "a Profile, a Topography or None", type(surface).__name__)
+        if not speed > 0:
+            raise InputError(field, "a surface speed > 0 to carry the roughness in from the "
+                                    "inlet", speed)
+        if y.size == 1 and isinstance(surface, Topography):
+            raise InputError(field, "a Profile for a line contact")
+        self.surface = surface
+        self.speed = float(speed)
+        self.x = x
+        self.y = y
+        self.s_end = float(surface.x[-1])
+        if not surface.periodic:
+            need = self.speed * duration
+            have = float(surface.x[-1] - surface.x[0])
+            if need > have:
+                raise InputError(field, f"a periodic surface or one at least {need:.4g} m long "
+                                        f"along x for this run (it is {have:.4g} m)")
+        if isinstance(surface, Topography):
+            try:
+                surface.sample([self.s_end], y)
+            except InputError:
+                raise InputError(field, "a topography covering the solver's y range "
+                                        f"[{y[0]:.4g}, {y[-1]:.4g}] m, or a periodic one") from None
+
+    def heights(self, t: float) -> np.ndarray:
+        """Heights ``z_k`` (m) at the nodes at time ``t``, shape ``(x.size, y.size)``."""
+        d = self.speed * t - (self.x - self.x[0])
+        rough = d >= 0.0
+        z = np.zeros((self.x.size, self.y.size))
+        if rough.any():
+            s = self.s_end - d[rough]
+            if isinstance(self.surface, Profile):
+                z[rough] = self.surface.sample(s)[:, None]
+            else:
+                z[rough] = self.surface.sample(s, self.y)
+        return z
+
+
+@dataclass(frozen=True)
+class TransientResult:
+    """Transient mixed-EHL run, SI units; steps are numbered 1..``steps`` (0: the steady start).
+
+    Attributes
+    ----------
+    x, y : ndarray
+        Node coordinates, m.
+    dt : float
+        Timestep, s.
+    warmup_steps, counting_steps, steps : int
+        Steps until both rough surfaces fill the domain, steps counted, and their sum.
+    steps_done : int
+        Steps completed (less than ``steps`` only when a step produced non-finite values).
+    pressure, film : ndarray
+        p (Pa) and h (m) at the last step, ``[ix, iy]``.
+    surface1, surface2 : ndarray
+        Heights z1, z2 (m) at the nodes at the last step.
+    contact_count : ndarray of int
+        Q, timesteps of the counting period with ``h = 0``, per node.
+    contact_count_rate : ndarray
+        Q per ms of counting time (seed Figs. 4-8).
+    contact_time_fraction : float
+        Fraction of counting timesteps with contact at one or more nodes (seed Table 2).
+    max_pressure, min_film : ndarray
+        Per step (index ``step - 1``): largest p (Pa) and smallest h (m) over the domain.
+    film_edges, film_counts : ndarray
+        Histogram of h over the Hertz contact area and the counting period (bins in m).
+    flow_x, flow_y : ndarray
+        Lubricant flow per unit width at the last step, m^2/s (:func:`flow_vectors`).
+    snapshot_steps : ndarray of int
+        Steps at which the centre line was recorded.
+    centre_pressure, centre_film, centre_surface1, centre_surface2 : ndarray
+        p, h, z1, z2 along y = 0 at those steps, shape ``(len(snapshot_steps), x.size)``.
+    sweeps, residuals, step_converged, load_errors : ndarray
+        Per step: relaxation sweeps, final residual, convergence flag, relative load error.
+    iterations : int
+        Relaxation sweeps over all steps.
+    converged : bool
+        Steady start and every step converged.
+    residual : float
+        Largest final residual of any step.
+    steady_central_film : float
+        Central film of the smooth steady start, m.
+    method, theta
+        Relaxation and time-scheme weight used.
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    dt: float
+    warmup_steps: int
+    counting_steps: int
+    steps: int
+    steps_done: int
+    pressure: np.ndarray
+    film: np.ndarray
+    surface1: np.ndarray
+    surface2: np.ndarray
+    contact_count: np.ndarray
+    contact_count_rate: np.ndarray
+    contact_time_fraction: float
+    max_pressure: np.ndarray
+    min_film: np.ndarray
+    film_edges: np.ndarray
+    film_counts: np.ndarray
+    flow_x: np.ndarray
+    flow_y: np.ndarray
+    snapshot_steps: np.ndarray
+    centre_pressure: np.ndarray
+    centre_film: np.ndarray
+    centre_surface1: np.ndarray
+    centre_surface2: np.ndarray
+    sweeps: np.ndarray
+    residuals: np.ndarray
+    step_converged: np.ndarray
+    load_errors: np.ndarray
+    iterations: int
+    converged: bool
+    residual: float
+    steady_central_film: float
+    method: str
+    theta: float
+
+    @property
+    def times(self) -> np.ndarray:
+        """Time of each step, s."""
+        return self.dt * np.arange(1, self.steps + 1)
+
+    @property
+    def counting_time(self) -> float:
+        """Length of the counting period, s."""
+        return self.counting_steps * self.dt
+
+    def summary(self) -> dict:
+        """Scalars for ``summary.json``: contact-time fraction, extremes of the counting period."""
+        counted = slice(self.warmup_steps, self.steps_done)
+        maxp = self.max_pressure[counted]
+        minh = self.min_film[counted]
+        return {
+            "contact_time_fraction": float(self.contact_time_fraction),
+            "max_pressure_pa": float(maxp.max()) if maxp.size else float("nan"),
+            "minimum_film_thickness_m": float(minh.min()) if minh.size else float("nan"),
+            "counting_time_s": float(self.counting_time),
+            "timestep_s": float(self.dt),
+            "steps": int(self.steps),
+            "mean_sweeps_per_step": float(self.sweeps[: self.steps_done].mean())
+            if self.steps_done else 0.0,
+            "converged": bool(self.converged),
+        }
+
+
+def _reynolds_operator(state: EHLState) -> np.ndarray:
+    """Discrete Reynolds operator ``L`` (Poiseuille + upwind wedge) of the current state.
+
+    The same finite differences as the nodal update (docs/ehl.md): arithmetic face
+    conductances, second-order upwind ``(3/2, -2, 1/2)`` wedge (first order next to the inlet);
+    zero on the edges and at cavitated or contact nodes.
+    """
+    ex, ey, rho = state.flow_coefficients()
+    P = state.P
+    q = rho * state.H
+    L = np.zeros_like(P)
+    dx2 = state.dX**2
+    fe = 0.5 * (ex[1:-1] + ex[2:]) / dx2
+    fw = 0.5 * (ex[1:-1] + ex[:-2]) / dx2
+    L[1:-1] = fe * (P[2:] - P[1:-1]) + fw * (P[:-2] - P[1:-1])
+    wedge = np.zeros_like(P)
+    wedge[2:-1] = 1.5 * q[2:-1] - 2.0 * q[1:-2] + 0.5 * q[:-3]
+    wedge[1] = q[1] - q[0]
+    L -= state.lam * wedge / state.dX
+    if not state.line:
+        dy2 = state.dY**2
+        fn = 0.5 * (ey[:, 1:-1] + ey[:, 2:]) / dy2
+        fs = 0.5 * (ey[:, 1:-1] + ey[:, :-2]) / dy2
+        L[:, 1:-1] += fn * (P[:, 2:] - P[:, 1:-1]) + fs * (P[:, :-2] - P[:, 1:-1])
+    L[state.edge] = 0.0
+    L[(P <= 0.0) | (state.H <= 0.0)] = 0.0
+    return L
+
+
+def _relax_step(state, method, *, tol, max_sweeps, refresh, gain, film_scale):
+    """Relax one timestep; return (converged, residual, sweeps, load error).
+
+    The far field is refreshed every ``refresh`` sweeps; the step has converged when the
+    first sweep after a refresh changes p by less than ``tol``, h by less than
+    ``tol * film_scale`` and leaves a relative load error below ``tol``.
+    """
+    target = state.problem.load_integral
+    sweeps = 0
+    residual = np.inf
+    load_err = np.inf
+    while sweeps < max_sweeps:
+        state.refresh()
+        first = sweeps + 1
+        for _ in range(refresh):
+            dp, dh = state.sweep(method)
+            sweeps += 1
+            load_err = (state.load() - target) / target
+            state.shift_separation(gain * load_err)
+            residual = max(dp, dh / film_scale, abs(load_err))
+            if not (np.isfinite(residual) and np.abs(state.P).max() < DIVERGED):
+                return False, np.inf, sweeps, load_err
+            if residual < tol or sweeps >= max_sweeps:
+                break
+        if residual < tol and sweeps == first:
+            return True, residual, sweeps, load_err
+    return False, residual, sweeps, load_err
+
+
+def _levels(nx, ny, line):
+    """Grid-sequencing levels for the steady start: halve while the coarse grid keeps >= 17."""
+    levels = 1
+    while levels < 4:
+        f = 2 ** levels
+        if (nx - 1) % f or (nx - 1) // f + 1 < 17:
+            break
+        if not line and ((ny - 1) % f or (ny - 1) // f + 1 < 17):
+            break
+        levels += 1
+    return levels
+
+
+def _check_int(field, value, minimum):
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < minimum:
+        raise InputError(field, f"an integer >= {minimum}", value)
+    return int(value)
+
+
+def solve_transient(
+    problem,
+    roughness1=None,
+    roughness2=None,
+    *,
+    nx: int = 129,
+    ny: int = 65,
+    domain=None,
+    dt: float | None = None,
+    counting_steps: int = 200,
+    warmup_steps: int | None = None,
+    theta: float = 0.5,
+    method: str | None = None,
+    near: int = 4,
+    tol: float = 1e-4,
+    max_sweeps: int = 400,
+    refresh: int = 4,
+    load_gain: float | None = None,
+    steady=None,
+    film_edges=None,
+    snapshot_steps=None,
+    checkpoint=None,
+    checkpoint_every: int = 100,
+    resume: bool = False,
+    callback=None,
+) -> TransientResult:
+    """Transient mixed EHL with rough surfaces moving through the contact (seed procedure).
+
+    Parameters
+    ----------
+    problem : PointContact or LineContact
+        The contact; surface 1 moves at ``problem.u1``, surface 2 at ``problem.u2``
+        (slide/roll ratio ``xi = (u2 - u1)/u_mean``).
+    roughness1, roughness2 : Profile, Topography or None
+        Heights of each surface (metal below); a profile varies along x and is extruded across
+        y (transverse ground). None: smooth. A line contact takes profiles only.
+    nx, ny : int
+        Nodes along x and y (``ny`` ignored for a line contact); the seed's mesh is 801 x 201.
+    domain : ((x0, x1), (y0, y1)), optional
+        In m; default ``problem.default_domain()``.
+    dt : float, optional
+        Timestep, s; default the seed's ``dx / (2 u_max)``.
+    counting_steps : int
+        Steps over which contacts are counted once both rough surfaces fill the domain
+        (the seed: 2370).
+    warmup_steps : int, optional
+        Steps before counting; default the time the slower rough surface takes to cross the
+        domain (0 for smooth surfaces).
+    theta : float
+        Time-scheme weight, 1/2 (Crank-Nicolson, default) to 1 (implicit Euler).
+    method : {"line", "point"}, optional
+        Relaxation, as for :func:`asperity.ehl.solve_steady` (default line for a point
+        contact, point for a line contact).
+    near : int
+        x-neighbour pressure coefficients implicit in the line relaxation.
+    tol : float
+        Per-step convergence: max |dP|, max |dH| relative to the estimated central film, and
+        the relative load error below ``tol`` on the first sweep after a far-field refresh.
+    max_sweeps : int
+        Sweep limit per step; a step reaching it is recorded as not converged.
+    refresh : int
+        Sweeps between FFT refreshes of the far field and the edge films.
+    load_gain : float, optional
+        Separation shift per sweep per relative load error; default as ``solve_steady``.
+    steady : SteadyResult, optional
+        The smooth steady start on the same grid; computed when not given.
+    film_edges : array_like, optional
+        Bin edges (m) of the film histogram; default 50 bins from 0 to twice the estimated
+        central film.
+    snapshot_steps : sequence of int, optional
+        Steps (1..steps) at which the centre line (p, h, z1, z2) is kept; default the last.
+    checkpoint : path, optional
+        ``.npz`` file written atomically every ``checkpoint_every`` steps and at the end.
+    checkpoint_every : int
+        Steps between checkpoints.
+    resume : bool
+        Continue from ``checkpoint`` when it exists (it must come from a run with the same
+        inputs); the result is bit-identical to an uninterrupted run.
+    callback : callable, optional
+        ``callback(step, residual)`` after every step.
+
+    Returns
+    -------
+    TransientResult
+    """
+    if not isinstance(problem, PointContact | LineContact):
+        raise InputError("problem", "a PointContact or LineContact")
+    line = isinstance(problem, LineContact)
+    if method is None:
+        method = "point" if line else "line"
+    if method not in ("line", "point"):
+        raise InputError("method", '"line" or "point"', method)
+    theta = float(theta)
+    if not 0.5 <= theta <= 1.0:
+        raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)
+    tol = check_positive("tol", tol)
+    load_gain = check_positive("load_gain", (0.01 if line else 0.05) if load_gain is None
+                               else load_gain)
+    counting_steps = _check_int("counting_steps", counting_steps, 1)
+    max_sweeps = _check_int("max_sweeps", max_sweeps, 1)
+    refresh = _check_int("refresh", refresh, 1)
+    near = _check_int("near", near, 0)
+    checkpoint_every = _check_int("checkpoint_every", checkpoint_every, 1)
+    if line:
+        ny = 1
+    x, y = problem.grid(nx, ny, domain)
+    nx, ny = x.size, y.size
+    u_max = max(abs(problem.u1), abs(problem.u2))
+    dt = 0.5 * (x[1] - x[0]) / u_max if dt is None else check_positive("dt", dt)
+
+    given = [(r, u, f"roughness{k}") for k, (r, u) in
+             enumerate(((roughness1, problem.u1), (roughness2, problem.u2)), start=1)
+             if r is not None]
+    for _, u, field in given:
+        if not u > 0:
+            raise InputError(field, "a surface speed > 0 to carry the roughness in", u)
+    if warmup_steps is None:
+        crossing = [(x[-1] - x[0]) / u for _, u, _ in given]
+        warmup_steps = int(np.ceil(max(crossing) / dt - 1e-9)) if crossing else 0
+    warmup_steps = _check_int("warmup_steps", warmup_steps, 0)
+    total = warmup_steps + counting_steps
+    moving = [MovingSurface(r, u, x, y, total * dt, field) for r, u, field in given]
+    slots = [k for k, r in enumerate((roughness1, roughness2)) if r is not None]
+
+    def heights(t):
+        z = [np.zeros((nx, ny)), np.zeros((nx, ny))]
+        for k, surface in zip(slots, moving, strict=True):
+            z[k] = surface.heights(t)
+        return z
+
+    film_ref = _film_estimate(problem)
+    if film_edges is None:
+        film_edges = np.linspace(0.0, 2.0 * film_ref, 51)
+    film_edges = np.asarray(film_edges, dtype=float)
+    if film_edges.ndim != 1 or film_edges.size < 2 or np.any(np.diff(film_edges) <= 0):
+        raise InputError("film_edges", "at least two increasing bin edges in m")
+    snaps = np.array([total] if snapshot_steps is None else snapshot_steps, dtype=np.int64)
+    if snaps.ndim != 1 or np.any((snaps < 1) | (snaps > total)):
+        raise InputError("snapshot_steps", f"steps between 1 and {total}", snapshot_steps)
+    snaps = np.unique(snaps)
+
+    state = EHLState(problem, x, y, near if method == "line" else 0)
+    stats = ContactStatistics((nx, ny), film_edges, hertz_mask(problem, x, y))
+    record = {"max_pressure": np.full(total, np.nan), "min_film": np.full(total, np.nan),
+              "sweeps": np.zeros(total, dtype=np.int64), "residuals": np.full(total, np.nan),
+              "step_converged": np.zeros(total, dtype=bool),
+              "load_errors": np.full(total, np.nan)}
+    centre = {name: np.full((snaps.size, nx), np.nan) for name in
+              ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
+    key = fingerprint(repr(problem), x, y, dt, warmup_steps, counting_steps, theta, method, near,
+                      tol, max_sweeps, refresh, load_gain, film_edges, snaps,
+                      *[(type(r).__name__, r.periodic, r.x, r.z) for r in
+                        (roughness1, roughness2) if r is not None], slots)
+
+    start = 0
+    arrays = load_checkpoint(checkpoint, key) if (resume and checkpoint is not None) else None
+    if arrays is not None:
+        state.P = arrays["P"].copy()
+        state.H = arrays["H"].copy()
+        state.H0 = float(arrays["H0"])
+        state.kind = arrays["kind"].copy()
+        start = int(arrays["step"])
+        steady_converged = bool(arrays["steady_converged"])
+        steady_hc = float(arrays["steady_central_film"])
+        stats.restore(arrays)
+        for name in (*record, *centre):
+            (record if name in record else centre)[name] = arrays[name].copy()
+    else:
+        if steady is None:
+            steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,
+                                  levels=_levels(nx, ny, line), near=near,
+                                  tol=min(tol, 1e-5), load_gain=load_gain, max_sweeps=20000)
+        if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
+            raise InputError("steady", f"a steady solution on the same {nx} x {ny} grid")
+        state.P = steady.pressure / problem.p_hertz
+        state.H = steady.film / problem.film_scale
+        state.H0 = steady.separation / problem.film_scale
+        state.kind[:] = 0
+        state.kind[state.P <= 0.0] = CAVITATED
+        state.kind[state.H <= 0.0] = CONTACT
+        steady_converged = bool(steady.converged)
+        steady_hc = float(steady.central_film)
+
+    z1, z2 = heights(start * dt)
+    state.roughness = -(z1 + z2) / problem.film_scale
+    mass = state.lam / (dt * problem.mean_speed / problem.a)
+    h_scale = film_ref / problem.film_scale
+    interior = ~state.edge
+    steps_done = start
+    for n in range(start, total):
+        step = n + 1
+        # explicit part of the theta-scheme from level n, then move the surfaces to level n+1
+        _, _, rho = state.flow_coefficients()
+        state.theta = theta
+        state.mass = mass
+        state.rhs_t = (1.0 - theta) * _reynolds_operator(state) + mass * rho * state.H
+        z1, z2 = heights(step * dt)
+        phi = -(z1 + z2) / problem.film_scale
+        state.H += phi - state.roughness
+        state.roughness = phi
+        ok, res, sw, load_err = _relax_step(state, method, tol=tol, max_sweeps=max_sweeps,
+                                            refresh=refresh, gain=load_gain,
+                                            film_scale=h_scale)
+        p = state.P * problem.p_hertz
+        h = state.H * problem.film_scale
+        record["max_pressure"][n] = p.max()
+        record["min_film"][n] = h.min()
+        record["sweeps"][n] = sw
+        record["residuals"][n] = res
+        record["step_converged"][n] = ok
+        record["load_errors"][n] = load_err
+        if n >= warmup_steps:
+            stats.add(h, (state.H <= 0.0) & interior)
+        hit = np.flatnonzero(snaps == step)
+        if hit.size:
+            for name, field in (("centre_pressure", p), ("centre_film", h),
+                                ("centre_surface1", z1), ("centre_surface2", z2)):
+                centre[name][hit[0]] = _centre_line(state, field)
+        steps_done = step
+        if callback is not None:
+            callback(step, res)
+        if not np.isfinite(res):
+            break
+        if checkpoint is not None and (step % checkpoint_every == 0 or step == total):
+            save_checkpoint(checkpoint, key, {
+                "P": state.P, "H": state.H, "H0": np.float64(state.H0), "kind": state.kind,
+                "step": np.int64(step), "steady_converged": np.bool_(steady_converged),
+                "steady_central_film": np.float64(steady_hc), **stats.arrays(), **record,
+                **centre})
+
+    p = state.P * problem.p_hertz
+    h = state.H * problem.film_scale
+    if np.all(np.isfinite(p)) and np.all(np.isfinite(h)):
+        qx, qy = flow_vectors(problem, x, y, p, h)
+    else:
+        qx = qy = np.full((nx, ny), np.nan)
+    done = record["step_converged"][:steps_done]
+    return TransientResult(
+        x=x, y=y, dt=float(dt), warmup_steps=warmup_steps, counting_steps=counting_steps,
+        steps=total, steps_done=steps_done, pressure=p, film=h, surface1=z1, surface2=z2,
+        contact_count=stats.count, contact_count_rate=stats.count_rate(dt),
+        contact_time_fraction=stats.contact_time_fraction(),
+        film_edges=film_edges, film_counts=stats.film_counts, flow_x=qx, flow_y=qy,
+        snapshot_steps=snaps, iterations=int(record["sweeps"].sum()),
+        converged=bool(steady_converged and steps_done == total and done.all()),
+        residual=float(np.nanmax(record["residuals"])) if steps_done else float("nan"),
+        steady_central_film=steady_hc, method=method, theta=theta, **record, **centre,
+    )
