@@ -1,0 +1,78 @@
+"""Figures of a transient mixed-EHL run in the style of the seed (Holmes et al. 2005, Figs 3-14)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .style import new_figure
+
+__all__ = ["plot_centre_line", "plot_contact_rate", "plot_film_histogram", "plot_flow_vectors"]
+
+
+def _ellipse(ax, b_over_a):
+    t = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax.plot(np.cos(t), b_over_a * np.sin(t), color="black", lw=2.0)
+
+
+def plot_contact_rate(result, problem):
+    """Contours of the contact count rate Q/ms over x/a, y/a with the Hertz ellipse heavy
+    (Figs. 4-8)."""
+    fig, ax = new_figure()
+    X, Y = np.meshgrid(result.x / problem.a, result.y / problem.a, indexing="ij")
+    q = result.contact_count_rate
+    levels = np.linspace(0.0, max(q.max(), 1e-9), 11)
+    cs = ax.contourf(X, Y, q, levels=levels, cmap="Greys")
+    fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)")
+    _ellipse(ax, getattr(problem, "b", problem.a) / problem.a)
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("y / a")
+    ax.set_aspect("equal")
+    return fig
+
+
+def plot_centre_line(result, problem, index=-1, offset=None):
+    """Pressure (heavy) and film on y = 0 at one recorded step, the two surfaces drawn below,
+    offset for clarity (Figs. 3 and 10)."""
+    fig, ax = new_figure()
+    x = result.x / problem.a
+    ax.plot(x, result.centre_pressure[index] / 1e9, color="black", lw=2.0, label="p (GPa)")
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("pressure (GPa)")
+    ax2 = ax.twinx()
+    h = result.centre_film[index] * 1e6
+    ax2.plot(x, h, color="tab:blue", lw=1.0, label="h (um)")
+    gap = offset if offset is not None else 1.5 * max(np.nanmax(h), 0.5)
+    z1 = result.centre_surface1[index] * 1e6
+    z2 = result.centre_surface2[index] * 1e6
+    ax2.plot(x, -gap + z1, color="tab:gray", lw=0.8)
+    ax2.plot(x, -2.0 * gap - z2, color="tab:gray", lw=0.8)
+    ax2.set_ylabel("film, surfaces (um)")
+    ax.set_title(f"step {int(result.snapshot_steps[index])}")
+    return fig
+
+
+def plot_film_histogram(result):
+    """Distribution of the film thickness over the Hertz area and the counting period."""
+    fig, ax = new_figure()
+    edges = result.film_edges * 1e6
+    total = max(result.film_counts.sum(), 1)
+    ax.stairs(result.film_counts / total, edges, fill=True, color="tab:gray")
+    ax.set_xlabel("film thickness h (um)")
+    ax.set_ylabel("fraction of node-steps")
+    return fig
+
+
+def plot_flow_vectors(result, problem, stride=(4, 4)):
+    """Film contours and lubricant flow vectors at the last step, Hertz ellipse heavy
+    (Fig. 14)."""
+    fig, ax = new_figure()
+    X, Y = np.meshgrid(result.x / problem.a, result.y / problem.a, indexing="ij")
+    cs = ax.contourf(X, Y, result.film * 1e6, levels=20, cmap="viridis")
+    fig.colorbar(cs, ax=ax, label="h (um)")
+    sx, sy = stride
+    ax.quiver(X[::sx, ::sy], Y[::sx, ::sy], result.flow_x[::sx, ::sy],
+              result.flow_y[::sx, ::sy], color="white")
+    _ellipse(ax, getattr(problem, "b", problem.a) / problem.a)
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("y / a")
+    return fig
