@@ -16,6 +16,7 @@ from pydantic import ValidationError
 
 from ..errors import InputError
 from .ehl import EHLSteadyCase
+from .ehl_transient import EHLTransientCase
 from .fields import first_error
 from .normal import NormalCase
 from .surface import SurfaceCase
@@ -28,7 +29,12 @@ else:  # pragma: no cover
 __all__ = ["ANALYSES", "load_case", "parse_toml"]
 
 #: Case models by the value of their ``analysis`` key.
-ANALYSES = {"normal": NormalCase, "surface": SurfaceCase, "ehl-steady": EHLSteadyCase}
+ANALYSES = {
+    "normal": NormalCase,
+    "surface": SurfaceCase,
+    "ehl-steady": EHLSteadyCase,
+    "ehl-transient": EHLTransientCase,
+}
 
 def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:
     """Parse TOML text; a syntax error becomes an :class:`InputError` naming the line."""

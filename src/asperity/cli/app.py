@@ -54,6 +54,8 @@ def run(
     out: Annotated[Path, typer.Option("--out", "-o", help="Output folder.")] = Path(
         "asperity-out"),
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
+    resume: Annotated[bool, typer.Option("--resume", help="Continue a checkpointed long run "
+                                                          "(transient EHL) in OUT.")] = False,
 ):
     """Run a case: write result.nc, summary.json, figures and report.html to OUT."""
     from ..cases import load_case
@@ -69,7 +71,7 @@ def run(
     model = load_case(Path(case) if is_file else example_text(case))
     console.print(f"[bold]{model.title}[/bold] ({model.analysis})")
     with progress_bar(console, disable=quiet) as progress:
-        outcome = run_case(model, progress=progress)
+        outcome = run_case(model, progress=progress, workdir=out, resume=resume)
     files = write_outcome(outcome, out)
     files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
                                    outcome, files,
@@ -123,8 +125,8 @@ def example(name: Annotated[str, typer.Argument(help="Example name (see asperity
 @app.command()
 @guarded
 def validate(
-    select: Annotated[str | None, typer.Option("--select", "-k",
-                                               help="Only checks whose name contains this.")] = None,
+    select: Annotated[str | None, typer.Option(
+        "--select", "-k", help="Only checks whose name contains this.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Machine-readable output.")] = False,
     slow: Annotated[bool, typer.Option("--slow", help="Include the paper-mesh checks "
                                                       "(minutes).")] = False,
@@ -172,10 +174,10 @@ def sweep(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
 ):
     """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc."""
+    import logging
+
     from ..sweep import load_study, run_study
     from .progress import progress_bar
-
-    import logging
 
     logging.getLogger("distributed").setLevel(logging.ERROR)
     spec = load_study(study)

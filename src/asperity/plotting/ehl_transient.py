@@ -41,12 +41,16 @@ def plot_centre_line(result, problem, index=-1, offset=None):
     ax2 = ax.twinx()
     h = result.centre_film[index] * 1e6
     ax2.plot(x, h, color="tab:blue", lw=1.0, label="h (um)")
-    gap = offset if offset is not None else 1.5 * max(np.nanmax(h), 0.5)
+    inside = np.abs(x) <= 1.0
+    h_contact = max(float(np.nanmax(h[inside])) if inside.any() else 0.0, 0.25)
     z1 = result.centre_surface1[index] * 1e6
     z2 = result.centre_surface2[index] * 1e6
+    relief = max(float(np.ptp(z1)), float(np.ptp(z2)), h_contact)
+    gap = offset if offset is not None else 1.5 * relief
     ax2.plot(x, -gap + z1, color="tab:gray", lw=0.8)
     ax2.plot(x, -2.0 * gap - z2, color="tab:gray", lw=0.8)
-    ax2.set_ylabel("film, surfaces (um)")
+    ax2.set_ylim(-2.0 * gap - 1.2 * relief, 3.0 * h_contact)
+    ax2.set_ylabel("film; surfaces below, offset (um)")
     ax.set_title(f"step {int(result.snapshot_steps[index])}")
     return fig
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from ..contact import hertz_point, solve_normal
 from ..cases.roughness import surface_heights
+from ..contact import hertz_point, solve_normal
 from ..results import Comparison, Outcome, variable
 
 __all__ = ["run"]

@@ -1,0 +1,178 @@
+"""Case file of a transient mixed-EHL run: rough surfaces moving through the contact.
+
+Reuses the contact, speed and lubricant tables of :mod:`asperity.cases.ehl` and adds one table
+per surface, the time stepping and the per-step solver options of
+:func:`asperity.ehl.solve_transient`::
+
+    analysis = "ehl-transient"
+    reduced_modulus = "227 GPa"
+    [contact]   ...   [speeds]  u = "25 m/s", xi = 0.25   [lubricant] ...
+    [grid]
+    nx = 129
+    ny = 65
+    [surface1]
+    kind = "builtin"    # smooth | builtin | ground | gaussian | file
+    profile = "C"
+    [surface2]
+    kind = "builtin"
+    profile = "C"
+    [surface2.waviness] # transverse waviness (varies along y), as in the seed's Fig. 15
+    wavelength = "420 um"
+    amplitude = "0.1 um"
+    [time]
+    counting_steps = 200
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+import numpy as np
+from pydantic import Field, ValidationInfo, field_validator, model_validator
+
+from ..errors import InputError
+from .ehl import EHLCaseBase, EHLGridSpec
+from .fields import CaseModel, Quantity
+from .roughness import WavinessSpec
+
+__all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
+
+
+class MovingSurfaceSpec(CaseModel):
+    """``[surface1]``/``[surface2]``: the roughness a surface carries into the contact.
+
+    ``kind``: ``smooth``; ``builtin`` (``profile`` "A", "B" or "C": the synthetic stand-ins of
+    the seed's transverse-ground profiles); ``ground`` (``ra``, ``correlation_length``,
+    ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``seed``); ``file``
+    (a measured profile: ``path``, ``spacing`` when the file has no x column). Profiles vary
+    along x (the rolling direction) and are extruded across y. ``scale`` multiplies the
+    heights (the seed's sqrt(2) x C); ``lowpass`` removes wavelengths shorter than that many
+    mesh spacings (ISO Gaussian filter) when the mesh cannot resolve them; ``waviness`` adds a
+    sinusoid along y (transverse waviness) or x.
+    """
+
+    kind: Literal["smooth", "builtin", "ground", "gaussian", "file"] = "smooth"
+    profile: Literal["A", "B", "C"] | None = None
+    ra: Quantity("length", gt=0) | None = None
+    rms: Quantity("length", gt=0) | None = None
+    correlation_length: Quantity("length", gt=0) | None = None
+    run_in: Annotated[float, Field(ge=0, lt=1)] = 0.0
+    seed: Annotated[int, Field(ge=0)] = 0
+    path: str | None = None
+    spacing: Quantity("length", gt=0) | None = None
+    scale: Annotated[float, Field(ge=0, le=100)] = 1.0
+    lowpass: Annotated[float, Field(ge=0, le=100)] = 0.0
+    waviness: WavinessSpec | None = None
+
+    @field_validator("path")
+    @classmethod
+    def _relative_to_case(cls, value, info: ValidationInfo):
+        from pathlib import Path
+
+        base = (info.context or {}).get("base_dir")
+        if value is None or base is None or Path(value).is_absolute():
+            return value
+        return str(Path(base) / value)
+
+    @model_validator(mode="after")
+    def _required(self):
+        need = {"smooth": (), "builtin": ("profile",), "ground": ("ra",),
+                "gaussian": ("rms", "correlation_length"), "file": ("path",)}[self.kind]
+        for key in need:
+            if getattr(self, key) is None:
+                raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
+        return self
+
+    def build(self, length: float, spacing: float, y: np.ndarray, dx: float):
+        """The surface (Profile, Topography or None), at least ``length`` m long along x."""
+        from .. import surfaces as s
+
+        if self.kind == "smooth" and self.waviness is None:
+            return None
+        if self.kind == "builtin":
+            surf = s.builtin_profile(self.profile, length=length, spacing=spacing)
+        elif self.kind == "ground":
+            kwargs = ({} if self.correlation_length is None
+                      else {"correlation_length": self.correlation_length})
+            surf = s.transverse_ground_profile(length, spacing, self.ra, run_in=self.run_in,
+                                               seed=self.seed, **kwargs)
+        elif self.kind == "gaussian":
+            surf = s.gaussian_profile(length, spacing, self.rms, self.correlation_length,
+                                      seed=self.seed)
+        elif self.kind == "file":
+            surf = s.read_surface(self.path, self.spacing)
+        else:
+            surf = s.Profile(s.cell_centres(int(np.ceil(length / spacing)), spacing),
+                             np.zeros(int(np.ceil(length / spacing))), periodic=True)
+        if isinstance(surf, s.Profile):
+            z = np.asarray(surf.z)
+            if self.lowpass > 0:
+                z = s.gaussian_filter(z, surf.x, self.lowpass * dx, periodic=surf.periodic)
+            surf = surf.with_heights(self.scale * z)
+        elif self.scale != 1.0:
+            surf = surf.with_heights(self.scale * np.asarray(surf.z))
+        if self.waviness is not None:
+            w = self.waviness
+            if isinstance(surf, s.Profile) and w.direction == "y":
+                surf = surf.extrude(y)
+            surf = s.add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
+        return surf
+
+
+class TimeSpec(CaseModel):
+    """``[time]``: ``counting_steps`` after ``warmup_steps`` (default: until the slower rough
+    surface has crossed the domain); ``dt`` (default the seed's dx / (2 u_max)); ``snapshots``
+    centre-line snapshots spread over the counting period (Figs. 3, 10)."""
+
+    counting_steps: Annotated[int, Field(ge=1, le=100_000)] = 200
+    warmup_steps: Annotated[int, Field(ge=0, le=100_000)] | None = None
+    dt: Quantity("time", gt=0) | None = None
+    snapshots: Annotated[int, Field(ge=1, le=50)] = 4
+
+
+class TransientSolverSpec(CaseModel):
+    """``[solver]``: per-step options of :func:`asperity.ehl.solve_transient`."""
+
+    tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-4
+    max_sweeps: Annotated[int, Field(ge=1, le=100_000)] = 400
+    refresh: Annotated[int, Field(ge=1, le=1000)] = 4
+    method: Literal["line", "point"] | None = None
+    theta: Annotated[float, Field(ge=0.5, le=1.0)] = 0.5
+    checkpoint_every: Annotated[int, Field(ge=1, le=100_000)] = 50
+
+
+class EHLTransientCase(EHLCaseBase):
+    """``analysis = "ehl-transient"``: rough surfaces through a point or line contact."""
+
+    analysis: Literal["ehl-transient"]
+    title: str = "Transient mixed EHL"
+    long_running: bool = False
+    grid: EHLGridSpec = EHLGridSpec()
+    surface1: MovingSurfaceSpec = MovingSurfaceSpec()
+    surface2: MovingSurfaceSpec = MovingSurfaceSpec()
+    time: TimeSpec = TimeSpec()
+    solver: TransientSolverSpec = TransientSolverSpec()
+    paper_contact_time_percent: Annotated[float, Field(ge=0, le=100)] | None = None
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        line = self.contact.line
+        if line and "ny" in self.grid.model_fields_set and self.grid.ny != 1:
+            raise ValueError("expected grid.ny = 1 (or no ny) for a line contact")
+        nx, ny = self.grid.nodes(line)
+        if nx * ny > 801 * 201 * 4:
+            raise ValueError(f"expected at most {801 * 201 * 4} nodes, got {nx * ny}")
+        u1, u2 = self.speeds.surface_speeds()
+        for k, (spec, u) in enumerate(((self.surface1, u1), (self.surface2, u2)), start=1):
+            rough = spec.kind != "smooth" or spec.waviness is not None
+            if rough and not u > 0:
+                raise ValueError(f"expected a positive speed of surface {k} (set by speeds.u "
+                                 "and speeds.xi) to carry its roughness in from the inlet")
+            if line and spec.waviness is not None and spec.waviness.direction == "y":
+                raise ValueError(f"expected no transverse waviness on surface{k} of a line "
+                                 "contact")
+        try:
+            self.problem()
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
+        return self

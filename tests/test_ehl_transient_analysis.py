@@ -1,0 +1,97 @@
+"""The ehl-transient analysis: case file, runner, streamed results and --resume from the CLI."""
+
+import json
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from asperity.cases import load_case
+from asperity.errors import InputError
+
+CASE = """
+analysis = "ehl-transient"
+title = "wavy surface through the gear contact"
+reduced_modulus = "227 GPa"
+[contact]
+type = "point"
+rx = "19.1 mm"
+ry = "151 mm"
+load = "962 N"
+[speeds]
+u = "25 m/s"
+xi = 0.25
+[lubricant]
+eta0 = "0.005 Pa s"
+alpha = "11.1 1/GPa"
+tau0 = "10 MPa"
+[grid]
+nx = 65
+ny = 33
+[surface1]
+kind = "smooth"
+[surface1.waviness]
+wavelength = "0.2 mm"
+amplitude = "0.05 um"
+direction = "x"
+[time]
+counting_steps = 30
+warmup_steps = 10
+[solver]
+checkpoint_every = 4
+"""
+
+
+def _run(path, out, *extra):
+    return subprocess.Popen([sys.executable, "-m", "asperity.cli", "run", str(path), "--out",
+                             str(out), "--quiet", *extra],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def test_killed_run_resumes_to_the_same_result(tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text(CASE)
+    whole = _run(case, tmp_path / "whole")
+    assert whole.wait(timeout=300) == 0, whole.stderr.read()
+
+    out = tmp_path / "killed"
+    proc = _run(case, out)
+    deadline = time.time() + 240
+    while time.time() < deadline and proc.poll() is None:
+        if (out / "result.nc").is_file():  # streamed statistics exist mid-run
+            with xr.open_dataset(out / "result.nc") as partial:
+                if partial.attrs.get("partial") == 1 and partial.attrs["steps_done"] >= 12:
+                    break
+        time.sleep(0.05)
+    proc.kill()
+    proc.wait()
+    with xr.open_dataset(out / "result.nc") as partial:
+        assert partial.attrs.get("partial") == 1, "the run finished before it could be killed"
+        assert partial["contact_count_rate"].attrs["units"] == "ms-1"
+    resumed = _run(case, out, "--resume")
+    assert resumed.wait(timeout=300) == 0, resumed.stderr.read()
+    a = json.loads((tmp_path / "whole" / "summary.json").read_text())
+    b = json.loads((out / "summary.json").read_text())
+    for key in ("max_pressure_pa", "minimum_film_thickness_m", "contact_time_fraction"):
+        assert a[key] == b[key], key
+    with xr.open_dataset(tmp_path / "whole" / "result.nc") as da, \
+            xr.open_dataset(out / "result.nc") as db:
+        np.testing.assert_array_equal(da["film"].values, db["film"].values)
+        np.testing.assert_array_equal(da["max_pressure"].values, db["max_pressure"].values)
+        assert "partial" not in db.attrs
+
+
+@pytest.mark.parametrize("old, new, field", [
+    ('xi = 0.25', 'xi = -2.5', "case: expected a positive speed of surface 1 (set by speeds"),
+    ('kind = "smooth"', 'kind = "builtin"', "surface1"),
+    ('counting_steps = 30', 'counting_steps = 0', "time.counting_steps"),
+    ('amplitude = "0.05 um"', 'amplitude = "-1 um"', "surface1.waviness.amplitude"),
+    ('direction = "x"', 'direction = "z"', "surface1.waviness.direction"),
+])
+def test_bad_transient_case_names_the_key(old, new, field):
+    with pytest.raises(InputError) as exc:
+        load_case(CASE.replace(old, new))
+    assert str(exc.value).startswith(field), str(exc.value)
