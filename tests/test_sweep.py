@@ -124,3 +124,23 @@ def test_interrupted_study_resumes_each_case_once(tmp_path):
     assert all(after[c] == t for c, t in finished.items()), "a finished case ran again"
     with xr.open_dataset(out / "study.nc") as ds:
         assert (ds["state"] == "done").all() and ds.sizes["loading__load"] == 8
+
+
+def test_axis_with_several_keys_is_one_labelled_dimension(tmp_path):
+    axes = """
+[[axis]]
+name = "shape"
+keys = ["geometry.rx", "loading.load"]
+values = [["5 mm", "10 N"], ["10 mm", "20 N"]]
+labels = ["small", "large"]
+[[axis]]
+key = "grid.nx"
+values = [16, 24]
+"""
+    study = _study(tmp_path, axes)
+    assert len(study.cases) == 4
+    ds = run_study(study, tmp_path / "out")
+    assert list(ds["shape"].values) == ["small", "large"]
+    np.testing.assert_allclose(ds["load_n"].sel(shape="large").values, [20.0, 20.0])
+    with pytest.raises(InputError, match="axis\\[0\\].values"):
+        _study(tmp_path, '[[axis]]\nkeys = ["a.b", "c.d"]\nvalues = [[1]]\n')

@@ -10,6 +10,14 @@ A study file (TOML)::
     key = "loading.load"                # dotted path into the case
     values = ["5 N", "10 N", "20 N"]    # or: range = {start = 5, stop = 20, num = 4, unit = "N"}
 
+An axis may also set several keys together (one dimension, labelled points)::
+
+    [[axis]]
+    name = "surfaces"
+    keys = ["surface1.profile", "surface2.profile"]
+    values = [["C", "C"], ["A", "A"]]
+    labels = ["C-C", "A-A"]            # optional; default the values joined by "-"
+
 Each case runs in its own folder ``OUT/cases/NNNN`` (``summary.json`` and ``result.nc``) and is
 marked done by ``status.json`` written last, so an interrupted study resumes where it stopped and
 never runs a finished case twice. A failing case is recorded with its error and does not stop the
@@ -41,7 +49,7 @@ class Study:
 
     title: str
     mode: str
-    axes: tuple  # of (name, values-as-given)
+    axes: tuple  # of (dimension name, keys, values-as-given, labels or None)
     cases: tuple  # of (case_id, case dict, {axis name: value})
 
 
@@ -82,6 +90,31 @@ def _axis_values(axis: dict, index: int) -> list:
     raise InputError(where, "a values list or a range table")
 
 
+def _axis(ax, i: int) -> tuple:
+    """(dimension name, keys, values, labels) of one [[axis]] table."""
+    if not isinstance(ax, dict):
+        raise InputError(f"axis[{i}]", "a table with key (or keys) and values")
+    unknown = set(ax) - {"key", "keys", "values", "range", "name", "labels"}
+    if unknown:
+        raise InputError(f"axis[{i}].{sorted(unknown)[0]}", "",
+                         problem="unknown key (check the spelling)")
+    if isinstance(ax.get("key"), str) and "keys" not in ax:
+        return ax.get("name", ax["key"]).replace(".", "__"), (ax["key"],), _axis_values(ax, i), \
+            None
+    keys = ax.get("keys")
+    if not (isinstance(keys, list) and keys and all(isinstance(k, str) for k in keys)):
+        raise InputError(f"axis[{i}].key", "a dotted key path such as 'loading.load' (or a "
+                                           "keys list)")
+    values = _axis_values(ax, i)
+    if not all(isinstance(v, list) and len(v) == len(keys) for v in values):
+        raise InputError(f"axis[{i}].values", f"lists of {len(keys)} values, one per key")
+    labels = ax.get("labels", ["-".join(str(x) for x in v) for v in values])
+    if not (isinstance(labels, list) and len(labels) == len(values)):
+        raise InputError(f"axis[{i}].labels", "one label per value")
+    name = ax.get("name", "__".join(k.replace(".", "__") for k in keys))
+    return str(name), tuple(keys), values, [str(label) for label in labels]
+
+
 def load_study(path: str | Path) -> Study:
     """Read and validate a study file (or a built-in study by name); every case is validated
     before anything runs."""
@@ -106,26 +139,23 @@ def load_study(path: str | Path) -> Study:
     axes_spec = spec.get("axis")
     if not isinstance(axes_spec, list) or not axes_spec:
         raise InputError("axis", "at least one [[axis]] table with key and values")
-    axes = []
-    for i, ax in enumerate(axes_spec):
-        if not isinstance(ax, dict) or not isinstance(ax.get("key"), str):
-            raise InputError(f"axis[{i}].key", "a dotted key path such as 'loading.load'")
-        axes.append((ax["key"], _axis_values(ax, i)))
-    if mode == "zip" and len({len(v) for _, v in axes}) != 1:
+    axes = [_axis(ax, i) for i, ax in enumerate(axes_spec)]
+    if mode == "zip" and len({len(ax[2]) for ax in axes}) != 1:
         raise InputError("axis", "axes of equal length for mode = \"zip\"")
-    combos = (zip(*(v for _, v in axes), strict=True) if mode == "zip"
-              else itertools.product(*(v for _, v in axes)))
+    combos = (zip(*(ax[2] for ax in axes), strict=True) if mode == "zip"
+              else itertools.product(*(ax[2] for ax in axes)))
     cases = []
     for n, combo in enumerate(combos):
         case = copy.deepcopy(base_case)
-        for (key, _), value in zip(axes, combo, strict=True):
-            _set_path(case, key, value)
+        for (_, keys, _, _), value in zip(axes, combo, strict=True):
+            for key, v in zip(keys, value if len(keys) > 1 else (value,), strict=True):
+                _set_path(case, key, v)
         try:
             load_case(case)
         except InputError as exc:
             raise InputError(f"case {n} ({exc.field})", exc.expected, exc.got,
                              problem=str(exc).split(": ", 1)[1]) from None
-        cases.append((f"{n:04d}", case, dict(zip((k for k, _ in axes), combo, strict=True))))
+        cases.append((f"{n:04d}", case, dict(zip((ax[0] for ax in axes), combo, strict=True))))
     return Study(spec.get("title", path.stem), mode, tuple(axes), tuple(cases))
 
 
@@ -226,13 +256,13 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
         for k, v in (s.get("summary") or {}).items():
             if isinstance(v, int | float | bool) and k not in keys:
                 keys.append(k)
-    names = [k.replace(".", "__") for k, _ in study.axes]
+    names = [ax[0] for ax in study.axes]
     coords = {}
-    for name, (_key, values) in zip(names, study.axes, strict=True):
-        arr, unit = _coordinate(values)
+    for name, axis_keys, values, labels in study.axes:
+        arr, unit = (np.array(labels), "") if labels is not None else _coordinate(values)
         coords[name] = (name if study.mode == "cross" else "case", arr,
-                        {"units": unit or "1", "long_name": _key})
-    shape = (tuple(len(v) for _, v in study.axes) if study.mode == "cross"
+                        {"units": unit or "1", "long_name": ", ".join(axis_keys)})
+    shape = (tuple(len(ax[2]) for ax in study.axes) if study.mode == "cross"
              else (len(study.cases),))
     dims = tuple(names) if study.mode == "cross" else ("case",)
 
