@@ -483,10 +483,11 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
     if previous is not None and previous.traction.shape != (2, *prob.g.shape):
         raise InputError("previous", "a result on the same grid", previous.traction.shape)
     if method == "lp":
+        if previous is not None:
+            raise InputError("previous", "None with method='lp' (virgin loading only)")
         from .tangential_lp import solve_lp
 
-        return solve_lp(prob, op, x, y, body1, body2, previous=previous, callback=callback,
-                        result=_result, gross=_gross_slip_result, capacity=_capacity)
+        return solve_lp(prob, op, x, y, body1, body2, pressure, callback=callback)
 
     if not np.any(prob.target):
         if previous is None:
