@@ -60,7 +60,28 @@ def _faces(eps_x, eps_y, i, j, dx2, dy2):
 
 
 @numba.njit(cache=True)
-def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_self):
+def _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta):
+    """Stabilising part of the Newton derivative of the Poiseuille flux at node (i, j).
+
+    The face conductances hold half the node's own ``eps``; with ``eps = eps(p_P)`` the flux
+    ``theta sum xi_nb (p_nb - p_P)`` has the extra derivative
+    ``theta/2 [eps_x'(p_E + p_W - 2 p_P)/dX^2 + eps_y'(p_N + p_S - 2 p_P)/dY^2]`` with respect
+    to ``p_P``. Where it is negative (``eps`` falls with pressure and the node lies below its
+    neighbours, e.g. a roughness valley at high pressure) it is added to the diagonal ``A0``
+    (and ``times p_P`` to the right-hand side), so the change vanishes at convergence; where it
+    is positive it is left out, so ``A0`` never loses diagonal weight.
+    """
+    pp = p[i, j]
+    g = deps_x[i, j] * (p[i + 1, j] + p[i - 1, j] - 2.0 * pp) / dx2
+    if p.shape[1] > 1:
+        g += deps_y[i, j] * (p[i, j + 1] + p[i, j - 1] - 2.0 * pp) / dy2
+    g *= 0.5 * theta
+    return g if g < 0.0 else 0.0
+
+
+@numba.njit(cache=True)
+def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_self,
+                deps_x, deps_y):
     """One lexicographic Gauss-Seidel sweep of the coupled nodal update (Holmes et al. Eq. 7-8).
 
     Rows j in turn, nodes along each row in the entrainment direction (+x). Updates ``p``
@@ -87,9 +108,11 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
             if two_d:
                 nb += xn * p[i, j + 1] + xs * p[i, j - 1]
                 hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2
-            a0 = -theta * (xe + xw + xn + xs)
+            newton = _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta)
+            a0 = -theta * (xe + xw + xn + xs) + newton
             b0 = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
             r = -theta * (nb + lam * (c1 * rho_w_h - c2 * rho_ww_h) / dx) - rhs_t[i, j]
+            r += newton * p[i, j]
             e = efar[i, j] - (h[i + 1, j] + h[i - 1, j]) / dx2 - hy
             det = a0 * d0 - b0 * c_self
             pn = (r * d0 - b0 * e) / det
@@ -151,7 +174,7 @@ def _band_solve(ab, b, kl, ku):
 
 @numba.njit(cache=True)
 def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
-                  f_near, j, kind, ab, b, kl):
+                  f_near, j, kind, ab, b, kl, deps_x, deps_y):
     """Assemble the banded system of row j; unknowns interleaved (p_i at 2i, h_i at 2i+1)."""
     nx, ny = p.shape
     dx2 = dx * dx
@@ -190,7 +213,8 @@ def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
             continue
         xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
         c0, c1, c2 = _upwind(i)
-        ab[rp, kl] = -theta * (xe + xw + xn + xs)
+        newton = _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta)
+        ab[rp, kl] = -theta * (xe + xw + xn + xs) + newton
         ab[rp, kl + 2] = theta * xe
         ab[rp, kl - 2] = theta * xw
         ab[rp, kl + 1] = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
@@ -200,12 +224,12 @@ def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
         nb = 0.0
         if two_d:
             nb = xn * p[i, j + 1] + xs * p[i, j - 1]
-        b[rp] = -theta * nb - rhs_t[i, j]
+        b[rp] = -theta * nb - rhs_t[i, j] + newton * p[i, j]
 
 
 @numba.njit(cache=True)
 def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
-               kind):
+               kind, deps_x, deps_y):
     """One Gauss-Seidel sweep of x-line relaxation (rows j = const, in increasing j).
 
     Each row is solved for all its (p, h) at once with an active set: nodes are fluid,
@@ -261,7 +285,7 @@ def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
                 row_kind[i] = FLUID
         for _ in range(4):
             _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
-                          f_near, j, row_kind, ab, b, kl)
+                          f_near, j, row_kind, ab, b, kl, deps_x, deps_y)
             _band_solve(ab, b, kl, ku)
             changed = False
             for i in range(1, nx - 1):

@@ -37,6 +37,9 @@ from .problem import LineContact, PointContact
 
 __all__ = ["EHLState", "SteadyResult", "solve_steady"]
 
+#: Dimensionless pressure step of the forward difference d eps/dP (:meth:`EHLState.sweep`).
+NEWTON_STEP = 1e-4
+
 
 class EHLState:
     """Dimensionless state of an EHL solve on one grid (see :mod:`asperity.ehl.problem`).
@@ -179,17 +182,28 @@ class EHLState:
         scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
         return sx * scale, sy * scale, rho
 
+    def flow_derivatives(self, ex, ey):
+        """d eps_x/dP and d eps_y/dP at the current (P, H) (forward difference, step 1e-4)."""
+        P = self.P
+        self.P = P + NEWTON_STEP
+        try:
+            ex2, ey2, _ = self.flow_coefficients()
+        finally:
+            self.P = P
+        return (ex2 - ex) / NEWTON_STEP, (ey2 - ey) / NEWTON_STEP
+
     def sweep(self, method: str):
         """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|."""
         ex, ey, rho = self.flow_coefficients()
+        dex, dey = self.flow_derivatives(ex, ey)
         if method == "point":
             return point_sweep(
                 self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
-                self.theta, self.mass, -self.c * self.f_near[0],
+                self.theta, self.mass, -self.c * self.f_near[0], dex, dey,
             )
         return line_sweep(
             self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
-            self.theta, self.mass, self.c, self.f_near, self.kind,
+            self.theta, self.mass, self.c, self.f_near, self.kind, dex, dey,
         )
 
     def hertz_start(self, film: float):
