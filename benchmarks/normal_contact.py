@@ -25,6 +25,7 @@ from asperity.elastic import normal_operator
 from asperity.materials import Material
 
 E_STAR = 1.0e11  # contact modulus of the two bodies below, Pa
+REFERENCE_TOL = 1e-11
 TAMAAS_TOL = 1e-9  # tamaas' own error measure; 1e-12 takes minutes even at 512^2
 BODY = Material(youngs_modulus=2 * E_STAR * (1 - 0.3**2), poisson_ratio=0.3, name="body")
 
@@ -71,27 +72,22 @@ def rough_case(n):
     return gap0, x, mean_pressure * length**2
 
 
-def median_time(fun, repeat):
-    times, out = [], None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fun()
-        times.append(time.perf_counter() - t0)
-    return float(np.median(times)), out
-
-
-def run_asperity(gap0, x, load, periodic, repeat):
-    # build the cached influence spectrum outside the timing (the peers build theirs in setup)
+def setup_asperity(gap0, x, load, periodic, tol=1e-8):
+    """(solve, summary) for asperity; the cached influence spectrum is built here, untimed."""
     normal_operator(x, x, BODY, BODY, periodic)
-    t, res = median_time(
-        lambda: solve_normal(gap0, x, x, BODY, BODY, load=load, periodic=periodic), repeat)
-    if not res.converged:
-        raise RuntimeError("asperity did not converge")
-    return {"time": t, "iterations": res.iterations, "ffts": res.ffts,
-            "fraction": res.contact_fraction}
+
+    def solve():
+        return solve_normal(gap0, x, x, BODY, BODY, load=load, periodic=periodic, tol=tol)
+
+    def summary(res):
+        if not res.converged:
+            raise RuntimeError("asperity did not converge")
+        return {"iterations": res.iterations, "ffts": res.ffts, "pressure": res.pressure}
+
+    return solve, summary
 
 
-def run_contactmechanics(gap0, x, load, periodic, repeat):
+def setup_contactmechanics(gap0, x, load, periodic):
     from ContactMechanics import FreeFFTElasticHalfSpace, PeriodicFFTElasticHalfSpace
     from ContactMechanics.Optimization import constrained_conjugate_gradients
 
@@ -101,17 +97,20 @@ def run_contactmechanics(gap0, x, load, periodic, repeat):
     # `young` without `poisson` is the contact modulus E* in both classes
     substrate = halfspace((n, n), E_STAR, physical_sizes=(length, length))
     heights = -gap0  # ContactMechanics: the rigid surface's heights; gap = u - heights - offset
-    t, res = median_time(
-        lambda: constrained_conjugate_gradients(substrate, heights, external_force=load),
-        repeat)
-    if not res.success:
-        raise RuntimeError(f"ContactMechanics: {res.message}")
-    forces = res.jac[:n, :n]  # compressive > 0
-    return {"time": t, "iterations": res.nit, "ffts": 2 * res.nfev,
-            "fraction": float(np.count_nonzero(forces > 0)) / forces.size}
+
+    def solve():
+        return constrained_conjugate_gradients(substrate, heights, external_force=load)
+
+    def summary(res):
+        if not res.success:
+            raise RuntimeError(f"ContactMechanics: {res.message}")
+        pressure = res.jac[:n, :n] / (length / n) ** 2  # jac: pixel forces, compressive > 0
+        return {"iterations": res.nit, "ffts": 2 * res.nfev, "pressure": pressure}
+
+    return solve, summary
 
 
-def run_tamaas(gap0, x, load, periodic, repeat):
+def setup_tamaas(gap0, x, load, periodic):
     if not periodic:
         return None
     import tamaas as tm
@@ -128,13 +127,27 @@ def run_tamaas(gap0, x, load, periodic, repeat):
         solver.solve(load / length**2)  # tamaas' load is the mean pressure
         return model
 
-    t, model = median_time(solve, repeat)
-    pressure = np.asarray(model.traction)
-    return {"time": t, "iterations": None, "ffts": None,
-            "fraction": float(np.count_nonzero(pressure > 0)) / pressure.size}
+    def summary(model):
+        return {"iterations": None, "ffts": None,
+                "pressure": np.asarray(model.traction).reshape(n, n)}
+
+    return solve, summary
 
 
-PEERS = {"ContactMechanics": run_contactmechanics, "tamaas": run_tamaas}
+PEERS = {"ContactMechanics": setup_contactmechanics, "tamaas": setup_tamaas}
+
+
+def time_interleaved(codes, repeat):
+    """Median wall time per code, the codes taking turns so that load drift hits all alike."""
+    times = {name: [] for name in codes}
+    outputs = {}
+    for _ in range(repeat):
+        for name, (solve, _) in codes.items():
+            t0 = time.perf_counter()
+            outputs[name] = solve()
+            times[name].append(time.perf_counter() - t0)
+    return {name: {"time": float(np.median(times[name])), **summary(outputs[name])}
+            for name, (_, summary) in codes.items()}
 
 
 def main(argv=None):
@@ -153,31 +166,40 @@ def main(argv=None):
     # compile and warm the caches outside the timings
     g, xs, w = hertz_case(32, True)
     solve_normal(g, xs, xs, BODY, BODY, load=w, periodic=True)
-    print(f"grid {n} x {n}, median of {args.repeat}")
-    header = f"{'case':16s} {'code':17s} {'time s':>8s} {'iter':>6s} {'ffts':>6s} {'area %':>8s}"
-    print(header + f" {'asperity/peer':>14s} {'d area %':>9s}")
+    print(f"grid {n} x {n}, median of {args.repeat}; p err: relative L2 pressure error against "
+          f"asperity at tol={REFERENCE_TOL:g}")
+    header = f"{'case':16s} {'code':20s} {'time s':>8s} {'iter':>6s} {'ffts':>6s} {'area %':>8s}"
+    print(header + f" {'p err':>8s} {'asperity/peer':>14s} {'d area %':>9s}")
     for name in args.cases.split(","):
         gap0, x, load, periodic = cases[name]()
-        ours = run_asperity(gap0, x, load, periodic, args.repeat)
-        rows = [("asperity", ours)]
+        reference = solve_normal(gap0, x, x, BODY, BODY, load=load, periodic=periodic,
+                                 tol=REFERENCE_TOL, max_iterations=20000).pressure
+        codes = {"asperity": setup_asperity(gap0, x, load, periodic),
+                 "asperity tol=1e-6": setup_asperity(gap0, x, load, periodic, 1e-6)}
         for peer in filter(None, args.peers.split(",")):
-            run = PEERS[peer]
             try:
-                out = run(gap0, x, load, periodic, args.repeat)
+                setup = PEERS[peer](gap0, x, load, periodic)
             except ImportError:
-                out = None
-            if out is not None:
-                rows.append((peer, out))
-        for code, r in rows:
+                setup = None
+            if setup is not None:
+                codes[peer] = setup
+        results = time_interleaved(codes, args.repeat)
+        ours = results["asperity"]
+        for code, r in results.items():
             it = "-" if r["iterations"] is None else str(r["iterations"])
             cv = "-" if r["ffts"] is None else str(r["ffts"])
-            line = (f"{name:16s} {code:17s} {r['time']:8.2f} {it:>6s} {cv:>6s} "
-                    f"{100 * r['fraction']:8.3f}")
-            if code != "asperity":
+            error = np.linalg.norm(r["pressure"] - reference) / np.linalg.norm(reference)
+            line = (f"{name:16s} {code:20s} {r['time']:8.2f} {it:>6s} {cv:>6s} "
+                    f"{100 * area(r['pressure']):8.3f} {error:8.1e}")
+            if not code.startswith("asperity"):
                 line += (f" {ours['time'] / r['time']:14.3f}"
-                         f" {100 * (ours['fraction'] - r['fraction']):9.4f}")
+                         f" {100 * (area(ours['pressure']) - area(r['pressure'])):9.4f}")
             print(line, flush=True)
 
+
+def area(pressure):
+    """Contact-area fraction."""
+    return np.count_nonzero(pressure > 0) / pressure.size
 
 if __name__ == "__main__":
     main()
