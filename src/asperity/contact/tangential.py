@@ -151,7 +151,8 @@ class TangentialResult:
     stick: np.ndarray
     """Cells of the contact that stick (|q| < mu p), bool (nx, ny)."""
     slip: np.ndarray
-    """Relative slip of body 1 against body 2, (2, nx, ny), m; in gross slip the unit
+    """Relative slip of body 1 against body 2 (during this load step when solved from a
+    ``previous`` state), (2, nx, ny), m; in gross slip the unit
     direction of the instantaneous sliding motion (its magnitude is indeterminate)."""
     shift: np.ndarray
     """Rigid shift (2,) of body 1 relative to body 2, m (NaN in gross slip)."""
