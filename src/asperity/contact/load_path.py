@@ -36,6 +36,8 @@ class LoadPathResult:
     """Force carried by each connected patch, (k, n_regions, 2), N."""
     region_moment: np.ndarray
     """Moment carried by each patch about the centre, (k, n_regions), N m."""
+    reaction_moment: np.ndarray
+    """Moment supplied by the fixture when rotation is fixed, (k,), N m (zeros when free)."""
     stick_fraction: np.ndarray
     """Stuck share of the contact area, (k,)."""
     stick: np.ndarray
@@ -55,11 +57,12 @@ class LoadPathResult:
     """The full result of the last step."""
 
 
-def proportional_path(force=(0.0, 0.0), moment=0.0, steps=10, *, cycle=False):
+def proportional_path(force=(0.0, 0.0), moment=0.0, steps=10, *, cycle=False, unload=False):
     """Load points from zero to (F, M) in ``steps`` equal increments.
 
     With ``cycle=True`` the path continues to -(F, M) and back to (F, M) (a full fretting
-    cycle after the first loading), ``2 steps`` increments each way.
+    cycle after the first loading), ``2 steps`` increments each way. With ``unload=True`` it
+    ends with a return to zero load in ``steps`` increments.
     """
     if int(steps) < 1:
         raise InputError("steps", "an integer >= 1", steps)
@@ -69,16 +72,19 @@ def proportional_path(force=(0.0, 0.0), moment=0.0, steps=10, *, cycle=False):
     if cycle:
         down = np.linspace(1.0, -1.0, 2 * int(steps) + 1)[1:]
         path += [down, -down]
+    if unload:
+        path.append(1.0 - s)
     return np.concatenate(path)[:, None] * peak[None, :]
 
 
 def tangential_load_path(pressure, x, y, mu, body1: Material, body2: Material, loads, *,
-                         center=None, tol=1e-8, callback=None) -> LoadPathResult:
+                         center=None, tol=1e-8, callback=None,
+                         rotation="free") -> LoadPathResult:
     """Solve a sequence of tangential loads, each from the state left by the previous one.
 
     Parameters
     ----------
-    pressure, x, y, mu, body1, body2, center, tol
+    pressure, x, y, mu, body1, body2, center, tol, rotation
         As for :func:`asperity.contact.solve_tangential` (the pressure is held fixed).
     loads : array_like (k, 3)
         Successive applied loads (Fx, Fy, Mz), N and N m, starting from the unloaded state;
@@ -99,7 +105,8 @@ def tangential_load_path(pressure, x, y, mu, body1: Material, body2: Material, l
     gross = -1
     for k, load in enumerate(loads):
         res = solve_tangential(pressure, x, y, mu, body1, body2, force=load[:2],
-                               moment=load[2], center=center, tol=tol, previous=previous)
+                               moment=load[2], center=center, tol=tol, previous=previous,
+                               rotation=rotation)
         results.append(res)
         if callback is not None:
             callback(k, res)
@@ -127,6 +134,7 @@ def tangential_load_path(pressure, x, y, mu, body1: Material, body2: Material, l
         center_of_rotation=np.array([r.center_of_rotation for r in results]),
         region_force=np.array([[reg.force for reg in r.regions] for r in results]),
         region_moment=np.array([[reg.moment for reg in r.regions] for r in results]),
+        reaction_moment=np.array([r.reaction_moment for r in results]),
         stick_fraction=np.array([r.stick.sum() / max((r.labels > 0).sum(), 1)
                                  for r in results]),
         stick=np.array([r.stick for r in results]), work=work, dissipated_energy=dissipated,

@@ -35,6 +35,11 @@ Before solving, the load is checked against the friction capacity: the largest m
 ``t = min over rigid motions y with b.y = 1 of sum_i mu_i p_i A |W_i(y)|`` (for a pure moment
 the minimum over centres of rotation of int mu p |r - c| dA). If ``t <= 1`` the contact is in
 gross slip and the full-slip traction about the instantaneous centre of rotation is returned.
+
+With ``rotation="fixed"`` body 1 is guided so that it cannot twist (a fixture carries any moment):
+the moment equation and the rotation multiplier are dropped, the rigid motion is a pure shift,
+the capacity is ``t = sum mu_i p_i A / |F|`` and the moment the fixture supplies is reported as
+``reaction_moment``.
 """
 
 from __future__ import annotations
@@ -176,6 +181,9 @@ class TangentialResult:
     """Connected contact patches, int (nx, ny), 0 outside the contact."""
     regions: tuple
     """One :class:`RegionLoad` per patch."""
+    reaction_moment: float
+    """Moment supplied by the constraint that prevents rotation (``rotation="fixed"``): the
+    traction's moment about ``center`` minus the applied moment, N m; 0 when rotation is free."""
     iterations: int
     converged: bool
     residual: float
@@ -207,6 +215,10 @@ class _Constraints:
         one, zero = np.ones_like(self.X), np.zeros_like(self.X)
         return [np.stack([one, zero]), np.stack([zero, one]),
                 np.stack([-self.Y / self.L, self.X / self.L])]
+
+
+#: Equilibrium rows imposed: force and moment (rotation free) or the force only (fixed).
+FREE, FIXED = (0, 1, 2), (0, 1)
 
 
 def _disc_project(v, g):
@@ -256,40 +268,52 @@ def _dual_terms(z, g, X, Y, lam, q):
     return psi, r, J
 
 
-def _project(z, g, cons: _Constraints, target, lam, max_iter=50):
+def _project(z, g, cons: _Constraints, target, lam, rows=FREE, max_iter=50):
     """Euclidean projection of z onto {|q_i| <= g_i} n {B q = target} (contact cells, 1-D).
 
     Semismooth Newton with backtracking on the dual: q = P_D(z + B^T lam) with B q = target,
     where lam minimises the convex psi(lam) = sum h(z + B^T lam) - target.lam,
-    h(v) = |v|^2/2 - max(|v| - g, 0)^2/2 (grad h = P_D). ``lam`` is the warm start.
-    Returns (q, lam, ok).
+    h(v) = |v|^2/2 - max(|v| - g, 0)^2/2 (grad h = P_D). ``lam`` is the warm start. Only the
+    equilibrium ``rows`` are imposed (the others' multipliers stay zero: ``FIXED`` drops the
+    moment). Returns (q, lam, ok).
     """
     X, Y = cons.X / cons.L, cons.Y / cons.L
-    tol = 1e-12 * (np.abs(target).max() + g.sum())
+    rows = list(rows)
+    tol = 1e-12 * (np.abs(target[rows]).max() + g.sum())
     q = np.empty_like(z)
     psi, r, J = _dual_terms(z, g, X, Y, lam, q)
+    sub = np.ix_(rows, rows)
+    eye = np.eye(len(rows))
     for _ in range(max_iter):
-        r = r - target
+        r = (r - target)[rows]
         if np.abs(r).max() <= tol:
             return q, lam, True
-        step = np.linalg.lstsq(J + 1e-13 * np.trace(J) * np.eye(3), -r, rcond=None)[0]
-        f0, t, slope, r0 = psi - target @ lam, 1.0, r @ step, np.abs(r).max()
+        step = np.zeros(3)
+        step[rows] = np.linalg.lstsq(J[sub] + 1e-13 * np.trace(J[sub]) * eye, -r,
+                                     rcond=None)[0]
+        f0, t, slope, r0 = psi - target @ lam, 1.0, r @ step[rows], np.abs(r).max()
         while True:  # Armijo on psi, or a halved residual (psi's round-off near the end)
             trial = lam + t * step
             psi, r, J = _dual_terms(z, g, X, Y, trial, q)
             if (psi - target @ trial <= f0 + 1e-4 * t * slope
-                    or np.abs(r - target).max() <= 0.5 * r0 or t < 1e-10):
+                    or np.abs((r - target)[rows]).max() <= 0.5 * r0 or t < 1e-10):
                 break
             t *= 0.5
         lam = trial
-    return q, lam, bool(np.abs(r - target).max() <= 1e3 * tol)
+    return q, lam, bool(np.abs((r - target)[rows]).max() <= 1e3 * tol)
 
 
 # --- friction capacity (gross slip) ---------------------------------------------------------
 
 
-def _capacity(g, cons: _Constraints, target):
-    """t = min over y with target.y = 1 of sum g |B^T y|, and the minimising y (convex)."""
+def _capacity(g, cons: _Constraints, target, rows=FREE):
+    """t = min over y with target.y = 1 of sum g |B^T y|, and the minimising y (convex).
+
+    Rotation fixed (y2 = 0): a uniform shift along the force, t = sum g / |target[:2]|.
+    """
+    if rows == FIXED:
+        f = np.hypot(target[0], target[1])
+        return float(g.sum() / f), np.array([target[0] / f**2, target[1] / f**2, 0.0])
     tn = target / (target @ target)
     # orthonormal basis of the plane target.y = 0
     _, _, vt = np.linalg.svd(target[None, :])
@@ -312,8 +336,11 @@ def _capacity(g, cons: _Constraints, target):
     return fun(zz)[0], yv
 
 
-def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, center=None):
+def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, center=None,
+                      rotation="free"):
     """Gross-slip limit along the direction of an applied load.
+
+    With ``rotation="fixed"`` (twist prevented) only the force counts: ``mu P / |F|``.
 
     Returns
     -------
@@ -322,10 +349,10 @@ def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, cente
     center_of_rotation : ndarray
         Instantaneous centre (2,) of the full-slip motion (NaN for pure translation), m.
     """
-    prob = _setup(pressure, x, y, mu, force, moment, center)
-    if not np.any(prob.target):
+    prob = _setup(pressure, x, y, mu, force, moment, center, rotation)
+    if not np.any(prob.target[list(prob.rows)]):
         return float("inf"), np.full(2, np.nan)
-    t, yv = _capacity(prob.g, prob.cons, prob.target)
+    t, yv = _capacity(prob.g, prob.cons, prob.target, prob.rows)
     return t, _center_of_rotation(yv, prob)
 
 
@@ -340,9 +367,10 @@ class _Setup:
     area: float
     center: np.ndarray
     load: np.ndarray
+    rows: tuple = FREE
 
 
-def _setup(pressure, x, y, mu, force, moment, center) -> _Setup:
+def _setup(pressure, x, y, mu, force, moment, center, rotation="free") -> _Setup:
     dx, dy = grid_spacing(x, "x"), grid_spacing(y, "y")
     x, y = np.asarray(x, float), np.asarray(y, float)
     p = np.asarray(pressure, dtype=float)
@@ -362,6 +390,8 @@ def _setup(pressure, x, y, mu, force, moment, center) -> _Setup:
         raise InputError("force", "two finite numbers (Fx, Fy) in N", force)
     if not np.isfinite(float(moment)):
         raise InputError("moment", "a finite number in N m", moment)
+    if rotation not in ("free", "fixed"):
+        raise InputError("rotation", "'free' or 'fixed'", rotation)
     c = np.zeros(2) if center is None else np.asarray(center, dtype=float)
     if c.shape != (2,) or not np.all(np.isfinite(c)):
         raise InputError("center", "two finite coordinates (m)", center)
@@ -373,7 +403,8 @@ def _setup(pressure, x, y, mu, force, moment, center) -> _Setup:
     area = dx * dy
     load = np.array([f[0], f[1], float(moment)])
     target = np.array([f[0], f[1], float(moment) / L]) / area
-    return _Setup(g, _Constraints(X, Y, L), target, area, c, load)
+    return _Setup(g, _Constraints(X, Y, L), target, area, c, load,
+                  FREE if rotation == "free" else FIXED)
 
 
 def _center_of_rotation(yv, prob: _Setup):
@@ -409,11 +440,15 @@ def _result(q, stick, slip, yv, prob, *, gross, t, iterations, converged, residu
         shift, rot = np.full(2, np.nan), float("nan")
     else:
         shift, rot = np.array(yv[:2], dtype=float), float(yv[2] / prob.cons.L)
+    moment = float(carried[2] * prob.cons.L)
+    fixed = prob.rows == FIXED
+    reaction = moment - prob.load[2] if fixed else 0.0
+    excess = (1.0 - t) * prob.load * ([1.0, 1.0, 0.0] if fixed else 1.0)
     return TangentialResult(
         traction=q, stick=stick, slip=slip, shift=shift, rotation=rot,
         center_of_rotation=_center_of_rotation(yv, prob), gross_slip=bool(gross),
-        load_capacity=float(t), excess=(1.0 - t) * prob.load if gross else np.zeros(3),
-        force=carried[:2], moment=float(carried[2] * prob.cons.L), center=prob.center,
+        load_capacity=float(t), excess=excess if gross else np.zeros(3),
+        force=carried[:2], moment=moment, center=prob.center, reaction_moment=float(reaction),
         labels=labels, regions=regions, iterations=int(iterations), converged=bool(converged),
         residual=float(residual), convolutions=int(conv), method=method)
 
@@ -434,7 +469,8 @@ def _gross_slip_result(prob: _Setup, t, yv, method):
 def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
                      force=(0.0, 0.0), moment=0.0, center=None, method="fft", tol=1e-8,
                      callback=None, previous: TangentialResult | None = None,
-                     periodic: bool = False, max_iter: int | None = None) -> TangentialResult:
+                     periodic: bool = False, max_iter: int | None = None,
+                     rotation: str = "free") -> TangentialResult:
     """Tangential traction, stick and slip zones and rigid motion under a force and a moment.
 
     Parameters
@@ -467,7 +503,11 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
     periodic : bool
         Periodic half-space (for comparisons with periodic codes).
     max_iter : int, optional
-        Iteration limit (default ``50 + 10 max(nx, ny)``).
+        Iteration limit (default ``100 + 20 max(nx, ny)``).
+    rotation : {"free", "fixed"}
+        ``"fixed"``: body 1 is prevented from twisting (e.g. a guided slider, or a force acting
+        through the centre of friction); the moment equation is dropped, ``rotation`` is 0
+        and the fixture's moment is ``reaction_moment``.
 
     Returns
     -------
@@ -479,24 +519,23 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
         raise InputError("method", "'fft' or 'lp'", method)
     if not (np.isfinite(tol) and tol > 0):
         raise InputError("tol", "a tolerance > 0", tol)
-    prob = _setup(pressure, x, y, mu, force, moment, center)
+    prob = _setup(pressure, x, y, mu, force, moment, center, rotation)
     op = tangential_operator(x, y, body1, body2, periodic)
     if previous is not None and previous.traction.shape != (2, *prob.g.shape):
         raise InputError("previous", "a result on the same grid", previous.traction.shape)
+    if method == "lp" and previous is not None:
+        raise InputError("previous", "None with method='lp' (virgin loading only)")
+    loaded = np.any(prob.target[list(prob.rows)])
+    if not loaded and previous is None:
+        zero = np.zeros((2, *prob.g.shape))
+        return _result(zero, prob.g > 0, zero.copy(), np.zeros(3), prob, gross=False,
+                       t=np.inf, iterations=0, converged=True, residual=0.0, conv=0,
+                       method=method)
     if method == "lp":
-        if previous is not None:
-            raise InputError("previous", "None with method='lp' (virgin loading only)")
         from .tangential_lp import solve_lp
 
         return solve_lp(prob, op, x, y, body1, body2, pressure, callback=callback)
-
-    if not np.any(prob.target):
-        if previous is None:
-            zero = np.zeros((2, *prob.g.shape))
-            return _result(zero, prob.g > 0, zero.copy(), np.zeros(3), prob, gross=False,
-                           t=np.inf, iterations=0, converged=True, residual=0.0, conv=0,
-                           method=method)
-    t, y_cap = (_capacity(prob.g, prob.cons, prob.target) if np.any(prob.target)
+    t, y_cap = (_capacity(prob.g, prob.cons, prob.target, prob.rows) if loaded
                 else (np.inf, None))
     if t <= 1.0:
         return _gross_slip_result(prob, t, y_cap, method)
@@ -508,6 +547,9 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
         q0 = previous.traction
         linear = op(q0)
         y_prev = np.concatenate([previous.shift, [previous.rotation * prob.cons.L]])
+        if prob.rows == FIXED and previous.rotation != 0.0:
+            raise InputError("previous", "a state with rotation fixed (zero rotation)",
+                             previous.rotation)
     q, iterations, converged, residual, yv, slip, conv = _fista(
         op, prob, linear, q0, tol, callback, max_iter or 100 + 20 * max(prob.g.shape))
     contact = prob.g > 0
@@ -543,14 +585,14 @@ def _fista(op: TangentialOperator, prob: _Setup, linear, q0, tol, callback, max_
 
     alpha = 1.0 / op.norm_bound
     lam = np.zeros(3)
-    q, lam, _ = _project(q0[:, contact], g, cons, prob.target, lam)
+    q, lam, _ = _project(q0[:, contact], g, cons, prob.target, lam, prob.rows)
     z, tk = q.copy(), 1.0
     conv, residual, yv, slip = 0, np.inf, np.zeros(3), np.zeros_like(q)
     converged, it = False, 0
     for it in range(1, max_iter + 1):
         gz = grad_of(z)
         conv += 1
-        q_new, lam, _ = _project(z - alpha * gz, g, cons, prob.target, lam)
+        q_new, lam, _ = _project(z - alpha * gz, g, cons, prob.target, lam, prob.rows)
         yv = lam / alpha
         if it % check_every == 0 or it == max_iter:
             W = cons.adjoint(yv)

@@ -123,7 +123,7 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
     Called by :func:`asperity.contact.solve_tangential` with ``method="lp"`` (virgin loading
     only). The residual is the relative norm of the unbalanced load.
     """
-    t, y_cap = _capacity(prob.g, prob.cons, prob.target)
+    t, y_cap = _capacity(prob.g, prob.cons, prob.target, prob.rows)
     if t <= 1.0:
         return _gross_slip_result(prob, t, y_cap, "lp")
     contact = prob.g > 0
@@ -132,9 +132,13 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
     dx, dy = x[1] - x[0], y[1] - y[0]
     Kxx, Kxy, Kyy = _dense_blocks(Xc, Yc, dx, dy, body1, body2)
     c = op.pressure(np.asarray(pressure, float))[:, contact]
-    target = prob.target
+    # trial motions y = tn + N z with target.y = 1 (rotation fixed: y2 = 0, one parameter)
+    rows = list(prob.rows)
+    target = np.zeros(3)
+    target[rows] = prob.target[rows]
     tn = target / (target @ target)
-    N = np.linalg.svd(target[None, :])[2][1:].T
+    N = np.zeros((3, len(rows) - 1))
+    N[rows] = np.linalg.svd(target[rows][None, :])[2][1:].T
     state = {"it": 0}
     cache = {}
 
@@ -164,12 +168,13 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
             callback(state["it"], float(np.abs(r).max()))
         return r
 
-    zz, r = np.zeros(2), residual(np.zeros(2))
+    zz = np.zeros(N.shape[1])
+    r = residual(zz)
     J = None
     while np.all(np.isfinite(r)) and np.abs(r).max() > tol and state["it"] < max_iter:
         if J is None:  # finite-difference Jacobian, then Broyden updates
             h = 1e-4 * np.linalg.norm(tn)
-            J = np.column_stack([(residual(zz + h * e) - r) / h for e in np.eye(2)])
+            J = np.column_stack([(residual(zz + h * e) - r) / h for e in np.eye(zz.size)])
         dz = -np.linalg.lstsq(J, r, rcond=None)[0]
         step = 1.0
         while True:  # damped: the residual must decrease

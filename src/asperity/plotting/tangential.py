@@ -9,46 +9,63 @@ import numpy as np
 
 from .style import new_figure
 
-__all__ = ["traction_map", "slip_progression", "compliance_curves", "center_of_rotation_curve"]
+__all__ = ["traction_map", "slip_progression", "compliance_curves", "center_of_rotation_curve",
+           "load_sharing"]
 
 MM, MPA = 1e3, 1e-6
 
 
 def _border(ax, x, y, mask, **kwargs):
     """Dashed outline of a boolean cell mask (the stick/slip border)."""
-    if mask.any() and not mask.all():
-        ax.contour(x * MM, y * MM, mask.T.astype(float), levels=[0.5], **kwargs)
+    if mask.any():  # padded with a ring of cells outside, so that edges on the domain show
+        xp = np.concatenate([[2 * x[0] - x[1]], x, [2 * x[-1] - x[-2]]])
+        yp = np.concatenate([[2 * y[0] - y[1]], y, [2 * y[-1] - y[-2]]])
+        ax.contour(xp * MM, yp * MM, np.pad(mask, 1).T.astype(float), levels=[0.5], **kwargs)
+
+
+def _figure_for(x, y, width=7.0):
+    """A figure whose height follows the domain's aspect ratio (room for the colour bar)."""
+    lx, ly = np.ptp(x) + (x[1] - x[0]), np.ptp(y) + (y[1] - y[0])
+    return new_figure(width, float(np.clip(0.8 * width * ly / lx + 1.2, 2.6, 6.0)))
 
 
 def traction_map(result, x, y, title="Tangential traction", arrows=16):
     """Traction magnitude contours, direction field, and the stick/slip border dashed.
 
     (Figs. 3.25-3.30: magnitude and direction of the traction, border of the no-slip region.)
+    Arrows (unit length: directions only) are spaced evenly in space, about ``arrows`` along
+    the longer side; the contact outline is drawn solid.
     """
-    fig, ax = new_figure(6.4, 5.0)
+    fig, ax = _figure_for(x, y)
     q = np.hypot(*result.traction) * MPA
     contact = result.labels > 0
     cs = ax.contourf(x * MM, y * MM, np.where(contact, q, np.nan).T, levels=12, cmap="viridis")
-    fig.colorbar(cs, ax=ax, label="|q| (MPa)")
-    step_x, step_y = max(len(x) // arrows, 1), max(len(y) // arrows, 1)
-    sub = (slice(None, None, step_x), slice(None, None, step_y))
+    fig.colorbar(cs, ax=ax, label="|q| (MPa)", shrink=0.9)
+    dx, dy = x[1] - x[0], y[1] - y[0]
+    spacing = max(np.ptp(x) + dx, np.ptp(y) + dy) / arrows
+    step_x, step_y = max(int(round(spacing / dx)), 1), max(int(round(spacing / dy)), 1)
+    sub = (slice(step_x // 2, None, step_x), slice(step_y // 2, None, step_y))
     qx, qy = result.traction[0][sub], result.traction[1][sub]
     norm = np.hypot(qx, qy)
     ok = contact[sub] & (norm > 0)
     X, Y = np.meshgrid(x[sub[0]], y[sub[1]], indexing="ij")
     ax.quiver(X[ok] * MM, Y[ok] * MM, qx[ok] / norm[ok], qy[ok] / norm[ok], color="w",
-              scale=arrows * 1.5, width=0.004)
+              angles="xy", scale_units="xy", scale=1.0 / (0.75 * spacing * MM), width=0.003,
+              pivot="middle")
+    _border(ax, x, y, contact, colors="k", linewidths=1.0)
     _border(ax, x, y, result.stick, colors="k", linestyles="--", linewidths=1.2)
     if np.all(np.isfinite(result.center_of_rotation)):
-        ax.plot(*(result.center_of_rotation * MM), "r+", ms=10, label="centre of rotation")
-        ax.legend(loc="upper right")
-    ax.set(xlabel="x (mm)", ylabel="y (mm)", title=title, aspect="equal")
+        ax.plot(*(result.center_of_rotation * MM), "r+", ms=10, mew=2,
+                label="centre of rotation")
+        ax.legend(loc="best", fontsize=8, framealpha=0.7)
+    ax.set(xlabel="x (mm)", ylabel="y (mm)", aspect="equal")
+    ax.set_title(title, fontsize=10)
     return fig
 
 
 def slip_progression(path, x, y, title="Progression of slip"):
     """Stick-zone borders at successive loads (Figs. 3.20, 3.32)."""
-    fig, ax = new_figure(6.4, 5.0)
+    fig, ax = _figure_for(x, y)
     contact = path.final.labels > 0
     _border(ax, x, y, contact, colors="k", linewidths=1.5)
     colors = _colors(len(path.loads))
@@ -73,15 +90,24 @@ def _scalar_mappable(loads):
 
 
 def compliance_curves(path, title="Compliance"):
-    """Force vs rigid shift and moment vs twist along a load path (Figs. 3.21, 3.33)."""
-    fig, (a1, a2) = new_figure(9.6, 4.0, ncols=2)
+    """Force vs rigid shift and moment vs twist along a load path (Figs. 3.21, 3.33).
+
+    One panel per load component the path applies (both when it applies neither).
+    """
     force = np.hypot(path.loads[:, 0], path.loads[:, 1])
-    sign = np.sign(path.loads[:, 0] + path.loads[:, 1])
-    a1.plot(np.hypot(*path.shift.T) * np.where(sign == 0, 1, sign) * 1e6,
-            force * np.where(sign == 0, 1, sign), "o-")
-    a1.set(xlabel="rigid shift (um)", ylabel="tangential force (N)")
-    a2.plot(path.rotation * 1e3, path.loads[:, 2], "o-")
-    a2.set(xlabel="twist (mrad)", ylabel="twisting moment (N m)")
+    has_force, has_moment = bool(np.any(force > 0)), bool(np.any(path.loads[:, 2] != 0))
+    panels = [k for k, on in (("force", has_force), ("moment", has_moment)) if on] or [
+        "force", "moment"]
+    fig, axes = new_figure(4.8 * len(panels), 4.0, ncols=len(panels), squeeze=False)
+    for ax, panel in zip(axes[0], panels, strict=True):
+        if panel == "force":
+            sign = np.sign(path.loads[:, 0] + path.loads[:, 1])
+            sign = np.where(sign == 0, 1, sign)
+            ax.plot(np.hypot(*path.shift.T) * sign * 1e6, force * sign, "o-")
+            ax.set(xlabel="rigid shift (um)", ylabel="tangential force (N)")
+        else:
+            ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-")
+            ax.set(xlabel="twist (mrad)", ylabel="twisting moment (N m)")
     fig.suptitle(title)
     return fig
 
@@ -94,4 +120,41 @@ def center_of_rotation_curve(path, reference=(0.0, 0.0), title="Centre of rotati
     ax.plot(path.loads[:, 2], d[:, 1] * MM, "s--", label="y")
     ax.set(xlabel="twisting moment (N m)", ylabel="offset from reference (mm)", title=title)
     ax.legend()
+    return fig
+
+
+def load_sharing(path, title="Load sharing between regions"):
+    """Force and moment carried by each contact region along a load path (Fig. 3.19).
+
+    Left: each region's force along the applied force (or its moment, for a pure moment)
+    against the applied load. Right: with a force, the offset of the resultant traction's line
+    of action from the moment's reference point, M_traction / |F| (Fig. 3.19b); for a pure
+    moment, each region's share of the moment. Steps before gross slip only.
+    """
+    fig, (a1, a2) = new_figure(9.6, 4.0, ncols=2)
+    n = path.gross_slip_step if path.gross_slip_step >= 0 else len(path.loads)
+    loads, region_force, region_moment = (path.loads[:n], path.region_force[:n],
+                                          path.region_moment[:n])
+    force = np.hypot(loads[:, 0], loads[:, 1])
+    k = region_moment.shape[1]
+    if np.any(force > 0):
+        unit = loads[:, :2] / np.where(force > 0, force, 1.0)[:, None]
+        along = np.einsum("krc,kc->kr", region_force, unit)
+        for r in range(k):
+            a1.plot(force, along[:, r], "o-", label=f"region {r + 1}")
+        a1.set(xlabel="applied force (N)", ylabel="force carried (N)")
+        carried = region_moment.sum(axis=1)
+        ok = force > 0
+        a2.plot(force[ok], carried[ok] / force[ok] * MM, "o-")
+        a2.set(xlabel="applied force (N)", ylabel="line of action offset (mm)")
+    else:
+        m = loads[:, 2]
+        for r in range(k):
+            a1.plot(m, region_moment[:, r], "o-", label=f"region {r + 1}")
+            a2.plot(m, region_moment[:, r] / np.where(m != 0, m, 1.0), "o-",
+                    label=f"region {r + 1}")
+        a1.set(xlabel="applied moment (N m)", ylabel="moment carried (N m)")
+        a2.set(xlabel="applied moment (N m)", ylabel="share of the moment")
+    a1.legend()
+    fig.suptitle(title)
     return fig
