@@ -20,6 +20,7 @@ from .ehl_transient import EHLTransientCase
 from .fields import first_error
 from .normal import NormalCase
 from .surface import SurfaceCase
+from .tangential import TangentialCase
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -34,6 +35,7 @@ ANALYSES = {
     "surface": SurfaceCase,
     "ehl-steady": EHLSteadyCase,
     "ehl-transient": EHLTransientCase,
+    "tangential": TangentialCase,
 }
 
 def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:

@@ -17,6 +17,7 @@ RUNNERS = {
     "surface": "surface",
     "ehl-steady": "ehl_steady",
     "ehl-transient": "ehl_transient",
+    "tangential": "tangential",
 }
 
 

@@ -1,0 +1,497 @@
+"""Runner of ``analysis = "tangential"``: partial slip under a tangential force and a moment.
+
+Builds the pressure field the case describes (Hertz, uniform regions, or ``solve_normal``),
+solves the frictional contact with :func:`asperity.contact.solve_tangential` at the applied
+load and, with a ``[load_path]``, along the path with
+:func:`asperity.contact.tangential_load_path` (compliance, centre of rotation, slip progression,
+load sharing, energy per cycle). The result is set beside the published numbers of the case's
+``[reference]`` table and the closed forms that apply (Cattaneo-Mindlin, Lubkin, uniform-pressure
+torsion, gross-slip loads).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import xarray as xr
+from scipy.optimize import minimize
+from scipy.special import ellipe
+
+from ..contact import hertz_point, solve_normal, solve_tangential
+from ..contact import reference as ref
+from ..contact.load_path import proportional_path, tangential_load_path
+from ..errors import InputError
+from ..results import Comparison, Outcome, variable
+
+__all__ = ["run"]
+
+_PER_BODY_NOTE = (
+    "asperity's shift and rotation are those of body 1 relative to body 2 (distant points); "
+    "for identical bodies each body moves half of it relative to the interface, which is what "
+    "the book reports ('per body' rows).")
+
+
+# --- the pressure field ------------------------------------------------------------------
+
+
+class _Field:
+    """Pressure (Pa) and friction coefficient on the grid, with what built them."""
+
+    def __init__(self, x, y, pressure, mu, hertz=None, normal=None):
+        self.x, self.y, self.pressure, self.mu = x, y, pressure, mu
+        self.hertz, self.normal = hertz, normal
+
+    @property
+    def cell_area(self):
+        return (self.x[1] - self.x[0]) * (self.y[1] - self.y[0])
+
+
+def _hertz_field(case, body1, body2):
+    """Hertz pressure at the cell centres, scaled so that the discrete load is the applied one."""
+    spec = case.pressure
+    rx, ry = spec.radii(body1, body2)
+    h = hertz_point(spec.load, rx, ry, body1, body2)
+    margin = 1.05 if spec.source == "hertz" else 1.5
+    x, y = case.grid.coordinates((-margin * h.a, margin * h.a, -margin * h.b, margin * h.b))
+    for key, coord, half in (("x_extent", x, h.a), ("y_extent", y, h.b)):
+        if coord[0] > -half or coord[-1] < half:
+            raise InputError(f"grid.{key}", f"a domain covering the contact (semi-axis {half:.4g}"
+                                            " m about the origin)")
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    if spec.source == "normal":
+        from ..cases.roughness import surface_heights
+
+        gap = X**2 / (2 * rx) + Y**2 / (2 * ry)
+        if spec.roughness is not None:
+            gap = gap - surface_heights(spec.roughness, x, y)
+        res = solve_normal(gap, x, y, body1, body2, load=spec.load, tol=spec.normal_tolerance)
+        return _Field(x, y, res.pressure, np.full(X.shape, case.mu), h, res)
+    p = h.pressure(X, Y)
+    total = p.sum() * (x[1] - x[0]) * (y[1] - y[0])
+    if not total > 0:
+        raise InputError("grid", "cells inside the Hertz contact (refine nx, ny)")
+    return _Field(x, y, p * spec.load / total, np.full(X.shape, case.mu), h)
+
+
+def _uniform_field(case):
+    """Uniform pressure (and friction) per region; every region must cover a cell."""
+    spec = case.pressure
+    x, y = case.grid.coordinates(spec.bounding_box())
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    p, mu = np.zeros(X.shape), np.full(X.shape, case.mu)
+    for k, (region, center) in enumerate(zip(spec.regions, spec.centers(), strict=True)):
+        m = region.mask(X, Y, center)
+        if not m.any():
+            raise InputError(f"pressure.regions[{k}]", "a region covering at least one grid "
+                                                        "cell (refine grid.nx / ny)")
+        p[m] = region.pressure
+        if region.mu is not None:
+            mu[m] = region.mu
+    return _Field(x, y, p, mu)
+
+
+def _field(case, body1, body2) -> _Field:
+    if case.pressure.source == "uniform":
+        return _uniform_field(case)
+    return _hertz_field(case, body1, body2)
+
+
+# --- closed forms ----------------------------------------------------------------------------
+
+
+def _hertz_gross_slip_moment(mu, p0, a, b):
+    """Gross-slip moment of an elliptical Hertz contact about its centre, N m.
+
+    int mu p |r| dA with x = a rho cos t, y = b rho sin t (a >= b):
+    mu p0 a b int_0^1 rho^2 sqrt(1 - rho^2) d rho int_0^2pi sqrt(a^2 cos^2 + b^2 sin^2) dt
+    = (pi / 4) mu p0 a^2 b E(1 - b^2/a^2); 3 pi mu P a / 16 for a circle. The centre is the
+    minimiser by symmetry and convexity (REFERENCE.md, gross slip under a pure moment).
+    """
+    a, b = max(a, b), min(a, b)
+    return 0.25 * math.pi * mu * p0 * a * a * b * ellipe(1.0 - (b / a) ** 2)
+
+
+def _rectangle_moment_integral(x1, x2, y1, y2):
+    """int int sqrt(x^2 + y^2) dx dy over [x1, x2] x [y1, y2] in closed form.
+
+    Antiderivative G = x y r / 3 + (x^3 / 6) ln(y + r) + (y^3 / 6) ln(x + r), r = |(x, y)|
+    (d^2 G / dx dy = r), with ln(u + r) = ln(v^2 / (r - u)) for u < 0 to avoid cancellation.
+    """
+    def log_sum(u, v, r):
+        if v == 0.0:
+            return 0.0
+        return math.log(u + r) if u >= 0 else math.log(v * v / (r - u))
+
+    def G(xv, yv):
+        r = math.hypot(xv, yv)
+        return (xv * yv * r / 3.0 + xv**3 / 6.0 * log_sum(yv, xv, r)
+                + yv**3 / 6.0 * log_sum(xv, yv, r))
+
+    return G(x2, y2) - G(x1, y2) - G(x2, y1) + G(x1, y1)
+
+
+def _rectangles_gross_slip_moment(spec, mu):
+    """Gross-slip moment of uniformly loaded rectangles: min over c of sum mu p int |r - c| dA.
+
+    Exact rectangle integrals (:func:`_rectangle_moment_integral`), minimised over the centre
+    of rotation c (a convex function). Returns (moment N m, centre (2,) m).
+    """
+    weights, boxes = [], []
+    for region, center in zip(spec.regions, spec.centers(), strict=True):
+        hx, hy = region.half_extents()
+        weights.append((region.mu or mu) * region.pressure)
+        boxes.append((center[0] - hx, center[0] + hx, center[1] - hy, center[1] + hy))
+
+    def moment(c):
+        return sum(w * _rectangle_moment_integral(b[0] - c[0], b[1] - c[0], b[2] - c[1],
+                                                  b[3] - c[1])
+                   for w, b in zip(weights, boxes, strict=True))
+
+    start = np.average([[0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3])] for b in boxes], axis=0,
+                       weights=weights)
+    best = minimize(moment, start, method="Nelder-Mead",
+                    options={"xatol": 1e-12 * (boxes[0][1] - boxes[0][0]), "fatol": 0.0,
+                             "maxiter": 4000})
+    return float(best.fun), best.x
+
+
+def _closed_forms(case, fld, res, body1, body2, applied, identical):
+    """Closed-form rows that apply to this case (checked with a grid-dependent tolerance)."""
+    rows = []
+    fx, fy, moment = applied
+    force = math.hypot(fx, fy)
+    mu = case.mu
+    uniform_mu = np.all(fld.mu == mu) and all(
+        r.mu is None for r in (case.pressure.regions or []))
+    free = case.loading.rotation == "free"
+    h = fld.hertz
+    dx = max(fld.x[1] - fld.x[0], fld.y[1] - fld.y[0])
+    if case.pressure.source == "hertz" and uniform_mu:
+        circular = abs(h.a - h.b) <= 1e-9 * h.a
+        size = min(h.a, h.b)
+        if force == 0.0 and free:
+            gs = _hertz_gross_slip_moment(mu, h.p_max, h.a, h.b)
+            rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
+                                   "(pi/4) mu p0 a^2 b E(1 - b^2/a^2) (3 pi mu P a / 16 for a "
+                                   "circle)", "N m", max(0.005, 0.5 * (dx / size) ** 2)))
+        if circular and force == 0.0 and free and not res.gross_slip:
+            c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
+            twist = ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
+            tol = max(0.01, 2.0 * (dx / h.a) ** 2)
+            rows.append(Comparison("rotation (relative)", abs(res.rotation), twist,
+                                   "Lubkin (1951), Johnson eq. 7.50", "rad", tol))
+            if identical:
+                rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
+                                       ref.lubkin_twist(c, h.a, mu, h.p_max, body1), "Lubkin "
+                                       "(1951), one body vs the interface", "rad", tol))
+            stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
+            rows.append(Comparison("stick radius", stick, c, "Lubkin (1951)", "m",
+                                   max(0.01, 1.5 * dx / c)))
+        if circular and moment == 0.0 and force > 0.0 and not res.gross_slip:
+            cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+            tol = max(0.01, 2.0 * (dx / h.a) ** 2)
+            rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift), cm.shift,
+                                   "Cattaneo-Mindlin, Johnson eq. 7.42", "m", tol))
+            if identical:
+                rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
+                                       0.5 * cm.shift, "Cattaneo-Mindlin, one of two "
+                                       "identical bodies vs the interface", "m", tol))
+            if cm.stick_radius > 2 * dx:
+                stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
+                rows.append(Comparison("stick radius", stick, cm.stick_radius,
+                                       "Cattaneo-Mindlin", "m",
+                                       max(0.01, 1.5 * dx / cm.stick_radius)))
+        if circular and moment != 0.0 and force > 0.0:
+            note = "one load alone: the combined load couples them; not a check"
+            if force < mu * h.load:
+                cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+                value = math.hypot(*res.shift) if not res.gross_slip else math.nan
+                rows.append(Comparison("rigid shift (relative)", value, cm.shift,
+                                       "Cattaneo-Mindlin, force alone", "m", None, note))
+            if abs(moment) < ref.gross_slip_moment_hertz(mu, h.load, h.a):
+                c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
+                rows.append(Comparison("rotation (relative)", abs(res.rotation),
+                                       ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2),
+                                       "Lubkin, moment alone", "rad", None, note))
+    if case.pressure.source == "uniform" and uniform_mu:
+        regions = case.pressure.regions
+        if force > 0.0 and not free:
+            total = sum(mu * r.pressure * (r.size[0] * r.size[1] if r.shape == "rectangle"
+                                           else math.pi * r.radius**2) for r in regions)
+            exact = all(r.shape == "rectangle" for r in regions)
+            rows.append(Comparison("gross-slip force (rotation fixed)",
+                                   res.load_capacity * force, total, "mu sum p_i A_i", "N",
+                                   1e-9 if exact else max(0.01, 4 * dx / regions[0].radius)))
+        if force == 0.0 and free and all(r.shape == "rectangle" for r in regions):
+            gs, _ = _rectangles_gross_slip_moment(case.pressure, mu)
+            rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
+                                   "min over c of sum mu p_i int |r - c| dA (exact rectangles)",
+                                   "N m", 0.01))
+        if (force == 0.0 and free and len(regions) == 1 and regions[0].shape == "circle"):
+            r0, a = regions[0], regions[0].radius
+            rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment),
+                                   ref.gross_slip_moment_uniform(mu, r0.pressure, a),
+                                   "(2 pi / 3) mu p a^3", "N m", max(0.01, 2 * dx / a)))
+            if not res.gross_slip:
+                c = ref.uniform_torsion_stick_radius(abs(moment), a, mu, r0.pressure)
+                rows.append(Comparison("rotation (relative)", abs(res.rotation),
+                                       ref.uniform_torsion_twist(c, a, mu, r0.pressure, body1,
+                                                                 body2),
+                                       "uniform-pressure torsion, Johnson sec. 7.3", "rad",
+                                       max(0.02, 3 * dx / a)))
+    return rows
+
+
+def _equilibrium(res, applied, free):
+    """Carried vs applied load (the solver's constraints), below gross slip."""
+    if res.gross_slip:
+        return []
+    rows = []
+    force = np.array(applied[:2])
+    if np.any(force):
+        along = float(np.dot(res.force, force) / np.linalg.norm(force))
+        rows.append(Comparison("force carried", along, float(np.linalg.norm(force)),
+                               "equilibrium", "N", 1e-6))
+    if free and applied[2] != 0.0:
+        rows.append(Comparison("moment carried", res.moment, applied[2], "equilibrium", "N m",
+                               1e-6))
+    return rows
+
+
+def _reference_rows(spec, res, applied, identical):
+    """Rows for the published numbers of the case's [reference] table."""
+    rows = []
+    tol, src = spec.tolerance, spec.source
+    if identical and not res.gross_slip:
+        if spec.shift_per_body is not None:
+            rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
+                                   spec.shift_per_body, src, "m", tol, spec.note))
+        if spec.rotation_per_body is not None:
+            rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
+                                   spec.rotation_per_body, src, "rad", tol, spec.note))
+        if spec.closed_form_rotation_per_body is not None:
+            rows.append(Comparison("rotation per body vs the book's closed-form value",
+                                   0.5 * abs(res.rotation), spec.closed_form_rotation_per_body,
+                                   src, "rad", tol, spec.note))
+    if spec.gross_slip_moment is not None and applied[2] != 0.0:
+        rows.append(Comparison("gross-slip moment", res.load_capacity * abs(applied[2]),
+                               spec.gross_slip_moment, src, "N m", tol, spec.note))
+    if spec.gross_slip_force is not None and any(applied[:2]):
+        rows.append(Comparison("gross-slip force", res.load_capacity * math.hypot(*applied[:2]),
+                               spec.gross_slip_force, src, "N", tol, spec.note))
+    return rows
+
+
+# --- outputs --------------------------------------------------------------------------------
+
+
+def _summary(case, fld, res, applied, identical):
+    s = {
+        "normal_load_n": float(fld.pressure.sum() * fld.cell_area),
+        "contact_area_m2": float((fld.pressure > 0).sum() * fld.cell_area),
+        "friction_capacity_n": float((fld.mu * fld.pressure).sum() * fld.cell_area),
+        "force_x_n": applied[0], "force_y_n": applied[1], "moment_nm": applied[2],
+        "gross_slip": bool(res.gross_slip),
+        "load_capacity": float(res.load_capacity),
+        "shift_x_m": float(res.shift[0]), "shift_y_m": float(res.shift[1]),
+        "shift_m": float(math.hypot(*res.shift)),
+        "rotation_rad": float(res.rotation),
+        "center_of_rotation_x_m": float(res.center_of_rotation[0]),
+        "center_of_rotation_y_m": float(res.center_of_rotation[1]),
+        "stick_fraction": float(res.stick.sum() / max((res.labels > 0).sum(), 1)),
+    }
+    if identical:
+        s["shift_per_body_m"] = 0.5 * s["shift_m"]
+        s["rotation_per_body_rad"] = 0.5 * s["rotation_rad"]
+    if math.isfinite(res.load_capacity):
+        if any(applied[:2]):
+            s["gross_slip_force_n"] = float(res.load_capacity * math.hypot(*applied[:2]))
+        if applied[2] != 0.0 and case.loading.rotation == "free":
+            s["gross_slip_moment_nm"] = float(res.load_capacity * abs(applied[2]))
+    if res.gross_slip:
+        s.update(excess_force_x_n=float(res.excess[0]), excess_force_y_n=float(res.excess[1]),
+                 excess_moment_nm=float(res.excess[2]))
+    if case.loading.rotation == "fixed":
+        s["reaction_moment_nm"] = float(res.reaction_moment)
+    for reg in res.regions:
+        k = reg.label
+        s.update({f"region_{k}_force_x_n": float(reg.force[0]),
+                  f"region_{k}_force_y_n": float(reg.force[1]),
+                  f"region_{k}_moment_nm": float(reg.moment),
+                  f"region_{k}_capacity_n": float(reg.capacity),
+                  f"region_{k}_stick_fraction": float(reg.stick_fraction)})
+    s.update(regions=len(res.regions), iterations=int(res.iterations),
+             residual=float(res.residual), convolutions=int(res.convolutions),
+             converged=bool(res.converged))
+    return s
+
+
+def _dataset(case, fld, res, path):
+    q = res.traction
+    xy = ("x", "y")
+    data = {
+        "pressure": variable(xy, fld.pressure, "Pa", "normal pressure"),
+        "mu": variable(xy, fld.mu, "1", "coefficient of friction"),
+        "traction_x": variable(xy, q[0], "Pa", "tangential traction on body 2, x"),
+        "traction_y": variable(xy, q[1], "Pa", "tangential traction on body 2, y"),
+        "traction_magnitude": variable(xy, np.hypot(q[0], q[1]), "Pa",
+                                       "magnitude of the tangential traction"),
+        "stick": variable(xy, res.stick.astype("i1"), "1", "stick indicator",
+                          flag_values=[0, 1], flag_meanings="slip_or_open stick"),
+        "slip_x": variable(xy, res.slip[0], "1" if res.gross_slip else "m",
+                           "slip of body 1 vs body 2, x" + (" (direction)" if res.gross_slip
+                                                           else "")),
+        "slip_y": variable(xy, res.slip[1], "1" if res.gross_slip else "m",
+                           "slip of body 1 vs body 2, y" + (" (direction)" if res.gross_slip
+                                                           else "")),
+        "region": variable(xy, res.labels.astype("i4"), "1",
+                           "connected contact region (0 outside the contact)"),
+    }
+    coords = {"x": variable("x", fld.x, "m", "x (first in-plane direction)"),
+              "y": variable("y", fld.y, "m", "y (second in-plane direction)")}
+    if path is not None:
+        st, rg = ("step",), ("step", "region_index")
+        coords["step"] = variable("step", np.arange(1, len(path.loads) + 1), "1", "load step")
+        coords["region_index"] = variable("region_index",
+                                          np.arange(1, path.region_moment.shape[1] + 1), "1",
+                                          "contact region label")
+        data.update({
+            "path_force_x": variable(st, path.loads[:, 0], "N", "applied force x"),
+            "path_force_y": variable(st, path.loads[:, 1], "N", "applied force y"),
+            "path_moment": variable(st, path.loads[:, 2], "N m", "applied moment"),
+            "path_shift_x": variable(st, path.shift[:, 0], "m", "relative rigid shift x"),
+            "path_shift_y": variable(st, path.shift[:, 1], "m", "relative rigid shift y"),
+            "path_rotation": variable(st, path.rotation, "rad", "relative rigid rotation"),
+            "path_center_x": variable(st, path.center_of_rotation[:, 0], "m",
+                                      "centre of rotation x"),
+            "path_center_y": variable(st, path.center_of_rotation[:, 1], "m",
+                                      "centre of rotation y"),
+            "path_stick_fraction": variable(st, path.stick_fraction, "1", "stuck area share"),
+            "path_work": variable(st, path.work, "J", "cumulative work of the applied loads"),
+            "path_reaction_moment": variable(st, path.reaction_moment, "N m",
+                                             "moment of the fixture (rotation fixed)"),
+            "path_region_force_x": variable(rg, path.region_force[:, :, 0], "N",
+                                            "force carried by each region, x"),
+            "path_region_force_y": variable(rg, path.region_force[:, :, 1], "N",
+                                            "force carried by each region, y"),
+            "path_region_moment": variable(rg, path.region_moment, "N m",
+                                           "moment carried by each region"),
+            "path_stick": variable(("step", "x", "y"), path.stick.astype("i1"), "1",
+                                   "stick indicator per step"),
+        })
+    return xr.Dataset(data, coords=coords, attrs={
+        "title": case.title, "analysis": "tangential", "Conventions": "CF-1.8",
+        "source": "asperity", "method": res.method, "rotation": case.loading.rotation,
+        "iterations": res.iterations, "converged": int(res.converged)})
+
+
+def _figures(case, fld, res, path):
+    from ..plotting import tangential as tplot
+
+    x, y = fld.x, fld.y
+    figs = {"traction": (lambda: tplot.traction_map(res, x, y, case.title),
+                         "Traction magnitude (contours), direction (arrows), stick/slip border "
+                         "(dashed) and centre of rotation (+)." + (
+                             " Gross slip: the full-slip traction." if res.gross_slip else ""))}
+    if case.pressure.source == "normal":
+        from ..plotting.normal import pressure_map
+
+        figs["pressure"] = (lambda: pressure_map(x, y, fld.pressure, fld.pressure > 0),
+                            "Normal pressure from solve_normal, held fixed.")
+    if path is None:
+        return figs
+    figs["compliance"] = (lambda: tplot.compliance_curves(path),
+                          "Compliance along the load path: force vs relative rigid shift and "
+                          "moment vs relative twist.")
+    figs["slip_progression"] = (lambda: tplot.slip_progression(path, x, y),
+                                "Stick-zone borders at the successive load steps.")
+    figs["load_sharing"] = (lambda: tplot.load_sharing(path),
+                            "Force and moment carried by each contact region along the path.")
+    if case.loading.rotation == "free" and np.any(np.isfinite(path.center_of_rotation)):
+        figs["center_of_rotation"] = (
+            lambda: tplot.center_of_rotation_curve(path, case.loading.center),
+            "Centre of rotation relative to the moment's reference point vs the moment.")
+    return figs
+
+
+def _path_summary(path):
+    return {"path_steps": len(path.loads), "path_gross_slip_step": int(path.gross_slip_step),
+            "path_dissipated_energy_j": float(path.dissipated_energy),
+            "path_iterations": int(path.iterations), "path_converged": bool(path.converged)}
+
+
+def run(case, progress=None) -> Outcome:
+    """Solve the case's frictional contact (and its load path); compare with references."""
+    body1, body2 = case.body1.material(), case.body2.material()
+    identical = (body1.youngs_modulus, body1.poisson_ratio) == (body2.youngs_modulus,
+                                                               body2.poisson_ratio)
+    fld = _field(case, body1, body2)
+    notes = []
+    if fld.normal is not None and not fld.normal.converged:
+        notes.append(f"The normal-contact solve did not converge in {fld.normal.iterations} "
+                     "iterations; the pressure, and everything below, is not trustworthy.")
+    fx, fy = case.loading.vector()
+    applied = (fx, fy, case.loading.moment)
+    callback = None
+    if progress is not None:
+        def callback(iteration, residual):
+            progress(iteration, None, f"iteration {iteration}, residual {residual:.1e}")
+    res = solve_tangential(fld.pressure, fld.x, fld.y, fld.mu, body1, body2, force=(fx, fy),
+                           moment=applied[2], center=case.loading.center, method=case.method,
+                           tol=case.tolerance, callback=callback,
+                           rotation=case.loading.rotation)
+    path = None
+    if case.load_path is not None:
+        lp = case.load_path
+        loads = proportional_path((lp.scale * fx, lp.scale * fy), lp.scale * applied[2],
+                                  lp.steps, cycle=lp.history == "cycle",
+                                  unload=lp.history == "unload")
+        step_cb = None
+        if progress is not None:
+            def step_cb(k, _res):
+                progress(k + 1, len(loads), f"load step {k + 1} of {len(loads)}")
+        path = tangential_load_path(fld.pressure, fld.x, fld.y, fld.mu, body1, body2, loads,
+                                    center=case.loading.center, tol=case.tolerance,
+                                    callback=step_cb, rotation=case.loading.rotation)
+    summary = _summary(case, fld, res, applied, identical)
+    if path is not None:
+        summary.update(_path_summary(path))
+    free = case.loading.rotation == "free"
+    comparisons = _equilibrium(res, applied, free)
+    comparisons += _closed_forms(case, fld, res, body1, body2, applied, identical)
+    if case.reference is not None:
+        comparisons += _reference_rows(case.reference, res, applied, identical)
+        if case.reference.note:
+            notes.append(case.reference.note)
+    if identical:
+        notes.append(_PER_BODY_NOTE)
+    if res.gross_slip:
+        notes.append(
+            f"Gross slip: friction carries at most {res.load_capacity:.4g} times the applied "
+            f"load; the excess is Fx {res.excess[0]:.4g} N, Fy {res.excess[1]:.4g} N, "
+            f"M {res.excess[2]:.4g} N m. The traction shown is the full-slip traction.")
+    if math.hypot(fx, fy) > 0:
+        notes.append(f"The force acts at {math.degrees(case.loading.direction):.4g} deg from +x "
+                     "(loading.direction); the moment is about loading.center "
+                     f"({case.loading.center[0]:.4g}, {case.loading.center[1]:.4g}) m.")
+    if not free:
+        notes.append("Rotation is fixed (loading.rotation): body 1 translates only, the moment "
+                     "equation is dropped and the fixture supplies the reaction moment "
+                     f"{res.reaction_moment:.4g} N m.")
+    if case.method == "lp":
+        notes.append("Method lp: Seireg's predetermined traction directions (exact for pure "
+                     "torsion about the true centre and pure translation; an approximation "
+                     "otherwise).")
+    if case.pressure.source == "hertz":
+        notes.append("Hertz pressure sampled at the cell centres and scaled so that the "
+                     "discrete load equals the applied load.")
+    converged = res.converged and (path is None or path.converged) and (
+        fld.normal is None or fld.normal.converged)
+    if not res.converged:
+        notes.append(f"The solver did not converge in {res.iterations} iterations (residual "
+                     f"{res.residual:.2e}); the numbers above are not trustworthy.")
+    if path is not None and not path.converged:
+        notes.append("A step of the load path did not converge; the path is not trustworthy.")
+    return Outcome(_dataset(case, fld, res, path), summary, _figures(case, fld, res, path),
+                   comparisons, converged=converged, notes=notes)
