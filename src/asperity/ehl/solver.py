@@ -65,6 +65,9 @@ class EHLState:
     theta, mass, rhs_t
         Time-scheme weight, ``lam/dT`` and the explicit part of the time-discrete Reynolds
         equation; ``1, 0, 0`` for a steady solve.
+    damping : float
+        Factor on the change of P and H at nodes that oscillate from sweep to sweep
+        (:meth:`sweep`); 1 switches it off.
     """
 
     def __init__(self, problem, x, y, near: int = 0):
@@ -114,6 +117,8 @@ class EHLState:
         self.rhs_t = np.zeros(shape)
         self.efar = np.zeros(shape)
         self.refreshes = 0
+        self.damping = 1.0
+        self.last_change = None
         self.edge = np.zeros(shape, dtype=bool)
         self.edge[[0, -1], :] = True
         if not self.line:
@@ -193,7 +198,32 @@ class EHLState:
         return (ex2 - ex) / NEWTON_STEP, (ey2 - ey) / NEWTON_STEP
 
     def sweep(self, method: str):
-        """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|."""
+        """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|.
+
+        Oscillation damping: at nodes where this sweep changes P with the opposite sign to the
+        previous sweep (a node alternating between two states, e.g. cavitated and fluid, or two
+        values of its lagged flow factor ``eps(p, h)`` that drive its neighbours), the changes
+        of P and H are scaled by ``damping``. The fixed point is unchanged; the returned
+        changes are the undamped ones. :meth:`start_iteration` forgets the previous change.
+        """
+        P0 = self.P.copy()
+        H0 = self.H.copy()
+        dp, dh = self._sweep(method)
+        change = self.P - P0
+        if self.last_change is not None and self.damping < 1.0:
+            osc = change * self.last_change < 0.0
+            self.P[osc] = P0[osc] + self.damping * change[osc]
+            self.H[osc] = H0[osc] + self.damping * (self.H[osc] - H0[osc])
+            change[osc] *= self.damping
+        self.last_change = change
+        return dp, dh
+
+    def start_iteration(self):
+        """Forget the previous sweep's change (call when the problem changes, e.g. a new step)."""
+        self.last_change = None
+
+    def _sweep(self, method: str):
+        """The compiled sweep of :mod:`asperity.ehl.kernels` at the current flow factors."""
         ex, ey, rho = self.flow_coefficients()
         dex, dey = self.flow_derivatives(ex, ey)
         if method == "point":
@@ -282,11 +312,13 @@ class SteadyResult:
         Relaxation sweeps and far-field FFT refreshes on the finest grid; ``total_sweeps``
         over all grids.
     converged : bool
-        Whether pressure change, film change and load error all fell below the tolerance.
+        Whether pressure change, film change (relative to the larger of the central and the
+        mean edge film) and load error all fell below the tolerance.
     residual : float
         Final convergence measure (the largest of the three, relative).
     history : ndarray
-        Rows (sweep, max |dP|, max |dH|/H_c, load error) at every refresh on the finest grid.
+        Rows (sweep, max |dP|, max |dH|/H_ref, load error) at every refresh on the finest grid,
+        ``H_ref`` the larger of the central and the mean edge film.
     levels : tuple
         Node counts (nx, ny) of the grids solved, coarse to fine.
     method : str
@@ -322,9 +354,19 @@ class SteadyResult:
         return self.x, p, h
 
 
+def _film_scale(state) -> float:
+    """Fixed film scale of the convergence test: the larger of H_c and the mean edge film.
+
+    Dividing max |dH| by the central film alone blows up in the dry limit (H_c -> 0) although
+    p, h and the load have converged; the edge films stay of the order of the rigid gap.
+    """
+    return max(_at_centre(state, state.H), float(np.mean(state.H[state.edge])), 1e-12)
+
+
 def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0):
     """Relax one grid to convergence; return (converged, residual, sweeps, history)."""
     target = state.problem.load_integral
+    state.start_iteration()
     history = []
     residual = np.inf
     sweeps = 0
@@ -335,7 +377,7 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
             sweeps += 1
             load_err = (state.load() - target) / target
             state.shift_separation(gain * load_err)
-        hc = max(_at_centre(state, state.H), 1e-12)
+        hc = _film_scale(state)
         residual = max(dp, dh / hc, abs(load_err))
         history.append((sweeps, dp, dh / hc, load_err))
         if callback is not None:
@@ -364,6 +406,7 @@ def solve_steady(
     load_gain: float | None = None,
     initial_film: float | None = None,
     boundary_friction: float = 0.1,
+    damping: float = 1.0,
     callback=None,
 ) -> SteadyResult:
     """Steady smooth EHL solution of a point or line contact.
@@ -388,7 +431,8 @@ def solve_steady(
     near : int
         Number of x-neighbour pressure coefficients kept implicit by the line relaxation.
     tol : float
-        Convergence when max |dP| per sweep, max |dH| / H_c and the relative load error are
+        Convergence when max |dP| per sweep, max |dH| / H_ref (H_ref the larger of the central
+        and the mean edge film) and the relative load error are
         all below ``tol`` at a far-field refresh.
     max_sweeps : int
         Sweep limit per grid; a solve that reaches it returns ``converged=False``.
@@ -402,6 +446,9 @@ def solve_steady(
         Newtonian central film.
     boundary_friction : float
         Friction coefficient assumed where h = 0 (dry nodes).
+    damping : float
+        Factor 0 < damping <= 1 on the change of P and H at nodes whose change alternates in
+        sign from sweep to sweep (:meth:`EHLState.sweep`); 1 (default) switches it off.
     callback : callable, optional
         ``callback(iteration, residual)`` after every refresh.
 
@@ -420,6 +467,7 @@ def solve_steady(
         raise InputError("method", '"line" or "point"', method)
     tol = check_positive("tol", tol)
     load_gain = check_positive("load_gain", load_gain)
+    damping = check_damping(damping)
     for field, value in (("levels", levels), ("max_sweeps", max_sweeps), ("refresh", refresh)):
         if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
             raise InputError(field, "an integer >= 1", value)
@@ -444,6 +492,7 @@ def solve_steady(
     for gx, gy in grids:
         x, y = problem.grid(gx, gy, domain)
         new = EHLState(problem, x, y, k_near)
+        new.damping = damping
         if state is None:
             new.hertz_start(h_start)
         else:
@@ -456,6 +505,14 @@ def solve_steady(
         total += sweeps
     return _result(state, converged, residual, sweeps, total, history, grids, method,
                    boundary_friction)
+
+
+def check_damping(value) -> float:
+    """Validate an oscillation-damping factor 0 < damping <= 1."""
+    if isinstance(value, bool) or not isinstance(value, int | float | np.floating) \
+            or not 0.0 < value <= 1.0:
+        raise InputError("damping", "a factor 0 < damping <= 1", value)
+    return float(value)
 
 
 def _film_estimate(problem) -> float:

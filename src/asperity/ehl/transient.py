@@ -41,7 +41,7 @@ from ..surfaces.topography import Profile, Topography
 from .checkpoint import fingerprint, load_checkpoint, save_checkpoint
 from .kernels import CAVITATED, CONTACT
 from .problem import LineContact, PointContact
-from .solver import EHLState, _centre_line, _film_estimate, solve_steady
+from .solver import EHLState, _centre_line, _film_estimate, check_damping, solve_steady
 from .statistics import ContactStatistics, flow_vectors, hertz_mask
 
 __all__ = ["TransientResult", "solve_transient"]
@@ -256,6 +256,7 @@ def _relax_step(state, method, *, tol, max_sweeps, refresh, gain, film_scale):
     ``tol * film_scale`` and leaves a relative load error below ``tol``.
     """
     target = state.problem.load_integral
+    state.start_iteration()
     sweeps = 0
     residual = np.inf
     load_err = np.inf
@@ -314,6 +315,8 @@ def solve_transient(
     max_sweeps: int = 400,
     refresh: int = 4,
     load_gain: float | None = None,
+    damping: float = 0.7,
+    contact_film: float | None = None,
     steady=None,
     film_edges=None,
     snapshot_steps=None,
@@ -359,7 +362,16 @@ def solve_transient(
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films.
     load_gain : float, optional
-        Separation shift per sweep per relative load error; default as ``solve_steady``.
+        Separation shift per sweep per relative load error; default 0.15 (point contact), 0.01
+        (line contact).
+    damping : float
+        Factor on the change of p and h at nodes whose change alternates in sign from sweep to
+        sweep (:meth:`asperity.ehl.solver.EHLState.sweep`); 1 switches it off. Rough surfaces
+        need it (docs/ehl-transient.md).
+    contact_film : float, optional
+        Film (m) at or below which a node counts as in contact in the statistics; default
+        ``tol`` times the estimated central film (a film the iteration cannot tell from 0).
+        Nodes set to ``h = 0`` by Eq. 8 always count.
     steady : SteadyResult, optional
         The smooth steady start on the same grid; computed when not given.
     film_edges : array_like, optional
@@ -392,8 +404,9 @@ def solve_transient(
     if not 0.5 <= theta <= 1.0:
         raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)
     tol = check_positive("tol", tol)
-    load_gain = check_positive("load_gain", (0.01 if line else 0.05) if load_gain is None
+    load_gain = check_positive("load_gain", (0.01 if line else 0.15) if load_gain is None
                                else load_gain)
+    damping = check_damping(damping)
     counting_steps = _check_int("counting_steps", counting_steps, 1)
     max_sweeps = _check_int("max_sweeps", max_sweeps, 1)
     refresh = _check_int("refresh", refresh, 1)
@@ -427,6 +440,9 @@ def solve_transient(
         return z
 
     film_ref = _film_estimate(problem)
+    contact_film = tol * film_ref if contact_film is None else float(contact_film)
+    if not contact_film >= 0.0:
+        raise InputError("contact_film", "a film thickness >= 0 in m", contact_film)
     if film_edges is None:
         film_edges = np.linspace(0.0, 2.0 * film_ref, 51)
     film_edges = np.asarray(film_edges, dtype=float)
@@ -438,6 +454,7 @@ def solve_transient(
     snaps = np.unique(snaps)
 
     state = EHLState(problem, x, y, near if method == "line" else 0)
+    state.damping = damping
     stats = ContactStatistics((nx, ny), film_edges, hertz_mask(problem, x, y))
     record = {"max_pressure": np.full(total, np.nan), "min_film": np.full(total, np.nan),
               "sweeps": np.zeros(total, dtype=np.int64), "residuals": np.full(total, np.nan),
@@ -446,7 +463,7 @@ def solve_transient(
     centre = {name: np.full((snaps.size, nx), np.nan) for name in
               ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
     key = fingerprint(repr(problem), x, y, dt, warmup_steps, counting_steps, theta, method, near,
-                      tol, max_sweeps, refresh, load_gain, film_edges, snaps,
+                      tol, max_sweeps, refresh, load_gain, damping, contact_film, film_edges, snaps,
                       *[(type(r).__name__, r.periodic, r.x, r.z) for r in
                         (roughness1, roughness2) if r is not None], slots)
 
@@ -467,7 +484,7 @@ def solve_transient(
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,
                                   levels=_levels(nx, ny, line), near=near,
-                                  tol=min(tol, 1e-5), load_gain=load_gain, max_sweeps=20000)
+                                  tol=min(tol, 1e-5), max_sweeps=20000)
         if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
             raise InputError("steady", f"a steady solution on the same {nx} x {ny} grid")
         state.P = steady.pressure / problem.p_hertz
@@ -508,7 +525,7 @@ def solve_transient(
         record["step_converged"][n] = ok
         record["load_errors"][n] = load_err
         if n >= warmup_steps:
-            stats.add(h, (state.H <= 0.0) & interior)
+            stats.add(h, (h <= contact_film) & interior)
         hit = np.flatnonzero(snaps == step)
         if hit.size:
             for name, field in (("centre_pressure", p), ("centre_film", h),
