@@ -215,3 +215,89 @@ def _ehl_holmes_point():
 
     out = run_case(load_case(example_text("holmes-smooth-point")))
     return [row for row in out.comparisons if row.tolerance is not None]
+
+
+# ----------------------------------------------------------------------- frictional contact
+def _tangential_hertz(n):
+    """Seireg's 1 in steel spheres under 2160 lbf on n x n cells over 2.1 a (Hertz pressure
+    scaled to the exact load)."""
+    from .contact import hertz_point
+    from .materials import Material
+
+    steel = Material(30e6 * PSI, 0.3, "steel")
+    h = hertz_point(2160 * LBF, 0.5 * IN, 0.5 * IN, steel, steel)
+    x = (np.arange(n) - (n - 1) / 2) * (2.1 * h.a / n)
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    p = h.pressure(X, Y)
+    return steel, h, x, p * h.load / (p.sum() * (x[1] - x[0]) ** 2)
+
+
+@check("tangential-cattaneo-mindlin", "REFERENCE.md, Cattaneo-Mindlin (Q = mu P / 2, 64 x 64)")
+def _tangential_cattaneo():
+    from .contact import reference as ref
+    from .contact import solve_tangential
+
+    steel, h, x, p = _tangential_hertz(64)
+    mu, force = 0.1, 0.05 * h.load
+    res = solve_tangential(p, x, x, mu, steel, steel, force=(force, 0.0))
+    cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, steel, steel)
+    stick = np.sqrt(res.stick.sum() * (x[1] - x[0]) ** 2 / np.pi)
+    src = "Cattaneo (1938), Mindlin (1949)"
+    return [Comparison("relative shift", res.shift[0], cm.shift, src, "m", 0.01),
+            Comparison("stick radius", stick, cm.stick_radius, src, "m", 0.03)]
+
+
+@check("tangential-lubkin", "REFERENCE.md, Lubkin torsion (Seireg Ex. 3.4.4-1, 64 x 64)")
+def _tangential_lubkin():
+    from .contact import reference as ref
+    from .contact import solve_tangential
+
+    steel, h, x, p = _tangential_hertz(64)
+    mu, moment = 0.1, 2.45 * IN * LBF
+    res = solve_tangential(p, x, x, mu, steel, steel, moment=moment)
+    c = ref.lubkin_stick_radius(moment, h.a, mu, h.p_max)
+    src = "Lubkin (1951), Johnson eq. 7.50"
+    return [Comparison("twist per body", 0.5 * res.rotation,
+                       ref.lubkin_twist(c, h.a, mu, h.p_max, steel), src, "rad", 0.01),
+            Comparison("gross-slip moment", res.load_capacity * moment,
+                       ref.gross_slip_moment_hertz(mu, h.load, h.a), "3 pi mu P a / 16",
+                       "N m", 0.005)]
+
+
+@check("tangential-uniform-torsion", "REFERENCE.md, uniform-pressure torsion (M = 0.6 M_gs)")
+def _tangential_uniform_torsion():
+    from .contact import reference as ref
+    from .contact import solve_tangential
+    from .materials import Material
+
+    steel = Material(206e9, 0.3, "steel")
+    a, p0, mu, n = 1e-3, 100e6, 0.2, 64
+    x = (np.arange(n) - (n - 1) / 2) * (2.1 * a / n)
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    p = np.where(np.hypot(X, Y) < a, p0, 0.0)
+    # the disc on the grid: the same load on the cells' area, i.e. an equivalent radius
+    a_eq = np.sqrt((p > 0).sum() * (x[1] - x[0]) ** 2 / np.pi)
+    moment = 0.6 * ref.gross_slip_moment_uniform(mu, p0, a_eq)
+    res = solve_tangential(p, x, x, mu, steel, steel, moment=moment)
+    c = ref.uniform_torsion_stick_radius(moment, a_eq, mu, p0)
+    src = "Johnson sec. 7.3 (uniform pressure)"
+    return [Comparison("relative twist", res.rotation,
+                       ref.uniform_torsion_twist(c, a_eq, mu, p0, steel, steel), src, "rad",
+                       0.03),
+            Comparison("gross-slip moment", res.load_capacity * moment,
+                       ref.gross_slip_moment_uniform(mu, p0, a_eq), "(2 pi / 3) mu p a^3",
+                       "N m", 0.01)]
+
+
+@check("tangential-lp-vs-fft", "Seireg's modified LP vs the FFT solver, torsion, 20 x 20")
+def _tangential_lp_vs_fft():
+    from .contact import solve_tangential
+
+    steel, h, x, p = _tangential_hertz(20)
+    moment = 2.45 * IN * LBF
+    fft = solve_tangential(p, x, x, 0.1, steel, steel, moment=moment)
+    lp = solve_tangential(p, x, x, 0.1, steel, steel, moment=moment, method="lp")
+    src = "FFT solver, same grid"
+    return [Comparison("rotation (LP)", lp.rotation, fft.rotation, src, "rad", 0.01),
+            Comparison("stuck cells (LP)", float(lp.stick.sum()), float(fft.stick.sum()), src,
+                       "1", 0.05)]

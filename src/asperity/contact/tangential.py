@@ -443,11 +443,12 @@ def _result(q, stick, slip, yv, prob, *, gross, t, iterations, converged, residu
     moment = float(carried[2] * prob.cons.L)
     fixed = prob.rows == FIXED
     reaction = moment - prob.load[2] if fixed else 0.0
-    excess = (1.0 - t) * prob.load * ([1.0, 1.0, 0.0] if fixed else 1.0)
+    excess = (1.0 - t) * prob.load * ([1.0, 1.0, 0.0] if fixed else 1.0) if gross else \
+        np.zeros(3)
     return TangentialResult(
         traction=q, stick=stick, slip=slip, shift=shift, rotation=rot,
         center_of_rotation=_center_of_rotation(yv, prob), gross_slip=bool(gross),
-        load_capacity=float(t), excess=excess if gross else np.zeros(3),
+        load_capacity=float(t), excess=excess,
         force=carried[:2], moment=moment, center=prob.center, reaction_moment=float(reaction),
         labels=labels, regions=regions, iterations=int(iterations), converged=bool(converged),
         residual=float(residual), convolutions=int(conv), method=method)

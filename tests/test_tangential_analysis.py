@@ -1,0 +1,245 @@
+"""The tangential analysis: case files, runner, Seireg ch. 3 examples, one-line input errors."""
+
+import math
+
+import numpy as np
+import pytest
+
+from asperity.cases import load_case, parse_toml
+from asperity.contact import friction_capacity, solve_tangential
+from asperity.errors import InputError
+from asperity.examples import example_text, list_examples
+from asperity.materials import Material
+from asperity.runners import run_case
+from asperity.sweep import load_study
+
+IN, LBF, PSI = 0.0254, 4.4482216152605, 6894.757293168361
+INLBF = IN * LBF
+STEEL = Material(30e6 * PSI, 0.3, "steel")
+EXAMPLES = [e.name for e in list_examples() if e.analysis == "tangential"]
+
+
+def case_dict(name, **grid):
+    data = parse_toml(example_text(name))
+    data["grid"].update(grid)
+    return data
+
+
+@pytest.fixture(scope="module")
+def outcomes():
+    """Every tangential example at its own grid (about 15 s in all)."""
+    return {name: run_case(load_case(example_text(name))) for name in EXAMPLES}
+
+
+def test_every_example_runs_and_its_checked_rows_pass(outcomes):
+    assert len(EXAMPLES) >= 9
+    for name, out in outcomes.items():
+        assert out.converged, name
+        assert out.comparisons, name
+        for row in out.comparisons:
+            if row.tolerance is not None:
+                assert row.passed, (name, row.quantity, row.value, row.reference, row.source)
+        assert "traction" in out.figures
+        for key in ("traction_x", "traction_y", "traction_magnitude", "stick", "pressure",
+                    "region"):
+            assert key in out.dataset, (name, key)
+
+
+def test_book_geometry_squares_are_beyond_gross_slip(outcomes):
+    # centroids 1 in apart (the book's text): gross-slip moments 459 and 601 in lbf, below the
+    # book's 500 and 700 in lbf; 1.4 in apart: 771 in lbf (the book's 770). References: the
+    # exact rectangle integrals minimised over the centre (459.42, 601.14, 771.27 in lbf)
+    expected = {"seireg-squares-torsion-1": (True, 459.42),
+                "seireg-squares-torsion-2": (True, 601.14),
+                "seireg-squares-torsion-2-spaced": (False, 771.27)}
+    for name, (gross, moment) in expected.items():
+        s = outcomes[name].summary
+        assert s["gross_slip"] is gross, name
+        assert s["gross_slip_moment_nm"] / INLBF == pytest.approx(moment, rel=1e-3), name
+        if gross:
+            assert "shift_m" not in s and s["excess_moment_nm"] > 0
+            assert any("Gross slip" in n for n in outcomes[name].notes)
+
+
+def test_spaced_case_2_reproduces_the_books_slip_pattern(outcomes):
+    out = outcomes["seireg-squares-torsion-2-spaced"]
+    s = out.summary
+    # region 2 (10000 psi) in total slip at 700 in lbf, region 1 partly stuck; the centre of
+    # rotation on the line of centroids, displaced towards region 1
+    assert s["region_2_stick_fraction"] == 0.0 < s["region_1_stick_fraction"]
+    assert s["center_of_rotation_x_m"] < 0.0
+    assert abs(s["center_of_rotation_y_m"]) < 1e-9
+    assert s["path_gross_slip_step"] == s["path_steps"] - 1  # 784 in lbf > 771 in lbf
+    rotation = out.dataset["path_rotation"].values[:-1]
+    assert np.all(np.diff(rotation) > 0)  # the compliance curve rises monotonically
+
+
+def test_per_body_values_are_half_the_relative_ones(outcomes):
+    s = outcomes["seireg-sphere-torsion"].summary
+    assert s["rotation_per_body_rad"] == pytest.approx(0.5 * s["rotation_rad"], rel=1e-12)
+    rows = {r.quantity: r for r in outcomes["seireg-sphere-torsion"].comparisons}
+    # Lubkin's closed form: 1.1038e-3 rad per body; the book's numerical value 0.10641e-2 rad
+    assert rows["rotation per body"].reference in (pytest.approx(1.1038e-3, rel=1e-4),
+                                                   pytest.approx(1.0641e-3, rel=1e-9))
+
+
+def test_fixed_rotation_path_shares_the_force_and_slips_at_mu_p(outcomes):
+    out = outcomes["seireg-squares-tangential"]
+    ds, s = out.dataset, out.summary
+    assert s["path_gross_slip_step"] == s["path_steps"] - 1  # 1296 lbf = mu (p1 + p2) A
+    assert s["rotation_rad"] == 0.0 and "reaction_moment_nm" in s
+    fy = ds["path_region_force_y"].values[:-1]
+    applied = ds["path_force_y"].values[:-1]
+    np.testing.assert_allclose(fy.sum(axis=1), applied, rtol=1e-6)
+    # region 2 saturates at mu p2 A = 432 lbf and never carries more
+    cap2 = 0.12 * 10000 * 0.36 * LBF
+    assert fy[:, 1].max() <= cap2 * (1 + 1e-9)
+    assert fy[-1, 1] == pytest.approx(cap2, rel=1e-3)  # fully slipping, to the tolerance
+
+
+def test_fixed_rotation_solver_matches_lp_and_reports_the_reaction():
+    x = (np.arange(16) + 0.5) * 0.1 * IN - 0.8 * IN
+    y = (np.arange(6) + 0.5) * 0.1 * IN - 0.3 * IN
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    p = np.where(np.abs(X + 0.5 * IN) < 0.3 * IN, 20000 * PSI, 0.0)
+    p += np.where(np.abs(X - 0.5 * IN) < 0.3 * IN, 10000 * PSI, 0.0)
+    force = (0.0, 1000 * LBF)
+    fft = solve_tangential(p, x, y, 0.12, STEEL, STEEL, force=force, rotation="fixed")
+    lp = solve_tangential(p, x, y, 0.12, STEEL, STEEL, force=force, rotation="fixed",
+                          method="lp")
+    assert fft.converged and lp.converged and fft.rotation == 0.0 == lp.rotation
+    assert lp.shift[1] == pytest.approx(fft.shift[1], rel=0.01)
+    # the fixture's moment balances the traction's: carried moment = applied (0) + reaction
+    assert fft.reaction_moment == pytest.approx(fft.moment, rel=1e-12)
+    assert fft.reaction_moment == pytest.approx(lp.reaction_moment, rel=0.02)
+    t, _ = friction_capacity(p, x, y, 0.12, force=force, rotation="fixed")
+    assert t == pytest.approx(0.12 * p.sum() * (0.1 * IN) ** 2 / (1000 * LBF), rel=1e-12)
+
+
+def test_hertz_and_normal_pressure_sources_agree():
+    base = case_dict("seireg-sphere-torsion", nx=32, ny=32)
+    hertz = run_case(load_case(base))
+    base["pressure"]["source"] = "normal"
+    normal = run_case(load_case(base))
+    assert normal.converged and "pressure" in normal.figures
+    # the normal solve covers 1.5 a on a coarser grid: same contact, within discretisation
+    assert normal.summary["rotation_rad"] == pytest.approx(hertz.summary["rotation_rad"],
+                                                           rel=0.05)
+    assert normal.summary["normal_load_n"] == pytest.approx(2160 * LBF, rel=1e-6)
+
+
+def test_uniform_circle_and_fretting_cycle():
+    text = """
+analysis = "tangential"
+mu = 0.2
+[body1]
+youngs_modulus = "206 GPa"
+[body2]
+youngs_modulus = "206 GPa"
+[pressure]
+source = "uniform"
+[[pressure.regions]]
+shape = "circle"
+center = ["0 mm", "0 mm"]
+radius = "1 mm"
+pressure = "100 MPa"
+[loading]
+moment = "0.025 N m"
+[grid]
+nx = 32
+ny = 32
+[load_path]
+steps = 2
+history = "cycle"
+"""
+    out = run_case(load_case(text))
+    assert out.converged
+    rows = {r.quantity: r for r in out.comparisons if r.tolerance is not None}
+    assert rows["gross-slip moment"].passed and rows["rotation (relative)"].passed
+    # a closed Masing loop dissipates energy
+    assert out.summary["path_dissipated_energy_j"] > 0
+    assert out.summary["path_steps"] == 10
+
+
+def test_aspect_ratio_gives_the_requested_ellipse():
+    case = load_case(example_text("seireg-ellipse-torsion"))
+    rx, ry = case.pressure.radii(STEEL, STEEL)
+    from asperity.contact import hertz_point
+
+    h = hertz_point(case.pressure.load, rx, ry, STEEL, STEEL)
+    assert h.a / h.b == pytest.approx(2.0, rel=1e-10)
+    assert math.sqrt(rx * ry) == pytest.approx(0.5 * IN, rel=1e-12)
+
+
+def test_studies_validate():
+    sweep = load_study("seireg-squares-moment-sweep")
+    assert len(sweep.cases) == 15
+    direction = load_study("seireg-squares-combined-direction")
+    assert len(direction.cases) == 4
+
+
+def _set(data, dotted, value):
+    *head, last = dotted.split(".")
+    node = data
+    for key in head:
+        node = node[int(key)] if key.isdigit() else node[key]
+    if value is None:
+        del node[last]
+    else:
+        node[last] = value
+
+
+@pytest.mark.parametrize("name, key, value, field", [
+    ("seireg-sphere-torsion", "mu", 0.0, "mu"),
+    ("seireg-sphere-torsion", "mu", -0.1, "mu"),
+    ("seireg-sphere-torsion", "pressure.load", "2160 furlong", "pressure.load"),
+    ("seireg-sphere-torsion", "loading.moment", "2.45 psi", "loading.moment"),
+    ("seireg-sphere-torsion", "pressure.rx", None, "pressure"),
+    ("seireg-sphere-torsion", "loading.moment", "0 in lbf", "loading"),
+    ("seireg-sphere-torsion", "loading.rotation", "locked", "loading.rotation"),
+    ("seireg-sphere-torsion", "method", "simplex", "method"),
+    ("seireg-sphere-torsion", "method", "lp", "method"),  # 64 x 64 is too big for the LP
+    ("seireg-squares-torsion-2", "pressure.regions.0.pressure", "-20000 psi",
+     "pressure.regions.0.pressure"),
+    ("seireg-squares-torsion-2", "pressure.spacing", "0.5 in", "pressure"),
+    ("seireg-squares-torsion-2", "pressure.regions.0.radius", "1 in", "pressure.regions.0"),
+    ("seireg-squares-torsion-2", "grid.x_extent", "1 in", "grid"),
+    ("seireg-squares-torsion-2", "load_path.history", "twice", "load_path.history"),
+    ("seireg-squares-torsion-2", "load_path.stepz", 3, "load_path.stepz"),
+    ("seireg-squares-combined-1", "loading.direction", "90 lbf", "loading.direction"),
+])
+def test_bad_input_gives_one_line_naming_the_key(name, key, value, field):
+    data = case_dict(name)
+    _set(data, key, value)
+    with pytest.raises(InputError) as exc:
+        load_case(data)
+    message = str(exc.value)
+    assert message.startswith(field + ":"), message
+    assert "\n" not in message
+
+
+def test_overlapping_regions_and_lp_with_a_path_are_refused():
+    data = case_dict("seireg-squares-torsion-2")
+    del data["pressure"]["spacing"]
+    data["pressure"]["regions"][0]["center"] = ["-0.2 in", "0 in"]
+    data["pressure"]["regions"][1]["center"] = ["0.2 in", "0 in"]
+    with pytest.raises(InputError, match="overlap") as exc:
+        load_case(data)
+    assert str(exc.value).startswith("pressure:")
+    data = case_dict("seireg-squares-torsion-2", nx=16, ny=6)
+    data["method"] = "lp"
+    with pytest.raises(InputError) as exc:
+        load_case(data)
+    assert str(exc.value).startswith("load_path:")
+    del data["load_path"]
+    out = run_case(load_case(data))  # the book's 72-element grid with its LP method
+    assert out.summary["gross_slip"] and out.converged
+
+
+def test_a_region_smaller_than_a_cell_is_reported():
+    data = case_dict("seireg-squares-torsion-2", nx=4, ny=4, x_extent="3 in",
+                     y_extent="1 in")
+    data["pressure"]["regions"][1]["size"] = ["0.01 in", "0.01 in"]
+    with pytest.raises(InputError) as exc:
+        run_case(load_case(data))
+    assert str(exc.value).startswith("pressure.regions[1]:")
