@@ -55,7 +55,8 @@ def _hertz_field(case, body1, body2):
     margin = 1.05 if spec.source == "hertz" else 1.5
     x, y = case.grid.coordinates((-margin * h.a, margin * h.a, -margin * h.b, margin * h.b))
     for key, coord, half in (("x_extent", x, h.a), ("y_extent", y, h.b)):
-        if coord[0] > -half or coord[-1] < half:
+        edge = 0.5 * (coord[1] - coord[0]) * (1.0 + 1e-9)
+        if coord[0] - edge > -half or coord[-1] + edge < half:
             raise InputError(f"grid.{key}", f"a domain covering the contact (semi-axis {half:.4g}"
                                             " m about the origin)")
     X, Y = np.meshgrid(x, y, indexing="ij")
