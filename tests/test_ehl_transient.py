@@ -2,7 +2,9 @@
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
+from asperity.contact import hertz_point
 from asperity.ehl import (
     LineContact,
     Lubricant,
@@ -13,7 +15,7 @@ from asperity.ehl import (
 )
 from asperity.errors import InputError
 from asperity.materials import Material
-from asperity.surfaces import Profile, builtin_profile, cell_centres
+from asperity.surfaces import Profile, add_waviness, builtin_profile, cell_centres
 from asperity.surfaces.filters import gaussian_filter
 
 STEEL = Material(227e9 * (1 - 0.3**2), 0.3, "steel")
@@ -199,6 +201,58 @@ def test_rough_ground_profiles_converge_every_step():
     assert r.max_pressure.max() > 2.0 * prob.p_hertz
     assert r.min_film.min() < 0.05 * st.central_film
     assert np.median(r.sweeps) < 60
+
+
+def _rough_run(prob, surfaces, nx=131, ny=29, counting=200, waviness=0.0):
+    """Reduced-domain run (-2a..1.25a, -1.4b..1.4b) with built-in profiles low-passed at 3 dx."""
+    domain = ((-2.0 * prob.a, 1.25 * prob.a), (-1.4 * prob.b, 1.4 * prob.b))
+    x, _ = prob.grid(nx, ny, domain)
+    profiles = [mesh_profile(name, x[1] - x[0]) for name in surfaces]
+    if waviness:
+        y = np.linspace(-2.0 * prob.b, 2.0 * prob.b, 401)
+        profiles = [add_waviness(p.extrude(y), 0.32 * prob.b, waviness, direction="y")
+                    for p in profiles]
+    st = solve_steady(prob, nx=nx, ny=ny, domain=domain)
+    r = solve_transient(prob, *profiles, nx=nx, ny=ny, domain=domain, steady=st,
+                        counting_steps=counting)
+    assert r.converged
+    return r
+
+
+def _aspect_case(ratio):
+    """The gear case with the Hertz a kept and Ry (and the load) changed to a/b = ratio."""
+    base = gear_point()
+
+    def excess(ry):
+        hz = hertz_point(1.0, base.rx, ry, STEEL, STEEL)
+        return hz.a / hz.b - ratio
+
+    ry = brentq(excess, 1e-3 * base.rx, 1e3 * base.rx)
+    load = (base.a / hertz_point(1.0, base.rx, ry, STEEL, STEEL).a) ** 3
+    return PointContact(base.rx, ry, load, base.u1, base.u2, STEEL, STEEL, MOBIL_JET_2)
+
+
+@pytest.mark.slow
+def test_contact_grows_with_aspect_ratio():
+    """Seed Fig. 11: C-C, xi = 0.25, a fixed; contact grows as a/b goes from 0.25 to 1.
+
+    Measured (131 x 29, 200 counting steps): 1086 -> 5635 node-steps in contact, contact at
+    60 % -> 100 % of the steps.
+    """
+    counts = [_rough_run(_aspect_case(k), ("C", "C")).contact_count.sum() for k in (0.25, 1.0)]
+    assert counts[1] > 2 * counts[0]
+
+
+@pytest.mark.slow
+def test_transverse_waviness_increases_contact():
+    """Seed Fig. 15: waviness 0.32 b along y on both surfaces, peaks aligned, more contact.
+
+    Measured (131 x 57, dy = b/20, 200 counting steps): see docs/ehl-transient.md.
+    """
+    prob = gear_point()
+    plain, wavy = (_rough_run(prob, ("C", "C"), ny=57, waviness=w) for w in (0.0, 0.2e-6))
+    assert wavy.contact_count.sum() > 1.5 * plain.contact_count.sum()
+    assert wavy.contact_count.max() > plain.contact_count.max()
 
 
 def test_contact_film_threshold_counts_near_zero_films(gear_steady):
