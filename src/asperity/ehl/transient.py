@@ -362,8 +362,9 @@ def solve_transient(
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films.
     load_gain : float, optional
-        Separation shift per sweep per relative load error; default 0.15 (point contact), 0.03
-        (line contact).
+        Separation shift per sweep per relative load error; default ``0.15 min(1, b/a)``
+        (point contact: 0.15 for the gear case, 0.0375 at a/b = 4 where 0.15 diverged) and
+        0.03 (line contact).
     damping : float
         Factor on the change of p and h at nodes whose change alternates in sign from sweep to
         sweep (:meth:`asperity.ehl.solver.EHLState.sweep`); 1 switches it off. Rough surfaces
@@ -404,8 +405,9 @@ def solve_transient(
     if not 0.5 <= theta <= 1.0:
         raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)
     tol = check_positive("tol", tol)
-    load_gain = check_positive("load_gain", (0.03 if line else 0.15) if load_gain is None
-                               else load_gain)
+    if load_gain is None:
+        load_gain = 0.03 if line else 0.15 * min(1.0, problem.b / problem.a)
+    load_gain = check_positive("load_gain", load_gain)
     damping = check_damping(damping)
     counting_steps = _check_int("counting_steps", counting_steps, 1)
     max_sweeps = _check_int("max_sweeps", max_sweeps, 1)
