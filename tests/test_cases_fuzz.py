@@ -39,6 +39,8 @@ def mutated_cases(draw):
     case = copy.deepcopy(parse_toml(example_text(name)))
     if isinstance(case.get("grid"), dict):  # small grids, so that valid cases really run
         case["grid"].update(nx=16, ny=16)
+    if isinstance(case.get("time"), dict):  # and few time steps
+        case["time"].update(counting_steps=2, warmup_steps=1)
     for _ in range(draw(st.integers(1, 3))):
         paths = list(_paths(case))
         path = draw(st.sampled_from(paths))

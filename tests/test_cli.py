@@ -13,9 +13,28 @@ from asperity.cli import app
 runner = CliRunner()
 
 
-def test_default_run_writes_every_file(tmp_path):
+def test_default_run_is_the_reduced_gear_case(tmp_path):
+    """``asperity run`` with no case: the reduced mixed-EHL gear case (about a minute)."""
     out = tmp_path / "out"
     result = runner.invoke(app, ["run", "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    for name in ("result.nc", "summary.json", "report.html", "contact_count_rate.png",
+                 "centre_line.png"):
+        assert (out / name).is_file(), name
+    summary = json.loads((out / "summary.json").read_text())
+    for key in ("contact_time_fraction", "max_pressure_pa", "minimum_film_thickness_m"):
+        assert key in summary
+    assert summary["converged"] is True
+    assert 0.0 < summary["contact_time_fraction"] <= 1.0
+    with xr.open_dataset(out / "result.nc") as ds:
+        assert ds["contact_count_rate"].attrs["units"] == "ms-1"
+        assert ds["contact_count_rate"].dims == ("x", "y")
+    assert "Table 2" in (out / "report.html").read_text()
+
+
+def test_normal_run_writes_every_file(tmp_path):
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", "gear-dry-hertz", "--out", str(out), "--quiet"])
     assert result.exit_code == 0, result.output
     for name in ("result.nc", "summary.json", "report.html", "pressure_map.png",
                  "centre_line.png"):

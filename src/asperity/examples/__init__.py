@@ -15,7 +15,7 @@ __all__ = ["DEFAULT_EXAMPLE", "Example", "example_text", "list_examples", "list_
            "study_text"]
 
 #: What ``asperity run`` runs when no case is given.
-DEFAULT_EXAMPLE = "gear-dry-hertz"
+DEFAULT_EXAMPLE = "holmes-rough-CC"
 
 
 @dataclass(frozen=True)

@@ -35,7 +35,8 @@ def _surfaces(case, problem, x, y, total_steps, dt):
     spacing = min(0.5e-6, dx / 4)
     out = []
     for spec, u in ((case.surface1, problem.u1), (case.surface2, problem.u2)):
-        length = abs(u) * dt * total_steps + (x[-1] - x[0]) + 20 * dx
+        # at least the built-in profiles' own 5 mm, so short runs use the standard realisation
+        length = max(5e-3, abs(u) * dt * total_steps + (x[-1] - x[0]) + 20 * dx)
         out.append(spec.build(length, spacing, y, dx))
     return out
 
@@ -137,6 +138,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         counting_steps=case.time.counting_steps, warmup_steps=warmup,
         theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
         max_sweeps=case.solver.max_sweeps, refresh=case.solver.refresh,
+        damping=case.solver.damping, contact_film=case.solver.contact_film,
         snapshot_steps=snaps, checkpoint=checkpoint,
         checkpoint_every=case.solver.checkpoint_every, resume=resume, callback=callback)
     summary = {**res.summary(),
