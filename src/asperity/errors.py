@@ -59,5 +59,6 @@ def check_positive(field: str, value: float, *, allow_zero: bool = False) -> flo
     import math
 
     if not math.isfinite(v) or v < 0 or (v == 0 and not allow_zero):
-        raise InputError(field, "a finite number >= 0" if allow_zero else "a finite number > 0", value)
+        expected = "a finite number >= 0" if allow_zero else "a finite number > 0"
+        raise InputError(field, expected, value)
     return v

@@ -41,10 +41,12 @@ class Material:
     def __post_init__(self):
         e = float(self.youngs_modulus)
         if not (e > 0):
-            raise InputError(f"{self.name}.youngs_modulus", "a number > 0 in Pa", self.youngs_modulus)
+            raise InputError(f"{self.name}.youngs_modulus", "a number > 0 in Pa",
+                             self.youngs_modulus)
         nu = float(self.poisson_ratio)
         if not (-1.0 < nu <= 0.5):
-            raise InputError(f"{self.name}.poisson_ratio", "a number in (-1, 0.5]", self.poisson_ratio)
+            raise InputError(f"{self.name}.poisson_ratio", "a number in (-1, 0.5]",
+                             self.poisson_ratio)
         object.__setattr__(self, "youngs_modulus", e)
         object.__setattr__(self, "poisson_ratio", nu)
 
