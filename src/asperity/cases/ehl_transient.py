@@ -28,11 +28,11 @@ from __future__ import annotations
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, ValidationInfo, field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..errors import InputError
 from .ehl import EHLCaseBase, EHLGridSpec
-from .fields import CaseModel, Quantity
+from .fields import CaseModel, Quantity, existing_file
 from .roughness import WavinessSpec
 
 __all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
@@ -64,15 +64,7 @@ class MovingSurfaceSpec(CaseModel):
     lowpass: Annotated[float, Field(ge=0, le=100)] = 0.0
     waviness: WavinessSpec | None = None
 
-    @field_validator("path")
-    @classmethod
-    def _relative_to_case(cls, value, info: ValidationInfo):
-        from pathlib import Path
-
-        base = (info.context or {}).get("base_dir")
-        if value is None or base is None or Path(value).is_absolute():
-            return value
-        return str(Path(base) / value)
+    _path = field_validator("path")(existing_file)
 
     @model_validator(mode="after")
     def _required(self):

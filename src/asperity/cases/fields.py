@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, ValidationInfo
 
 from ..errors import InputError
 from ..units import DIMENSIONS, to_si
@@ -24,6 +24,7 @@ __all__ = [
     "PositivePressure",
     "Moment",
     "Speed",
+    "existing_file",
     "first_error",
 ]
 
@@ -63,6 +64,31 @@ Pressure = Quantity("pressure")
 PositivePressure = Quantity("pressure", gt=0)
 Moment = Quantity("moment")
 Speed = Quantity("speed")
+
+
+def existing_file(cls, value, info: ValidationInfo):
+    """Field validator of file paths (use as ``field_validator("path")(existing_file)``).
+
+    The file must exist. A relative path is relative to the case file's folder, or for a case
+    without a file (TOML text, a built-in example) to the working directory and failing that to
+    the folder of the built-in examples (their shipped data).
+    """
+    from importlib import resources
+    from pathlib import Path
+
+    if value is None:
+        return value
+    path = Path(value)
+    if not path.is_absolute():
+        base = (info.context or {}).get("base_dir")
+        if base is not None:
+            path = Path(base) / path
+        elif not path.is_file():
+            shipped = resources.files("asperity.examples") / value
+            path = Path(str(shipped)) if shipped.is_file() else path
+    if not path.is_file():
+        raise ValueError("expected an existing file")
+    return str(path)
 
 
 _PROBLEMS = {

@@ -7,13 +7,12 @@ reproducible from ``seed``.
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, ValidationInfo, field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 
-from .fields import CaseModel, Quantity
+from .fields import CaseModel, Quantity, existing_file
 
 __all__ = ["RoughnessSpec", "WavinessSpec", "surface_heights"]
 
@@ -58,14 +57,7 @@ class RoughnessSpec(CaseModel):
     seed: Annotated[int, Field(ge=0)] = 0
     waviness: WavinessSpec | None = None
 
-    @field_validator("path")
-    @classmethod
-    def _relative_to_case(cls, value, info: ValidationInfo):
-        """A relative path is relative to the case file's folder."""
-        base = (info.context or {}).get("base_dir")
-        if value is None or base is None or Path(value).is_absolute():
-            return value
-        return str(Path(base) / value)
+    _path = field_validator("path")(existing_file)
 
     @model_validator(mode="after")
     def _required(self):

@@ -13,14 +13,12 @@ size (:data:`MAX_POINTS`, :data:`MAX_STEPS`) so that a case always runs in secon
 from __future__ import annotations
 
 import math
-from importlib import resources
-from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import Field, ValidationError, ValidationInfo, field_validator, model_validator
+from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from .fields import CaseModel, Quantity
+from .fields import CaseModel, Quantity, existing_file
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
 
@@ -138,25 +136,7 @@ class SurfaceSpec(CaseModel):
             raise ValueError("expected distinct values")
         return value
 
-    @field_validator("path")
-    @classmethod
-    def _existing_file(cls, value, info: ValidationInfo):
-        """The file, which must exist: a relative path is relative to the case file's folder,
-        or for a case without a file (TOML text, a built-in example) to the working directory
-        and failing that to the folder of the built-in examples (their shipped data)."""
-        if value is None:
-            return value
-        path = Path(value)
-        if not path.is_absolute():
-            base = (info.context or {}).get("base_dir")
-            if base is not None:
-                path = Path(base) / path
-            elif not path.is_file():
-                shipped = resources.files("asperity.examples") / value
-                path = Path(str(shipped)) if shipped.is_file() else path
-        if not path.is_file():
-            raise ValueError("expected an existing file")
-        return str(path)
+    _path = field_validator("path")(existing_file)
 
     @model_validator(mode="after")
     def _keys_of_kind(self):
