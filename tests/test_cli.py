@@ -4,6 +4,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 import xarray as xr
 from typer.testing import CliRunner
@@ -29,6 +30,18 @@ def test_default_run_is_the_reduced_gear_case(tmp_path):
     with xr.open_dataset(out / "result.nc") as ds:
         assert ds["contact_count_rate"].attrs["units"] == "ms-1"
         assert ds["contact_count_rate"].dims == ("x", "y")
+        q = ds["contact_count_rate"].values
+        X, Y = np.meshgrid(ds["x"].values, ds["y"].values, indexing="ij")
+    # the seed's finding (Figs. 4-8): contact concentrates at the transverse edges of the Hertz
+    # ellipse, downstream of the centre line
+    a, b = summary["hertz_a_m"], 1.3045e-3
+    r = np.hypot(X / a, Y / b)
+    edge = (np.abs(Y) > 0.8 * b) & (r < 1.0)
+    centre = (np.abs(Y) < 0.3 * b) & (r < 1.0)
+    assert q[edge].mean() > 2.0 * q[centre].mean()
+    assert q[edge & (X > 0)].sum() > q[edge & (X < 0)].sum()
+    i, j = np.unravel_index(np.argmax(q), q.shape)
+    assert X[i, j] > 0 and abs(Y[i, j]) > 0.7 * b
     assert "Table 2" in (out / "report.html").read_text()
 
 
