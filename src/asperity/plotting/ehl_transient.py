@@ -6,7 +6,8 @@ import numpy as np
 
 from .style import new_figure
 
-__all__ = ["plot_centre_line", "plot_contact_rate", "plot_film_histogram", "plot_flow_vectors"]
+__all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
+           "plot_film_histogram", "plot_flow_vectors"]
 
 
 def _ellipse(ax, b_over_a):
@@ -27,6 +28,17 @@ def plot_contact_rate(result, problem):
     ax.set_xlabel("x / a")
     ax.set_ylabel("y / a")
     ax.set_aspect("equal")
+    return fig
+
+
+def plot_contact_rate_line(result, problem):
+    """Contact count rate Q/ms along x/a for a line contact, the Hertz width shaded."""
+    fig, ax = new_figure()
+    ax.axvspan(-1.0, 1.0, color="0.92", label="Hertz contact")
+    ax.plot(result.x / problem.a, result.contact_count_rate[:, 0], color="black", lw=1.5)
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("contact count rate Q (1/ms)")
+    ax.legend(loc="upper left", fontsize=8)
     return fig
 
 

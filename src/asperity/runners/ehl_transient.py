@@ -164,9 +164,10 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     from ..plotting import ehl_transient as plots
 
     last = res.snapshot_steps.size - 1
+    rate_plot = plots.plot_contact_rate_line if line else plots.plot_contact_rate
     figures = {
-        "contact_count_rate": (lambda: plots.plot_contact_rate(res, problem),
-                               "Contact count rate Q per ms with the Hertz ellipse (Figs. 4-8)."),
+        "contact_count_rate": (lambda: rate_plot(res, problem),
+                               "Contact count rate Q per ms over the contact (Figs. 4-8)."),
         "centre_line": (lambda: plots.plot_centre_line(res, problem, last),
                         "Pressure and film on y = 0 with the two surfaces below (Fig. 3)."),
         "film_histogram": (lambda: plots.plot_film_histogram(res),
