@@ -75,7 +75,20 @@ def _check_domain(domain, half_x, half_y):
 
 
 class _Contact:
-    """Shared behaviour of point and line contacts (speeds, lubricant, scales)."""
+    """Shared behaviour of point and line contacts (speeds, lubricant, scales).
+
+    Subclasses set ``hertz`` (the dry Hertz solution) in ``__post_init__``.
+    """
+
+    @property
+    def a(self) -> float:
+        """Hertz semi-axis (point) or half-width (line) along x, m."""
+        return self.hertz.a
+
+    @property
+    def p_hertz(self) -> float:
+        """Hertz maximum pressure, Pa."""
+        return self.hertz.p_max
 
     @property
     def mean_speed(self) -> float:
@@ -170,19 +183,9 @@ class PointContact(_Contact):
         )
 
     @property
-    def a(self) -> float:
-        """Hertz semi-axis along x, m."""
-        return self.hertz.a
-
-    @property
     def b(self) -> float:
         """Hertz semi-axis along y, m."""
         return self.hertz.b
-
-    @property
-    def p_hertz(self) -> float:
-        """Hertz maximum pressure, Pa."""
-        return self.hertz.p_max
 
     @property
     def curvature(self) -> float:
@@ -261,16 +264,6 @@ class LineContact(_Contact):
     def rx(self) -> float:
         """Radius along x, m (the ``radius``)."""
         return self.radius
-
-    @property
-    def a(self) -> float:
-        """Hertz half-width, m."""
-        return self.hertz.a
-
-    @property
-    def p_hertz(self) -> float:
-        """Hertz maximum pressure, Pa."""
-        return self.hertz.p_max
 
     @property
     def curvature(self) -> float:
