@@ -30,9 +30,19 @@ class Example:
     long_running: bool
 
 
-def _files():
-    return sorted((p for p in resources.files(__name__).iterdir() if p.name.endswith(".toml")),
-                  key=lambda p: p.name)
+def _files(folder: str = ""):
+    """The TOML files of the examples (``folder=""``) or of ``studies``, sorted by name."""
+    root = resources.files(__name__)
+    root = root / folder if folder else root
+    return sorted((p for p in root.iterdir() if p.name.endswith(".toml")), key=lambda p: p.name)
+
+
+def _text(name: str, folder: str, field: str, expected: str) -> str:
+    for path in _files(folder):
+        if path.name == f"{name}.toml":
+            return path.read_text(encoding="utf-8")
+    names = ", ".join(p.name.removesuffix(".toml") for p in _files(folder))
+    raise InputError(field, f"{expected}{names}", name)
 
 
 def list_examples() -> list[Example]:
@@ -50,16 +60,7 @@ def list_examples() -> list[Example]:
 
 def example_text(name: str) -> str:
     """The TOML text of a built-in example."""
-    for path in _files():
-        if path.name == f"{name}.toml":
-            return path.read_text(encoding="utf-8")
-    names = ", ".join(p.name.removesuffix(".toml") for p in _files())
-    raise InputError("example", f"one of: {names}", name)
-
-
-def _study_files():
-    folder = resources.files(__name__) / "studies"
-    return sorted((p for p in folder.iterdir() if p.name.endswith(".toml")), key=lambda p: p.name)
+    return _text(name, "", "example", "one of: ")
 
 
 def list_studies() -> list[tuple[str, str]]:
@@ -68,13 +69,9 @@ def list_studies() -> list[tuple[str, str]]:
 
     return [(p.name.removesuffix(".toml"),
              parse_toml(p.read_text(encoding="utf-8"), p.name).get("description", ""))
-            for p in _study_files()]
+            for p in _files("studies")]
 
 
 def study_text(name: str) -> str:
     """The TOML text of a built-in study."""
-    for path in _study_files():
-        if path.name == f"{name}.toml":
-            return path.read_text(encoding="utf-8")
-    names = ", ".join(p.name.removesuffix(".toml") for p in _study_files())
-    raise InputError("study", f"a study file or one of: {names}", name)
+    return _text(name, "studies", "study", "a study file or one of: ")
