@@ -46,7 +46,7 @@ from ..ehl.problem import LineContact, PointContact
 from ..errors import InputError
 from ..materials import Material
 from .bodies import MaterialSpec
-from .fields import CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, Quantity
 
 __all__ = [
     "ContactSpec",
@@ -182,13 +182,11 @@ class SpeedSpec(CaseModel):
         return self.u * (1.0 + 0.5 * xi), self.u * (1.0 - 0.5 * xi)
 
 
-class EHLCaseBase(CaseModel):
+class EHLCaseBase(CaseHeader):
     """Tables shared by the EHL analyses: bodies (or ``reduced_modulus``), contact, speeds and
     lubricant; :meth:`problem` builds the contact problem."""
 
     title: str = "EHL contact"
-    description: str = ""
-    source: str = ""
     reduced_modulus: Quantity("pressure", gt=0) | None = None
     body1: MaterialSpec | None = None
     body2: MaterialSpec | None = None

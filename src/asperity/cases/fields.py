@@ -15,6 +15,7 @@ from ..errors import InputError
 from ..units import DIMENSIONS, to_si
 
 __all__ = [
+    "CaseHeader",
     "CaseModel",
     "Quantity",
     "Length",
@@ -33,6 +34,15 @@ class CaseModel(BaseModel):
     """Base of every case-file table: unknown keys are errors, instances are immutable."""
 
     model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+
+
+class CaseHeader(CaseModel):
+    """The keys every case file may start with: ``title``, ``description``, ``source`` (the
+    book figure or paper table a built-in example reproduces)."""
+
+    title: str = "asperity case"
+    description: str = ""
+    source: str = ""
 
 
 def _converter(dimension: str):

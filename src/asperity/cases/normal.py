@@ -7,7 +7,7 @@ from typing import Literal
 from pydantic import model_validator
 
 from .bodies import GridSpec, MaterialSpec
-from .fields import CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, Quantity
 from .roughness import RoughnessSpec
 
 __all__ = ["NormalCase", "GeometrySpec", "NormalLoading"]
@@ -55,13 +55,11 @@ class NormalLoading(CaseModel):
         return self
 
 
-class NormalCase(CaseModel):
+class NormalCase(CaseHeader):
     """``analysis = "normal"``: frictionless contact of two elastic bodies."""
 
     analysis: Literal["normal"]
     title: str = "Dry normal contact"
-    description: str = ""
-    source: str = ""
     body1: MaterialSpec
     body2: MaterialSpec
     geometry: GeometrySpec

@@ -18,7 +18,7 @@ from typing import Annotated, Literal
 from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from .fields import CaseModel, Quantity, existing_file
+from .fields import CaseHeader, CaseModel, Quantity, existing_file
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
 
@@ -273,13 +273,11 @@ class EvaluationSpec(CaseModel):
     window: Quantity("length", gt=0) | None = None
 
 
-class SurfaceCase(CaseModel):
+class SurfaceCase(CaseHeader):
     """``analysis = "surface"``: roughness parameters, spectrum, filtering, turning models."""
 
     analysis: Literal["surface"]
     title: str = "Surface analysis"
-    description: str = ""
-    source: str = ""
     surface: SurfaceSpec
     evaluation: EvaluationSpec = EvaluationSpec()
 

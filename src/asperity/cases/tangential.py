@@ -43,7 +43,7 @@ import numpy as np
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from .bodies import MaterialSpec
-from .fields import CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, Quantity
 from .roughness import RoughnessSpec
 
 __all__ = [
@@ -294,13 +294,11 @@ class TangentialReference(CaseModel):
     note: str = ""
 
 
-class TangentialCase(CaseModel):
+class TangentialCase(CaseHeader):
     """``analysis = "tangential"``: partial slip under a tangential force and a twisting moment."""
 
     analysis: Literal["tangential"]
     title: str = "Frictional contact"
-    description: str = ""
-    source: str = ""
     long_running: bool = False
     body1: MaterialSpec
     body2: MaterialSpec
