@@ -97,13 +97,13 @@ class _Contact:
 
     @property
     def sliding_speed(self) -> float:
-        """Sliding speed u2 - u1, m/s."""
+        """Sliding speed u2 - u1, m/s (the sign enters the Eyring shear stress)."""
         return self.u2 - self.u1
 
     @property
     def slide_roll_ratio(self) -> float:
-        """xi = (u2 - u1)/u_mean."""
-        return self.sliding_speed / self.mean_speed
+        """xi = (u1 - u2)/u_mean, so that u1 = u (1 + xi/2), u2 = u (1 - xi/2) (the seed)."""
+        return (self.u1 - self.u2) / self.mean_speed
 
     @property
     def reduced_modulus(self) -> float:

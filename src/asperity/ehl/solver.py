@@ -155,9 +155,9 @@ class EHLState:
         ``S = f * P`` the full sum at the current pressure; the edges get
         ``H = H0 + geometry + phi + c D * P`` (EHL-NOTES sec. 2).
         """
-        spectrum = self._f_conv.spectrum_of(self.P)
+        spectrum = self._f_conv.spectrum_of(self.P)  # same padded grid for f and D
         S = self._f_conv.from_spectrum(spectrum)
-        W = self._d_conv(self.P)
+        W = self._d_conv.from_spectrum(spectrum)
         near = self.f_near[0] * self.P
         for k in range(1, self.f_near.size):
             near[k:] += self.f_near[k] * self.P[:-k]

@@ -331,7 +331,7 @@ def solve_transient(
     ----------
     problem : PointContact or LineContact
         The contact; surface 1 moves at ``problem.u1``, surface 2 at ``problem.u2``
-        (slide/roll ratio ``xi = (u2 - u1)/u_mean``).
+        (slide/roll ratio ``xi = (u1 - u2)/u_mean``).
     roughness1, roughness2 : Profile, Topography or None
         Heights of each surface (metal below); a profile varies along x and is extruded across
         y (transverse ground). None: smooth. A line contact takes profiles only.
@@ -534,16 +534,18 @@ def solve_transient(
                                 ("centre_surface1", z1), ("centre_surface2", z2)):
                 centre[name][hit[0]] = _centre_line(state, field)
         steps_done = step
-        if callback is not None:
-            callback(step, res)
-        if not np.isfinite(res):
-            break
-        if checkpoint is not None and (step % checkpoint_every == 0 or step == total):
+        finite = np.isfinite(res)
+        if finite and checkpoint is not None and (step % checkpoint_every == 0
+                                                  or step == total):
             save_checkpoint(checkpoint, key, {
                 "P": state.P, "H": state.H, "H0": np.float64(state.H0), "kind": state.kind,
                 "step": np.int64(step), "steady_converged": np.bool_(steady_converged),
                 "steady_central_film": np.float64(steady_hc), **stats.arrays(), **record,
                 **centre})
+        if callback is not None:  # after the checkpoint, so a callback sees this step's file
+            callback(step, res)
+        if not finite:
+            break
 
     p = state.P * problem.p_hertz
     h = state.H * problem.film_scale

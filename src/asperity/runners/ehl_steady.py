@@ -132,7 +132,7 @@ def run(case, progress=None) -> Outcome:
         "mean_speed_m_s": problem.mean_speed,
         "u1_m_s": u1,
         "u2_m_s": u2,
-        "slide_roll_ratio": (u1 - u2) / problem.mean_speed,
+        "slide_roll_ratio": problem.slide_roll_ratio,
         "moes_M": problem.M,
         "moes_L": problem.L,
     }

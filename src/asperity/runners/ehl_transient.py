@@ -147,7 +147,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
                "steady_central_film_thickness_m": res.steady_central_film,
                "steps_converged_fraction": float(np.mean(res.step_converged[:res.steps_done]))
                if res.steps_done else 0.0,
-               "slide_roll_ratio": (problem.u1 - problem.u2) / problem.mean_speed,
+               "slide_roll_ratio": problem.slide_roll_ratio,
                "hertz_a_m": problem.a, "converged": bool(res.converged)}
     comparisons = []
     if case.paper_contact_time_percent is not None:
