@@ -33,14 +33,13 @@ def fingerprint(*parts) -> str:
 
 def save_checkpoint(path, key: str, arrays: dict) -> Path:
     """Write ``arrays`` and the fingerprint ``key`` to ``path`` atomically; return the path."""
+    from ..results import atomic_path
+
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".tmp")
-    with open(tmp, "wb") as fh:
+    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
         np.savez(fh, fingerprint=np.array(key), **arrays)
         fh.flush()
         os.fsync(fh.fileno())
-    os.replace(tmp, path)
     return path
 
 
