@@ -104,10 +104,18 @@ class TangentialOperator:
 
 @lru_cache(maxsize=8)
 def _operator(nx, ny, dx, dy, body1, body2, periodic):
+    influence = {}  # the Cerruti integrals, evaluated once on the FFT grid for all components
+
+    def component_of(name):
+        def coefficient(X, Y):
+            if "all" not in influence:
+                influence["all"] = tangential_influence(X, Y, dx, dy, body1, body2)
+            return getattr(influence["all"], name)
+        return coefficient
+
     def conv(component):
-        return Convolution.from_coefficients(
-            lambda X, Y: getattr(tangential_influence(X, Y, dx, dy, body1, body2), component),
-            dx, dy, (nx, ny), periodic)
+        return Convolution.from_coefficients(component_of(component), dx, dy, (nx, ny),
+                                             periodic)
 
     coupled = coupling_compliance(body1, body2) != 0.0
     return TangentialOperator(conv("xx"), conv("xy"), conv("yy"),
