@@ -83,8 +83,10 @@ def test_waviness_amplitude_reduction_collapses_on_nabla():
     1/(1 + 0.15 nabla + 0.015 nabla^2) quoted from memory in EHL-NOTES gives 0.54 there.
     """
     ratios = [_amplitude_ratio(M, L, 4.0) for M, L in [(10, 6), (20, 10), (40, 10)]]
-    assert max(ratios) - min(ratios) < 0.06
-    assert 0.4 < np.mean(ratios) < 0.75
+    # collapse: measured spread 0.02 (ratios 0.595, 0.581, 0.601)
+    assert max(ratios) - min(ratios) < 0.03
+    # level: within 20 % of the (unconfirmed) fit 1/(1 + 0.15 nabla + 0.015 nabla^2) = 0.54
+    assert 0.54 * 0.8 < np.mean(ratios) < 0.54 * 1.2
 
 
 @pytest.mark.slow
