@@ -88,10 +88,13 @@ class MovingSurface:
                                         f"along x for this run (it is {have:.4g} m)")
         if isinstance(surface, Topography):
             try:
-                surface.sample([self.s_end], y)
+                on_rows = surface.sample(surface.x, y)
             except InputError:
                 raise InputError(field, "a topography covering the solver's y range "
                                         f"[{y[0]:.4g}, {y[-1]:.4g}] m, or a periodic one") from None
+            # resampled once onto the solver's rows, so that each step interpolates along x only
+            # (tensor-product splines do not depend on the order of the two directions)
+            self.surface = Topography(surface.x, y, on_rows, periodic=surface.periodic)
 
     def heights(self, t: float) -> np.ndarray:
         """Heights ``z_k`` (m) at the nodes at time ``t``, shape ``(x.size, y.size)``."""
