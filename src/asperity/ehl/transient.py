@@ -44,7 +44,7 @@ from .problem import LineContact, PointContact
 from .solver import EHLState, _centre_line, _film_estimate, check_damping, solve_steady
 from .statistics import ContactStatistics, flow_vectors, hertz_mask
 
-__all__ = ["TransientResult", "solve_transient"]
+__all__ = ["TransientResult", "default_warmup_steps", "solve_transient"]
 
 #: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
 DIVERGED = 1e3
@@ -281,6 +281,13 @@ def _relax_step(state, method, *, tol, max_sweeps, refresh, gain, film_scale):
     return False, residual, sweeps, load_err
 
 
+def default_warmup_steps(x, rough_speeds, dt: float) -> int:
+    """Steps until every rough surface has crossed the domain ``x`` (the seed's warm-up):
+    the crossing time of the slowest rough surface over ``dt``; 0 when all are smooth."""
+    crossing = [(x[-1] - x[0]) / u for u in rough_speeds]
+    return int(np.ceil(max(crossing) / dt - 1e-9)) if crossing else 0
+
+
 def _levels(nx, ny, line):
     """Grid-sequencing levels for the steady start: halve while the coarse grid keeps >= 17."""
     levels = 1
@@ -431,8 +438,7 @@ def solve_transient(
         if not u > 0:
             raise InputError(field, "a surface speed > 0 to carry the roughness in", u)
     if warmup_steps is None:
-        crossing = [(x[-1] - x[0]) / u for _, u, _ in given]
-        warmup_steps = int(np.ceil(max(crossing) / dt - 1e-9)) if crossing else 0
+        warmup_steps = default_warmup_steps(x, [u for _, u, _ in given], dt)
     warmup_steps = _check_int("warmup_steps", warmup_steps, 0)
     total = warmup_steps + counting_steps
     moving = [MovingSurface(r, u, x, y, total * dt, field) for r, u, field in given]

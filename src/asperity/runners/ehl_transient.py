@@ -21,6 +21,7 @@ import xarray as xr
 
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
+from ..ehl.transient import default_warmup_steps
 from ..results import Comparison, Outcome, variable, write_netcdf
 
 __all__ = ["CHECKPOINTS", "run"]
@@ -115,10 +116,11 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     x, y = problem.grid(nx, ny, domain)
     u_max = max(abs(problem.u1), abs(problem.u2))
     dt = case.time.dt if case.time.dt is not None else 0.5 * (x[1] - x[0]) / u_max
-    slowest = min(abs(problem.u1), abs(problem.u2))
     warmup = case.time.warmup_steps
-    if warmup is None:
-        warmup = int(np.ceil((x[-1] - x[0]) / max(slowest, 1e-12) / dt - 1e-9))
+    if warmup is None:  # the solver's rule, needed here for the snapshot steps
+        rough = [u for spec, u in ((case.surface1, problem.u1), (case.surface2, problem.u2))
+                 if spec.kind != "smooth" or spec.waviness is not None]
+        warmup = default_warmup_steps(x, rough, dt)
     total = warmup + case.time.counting_steps
     rough1, rough2 = _surfaces(case, problem, x, y, total, dt)
     snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
