@@ -84,3 +84,31 @@ def test_bad_input():
         ref.cattaneo_mindlin(P, 0.1, -0.1, A, STEEL, STEEL)
     with pytest.raises(InputError, match="moment"):
         ref.lubkin_stick_radius(2 * ref.gross_slip_moment_hertz(MU, P, A), A, MU, P0)
+
+
+def test_ellipse_gross_slip_moment_reduces_to_the_circle_and_matches_quadrature():
+    from scipy.integrate import dblquad
+
+    from asperity.contact.reference import gross_slip_moment_ellipse, gross_slip_moment_hertz
+
+    mu, p0, a = 0.1, 1e9, 1e-3
+    load = 2.0 / 3.0 * np.pi * a * a * p0
+    assert gross_slip_moment_ellipse(mu, p0, a, a) == pytest.approx(
+        gross_slip_moment_hertz(mu, load, a), rel=1e-12)
+    b = 0.4 * a  # brute force in elliptic coordinates: x = a r cos t, y = b r sin t
+    value = dblquad(lambda r, t: mu * p0 * np.sqrt(1 - r * r) * a * b * r
+                    * np.hypot(a * r * np.cos(t), b * r * np.sin(t)), 0, 2 * np.pi, 0, 1,
+                    epsabs=0, epsrel=1e-11)[0]
+    assert gross_slip_moment_ellipse(mu, p0, a, b) == pytest.approx(value, rel=1e-8)
+
+
+def test_rectangle_distance_integral_matches_quadrature():
+    from scipy.integrate import dblquad
+
+    from asperity.contact.reference import rectangle_distance_integral
+
+    for box in [(0.2, 0.8, -0.3, 0.3), (-0.5, -0.1, 0.2, 0.9), (-0.3, 0.4, -0.2, 0.6)]:
+        x1, x2, y1, y2 = box
+        value = dblquad(lambda y, x: np.hypot(x, y), x1, x2, y1, y2, epsabs=0,
+                        epsrel=1e-10)[0]
+        assert rectangle_distance_integral(*box) == pytest.approx(value, rel=1e-9)

@@ -13,17 +13,21 @@ and sec. 7.3 (torsion, eqs. 7.45-7.50); J. L. Lubkin, J. Appl. Mech. 18 (1951) 1
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import quad
-from scipy.optimize import brentq
+from scipy.optimize import brentq, minimize
 from scipy.special import ellipe, ellipk
 
 from ..errors import InputError, check_positive
 from ..materials import Material, tangential_compliance
 
 __all__ = [
+    "gross_slip_moment_ellipse",
+    "gross_slip_moment_rectangles",
+    "rectangle_distance_integral",
     "CattaneoMindlin",
     "cattaneo_mindlin",
     "masing_unloading_shift",
@@ -194,6 +198,68 @@ def uniform_torsion_stick_radius(moment, a, mu, p):
 def gross_slip_moment_hertz(mu, normal_load, a):
     """Gross-slip moment of a circular Hertz contact, 3 pi mu P a / 16, N m."""
     return 3.0 * np.pi * mu * normal_load * a / 16.0
+
+
+def gross_slip_moment_ellipse(mu, p0, a, b):
+    """Gross-slip moment of an elliptical Hertz contact about its centre, N m.
+
+    int mu p |r| dA with x = a rho cos t, y = b rho sin t (a >= b):
+    mu p0 a b int_0^1 rho^2 sqrt(1 - rho^2) d rho int_0^2pi sqrt(a^2 cos^2 + b^2 sin^2) dt
+    = (pi / 4) mu p0 a^2 b E(1 - b^2/a^2); 3 pi mu P a / 16 for a circle. The centre is the
+    minimiser by symmetry and convexity (REFERENCE.md, gross slip under a pure moment).
+    """
+    a, b = max(a, b), min(a, b)
+    return 0.25 * math.pi * mu * p0 * a * a * b * ellipe(1.0 - (b / a) ** 2)
+
+
+def rectangle_distance_integral(x1, x2, y1, y2):
+    """int int sqrt(x^2 + y^2) dx dy over [x1, x2] x [y1, y2] in closed form, m^3.
+
+    Antiderivative G = x y r / 3 + (x^3 / 6) ln(y + r) + (y^3 / 6) ln(x + r), r = |(x, y)|
+    (d^2 G / dx dy = r), with ln(u + r) = ln(v^2 / (r - u)) for u < 0 to avoid cancellation.
+    """
+    def log_sum(u, v, r):
+        if v == 0.0:
+            return 0.0
+        return math.log(u + r) if u >= 0 else math.log(v * v / (r - u))
+
+    def G(xv, yv):
+        r = math.hypot(xv, yv)
+        return (xv * yv * r / 3.0 + xv**3 / 6.0 * log_sum(yv, xv, r)
+                + yv**3 / 6.0 * log_sum(xv, yv, r))
+
+    return G(x2, y2) - G(x1, y2) - G(x2, y1) + G(x1, y1)
+
+
+def gross_slip_moment_rectangles(boxes, weights):
+    """Gross-slip moment of uniformly loaded rectangles under a pure moment, N m.
+
+    min over the centre of rotation c of sum_k w_k int_box_k |r - c| dA (a convex function;
+    REFERENCE.md), with the exact rectangle integrals of :func:`rectangle_distance_integral`.
+
+    Parameters
+    ----------
+    boxes : sequence of (x1, x2, y1, y2)
+        The rectangles, m.
+    weights : sequence of float
+        mu p of each rectangle, Pa.
+
+    Returns
+    -------
+    (float, ndarray)
+        The moment and the centre of rotation (2,), m.
+    """
+    def moment(c):
+        return sum(w * rectangle_distance_integral(b[0] - c[0], b[1] - c[0], b[2] - c[1],
+                                                   b[3] - c[1])
+                   for w, b in zip(weights, boxes, strict=True))
+
+    start = np.average([[0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3])] for b in boxes], axis=0,
+                       weights=weights)
+    best = minimize(moment, start, method="Nelder-Mead",
+                    options={"xatol": 1e-12 * (boxes[0][1] - boxes[0][0]), "fatol": 0.0,
+                             "maxiter": 4000})
+    return float(best.fun), best.x
 
 
 def gross_slip_moment_uniform(mu, p, a):

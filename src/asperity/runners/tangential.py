@@ -15,8 +15,6 @@ import math
 
 import numpy as np
 import xarray as xr
-from scipy.optimize import minimize
-from scipy.special import ellipe
 
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact import reference as ref
@@ -98,63 +96,14 @@ def _field(case, body1, body2) -> _Field:
     return _hertz_field(case, body1, body2)
 
 
-# --- closed forms ----------------------------------------------------------------------------
-
-
-def _hertz_gross_slip_moment(mu, p0, a, b):
-    """Gross-slip moment of an elliptical Hertz contact about its centre, N m.
-
-    int mu p |r| dA with x = a rho cos t, y = b rho sin t (a >= b):
-    mu p0 a b int_0^1 rho^2 sqrt(1 - rho^2) d rho int_0^2pi sqrt(a^2 cos^2 + b^2 sin^2) dt
-    = (pi / 4) mu p0 a^2 b E(1 - b^2/a^2); 3 pi mu P a / 16 for a circle. The centre is the
-    minimiser by symmetry and convexity (REFERENCE.md, gross slip under a pure moment).
-    """
-    a, b = max(a, b), min(a, b)
-    return 0.25 * math.pi * mu * p0 * a * a * b * ellipe(1.0 - (b / a) ** 2)
-
-
-def _rectangle_moment_integral(x1, x2, y1, y2):
-    """int int sqrt(x^2 + y^2) dx dy over [x1, x2] x [y1, y2] in closed form.
-
-    Antiderivative G = x y r / 3 + (x^3 / 6) ln(y + r) + (y^3 / 6) ln(x + r), r = |(x, y)|
-    (d^2 G / dx dy = r), with ln(u + r) = ln(v^2 / (r - u)) for u < 0 to avoid cancellation.
-    """
-    def log_sum(u, v, r):
-        if v == 0.0:
-            return 0.0
-        return math.log(u + r) if u >= 0 else math.log(v * v / (r - u))
-
-    def G(xv, yv):
-        r = math.hypot(xv, yv)
-        return (xv * yv * r / 3.0 + xv**3 / 6.0 * log_sum(yv, xv, r)
-                + yv**3 / 6.0 * log_sum(xv, yv, r))
-
-    return G(x2, y2) - G(x1, y2) - G(x2, y1) + G(x1, y1)
-
-
-def _rectangles_gross_slip_moment(spec, mu):
-    """Gross-slip moment of uniformly loaded rectangles: min over c of sum mu p int |r - c| dA.
-
-    Exact rectangle integrals (:func:`_rectangle_moment_integral`), minimised over the centre
-    of rotation c (a convex function). Returns (moment N m, centre (2,) m).
-    """
+def _rectangles(spec, mu):
+    """Boxes (x1, x2, y1, y2) and weights mu p of the uniformly loaded rectangular regions."""
     weights, boxes = [], []
     for region, center in zip(spec.regions, spec.centers(), strict=True):
         hx, hy = region.half_extents()
         weights.append((region.mu or mu) * region.pressure)
         boxes.append((center[0] - hx, center[0] + hx, center[1] - hy, center[1] + hy))
-
-    def moment(c):
-        return sum(w * _rectangle_moment_integral(b[0] - c[0], b[1] - c[0], b[2] - c[1],
-                                                  b[3] - c[1])
-                   for w, b in zip(weights, boxes, strict=True))
-
-    start = np.average([[0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3])] for b in boxes], axis=0,
-                       weights=weights)
-    best = minimize(moment, start, method="Nelder-Mead",
-                    options={"xatol": 1e-12 * (boxes[0][1] - boxes[0][0]), "fatol": 0.0,
-                             "maxiter": 4000})
-    return float(best.fun), best.x
+    return boxes, weights
 
 
 def _closed_forms(case, fld, res, body1, body2, applied, identical):
@@ -172,7 +121,7 @@ def _closed_forms(case, fld, res, body1, body2, applied, identical):
         circular = abs(h.a - h.b) <= 1e-9 * h.a
         size = min(h.a, h.b)
         if force == 0.0 and free:
-            gs = _hertz_gross_slip_moment(mu, h.p_max, h.a, h.b)
+            gs = ref.gross_slip_moment_ellipse(mu, h.p_max, h.a, h.b)
             rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
                                    "(pi/4) mu p0 a^2 b E(1 - b^2/a^2) (3 pi mu P a / 16 for a "
                                    "circle)", "N m", max(0.005, 0.5 * (dx / size) ** 2)))
@@ -225,7 +174,7 @@ def _closed_forms(case, fld, res, body1, body2, applied, identical):
                                    res.load_capacity * force, total, "mu sum p_i A_i", "N",
                                    1e-9 if exact else max(0.01, 4 * dx / regions[0].radius)))
         if force == 0.0 and free and all(r.shape == "rectangle" for r in regions):
-            gs, _ = _rectangles_gross_slip_moment(case.pressure, mu)
+            gs, _ = ref.gross_slip_moment_rectangles(*_rectangles(case.pressure, mu))
             rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
                                    "min over c of sum mu p_i int |r - c| dA (exact rectangles)",
                                    "N m", 0.01))
