@@ -112,7 +112,8 @@ def test_rectangle_distance_integral_matches_quadrature():
         ys = sorted({y1, y2, *([0.0] if y1 < 0 < y2 else [])})
         return sum(dblquad(lambda y, x: np.hypot(x, y), a, b, c, d, epsabs=0,
                            epsrel=1e-11)[0]
-                   for a, b in zip(xs, xs[1:]) for c, d in zip(ys, ys[1:]))
+                   for a, b in zip(xs[:-1], xs[1:], strict=True)
+                   for c, d in zip(ys[:-1], ys[1:], strict=True))
 
     for box in [(0.2, 0.8, -0.3, 0.3), (-0.5, -0.1, 0.2, 0.9), (-0.3, 0.4, -0.2, 0.6)]:
         assert rectangle_distance_integral(*box) == pytest.approx(brute(*box), rel=1e-9)
