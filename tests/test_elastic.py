@@ -156,3 +156,18 @@ def test_identical_materials_decouple():
     np.testing.assert_allclose(two.xx, 2 * one.xx, rtol=1e-15)
     np.testing.assert_allclose(two.yy, 2 * one.yy, rtol=1e-15)
     assert np.any(tangential_influence(x, y, 1e-6, 1e-6, STEEL, BRONZE).zx != 0.0)
+
+
+def test_cerruti_self_cell_integrals_by_quadrature():
+    """The loaded cell's own coefficients (the largest ones) against quadrature over its four
+    quadrants (the 1/r singularity then sits at a corner of each)."""
+    dx, dy = 1.0, 0.6
+    kernels = {"inv_r": lambda x, y: 1.0 / np.hypot(x, y),
+               "xx": lambda x, y: x * x / np.hypot(x, y) ** 3,
+               "yy": lambda x, y: y * y / np.hypot(x, y) ** 3}
+    g = cerruti_integrals(0.0, 0.0, dx, dy)
+    for name, f in kernels.items():
+        quadrant = dblquad(lambda y, x, f=f: f(x, y), 0.0, dx / 2, 0.0, dy / 2, epsabs=0,
+                           epsrel=1e-10)[0]
+        assert float(g[name]) == pytest.approx(4.0 * quadrant, rel=1e-8), name
+    assert float(g["xy"]) == 0.0 and float(g["x_r2"]) == 0.0
