@@ -1,6 +1,12 @@
 """The elastic half-space: influence coefficients and their FFT convolutions."""
 
-from .convolution import Convolution, grid_spacing, normal_operator, periodic_halfspace_spectrum
+from .convolution import (
+    Convolution,
+    grid_spacing,
+    normal_operator,
+    padded_shape,
+    periodic_halfspace_spectrum,
+)
 from .differential import differential_coefficients, line_differential_coefficients
 from .kernels import (
     TangentialInfluence,
@@ -19,6 +25,7 @@ __all__ = [
     "love_integral",
     "normal_influence",
     "normal_operator",
+    "padded_shape",
     "periodic_halfspace_spectrum",
     "tangential_influence",
 ]

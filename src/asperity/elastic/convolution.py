@@ -2,9 +2,10 @@
 
 ``u[i, j] = sum_{k,l} K[i - k, j - l] p[k, l]`` on an ``nx`` x ``ny`` grid of cells:
 
-- non-periodic (an isolated contact on a half-space): the kernel is laid out on a ``2 nx`` x
-  ``2 ny`` grid in wrap-around order and the load is zero-padded, so the circular convolution
-  equals the linear one exactly (DC-FFT: Liu, Wang & Liu, Wear 243 (2000) 101);
+- non-periodic (an isolated contact on a half-space): the kernel is laid out on a grid of at
+  least ``2 nx - 1`` x ``2 ny - 1`` points (:func:`padded_shape`) in wrap-around order and the
+  load is zero-padded, so the circular convolution equals the linear one exactly (DC-FFT:
+  Liu, Wang & Liu, Wear 243 (2000) 101);
 - periodic (a representative patch of a nominally flat rough interface): the kernel is
   circular on the ``nx`` x ``ny`` grid.
 
@@ -23,7 +24,13 @@ from ..errors import InputError
 from ..materials import Material, contact_modulus
 from .kernels import love_integral
 
-__all__ = ["Convolution", "grid_spacing", "normal_operator", "periodic_halfspace_spectrum"]
+__all__ = [
+    "Convolution",
+    "grid_spacing",
+    "normal_operator",
+    "padded_shape",
+    "periodic_halfspace_spectrum",
+]
 
 
 def grid_spacing(coord, name: str) -> float:
@@ -40,13 +47,19 @@ def grid_spacing(coord, name: str) -> float:
     return float(h)
 
 
+def padded_shape(shape) -> tuple[int, int]:
+    """FFT grid of a non-periodic convolution: at least 2 n - 1 points per direction (then the
+    circular convolution equals the linear one exactly), rounded up to a fast FFT length."""
+    return tuple(sfft.next_fast_len(2 * int(n) - 1, real=True) for n in shape)
+
+
 class Convolution:
     """Convolution with a fixed kernel on a fixed grid, by real FFTs.
 
     Parameters
     ----------
     spectrum : ndarray
-        ``rfft2`` of the kernel on the FFT grid (``(2 nx, 2 ny)`` non-periodic, ``(nx, ny)``
+        ``rfft2`` of the kernel on the FFT grid (:func:`padded_shape` non-periodic, ``(nx, ny)``
         periodic), shape ``(fx, fy // 2 + 1)``.
     shape : tuple of int
         ``(nx, ny)``, the grid of loads and displacements.
@@ -59,7 +72,7 @@ class Convolution:
     def __init__(self, spectrum: np.ndarray, shape: tuple[int, int], periodic: bool):
         self.shape = (int(shape[0]), int(shape[1]))
         self.periodic = bool(periodic)
-        self.fft_shape = self.shape if periodic else (2 * self.shape[0], 2 * self.shape[1])
+        self.fft_shape = self.shape if periodic else padded_shape(self.shape)
         expected = (self.fft_shape[0], self.fft_shape[1] // 2 + 1)
         if spectrum.shape != expected:
             raise ValueError(f"spectrum shape {spectrum.shape} does not match grid {expected}")
@@ -69,12 +82,13 @@ class Convolution:
     def from_coefficients(cls, coefficient, dx: float, dy: float, shape, periodic: bool):
         """Build from a function ``coefficient(X, Y)`` of the offsets (m) field - source.
 
-        Non-periodic: offsets -(n-1)..(n-1) cells in wrap-around order on the padded grid.
+        Non-periodic: offsets -(n-1)..(n-1) cells (and beyond, unused) in wrap-around order on
+        the padded grid.
         Periodic: the minimal-image offsets on the grid itself (the kernel is truncated at half
         the period, not summed over images).
         """
         nx, ny = int(shape[0]), int(shape[1])
-        fx, fy = (nx, ny) if periodic else (2 * nx, 2 * ny)
+        fx, fy = (nx, ny) if periodic else padded_shape((nx, ny))
         ix = np.fft.fftfreq(fx, 1.0 / fx)  # 0, 1, ..., -1 as integers (floats)
         iy = np.fft.fftfreq(fy, 1.0 / fy)
         X, Y = np.meshgrid(ix * dx, iy * dy, indexing="ij")
