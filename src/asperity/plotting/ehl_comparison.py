@@ -1,0 +1,56 @@
+"""Point against line contact on the centre line, in the layout of the seed's Fig. 10
+(Holmes, Evans & Snidle, J. Tribol. 127 (2005) 61)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .style import new_figure
+
+__all__ = ["plot_line_vs_point"]
+
+
+def plot_line_vs_point(comparison, index=-1, offset=None):
+    """Centre-line pressure and film of the point contact (solid) and the equivalent line
+    contact (dotted) at one common step, the two surfaces drawn below, offset for clarity
+    (seed Fig. 10: pressure heavy, line-contact results dotted).
+
+    Parameters
+    ----------
+    comparison : CentreLineComparison
+        From :func:`asperity.ehl.compare_centre_lines`.
+    index : int
+        Which of ``comparison.steps``.
+    offset : float, optional
+        Vertical offset between the film and each surface, um; default 1.5 times the larger
+        of the surface relief and the film inside the Hertz width.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    c = comparison
+    fig, ax = new_figure()
+    x = c.x / c.a
+    ax.plot(x, c.point_pressure[index] / 1e9, color="black", lw=2.0, label="p, point")
+    ax.plot(x, c.line_pressure[index] / 1e9, color="black", lw=2.0, ls=":", label="p, line")
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("pressure (GPa)")
+    ax2 = ax.twinx()
+    h_point = c.point_film[index] * 1e6
+    ax2.plot(x, h_point, color="tab:blue", lw=1.0, label="h, point")
+    ax2.plot(x, c.line_film[index] * 1e6, color="tab:blue", lw=1.0, ls=":", label="h, line")
+    inside = np.abs(x) <= 1.0
+    h_contact = max(float(np.nanmax(h_point[inside])) if inside.any() else 0.0, 0.25)
+    z1 = c.surface1[index] * 1e6
+    z2 = c.surface2[index] * 1e6
+    relief = max(float(np.ptp(z1)), float(np.ptp(z2)), h_contact)
+    gap = offset if offset is not None else 1.5 * relief
+    ax2.plot(x, -gap + z1, color="tab:gray", lw=0.8)
+    ax2.plot(x, -2.0 * gap - z2, color="tab:gray", lw=0.8)
+    ax2.set_ylim(-2.0 * gap - 1.2 * relief, 3.0 * h_contact)
+    ax2.set_ylabel("film; surfaces below, offset (um)")
+    lines = ax.get_lines() + ax2.get_lines()[:2]
+    ax.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
+    ax.set_title(f"step {int(c.steps[index])}: point (solid) and line (dotted) contact")
+    return fig
