@@ -1,5 +1,6 @@
 """Elastohydrodynamic lubrication: lubricant models, film-thickness formulas, EHL solvers."""
 
+from .comparison import CentreLineComparison, compare_centre_lines
 from .formulas import (
     FilmThickness,
     HamrockDowsonGroups,
@@ -32,7 +33,7 @@ from .transient import TransientResult, solve_transient
 __all__ = [
     "EHLState", "LineContact", "PointContact", "SteadyResult", "solve_steady",
     "ContactStatistics", "flow_vectors", "hertz_mask",
-    "TransientResult", "solve_transient",
+    "TransientResult", "solve_transient", "CentreLineComparison", "compare_centre_lines",
     "FilmThickness",
     "HamrockDowsonGroups",
     "MoesGroups",
