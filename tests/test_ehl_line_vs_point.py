@@ -11,11 +11,13 @@ surfaces.
 
 Measured on the default run (131 x 29 / 131 nodes, 20 counting steps after the 335-step
 warm-up, every counting step compared; docs/ehl-transient.md): film difference over |x| <= a
-RMS 0.029-0.033 and max 0.077-0.088 of the smooth central film, 2 % of the RMS change of the
-film by the roughness (1.3-1.6 central films); pressure RMS difference 0.048-0.056 p_h against
-0.033 p_h between the smooth solutions. Smooth films differ by 0.0019 (RMS) / 0.0049 (max)
-central films. Shifting the line contact's snapshots by one step (surfaces moved by half a
-mesh spacing) raises the film RMS difference to 0.36.
+RMS 0.029-0.033 and max 0.077-0.088 of the smooth central film, at most 2.5 % of the RMS
+change of the film by the roughness (1.3-1.6 central films); pressure RMS difference
+0.048-0.056 p_h against 0.033 p_h between the smooth solutions. Over the examples' 200
+counting steps (slow test, 10 snapshots): film RMS 0.024-0.042, max 0.053-0.11, at most
+3.5 % of the roughness' film change; pressure RMS 0.040-0.057 p_h. Smooth films differ by
+0.0019 (RMS) / 0.0049 (max) central films. Shifting the line contact's snapshots by one step
+(surfaces moved by half a mesh spacing) raises the film RMS difference to 0.36.
 """
 
 import dataclasses
@@ -76,12 +78,13 @@ def _check_seed_statement(c):
     # (measured 0.19 % / 3.3 %: p_h of the line contact is 4.6 % lower)
     assert c.smooth_film_rms_difference < 0.01
     assert c.smooth_pressure_rms_difference < 0.05
-    # the rough films are "identical": RMS difference < 6 % of the smooth central film
-    # (measured <= 3.4 %), max < 15 % (<= 8.8 %), and < 5 % of how far the roughness moves
-    # the film (<= 2.5 %); at most 30 times the smooth film difference (<= 18)
+    # the rough films are "identical" (bounds ~1.4-2 times the worst of the 20-step default
+    # and the 200-step slow run): RMS difference < 6 % of the smooth central film
+    # (measured <= 4.2 %), max < 15 % (<= 11 %), and < 6 % of how far the roughness moves
+    # the film (<= 3.5 %); at most 30 times the smooth film difference (<= 21)
     assert np.all(c.film_rms_difference < 0.06)
     assert np.all(c.film_max_difference < 0.15)
-    assert np.all(c.film_rms_difference < 0.05 * c.film_rms_deviation)
+    assert np.all(c.film_rms_difference < 0.06 * c.film_rms_deviation)
     assert np.all(c.film_rms_difference < 30.0 * c.smooth_film_rms_difference)
     # pressure differences of the order of the smooth ones (measured <= 1.7 times)
     assert np.all(c.pressure_rms_difference < 2.5 * c.smooth_pressure_rms_difference)

@@ -51,6 +51,6 @@ def plot_line_vs_point(comparison, index=-1, offset=None):
     ax2.set_ylim(-2.0 * gap - 1.2 * relief, 3.0 * h_contact)
     ax2.set_ylabel("film; surfaces below, offset (um)")
     lines = ax.get_lines() + ax2.get_lines()[:2]
-    ax.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
+    ax.legend(lines, [line.get_label() for line in lines], loc="upper right", fontsize=8)
     ax.set_title(f"step {int(c.steps[index])}: point (solid) and line (dotted) contact")
     return fig
