@@ -100,8 +100,9 @@ def test_waviness_limits_short_and_long_waves():
 def test_mass_balance_over_the_inlet_and_contact():
     """d/dt of the film mass between x_a and x_b equals the net inflow, to discretisation error.
 
-    Line contact with rolling waviness; the control volume -2a < x < 0.8a is full film. The two
-    time levels come from runs of n and n + 1 steps (the run is deterministic).
+    Line contact with rolling waviness; the control volume -2.6a < x < 0.8a is full film and
+    holds the front of the waviness (at -2.25a after 60 steps). The two time levels come from
+    runs of n and n + 1 steps (the run is deterministic).
     """
     prob = moes_line(20, 10)
     domain = ((-3.0 * prob.a, 1.5 * prob.a), (0.0, 0.0))
@@ -112,7 +113,7 @@ def test_mass_balance_over_the_inlet_and_contact():
                             counting_steps=n, tol=1e-7, max_sweeps=3000) for n in (60, 61)]
     assert all(r.converged for r in runs)
     x = runs[0].x
-    ia, ib = np.searchsorted(x, [-2.0 * prob.a, 0.8 * prob.a])
+    ia, ib = np.searchsorted(x, [-2.6 * prob.a, 0.8 * prob.a])
     rho = [prob.lubricant.density_ratio(r.pressure[:, 0]) for r in runs]
     mass = [np.trapezoid(rh[ia:ib + 1] * r.film[ia:ib + 1, 0], x[ia:ib + 1])
             for rh, r in zip(rho, runs, strict=True)]
@@ -120,7 +121,7 @@ def test_mass_balance_over_the_inlet_and_contact():
     net_in = 0.5 * sum(q[ia] - q[ib] for q in flows)
     storage = (mass[1] - mass[0]) / runs[0].dt
     throughput = flows[0][ia]
-    assert abs(storage) > 1e-3 * throughput  # the waviness really changes the stored mass
+    assert abs(storage) > 1e-2 * throughput  # the waviness really changes the stored mass
     assert abs(storage - net_in) < 0.02 * throughput
 
 

@@ -119,6 +119,7 @@ class EHLState:
         self.refreshes = 0
         self.damping = 1.0
         self.last_change = None
+        self._derivatives = None
         self.edge = np.zeros(shape, dtype=bool)
         self.edge[[0, -1], :] = True
         if not self.line:
@@ -165,6 +166,7 @@ class EHLState:
         self.efar = self.laplacian_roughness() + self.problem.curvature + self.c * (S - near)
         self.H[self.edge] = self.rigid_film(W)[self.edge]
         self.refreshes += 1
+        self._derivatives = None
 
     def film_from_pressure(self) -> np.ndarray:
         """The integral film H0 + geometry + phi + c D*P (for checks and initial guesses)."""
@@ -223,9 +225,16 @@ class EHLState:
         self.last_change = None
 
     def _sweep(self, method: str):
-        """The compiled sweep of :mod:`asperity.ehl.kernels` at the current flow factors."""
+        """The compiled sweep of :mod:`asperity.ehl.kernels` at the current flow factors.
+
+        The flow-factor derivatives of the Newton term (:func:`asperity.ehl.kernels._newton`)
+        only stabilise the update, which is unchanged at the fixed point, so they are
+        evaluated once per far-field refresh.
+        """
         ex, ey, rho = self.flow_coefficients()
-        dex, dey = self.flow_derivatives(ex, ey)
+        if self._derivatives is None:
+            self._derivatives = self.flow_derivatives(ex, ey)
+        dex, dey = self._derivatives
         if method == "point":
             return point_sweep(
                 self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
