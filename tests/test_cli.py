@@ -27,6 +27,7 @@ def test_default_run_is_the_reduced_gear_case(tmp_path):
         assert key in summary
     assert summary["converged"] is True
     assert 0.0 < summary["contact_time_fraction"] <= 1.0
+    assert summary["minimum_film_thickness_m"] >= 0.0  # contact is h = 0, never below
     with xr.open_dataset(out / "result.nc") as ds:
         assert ds["contact_count_rate"].attrs["units"] == "ms-1"
         assert ds["contact_count_rate"].dims == ("x", "y")

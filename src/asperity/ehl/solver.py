@@ -119,6 +119,7 @@ class EHLState:
         self.refreshes = 0
         self.damping = 1.0
         self.last_change = None
+        self.lag_derivatives = True
         self._derivatives = None
         self.edge = np.zeros(shape, dtype=bool)
         self.edge[[0, -1], :] = True
@@ -228,11 +229,13 @@ class EHLState:
         """The compiled sweep of :mod:`asperity.ehl.kernels` at the current flow factors.
 
         The flow-factor derivatives of the Newton term (:func:`asperity.ehl.kernels._newton`)
-        only stabilise the update, which is unchanged at the fixed point, so they are
-        evaluated once per far-field refresh.
+        only stabilise the update, which is unchanged at the fixed point, so while
+        ``lag_derivatives`` is set they are evaluated once per far-field refresh (fewer sweeps
+        as well as cheaper ones on rough surfaces); otherwise at every sweep (more robust where
+        a node keeps changing state).
         """
         ex, ey, rho = self.flow_coefficients()
-        if self._derivatives is None:
+        if self._derivatives is None or not self.lag_derivatives:
             self._derivatives = self.flow_derivatives(ex, ey)
         dex, dey = self._derivatives
         if method == "point":

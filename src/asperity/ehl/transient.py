@@ -256,14 +256,19 @@ def _relax_step(state, method, *, tol, max_sweeps, refresh, gain, film_scale):
 
     The far field is refreshed every ``refresh`` sweeps; the step has converged when the
     first sweep after a refresh changes p by less than ``tol``, h by less than
-    ``tol * film_scale`` and leaves a relative load error below ``tol``.
+    ``tol * film_scale`` and leaves a relative load error below ``tol``. A step still
+    unconverged after a quarter of ``max_sweeps`` goes on with the Newton derivatives
+    evaluated at every sweep (:meth:`EHLState._sweep`).
     """
     target = state.problem.load_integral
     state.start_iteration()
+    state.lag_derivatives = True
     sweeps = 0
     residual = np.inf
     load_err = np.inf
     while sweeps < max_sweeps:
+        if sweeps >= max_sweeps // 4:
+            state.lag_derivatives = False
         state.refresh()
         first = sweeps + 1
         for _ in range(refresh):
@@ -527,6 +532,8 @@ def solve_transient(
         ok, res, sw, load_err = _relax_step(state, method, tol=tol, max_sweeps=max_sweeps,
                                             refresh=refresh, gain=load_gain,
                                             film_scale=h_scale)
+        # the last separation shift moves the h = 0 contact nodes too: they stay in contact
+        np.maximum(state.H, 0.0, out=state.H)
         p = state.P * problem.p_hertz
         h = state.H * problem.film_scale
         record["max_pressure"][n] = p.max()
