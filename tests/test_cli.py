@@ -101,3 +101,19 @@ def test_missing_case_file_and_unknown_example():
     assert runner.invoke(app, ["run", "does-not-exist.toml"]).exit_code == 2
     result = runner.invoke(app, ["example", "nope"])
     assert result.exit_code == 2
+
+
+def test_starved_inlet_is_one_warning_line(tmp_path):
+    """An EHL domain starting inside the pressure build-up runs, with one ``warning:`` line."""
+    text = runner.invoke(app, ["example", "holmes-smooth-point"]).output
+    for old, new in (("x_min = -2.5", "x_min = -1.1"), ("nx = 257", "nx = 105")):
+        assert old in text
+        text = text.replace(old, new)
+    case = tmp_path / "short.toml"
+    case.write_text(text)
+    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
+                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("warning: domain: the inlet"), proc.stderr

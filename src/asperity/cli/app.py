@@ -2,12 +2,14 @@
 
 The command line only parses arguments, loads cases, calls runners and writers, and prints.
 Bad input ends with one line ``error: <field>: expected ...`` on stderr and exit code 2; a solver
-that did not converge ends with exit code 3 after its files are written.
+that did not converge ends with exit code 3 after its files are written. Warnings of the library
+(e.g. an EHL inlet inside the pressure build-up) are one line ``warning: ...`` on stderr.
 """
 
 from __future__ import annotations
 
 import sys
+import warnings
 from pathlib import Path
 from typing import Annotated
 
@@ -209,6 +211,12 @@ def _mount_sub_apps() -> None:
 _mount_sub_apps()
 
 
+def _warning_line(message, category, filename, lineno, file=None, line=None):
+    """Show a library warning as one line on stderr (replaces ``warnings.showwarning``)."""
+    err_console.print(f"warning: {message}", markup=False, highlight=False, soft_wrap=True)
+
+
 def main() -> None:
     """Entry point of the console script."""
+    warnings.showwarning = _warning_line
     app()
