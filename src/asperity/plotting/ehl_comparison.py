@@ -3,8 +3,7 @@
 
 from __future__ import annotations
 
-import numpy as np
-
+from .ehl_transient import surfaces_below
 from .style import new_figure
 
 __all__ = ["plot_line_vs_point"]
@@ -40,16 +39,7 @@ def plot_line_vs_point(comparison, index=-1, offset=None):
     h_point = c.point_film[index] * 1e6
     ax2.plot(x, h_point, color="tab:blue", lw=1.0, label="h, point")
     ax2.plot(x, c.line_film[index] * 1e6, color="tab:blue", lw=1.0, ls=":", label="h, line")
-    inside = np.abs(x) <= 1.0
-    h_contact = max(float(np.nanmax(h_point[inside])) if inside.any() else 0.0, 0.25)
-    z1 = c.surface1[index] * 1e6
-    z2 = c.surface2[index] * 1e6
-    relief = max(float(np.ptp(z1)), float(np.ptp(z2)), h_contact)
-    gap = offset if offset is not None else 1.5 * relief
-    ax2.plot(x, -gap + z1, color="tab:gray", lw=0.8)
-    ax2.plot(x, -2.0 * gap - z2, color="tab:gray", lw=0.8)
-    ax2.set_ylim(-2.0 * gap - 1.2 * relief, 3.0 * h_contact)
-    ax2.set_ylabel("film; surfaces below, offset (um)")
+    surfaces_below(ax2, x, h_point, c.surface1[index], c.surface2[index], offset)
     lines = ax.get_lines() + ax2.get_lines()[:2]
     ax.legend(lines, [line.get_label() for line in lines], loc="upper right", fontsize=8)
     ax.set_title(f"step {int(c.steps[index])}: point (solid) and line (dotted) contact")
