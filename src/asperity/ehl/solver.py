@@ -479,15 +479,9 @@ def solve_steady(
     -------
     SteadyResult
     """
-    if not isinstance(problem, PointContact | LineContact):
-        raise InputError("problem", "a PointContact or LineContact")
-    line = isinstance(problem, LineContact)
-    if method is None:
-        method = "point" if line else "line"
+    line, method = check_contact_and_method(problem, method)
     if load_gain is None:
         load_gain = 0.01 if line else 0.05
-    if method not in ("line", "point"):
-        raise InputError("method", '"line" or "point"', method)
     tol = check_positive("tol", tol)
     load_gain = check_positive("load_gain", load_gain)
     damping = check_damping(damping)
@@ -535,6 +529,22 @@ def solve_steady(
             "the Hertz pressure), so the p = 0 inlet starves the film; expected x_min further "
             "upstream (the seed: -2.5 a)", RuntimeWarning, stacklevel=2)
     return result
+
+
+def check_contact_and_method(problem, method):
+    """Validate the problem and the relaxation; return (is a line contact, method).
+
+    ``method`` None gives the default: x-line relaxation for a point contact, the point
+    update for a line contact.
+    """
+    if not isinstance(problem, PointContact | LineContact):
+        raise InputError("problem", "a PointContact or LineContact")
+    line = isinstance(problem, LineContact)
+    if method is None:
+        method = "point" if line else "line"
+    if method not in ("line", "point"):
+        raise InputError("method", '"line" or "point"', method)
+    return line, method
 
 
 def check_damping(value) -> float:

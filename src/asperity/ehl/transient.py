@@ -40,8 +40,14 @@ from ..errors import InputError, check_positive
 from ..surfaces.topography import Profile, Topography
 from .checkpoint import fingerprint, load_checkpoint, save_checkpoint
 from .kernels import CAVITATED, CONTACT
-from .problem import LineContact, PointContact
-from .solver import EHLState, _centre_line, _film_estimate, check_damping, solve_steady
+from .solver import (
+    EHLState,
+    _centre_line,
+    _film_estimate,
+    check_contact_and_method,
+    check_damping,
+    solve_steady,
+)
 from .statistics import ContactStatistics, flow_vectors, hertz_mask
 
 __all__ = ["TransientResult", "default_warmup_steps", "solve_transient"]
@@ -409,13 +415,7 @@ def solve_transient(
     -------
     TransientResult
     """
-    if not isinstance(problem, PointContact | LineContact):
-        raise InputError("problem", "a PointContact or LineContact")
-    line = isinstance(problem, LineContact)
-    if method is None:
-        method = "point" if line else "line"
-    if method not in ("line", "point"):
-        raise InputError("method", '"line" or "point"', method)
+    line, method = check_contact_and_method(problem, method)
     theta = float(theta)
     if not 0.5 <= theta <= 1.0:
         raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)
