@@ -228,14 +228,14 @@ class TransientResult:
         }
 
 
-def _reynolds_operator(state: EHLState) -> np.ndarray:
+def _reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
     """Discrete Reynolds operator ``L`` (Poiseuille + upwind wedge) of the current state.
 
     The same finite differences as the nodal update (docs/ehl.md): arithmetic face
     conductances, second-order upwind ``(3/2, -2, 1/2)`` wedge (first order next to the inlet);
-    zero on the edges and at cavitated or contact nodes.
+    zero on the edges and at cavitated or contact nodes. ``ex, ey, rho`` are the state's
+    :meth:`~EHLState.flow_coefficients`.
     """
-    ex, ey, rho = state.flow_coefficients()
     P = state.P
     q = rho * state.H
     L = np.zeros_like(P)
@@ -521,10 +521,10 @@ def solve_transient(
     for n in range(start, total):
         step = n + 1
         # explicit part of the theta-scheme from level n, then move the surfaces to level n+1
-        _, _, rho = state.flow_coefficients()
+        ex, ey, rho = state.flow_coefficients()
         state.theta = theta
         state.mass = mass
-        state.rhs_t = (1.0 - theta) * _reynolds_operator(state) + mass * rho * state.H
+        state.rhs_t = (1.0 - theta) * _reynolds_operator(state, ex, ey, rho) + mass * rho * state.H
         z1, z2 = heights(step * dt)
         phi = -(z1 + z2) / problem.film_scale
         state.H += phi - state.roughness
