@@ -132,8 +132,10 @@ def test_dry_limit_converges_on_a_fixed_film_scale():
     The film change is measured against the larger of the central and the mean edge film
     (dividing by H_c alone made this report converged=False).
     """
-    r = solve_steady(gear_point(u=0.5), nx=65, ny=33, levels=2)
+    prob = gear_point(u=0.5)
+    r = solve_steady(prob, nx=65, ny=33, levels=2)
     assert r.converged and abs(r.load_error) < 1e-5
+    assert r.max_pressure == pytest.approx(prob.p_hertz, rel=5e-3)  # dry: Hertz (+0.02 %)
     assert r.central_film < 0.05e-6
     assert r.history[-1, 2] < 1e-5
 

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from asperity.contact import hertz_point
+from asperity.contact.reference import cattaneo_mindlin
 from asperity.contact.tangential import solve_tangential
 from asperity.materials import Material
 
@@ -48,6 +49,9 @@ def test_lp_agrees_with_fft_under_force():
     lp = solve_tangential(p, X1, X1, MU, STEEL, STEEL, force=(Q, 0.0), method="lp")
     assert lp.converged
     assert lp.shift[0] == pytest.approx(fft.shift[0], rel=0.01)
+    # and both against the closed form (Cattaneo-Mindlin; measured +0.11 %)
+    ref = cattaneo_mindlin(p.sum() * (X1[1] - X1[0]) ** 2, Q, MU, HZ.a, STEEL, STEEL)
+    assert lp.shift[0] == pytest.approx(ref.shift, rel=0.02)
     # the LP fixes every traction along x; the FFT solution has small y components (nu != 0)
     assert np.linalg.norm(lp.traction[0] - fft.traction[0]) < 0.04 * np.linalg.norm(
         fft.traction[0])
