@@ -91,16 +91,6 @@ class CentreLineComparison:
     converged: bool
 
 
-def _centre_line(y, field):
-    """A steady field ``[ix, iy]`` on y = 0: the single row of a line contact, otherwise
-    linear interpolation between the two rows around y = 0."""
-    if y.size == 1:
-        return field[:, 0]
-    j = int(np.clip(np.searchsorted(y, 0.0), 1, y.size - 1))
-    w = (0.0 - y[j - 1]) / (y[j] - y[j - 1])
-    return (1.0 - w) * field[:, j - 1] + w * field[:, j]
-
-
 def _check_steady(steady, x, field, line):
     if not isinstance(steady, SteadyResult):
         raise InputError(field, "an asperity.ehl.SteadyResult or None", type(steady).__name__)
@@ -109,7 +99,8 @@ def _check_steady(steady, x, field, line):
             or (steady.y.size == 1) != line or not steady.y[0] <= 0.0 <= steady.y[-1]):
         raise InputError(field, "the smooth steady solution of the same contact on the "
                                 "transient runs' x grid")
-    return _centre_line(steady.y, steady.film), _centre_line(steady.y, steady.pressure)
+    _, p, h = steady.centre_line()
+    return h, p
 
 
 def _metrics(inside, h_ref, p_ref, film_a, film_b, pressure_a, pressure_b):

@@ -215,6 +215,8 @@ class EHLState:
         of P and H are scaled by ``damping``. The fixed point is unchanged; the returned
         changes are the undamped ones. :meth:`start_iteration` forgets the previous change.
         """
+        if self.damping >= 1.0:
+            return self._sweep(method)
         P0 = self.P.copy()
         H0 = self.H.copy()
         dp, dh = self._sweep(method)
