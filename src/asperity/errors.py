@@ -7,7 +7,7 @@ as one line and exit with status 2.
 
 from __future__ import annotations
 
-__all__ = ["InputError", "check_finite", "check_positive"]
+__all__ = ["InputError", "check_finite", "check_int", "check_positive"]
 
 
 class InputError(ValueError):
@@ -62,3 +62,12 @@ def check_positive(field: str, value: float, *, allow_zero: bool = False) -> flo
         expected = "a finite number >= 0" if allow_zero else "a finite number > 0"
         raise InputError(field, expected, value)
     return v
+
+
+def check_int(field: str, value, minimum: int, expected: str | None = None) -> int:
+    """Raise :class:`InputError` unless ``value`` is an integer (not a bool) >= ``minimum``."""
+    import numbers
+
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
+        raise InputError(field, expected or f"an integer >= {minimum}", value)
+    return int(value)

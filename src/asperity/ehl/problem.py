@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..contact.hertz import hertz_line, hertz_point
-from ..errors import InputError, check_positive
+from ..errors import InputError, check_int, check_positive
 from ..materials import Material, contact_modulus
 from .lubricant import Lubricant
 
@@ -300,6 +300,4 @@ class LineContact(_Contact):
 
 
 def _check_nodes(n, field):
-    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 9:
-        raise InputError(field, "an integer number of nodes >= 9", n)
-    return int(n)
+    return check_int(field, n, 9, "an integer number of nodes >= 9")

@@ -30,7 +30,7 @@ from ..elastic.differential import (
     strip_integral,
 )
 from ..elastic.kernels import love_integral
-from ..errors import InputError, check_positive
+from ..errors import InputError, check_int, check_positive
 from . import formulas
 from .kernels import line_sweep, point_sweep
 from .lubricant import eyring_flow_factors, friction_coefficient
@@ -487,11 +487,10 @@ def solve_steady(
     tol = check_positive("tol", tol)
     load_gain = check_positive("load_gain", load_gain)
     damping = check_damping(damping)
-    for field, value in (("levels", levels), ("max_sweeps", max_sweeps), ("refresh", refresh)):
-        if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
-            raise InputError(field, "an integer >= 1", value)
-    if isinstance(near, bool) or not isinstance(near, int | np.integer) or near < 0:
-        raise InputError("near", "an integer >= 0", near)
+    levels = check_int("levels", levels, 1)
+    max_sweeps = check_int("max_sweeps", max_sweeps, 1)
+    refresh = check_int("refresh", refresh, 1)
+    near = check_int("near", near, 0)
     if line:
         ny = 1
     grids = [(nx, ny)]

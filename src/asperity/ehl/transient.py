@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError, check_positive
+from ..errors import InputError, check_int, check_positive
 from ..surfaces.topography import Profile, Topography
 from .checkpoint import fingerprint, load_checkpoint, save_checkpoint
 from .kernels import CAVITATED, CONTACT
@@ -312,12 +312,6 @@ def _levels(nx, ny, line):
     return levels
 
 
-def _check_int(field, value, minimum):
-    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < minimum:
-        raise InputError(field, f"an integer >= {minimum}", value)
-    return int(value)
-
-
 def solve_transient(
     problem,
     roughness1=None,
@@ -424,11 +418,11 @@ def solve_transient(
         load_gain = 0.03 if line else 0.15 * min(1.0, problem.b / problem.a)
     load_gain = check_positive("load_gain", load_gain)
     damping = check_damping(damping)
-    counting_steps = _check_int("counting_steps", counting_steps, 1)
-    max_sweeps = _check_int("max_sweeps", max_sweeps, 1)
-    refresh = _check_int("refresh", refresh, 1)
-    near = _check_int("near", near, 0)
-    checkpoint_every = _check_int("checkpoint_every", checkpoint_every, 1)
+    counting_steps = check_int("counting_steps", counting_steps, 1)
+    max_sweeps = check_int("max_sweeps", max_sweeps, 1)
+    refresh = check_int("refresh", refresh, 1)
+    near = check_int("near", near, 0)
+    checkpoint_every = check_int("checkpoint_every", checkpoint_every, 1)
     if line:
         ny = 1
     x, y = problem.grid(nx, ny, domain)
@@ -444,7 +438,7 @@ def solve_transient(
             raise InputError(field, "a surface speed > 0 to carry the roughness in", u)
     if warmup_steps is None:
         warmup_steps = default_warmup_steps(x, [u for _, u, _ in given], dt)
-    warmup_steps = _check_int("warmup_steps", warmup_steps, 0)
+    warmup_steps = check_int("warmup_steps", warmup_steps, 0)
     total = warmup_steps + counting_steps
     moving = [MovingSurface(r, u, x, y, total * dt, field) for r, u, field in given]
     slots = [k for k, r in enumerate((roughness1, roughness2)) if r is not None]
