@@ -14,7 +14,7 @@ import numpy as np
 from .lubricant import eyring_flow_factors
 from .problem import LineContact
 
-__all__ = ["ContactStatistics", "flow_vectors", "hertz_mask"]
+__all__ = ["ContactStatistics", "count_rate", "flow_vectors", "hertz_mask"]
 
 
 def hertz_mask(problem, x, y) -> np.ndarray:
@@ -68,6 +68,13 @@ def flow_vectors(problem, x, y, pressure, film):
     return qx, qy
 
 
+def count_rate(count, steps: int, dt: float) -> np.ndarray:
+    """Contact count Q per node over ``steps`` timesteps of ``dt`` (s), per ms (Figs. 4-8)."""
+    if not steps:
+        return np.zeros(np.shape(count))
+    return np.asarray(count) / (steps * dt * 1e3)
+
+
 class ContactStatistics:
     """Accumulator of the counting-period statistics over the nodes of one grid.
 
@@ -116,9 +123,7 @@ class ContactStatistics:
 
     def count_rate(self, dt: float) -> np.ndarray:
         """Contact count per node normalised by the analysis time, per ms (Figs. 4-8)."""
-        if not self.steps:
-            return np.zeros(self.count.shape)
-        return self.count / (self.steps * dt * 1e3)
+        return count_rate(self.count, self.steps, dt)
 
     def arrays(self) -> dict:
         """The accumulator as plain arrays (for a checkpoint)."""

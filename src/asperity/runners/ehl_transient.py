@@ -21,6 +21,7 @@ import xarray as xr
 
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
+from ..ehl.statistics import count_rate
 from ..ehl.transient import default_warmup_steps
 from ..results import Comparison, Outcome, variable, write_netcdf
 
@@ -95,7 +96,7 @@ def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
             max_p = np.array(data["max_pressure"])
     except (OSError, KeyError, ValueError):
         return None
-    rate = count / (steps * dt * 1e3) if steps else np.zeros_like(count, dtype=float)
+    rate = count_rate(count, steps, dt)
     return xr.Dataset(
         {"contact_count_rate": variable(("x", "y"), rate, "ms-1",
                                         "contact count rate Q per ms (so far)"),
