@@ -84,7 +84,7 @@ def paper_spacing(steps=60):
           f"{np.median(seconds):.3f} s/step -> {per_step:.3f} s/step on 801 x 201")
 
     x, y = prob.grid(801, 201, None)
-    state = EHLState(prob, x, y, near=4)
+    state = EHLState(prob, x, y, near=2)  # the transient default
     state.hertz_start(_film_estimate(prob) / prob.film_scale)
     parts = {}
     coefficients = state.flow_coefficients

@@ -124,14 +124,17 @@ class TimeSpec(CaseModel):
 
 class TransientSolverSpec(CaseModel):
     """``[solver]``: per-step options of :func:`asperity.ehl.solve_transient`: tolerance and
-    sweep limit per step, far-field refresh interval, relaxation method, time-scheme weight
+    sweep limit per step, far-field refresh interval, the memory of the Anderson acceleration
+    of the refresh cycles (0: off; default 3 with line relaxation, off with the point update),
+    relaxation method, time-scheme weight
     ``theta``, the oscillation ``damping`` of the nodal update, the film below which a node
     counts as in contact (``contact_film``; default the tolerance times the central film) and
     the checkpoint interval."""
 
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-4
     max_sweeps: Annotated[int, Field(ge=1, le=100_000)] = 400
-    refresh: Annotated[int, Field(ge=1, le=1000)] = 4
+    refresh: Annotated[int, Field(ge=1, le=1000)] = 3
+    acceleration: Annotated[int, Field(ge=0, le=20)] | None = None
     method: Literal["line", "point"] | None = None
     theta: Annotated[float, Field(ge=0.5, le=1.0)] = 0.5
     damping: Annotated[float, Field(gt=0, le=1.0)] = 0.7

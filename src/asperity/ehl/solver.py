@@ -221,11 +221,12 @@ class EHLState:
         H0 = self.H.copy()
         dp, dh = self._sweep(method)
         change = self.P - P0
-        if self.last_change is not None and self.damping < 1.0:
-            osc = change * self.last_change < 0.0
-            self.P[osc] = P0[osc] + self.damping * change[osc]
-            self.H[osc] = H0[osc] + self.damping * (self.H[osc] - H0[osc])
-            change[osc] *= self.damping
+        if self.last_change is not None:
+            osc = np.flatnonzero(change * self.last_change < 0.0)  # few nodes: index them
+            step = self.damping * change.flat[osc]
+            self.P.flat[osc] = P0.flat[osc] + step
+            self.H.flat[osc] = H0.flat[osc] + self.damping * (self.H.flat[osc] - H0.flat[osc])
+            change.flat[osc] = step
         self.last_change = change
         return dp, dh
 

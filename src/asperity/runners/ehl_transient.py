@@ -141,7 +141,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         counting_steps=case.time.counting_steps, warmup_steps=warmup,
         theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
         max_sweeps=case.solver.max_sweeps, refresh=case.solver.refresh,
-        damping=case.solver.damping, contact_film=case.solver.contact_film,
+        acceleration=case.solver.acceleration, damping=case.solver.damping,
+        contact_film=case.solver.contact_film,
         snapshot_steps=snaps, checkpoint=checkpoint,
         checkpoint_every=case.solver.checkpoint_every, resume=resume, callback=callback)
     summary = {**res.summary(),
