@@ -206,6 +206,26 @@ def test_rough_ground_profiles_converge_every_step():
     assert np.median(r.sweeps) < 60
 
 
+def test_acceleration_saves_sweeps_not_accuracy():
+    """Anderson acceleration of the refresh cycles: the same rough run as above (79 x 15,
+    150 steps) with and without it. Measured: 21.5 against 28.3 sweeps per step, final
+    pressure RMS difference 1.6e-3 p_h, the level at which any two tight-tolerance runs
+    differ (tol 1e-6 against 1e-7 on 131 x 29: 1.7e-3 p_h)."""
+    prob, domain = reduced_gear()
+    nx, ny = 79, 15
+    x, _ = prob.grid(nx, ny, domain)
+    C = mesh_profile("C", x[1] - x[0])
+    st = solve_steady(prob, nx=nx, ny=ny, domain=domain)
+    runs = [solve_transient(prob, C, C, nx=nx, ny=ny, domain=domain, steady=st, warmup_steps=0,
+                            counting_steps=150, acceleration=memory) for memory in (0, 3)]
+    plain, mixed = runs
+    assert plain.converged and mixed.converged
+    assert mixed.sweeps.mean() < 0.85 * plain.sweeps.mean()
+    rms = np.sqrt(np.mean((mixed.pressure - plain.pressure) ** 2)) / prob.p_hertz
+    assert rms < 5e-3
+    assert np.all(np.abs(mixed.load_errors) < 1e-4)
+
+
 def _rough_run(prob, surfaces, nx=131, ny=29, counting=200, waviness=0.0):
     """Reduced-domain run (-2a..1.25a, -1.4b..1.4b) with built-in profiles low-passed at 3 dx."""
     domain = ((-2.0 * prob.a, 1.25 * prob.a), (-1.4 * prob.b, 1.4 * prob.b))
@@ -313,6 +333,8 @@ def test_bad_input(gear_steady):
         solve_transient(prob, nx=65, ny=33, damping=1.5, steady=gear_steady)
     with pytest.raises(InputError, match="counting_steps"):
         solve_transient(prob, nx=65, ny=33, counting_steps=0, steady=gear_steady)
+    with pytest.raises(InputError, match="acceleration"):
+        solve_transient(prob, nx=65, ny=33, acceleration=-1, steady=gear_steady)
     with pytest.raises(InputError, match="dt"):
         solve_transient(prob, nx=65, ny=33, dt=-1.0, steady=gear_steady)
     with pytest.raises(InputError, match="steady"):
