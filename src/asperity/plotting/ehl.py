@@ -10,14 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import new_figure, plt
+from .style import hertz_outline, new_figure, plt
 
 __all__ = ["contour_maps", "centre_line_profiles", "transverse_section"]
-
-
-def _hertz_circle(ax):
-    t = np.linspace(0.0, 2.0 * np.pi, 361)
-    ax.plot(np.cos(t), np.sin(t), "k-", lw=2.4, label="Hertz contact")
 
 
 def _film_levels(film_um, h_c_um):
@@ -56,7 +51,7 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     lines = ax_p.contour(X, Y, p_gpa, levels=levels[::2], colors="k", linewidths=0.5)
     ax_p.clabel(lines, fmt="%.2f", fontsize=7)
     fig.colorbar(filled, ax=ax_p, label="pressure (GPa)")
-    _hertz_circle(ax_p)
+    hertz_outline(ax_p, label="Hertz contact")
     ax_p.set(ylabel="y / b", title=f"{title}: pressure (GPa)")
 
     h_um = np.asarray(film) * 1e6
@@ -66,7 +61,7 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     lines = ax_h.contour(X, Y, h_um, levels=h_levels[1::3], colors="k", linewidths=0.5)
     ax_h.clabel(lines, fmt="%.2f", fontsize=7)
     fig.colorbar(filled, ax=ax_h, label="film thickness (um)")
-    _hertz_circle(ax_h)
+    hertz_outline(ax_h, label="Hertz contact")
     ax_h.set(xlabel="x / a  (entrainment ->)", ylabel="y / b", title="film thickness (um)")
     for ax in (ax_p, ax_h):
         ax.set_aspect("equal")

@@ -4,15 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import new_figure
+from .style import hertz_outline, new_figure
 
 __all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
            "plot_film_histogram", "plot_flow_vectors"]
-
-
-def _ellipse(ax, b_over_a):
-    t = np.linspace(0.0, 2.0 * np.pi, 361)
-    ax.plot(np.cos(t), b_over_a * np.sin(t), color="black", lw=2.0)
 
 
 def plot_contact_rate(result, problem):
@@ -24,7 +19,7 @@ def plot_contact_rate(result, problem):
     levels = np.linspace(0.0, max(q.max(), 1e-9), 11)
     cs = ax.contourf(X, Y, q, levels=levels, cmap="Greys")
     fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)")
-    _ellipse(ax, getattr(problem, "b", problem.a) / problem.a)
+    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a)
     ax.set_xlabel("x / a")
     ax.set_ylabel("y / a")
     ax.set_aspect("equal")
@@ -99,7 +94,7 @@ def plot_flow_vectors(result, problem, stride=(4, 4)):
     sx, sy = stride
     ax.quiver(X[::sx, ::sy], Y[::sx, ::sy], result.flow_x[::sx, ::sy],
               result.flow_y[::sx, ::sy], color="white")
-    _ellipse(ax, getattr(problem, "b", problem.a) / problem.a)
+    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a)
     ax.set_xlabel("x / a")
     ax.set_ylabel("y / a")
     return fig
