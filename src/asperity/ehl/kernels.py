@@ -89,13 +89,49 @@ def _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta):
 
 
 @numba.njit(cache=True)
-def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_self,
+def _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
+                        f_near, i, j):
+    """(A0, B0, R^, E^) of the coupled nodal update at interior node (i, j) (module docstring).
+
+    At the current iterate, without the Newton term; the implicit x-neighbour pressure terms
+    ``c f_{k,0} p_{i+k}``, ``1 <= |k| <= K``, are moved to ``E^`` (none when ``f_near`` holds
+    only ``f_00``). ``C0 = -c f_00`` and ``D0 = -2/dX^2 - 2/dY^2`` complete the 2 x 2 system.
+    """
+    nx, ny = p.shape
+    dx2 = dx * dx
+    two_d = ny > 1
+    dy2 = dy * dy if two_d else 1.0
+    inv_dy2 = 1.0 / dy2 if two_d else 0.0
+    xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
+    c0, c1, c2 = _upwind(i)
+    nb = xe * p[i + 1, j] + xw * p[i - 1, j]
+    hy = 0.0
+    if two_d:
+        nb += xn * p[i, j + 1] + xs * p[i, j - 1]
+        hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2
+    rho_ww_h = rho[i - 2, j] * h[i - 2, j] if i >= 2 else 0.0
+    a0 = -theta * (xe + xw + xn + xs)
+    b0 = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
+    r = -theta * (nb + lam * (c1 * rho[i - 1, j] * h[i - 1, j] - c2 * rho_ww_h) / dx)
+    r -= rhs_t[i, j]
+    e = efar[i, j] - (h[i + 1, j] + h[i - 1, j]) / dx2 - hy
+    kn = f_near.size - 1
+    for k in range(-kn, kn + 1):
+        if k != 0 and 0 < i + k < nx - 1:
+            e += c_el * f_near[abs(k)] * p[i + k, j]
+    return a0, b0, r, e
+
+
+@numba.njit(cache=True)
+def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
                 deps_x, deps_y):
     """One lexicographic Gauss-Seidel sweep of the coupled nodal update (Holmes et al. Eq. 7-8).
 
     Rows j in turn, nodes along each row in the entrainment direction (+x). Updates ``p``
     and ``h`` in place on interior nodes and returns the largest change of p and of h.
-    ``c_self = C0 = -c f_00 > 0``. With one row (``ny == 1``) it is the line-contact sweep.
+    ``C0 = -c_el f_near[0] > 0`` (the seed's update has ``f_near = [f_00]``; ``efar`` must
+    exclude the coefficients in ``f_near``). With one row (``ny == 1``) it is the
+    line-contact sweep.
     """
     nx, ny = p.shape
     dx2 = dx * dx
@@ -103,26 +139,17 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
     dy2 = dy * dy if two_d else 1.0
     inv_dy2 = 1.0 / dy2 if two_d else 0.0
     d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    c_self = -c_el * f_near[0]
     j0, j1 = (1, ny - 1) if two_d else (0, 1)
     dp_max = 0.0
     dh_max = 0.0
     for j in range(j0, j1):
         for i in range(1, nx - 1):
-            xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
-            c0, c1, c2 = _upwind(i)
-            rho_w_h = rho[i - 1, j] * h[i - 1, j]
-            rho_ww_h = rho[i - 2, j] * h[i - 2, j] if i >= 2 else 0.0
-            nb = xe * p[i + 1, j] + xw * p[i - 1, j]
-            hy = 0.0
-            if two_d:
-                nb += xn * p[i, j + 1] + xs * p[i, j - 1]
-                hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2
+            a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx,
+                                               dy, theta, mass, c_el, f_near, i, j)
             newton = _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta)
-            a0 = -theta * (xe + xw + xn + xs) + newton
-            b0 = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
-            r = -theta * (nb + lam * (c1 * rho_w_h - c2 * rho_ww_h) / dx) - rhs_t[i, j]
+            a0 += newton
             r += newton * p[i, j]
-            e = efar[i, j] - (h[i + 1, j] + h[i - 1, j]) / dx2 - hy
             det = a0 * d0 - b0 * c_self
             pn = (r * d0 - b0 * e) / det
             hn = (a0 * e - c_self * r) / det
@@ -261,22 +288,8 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
     for i in range(1, nx - 1):
         if row_kind[i] == FLUID:
             continue
-        xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
-        c0, c1, c2 = _upwind(i)
-        nb = xe * p[i + 1, j] + xw * p[i - 1, j]
-        hy = 0.0
-        if two_d:
-            nb += xn * p[i, j + 1] + xs * p[i, j - 1]
-            hy = (h[i, j + 1] + h[i, j - 1]) * inv_dy2
-        rho_ww_h = rho[i - 2, j] * h[i - 2, j] if i >= 2 else 0.0
-        a0 = -theta * (xe + xw + xn + xs)
-        b0 = -theta * lam * rho[i, j] * c0 / dx - mass * rho[i, j]
-        r = -theta * (nb + lam * (c1 * rho[i - 1, j] * h[i - 1, j] - c2 * rho_ww_h) / dx)
-        r -= rhs_t[i, j]
-        e = efar[i, j] - (h[i + 1, j] + h[i - 1, j]) / dx2 - hy
-        for k in range(-kn, kn + 1):
-            if k != 0 and 0 < i + k < nx - 1:
-                e += c_el * f_near[abs(k)] * p[i + k, j]
+        a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy,
+                                           theta, mass, c_el, f_near, i, j)
         det = a0 * d0 - b0 * c_self
         if row_kind[i] == CAVITATED and (r * d0 - b0 * e) / det > 0.0:
             row_kind[i] = FLUID

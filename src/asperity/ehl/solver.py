@@ -250,7 +250,7 @@ class EHLState:
         if method == "point":
             return point_sweep(
                 self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
-                self.theta, self.mass, -self.c * self.f_near[0], dex, dey,
+                self.theta, self.mass, self.c, self.f_near, dex, dey,
             )
         return line_sweep(
             self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
