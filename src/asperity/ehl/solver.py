@@ -113,7 +113,7 @@ class EHLState:
         Xg, Yg = np.meshgrid(self.X, self.Y, indexing="ij")
         ry_ratio = 0.0 if self.line else problem.rx / problem.ry
         self.geometry = 0.5 * Xg**2 + 0.5 * ry_ratio * Yg**2
-        self.roughness = np.zeros(shape)  # phi / (a^2/Rx); zero for smooth surfaces
+        self.roughness = np.zeros(shape)
         self.P = np.zeros(shape)
         self.H = np.zeros(shape)
         self.H0 = 0.0
@@ -145,6 +145,20 @@ class EHLState:
         """H = H0 + geometry + phi + c D*P for the deflection sum ``W = D*P``."""
         return self.H0 + self.geometry + self.roughness + self.c * W
 
+    @property
+    def roughness(self) -> np.ndarray:
+        """Dimensionless roughness phi / (a^2/Rx) at the nodes (zero for smooth surfaces).
+
+        Setting it also evaluates the fixed source ``Delta_h phi + curvature`` of the
+        deflection equation, once per change of the surfaces instead of at every refresh.
+        """
+        return self._roughness
+
+    @roughness.setter
+    def roughness(self, phi):
+        self._roughness = np.asarray(phi, dtype=float)
+        self._source = self.laplacian_roughness() + self.problem.curvature
+
     def laplacian_roughness(self) -> np.ndarray:
         """5-point Laplacian of the nodal roughness array (zero on the edges)."""
         r = self.roughness
@@ -170,7 +184,7 @@ class EHLState:
         for k in range(1, self.f_near.size):
             near[k:] += self.f_near[k] * self.P[:-k]
             near[:-k] += self.f_near[k] * self.P[k:]
-        self.efar = self.laplacian_roughness() + self.problem.curvature + self.c * (S - near)
+        self.efar = self._source + self.c * (S - near)
         self.H[self.edge] = self.rigid_film(W)[self.edge]
         self.refreshes += 1
         self._derivatives = None
