@@ -7,6 +7,8 @@ as one line and exit with status 2.
 
 from __future__ import annotations
 
+import numbers
+
 __all__ = ["InputError", "check_finite", "check_int", "check_positive"]
 
 
@@ -66,8 +68,6 @@ def check_positive(field: str, value: float, *, allow_zero: bool = False) -> flo
 
 def check_int(field: str, value, minimum: int, expected: str | None = None) -> int:
     """Raise :class:`InputError` unless ``value`` is an integer (not a bool) >= ``minimum``."""
-    import numbers
-
     if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
         raise InputError(field, expected or f"an integer >= {minimum}", value)
     return int(value)
