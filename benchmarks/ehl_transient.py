@@ -11,6 +11,7 @@ Run: ``python benchmarks/ehl_transient.py [--meshes 131x29,261x57] [--paper]``.
 """
 
 import argparse
+import inspect
 import sys
 import time
 from pathlib import Path
@@ -84,7 +85,8 @@ def paper_spacing(steps=60):
           f"{np.median(seconds):.3f} s/step -> {per_step:.3f} s/step on 801 x 201")
 
     x, y = prob.grid(801, 201, None)
-    state = EHLState(prob, x, y, near=2)  # the transient default
+    near = inspect.signature(solve_transient).parameters["near"].default
+    state = EHLState(prob, x, y, near=near)  # the transient solver's default
     state.hertz_start(_film_estimate(prob) / prob.film_scale)
     parts = {}
     coefficients = state.flow_coefficients
