@@ -7,7 +7,7 @@ import numpy as np
 from .style import hertz_outline, new_figure
 
 __all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
-           "plot_film_histogram", "plot_flow_vectors"]
+           "plot_film_histogram", "plot_flow_vectors", "surfaces_below"]
 
 
 def plot_contact_rate(result, problem):
