@@ -14,7 +14,7 @@ from pydantic import Field, field_validator, model_validator
 
 from .fields import CaseModel, Quantity, existing_file
 
-__all__ = ["RoughnessSpec", "WavinessSpec", "surface_heights"]
+__all__ = ["RoughnessSpec", "WavinessSpec", "surface_heights", "undeformed_gap"]
 
 
 class WavinessSpec(CaseModel):
@@ -103,6 +103,19 @@ def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
         surf = s.add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
     z = _on_grid(surf, x - x[0] + dx / 2, y - y[0] + dy / 2, s)
     return spec.scale * z
+
+
+def undeformed_gap(rx: float, ry: float, x, y, roughness: RoughnessSpec | None = None):
+    """Gap (m) of an ellipsoid on a flat at the cell centres: ``x^2/(2 rx) + y^2/(2 ry)``
+    (none for ``rx = inf``, a flat punch or a nominally flat interface) minus the heights of
+    ``roughness`` (peaks close the gap)."""
+    X, Y = np.meshgrid(np.asarray(x, float), np.asarray(y, float), indexing="ij")
+    gap = np.zeros_like(X)
+    if np.isfinite(rx):
+        gap += X**2 / (2 * rx) + Y**2 / (2 * ry)
+    if roughness is not None:
+        gap -= surface_heights(roughness, x, y)
+    return gap
 
 
 def _on_grid(surf, xs, ys, s) -> np.ndarray:

@@ -45,6 +45,19 @@ FLUID, CAVITATED, CONTACT = 0, 1, 2
 
 
 @numba.njit(cache=True)
+def _spacing(ny, dx, dy):
+    """(dX^2, dY^2, 1/dY^2, D0) of the grid; a single row (line contact) has no y-terms."""
+    if ny > 1:
+        dy2 = dy * dy
+        inv_dy2 = 1.0 / dy2
+    else:
+        dy2 = 1.0
+        inv_dy2 = 0.0
+    dx2 = dx * dx
+    return dx2, dy2, inv_dy2, -2.0 / dx2 - 2.0 * inv_dy2
+
+
+@numba.njit(cache=True)
 def _upwind(i):
     """Upwind weights (c0, c1, c2) of d(rho h)/dX at node i (first order next to the inlet)."""
     if i >= 2:
@@ -98,10 +111,8 @@ def _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta
     only ``f_00``). ``C0 = -c f_00`` and ``D0 = -2/dX^2 - 2/dY^2`` complete the 2 x 2 system.
     """
     nx, ny = p.shape
-    dx2 = dx * dx
     two_d = ny > 1
-    dy2 = dy * dy if two_d else 1.0
-    inv_dy2 = 1.0 / dy2 if two_d else 0.0
+    dx2, dy2, inv_dy2, _ = _spacing(ny, dx, dy)
     xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
     c0, c1, c2 = _upwind(i)
     nb = xe * p[i + 1, j] + xw * p[i - 1, j]
@@ -134,11 +145,8 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
     line-contact sweep.
     """
     nx, ny = p.shape
-    dx2 = dx * dx
     two_d = ny > 1
-    dy2 = dy * dy if two_d else 1.0
-    inv_dy2 = 1.0 / dy2 if two_d else 0.0
-    d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    dx2, dy2, inv_dy2, d0 = _spacing(ny, dx, dy)
     c_self = -c_el * f_near[0]
     j0, j1 = (1, ny - 1) if two_d else (0, 1)
     dp_max = 0.0
@@ -238,11 +246,8 @@ def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
     """Assemble the block-banded system of row j: block i holds (p_i, h_i); ``m[i, k + bl]``
     couples node i to node i + k (layout of :func:`_block_band_solve`)."""
     nx, ny = p.shape
-    dx2 = dx * dx
     two_d = ny > 1
-    dy2 = dy * dy if two_d else 1.0
-    inv_dy2 = 1.0 / dy2 if two_d else 0.0
-    d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    dx2, dy2, inv_dy2, d0 = _spacing(ny, dx, dy)
     kn = f_near.size - 1
     m[:] = 0.0
     for i in range(nx):
@@ -299,11 +304,7 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
     bu = max(1, kn)
     m = np.empty((nx, bl + bu + 1, 2, 2))
     b = np.empty((nx, 2))
-    two_d = ny > 1
-    dx2 = dx * dx
-    dy2 = dy * dy if two_d else 1.0
-    inv_dy2 = 1.0 / dy2 if two_d else 0.0
-    d0 = -2.0 / dx2 - 2.0 * inv_dy2
+    d0 = _spacing(ny, dx, dy)[3]
     c_self = -c_el * f_near[0]
     row_kind = kind[:, j]
     # release of cavitated / contact nodes by the point update at the current iterate

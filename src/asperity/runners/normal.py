@@ -5,23 +5,11 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from ..cases.roughness import surface_heights
+from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..results import Comparison, Outcome, variable
 
 __all__ = ["run"]
-
-
-def _undeformed_gap(case, x, y):
-    """Ellipsoid gap x^2/(2 rx) + y^2/(2 ry) minus the roughness heights (m)."""
-    rx, ry = case.geometry.radii()
-    X, Y = np.meshgrid(x, y, indexing="ij")
-    gap = np.zeros_like(X)
-    if np.isfinite(rx):
-        gap += X**2 / (2 * rx) + Y**2 / (2 * ry)
-    if case.roughness is not None:
-        gap -= surface_heights(case.roughness, x, y)
-    return gap
 
 
 def _centre_row(y):
@@ -32,7 +20,7 @@ def run(case, progress=None) -> Outcome:
     """Solve the case's normal contact; compare with Hertz when the surfaces are smooth."""
     x, y = case.grid.coordinates()
     body1, body2 = case.body1.material(), case.body2.material()
-    gap0 = _undeformed_gap(case, x, y)
+    gap0 = undeformed_gap(*case.geometry.radii(), x, y, case.roughness)
     callback = None
     if progress is not None:
         def callback(iteration, residual):

@@ -16,6 +16,7 @@ import math
 import numpy as np
 import xarray as xr
 
+from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact import reference as ref
 from ..contact.load_path import proportional_path, tangential_load_path
@@ -59,11 +60,7 @@ def _hertz_field(case, body1, body2):
                                             " m about the origin)")
     X, Y = np.meshgrid(x, y, indexing="ij")
     if spec.source == "normal":
-        from ..cases.roughness import surface_heights
-
-        gap = X**2 / (2 * rx) + Y**2 / (2 * ry)
-        if spec.roughness is not None:
-            gap = gap - surface_heights(spec.roughness, x, y)
+        gap = undeformed_gap(rx, ry, x, y, spec.roughness)
         res = solve_normal(gap, x, y, body1, body2, load=spec.load, tol=spec.normal_tolerance)
         return _Field(x, y, res.pressure, np.full(X.shape, case.mu), h, res)
     p = h.pressure(X, Y)
