@@ -164,3 +164,40 @@ def test_inlet_inside_the_pressure_build_up_warns():
         full = solve_steady(prob, nx=131, ny=29, domain=((-2.0 * a, 1.25 * a), (-1.4 * b, 1.4 * b)))
     assert short.inlet_pressure > 0.05 and full.inlet_pressure < 0.002
     assert short.central_film < 0.6 * full.central_film
+
+
+@pytest.mark.parametrize("line", [False, True])
+def test_refresh_far_field_equals_direct_convolution(line):
+    """``efar`` from the Laplacian of D * P equals the direct sum f * P (interior, 1e-9)."""
+    from asperity.ehl.solver import EHLState
+    from asperity.elastic.convolution import Convolution
+    from asperity.elastic.differential import (
+        differential_coefficients,
+        line_differential_coefficients,
+    )
+
+    if line:
+        prob = LineContact(0.0191, 527e3, 21.875, 28.125, STEEL, STEEL, MOBIL_JET_2)
+        x, y = prob.grid(161, 1)
+    else:
+        prob = gear_point()
+        x, y = prob.grid(81, 33)
+    s = EHLState(prob, x, y, near=2)
+    rng = np.random.default_rng(0)
+    s.P = rng.random(s.P.shape)
+    s.refresh()
+    shape = s.P.shape
+    if line:
+        f = Convolution.from_coefficients(
+            lambda X, Y: line_differential_coefficients(X, s.dX), s.dX, 1.0, shape, False)
+    else:
+        f = Convolution.from_coefficients(
+            lambda X, Y: differential_coefficients(X, Y, s.dX, s.dY), s.dX, s.dY, shape, False)
+    near = s.f_near[0] * s.P
+    for k in (1, 2):
+        near[k:] += s.f_near[k] * s.P[:-k]
+        near[:-k] += s.f_near[k] * s.P[k:]
+    expected = s.laplacian(s.roughness) + prob.curvature + s.c * (f(s.P) - near)
+    inner = (slice(1, -1), slice(None) if line else slice(1, -1))
+    scale = np.abs(s.c * f(s.P)).max()
+    assert np.max(np.abs(s.efar[inner] - expected[inner])) < 1e-9 * scale

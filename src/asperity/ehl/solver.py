@@ -89,23 +89,16 @@ class EHLState:
         shape = (self.X.size, self.Y.size)
         self.c = problem.elastic_factor
         self.lam = problem.lam
-        # Convolutions with the dimensionless geometric kernels D (film) and f (Laplacian of D)
+        # Convolution with the dimensionless film kernel D; its far-field sum f * P is the
+        # 5-point Laplacian of D * P (f is defined as the discrete Laplacian of D), see refresh
         if self.line:
             self._d_conv = Convolution.from_coefficients(
                 lambda X, Y: strip_integral(X, self.dX), self.dX, 1.0, shape, False
-            )
-            self._f_conv = Convolution.from_coefficients(
-                lambda X, Y: line_differential_coefficients(X, self.dX), self.dX, 1.0, shape,
-                False,
             )
             self.f_near = line_differential_coefficients(np.arange(near + 1) * self.dX, self.dX)
         else:
             self._d_conv = Convolution.from_coefficients(
                 lambda X, Y: love_integral(X, Y, self.dX, self.dY), self.dX, self.dY, shape, False
-            )
-            self._f_conv = Convolution.from_coefficients(
-                lambda X, Y: differential_coefficients(X, Y, self.dX, self.dY),
-                self.dX, self.dY, shape, False,
             )
             self.f_near = differential_coefficients(
                 np.arange(near + 1) * self.dX, 0.0, self.dX, self.dY
@@ -157,15 +150,14 @@ class EHLState:
     @roughness.setter
     def roughness(self, phi):
         self._roughness = np.asarray(phi, dtype=float)
-        self._source = self.laplacian_roughness() + self.problem.curvature
+        self._source = self.laplacian(self._roughness) + self.problem.curvature
 
-    def laplacian_roughness(self) -> np.ndarray:
-        """5-point Laplacian of the nodal roughness array (zero on the edges)."""
-        r = self.roughness
-        out = np.zeros_like(r)
-        out[1:-1] = (r[2:] - 2 * r[1:-1] + r[:-2]) / self.dX**2
+    def laplacian(self, field) -> np.ndarray:
+        """5-point Laplacian ``Delta_h`` of a nodal field (zero on the edges)."""
+        out = np.zeros_like(field)
+        out[1:-1] = (field[2:] - 2 * field[1:-1] + field[:-2]) / self.dX**2
         if not self.line:
-            out[:, 1:-1] += (r[:, 2:] - 2 * r[:, 1:-1] + r[:, :-2]) / self.dY**2
+            out[:, 1:-1] += (field[:, 2:] - 2 * field[:, 1:-1] + field[:, :-2]) / self.dY**2
             out[:, [0, -1]] = 0.0
         out[[0, -1]] = 0.0
         return out
@@ -175,11 +167,13 @@ class EHLState:
 
         ``efar = Delta_h phi + curvature + c (S - sum_{|k|<=K} f_k0 P_{i+k})`` with
         ``S = f * P`` the full sum at the current pressure; the edges get
-        ``H = H0 + geometry + phi + c D * P`` (EHL-NOTES sec. 2).
+        ``H = H0 + geometry + phi + c W``, ``W = D * P`` (EHL-NOTES sec. 2). Since ``f`` is the
+        5-point Laplacian of ``D`` (:mod:`asperity.elastic.differential`), ``S = Delta_h W``
+        exactly at the interior nodes, where ``efar`` is used: a refresh costs one forward and
+        one inverse FFT.
         """
-        spectrum = self._f_conv.spectrum_of(self.P)  # same padded grid for f and D
-        S = self._f_conv.from_spectrum(spectrum)
-        W = self._d_conv.from_spectrum(spectrum)
+        W = self._d_conv(self.P)
+        S = self.laplacian(W)
         near = self.f_near[0] * self.P
         for k in range(1, self.f_near.size):
             near[k:] += self.f_near[k] * self.P[:-k]
