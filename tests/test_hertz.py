@@ -122,3 +122,15 @@ def test_bad_input_line():
         hertz_line(0.0, 0.01, body, body)
     with pytest.raises(InputError, match="radius"):
         hertz_line(1.0, -0.01, body, body)
+
+
+@pytest.mark.parametrize("aspect", [0.1, 0.25, 0.8, 1.0, 1.3, 4.0, 10.0])
+def test_radius_ratio_gives_the_aspect_ratio(aspect):
+    """Closed-form Rx/Ry for a/b: the Hertz solution of those radii has a/b to 1e-10."""
+    from asperity.contact.hertz import radius_ratio
+
+    root_l = np.sqrt(radius_ratio(aspect))
+    steel = Material(2e11, 0.3)
+    h = hertz_point(10.0, 0.01 * root_l, 0.01 / root_l, steel, steel)
+    assert h.a / h.b == pytest.approx(aspect, rel=1e-10)
+    assert radius_ratio(aspect) * radius_ratio(1.0 / aspect) == pytest.approx(1.0, rel=1e-12)

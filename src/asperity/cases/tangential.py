@@ -42,6 +42,7 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
+from ..contact.hertz import radius_ratio
 from .bodies import MaterialSpec
 from .fields import CaseHeader, CaseModel, Quantity
 from .roughness import RoughnessSpec
@@ -180,33 +181,17 @@ class PressureSpec(CaseModel):
             return [(-0.5 * self.spacing, 0.0), (0.5 * self.spacing, 0.0)]
         return [tuple(r.center) for r in self.regions]
 
-    def radii(self, body1, body2) -> tuple[float, float]:
+    def radii(self) -> tuple[float, float]:
         """Relative radii of curvature (Rx, Ry), m; from ``aspect_ratio`` when given.
 
         With an aspect ratio k = a/b the radii are Rx = R sqrt(l), Ry = R / sqrt(l) with
-        R = ``rx`` and l found such that the Hertz ellipse has a/b = k (exact elliptic
-        integrals, :func:`asperity.contact.hertz_point`).
+        R = ``rx`` and l = Rx/Ry the closed form of :func:`asperity.contact.hertz.radius_ratio`
+        (exact elliptic integrals).
         """
         if self.aspect_ratio is None:
             return self.rx, self.ry if self.ry is not None else self.rx
-        if self.aspect_ratio == 1.0:
-            return self.rx, self.rx
-        from scipy.optimize import brentq
-
-        from ..contact import hertz_point
-
-        k = self.aspect_ratio
-
-        def mismatch(log_l):
-            h = hertz_point(self.load, self.rx * math.exp(0.5 * log_l),
-                            self.rx * math.exp(-0.5 * log_l), body1, body2)
-            return math.log(h.a / h.b) - math.log(k)
-
-        # a/b ~ (Rx/Ry)^(2/3): bracket l generously around k^(3/2)
-        guess = 1.5 * math.log(k)
-        log_l = brentq(mismatch, guess - 2.0 * abs(guess) - 1.0, guess + 2.0 * abs(guess) + 1.0,
-                       xtol=1e-14)
-        return self.rx * math.exp(0.5 * log_l), self.rx * math.exp(-0.5 * log_l)
+        root_l = math.sqrt(radius_ratio(self.aspect_ratio))
+        return self.rx * root_l, self.rx / root_l
 
     def bounding_box(self) -> tuple[float, float, float, float]:
         """(x0, x1, y0, y1) of the regions, m (uniform pressure only)."""

@@ -29,7 +29,7 @@ from scipy.special import ellipe, ellipk
 from ..errors import InputError, check_positive
 from ..materials import Material, contact_modulus
 
-__all__ = ["HertzPoint", "HertzLine", "hertz_point", "hertz_line"]
+__all__ = ["HertzPoint", "HertzLine", "hertz_point", "hertz_line", "radius_ratio"]
 
 
 @dataclass(frozen=True)
@@ -67,14 +67,35 @@ class HertzPoint:
         return self.p_max * np.sqrt(np.clip(1.0 - r2, 0.0, None))
 
 
+def _curvature_ratio(m: float) -> float:
+    """A_m/A_n (<= 1), the ratio of the gap's curvatures along the major and minor axes of
+    the Hertz ellipse of eccentricity e^2 = m (Johnson 1985, eq. 4.39):
+    ``(K - E) / (E / (1 - m) - K)``."""
+    k, e = ellipk(m), ellipe(m)
+    return (k - e) / (e / (1.0 - m) - k)
+
+
+def radius_ratio(aspect_ratio: float) -> float:
+    """Rx/Ry of the gap whose Hertz ellipse has ``a/b = aspect_ratio`` (a along x).
+
+    The major axis lies along the larger radius, so ``Rx/Ry = (A_m/A_n)^-1`` for
+    ``a/b > 1`` and ``A_m/A_n`` for ``a/b < 1`` with ``m = 1 - (minor/major)^2``
+    (:func:`_curvature_ratio`); independent of the load and the materials.
+    """
+    k = check_positive("aspect_ratio", aspect_ratio)
+    if k == 1.0:
+        return 1.0
+    ratio = _curvature_ratio(1.0 - min(k, 1.0 / k) ** 2)
+    return 1.0 / ratio if k > 1.0 else ratio
+
+
 def _eccentricity_squared(ratio: float) -> float:
     """Solve A_m/A_n = ratio (<= 1) for e^2, with parameter m = e^2 as scipy takes it."""
     if 1.0 - ratio < 1e-7:  # nearly circular: ratio = 1 - 3 m / 4 + O(m^2)
         return max(4.0 * (1.0 - ratio) / 3.0, 0.0)
 
     def f(m):
-        k, e = ellipk(m), ellipe(m)
-        return (k - e) / (e / (1.0 - m) - k) - ratio
+        return _curvature_ratio(m) - ratio
 
     lower = 2.0 * (1.0 - ratio) / 3.0  # f(lower) > 0 since ratio(m) ~ 1 - 3 m / 4
     return brentq(f, lower, 1.0 - 1e-16, xtol=1e-16, rtol=1e-15, maxiter=400)

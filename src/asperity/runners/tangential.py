@@ -49,7 +49,7 @@ class _Field:
 def _hertz_field(case, body1, body2):
     """Hertz pressure at the cell centres, scaled so that the discrete load is the applied one."""
     spec = case.pressure
-    rx, ry = spec.radii(body1, body2)
+    rx, ry = spec.radii()
     h = hertz_point(spec.load, rx, ry, body1, body2)
     margin = 1.05 if spec.source == "hertz" else 1.5
     x, y = case.grid.coordinates((-margin * h.a, margin * h.a, -margin * h.b, margin * h.b))
