@@ -186,13 +186,26 @@ def test_flow_factor_limits():
         eyring_flow_factors(1e-6, eta, rho, 1.0, -1.0)
 
 
-def test_lubricant_flow_factors_use_pressure_dependent_properties():
-    oil = Lubricant(ETA0, ALPHA, eyring_stress=10e6)
-    p, h = np.array([0.0, 1e9]), np.array([1e-6, 0.5e-6])
-    sx, sy = oil.flow_factors(p, h, 5.0)
-    ex, ey = eyring_flow_factors(h, oil.eta(p), oil.rho(p), 5.0, 10e6)
-    np.testing.assert_array_equal(sx, ex)
-    np.testing.assert_array_equal(sy, ey)
+@pytest.mark.parametrize("model", ["roelands", "barus"])
+@pytest.mark.parametrize("compressible", [True, False])
+@pytest.mark.parametrize("tau0", [10e6, None])
+@pytest.mark.parametrize("shape", [(7, 5), (9,)])
+def test_flow_field_is_the_laws_at_every_node(model, compressible, tau0, shape):
+    """The compiled one-pass field equals the public laws composed, p and h < 0 as 0."""
+    oil = Lubricant(ETA0, ALPHA, viscosity_model=model, compressible=compressible,
+                    eyring_stress=tau0)
+    rng = np.random.default_rng(1)
+    p = rng.uniform(-0.2e9, 2e9, shape)
+    h = rng.uniform(-0.1e-6, 1e-6, shape)
+    h.flat[0] = 0.0
+    sx, sy, rho = oil.flow_field(p, h, -5.0)
+    ex, ey = eyring_flow_factors(np.maximum(h, 0.0), oil.eta(p), oil.density_ratio(p), -5.0,
+                                 tau0)
+    assert sx.shape == sy.shape == rho.shape == shape
+    np.testing.assert_allclose(sx, ex, rtol=1e-13, atol=0)
+    np.testing.assert_allclose(sy, ey, rtol=1e-13, atol=0)
+    np.testing.assert_allclose(rho, oil.density_ratio(p), rtol=1e-15)
+    assert np.all(sx[h <= 0] == 0.0) and np.all(sy[h <= 0] == 0.0)
 
 
 # --- shear stress and friction --------------------------------------------------------------

@@ -28,8 +28,10 @@ lubrication in line contacts", J. Tribol. 109 (1987) 648-658.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 
 from ..errors import InputError, check_positive
@@ -61,6 +63,65 @@ def _gauge(p):
     return np.maximum(np.asarray(p, dtype=float), 0.0)
 
 
+# The laws, once, as compiled element-wise functions: the public functions below apply them
+# to arrays, and Lubricant.flow_field evaluates them all in one parallel pass over the nodes
+# of an EHL solution. Pressures p < 0 are evaluated at 0.
+
+@numba.vectorize(cache=True)
+def _barus(p, eta0, alpha):
+    return eta0 * math.exp(alpha * max(p, 0.0))
+
+
+@numba.vectorize(cache=True)
+def _roelands(p, eta0, log_ratio, chi, z):
+    """Roelands with ``log_ratio = ln(eta0/kappa)``."""
+    return eta0 * math.exp(log_ratio * ((1.0 + chi * max(p, 0.0)) ** z - 1.0))
+
+
+@numba.vectorize(cache=True)
+def _dowson_higginson(p, gamma, lam):
+    """rho/rho0 (1 for gamma = lam = 0)."""
+    pg = max(p, 0.0)
+    return (1.0 + gamma * pg) / (1.0 + lam * pg)
+
+
+@numba.vectorize(cache=True)
+def _sigma_x(h, eta, rho, shear):
+    """``rho h^2 sqrt((h/eta)^2 + shear^2) / 12`` with ``shear = |du|/tau0`` (0: Newtonian)."""
+    return rho * h * h * math.sqrt((h / eta) ** 2 + shear * shear) / 12.0
+
+
+@numba.vectorize(cache=True)
+def _sigma_y(h, eta, rho, shear):
+    """``rho h^3 X / (12 eta asinh X)``, ``X = eta shear / h`` (limit 1 + X^2/6 near 0)."""
+    if h <= 0.0:
+        return 0.0
+    x = eta * shear / h
+    ratio = 1.0 + x * x / 6.0 if x < 1e-4 else x / math.asinh(x)
+    return rho * h * h * h / (12.0 * eta) * ratio
+
+
+@numba.njit(parallel=True, cache=True)
+def _flow_field(p, h, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho):
+    """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (2-D arrays).
+
+    Viscosity: Roelands (``v1 = ln(eta0/kappa), v2 = chi, v3 = Z``) or Barus (``v1 = alpha``).
+    Films ``h < 0`` count as 0.
+    """
+    for i in numba.prange(p.shape[0]):
+        for j in range(p.shape[1]):
+            pij = p[i, j]
+            hij = max(h[i, j], 0.0)
+            if roelands:
+                eta = _roelands(pij, eta0, v1, v2, v3)
+            else:
+                eta = _barus(pij, eta0, v1)
+            r = _dowson_higginson(pij, gamma, lam)
+            sx[i, j] = _sigma_x(hij, eta, r, shear)
+            sy[i, j] = _sigma_y(hij, eta, r, shear)
+            rho[i, j] = r
+
+
 def barus_viscosity(p, eta0, alpha):
     """Barus viscosity eta = eta0 exp(alpha p).
 
@@ -78,7 +139,7 @@ def barus_viscosity(p, eta0, alpha):
     ndarray
         Viscosity, Pa s, shaped like ``p``.
     """
-    return eta0 * np.exp(alpha * _gauge(p))
+    return _barus(np.asarray(p, dtype=float), eta0, alpha)
 
 
 def roelands_index(eta0, alpha, kappa=ROELANDS_KAPPA, chi=ROELANDS_CHI):
@@ -121,7 +182,7 @@ def roelands_viscosity(p, eta0, alpha, kappa=ROELANDS_KAPPA, chi=ROELANDS_CHI):
         Viscosity, Pa s.
     """
     z = roelands_index(eta0, alpha, kappa, chi)
-    return eta0 * np.exp(np.log(eta0 / kappa) * ((1.0 + chi * _gauge(p)) ** z - 1.0))
+    return _roelands(np.asarray(p, dtype=float), eta0, math.log(eta0 / kappa), chi, z)
 
 
 def dowson_higginson_density(p, rho0=1.0, gamma=DH_GAMMA, lam=DH_LAMBDA):
@@ -141,8 +202,7 @@ def dowson_higginson_density(p, rho0=1.0, gamma=DH_GAMMA, lam=DH_LAMBDA):
     ndarray
         Density, in the units of ``rho0``.
     """
-    pg = _gauge(p)
-    return rho0 * (1.0 + gamma * pg) / (1.0 + lam * pg)
+    return rho0 * _dowson_higginson(np.asarray(p, dtype=float), gamma, lam)
 
 
 @dataclass(frozen=True)
@@ -241,19 +301,44 @@ class Lubricant:
         """Density at pressure ``p``, kg/m^3."""
         return self.density * self.density_ratio(p)
 
-    def flow_factors(self, p, h, sliding_speed):
-        """Flow factors (sigma_x, sigma_y) of :func:`eyring_flow_factors` at pressure ``p``.
+    def flow_field(self, p, h, sliding_speed: float):
+        """Flow factors and density ratio of a pressure and film field, in one parallel pass.
 
-        Uses ``rho(p)`` and ``eta(p)``; Newtonian when ``eyring_stress`` is None.
+        The same as ``eyring_flow_factors(h, eta(p), density_ratio(p), sliding_speed,
+        eyring_stress)`` and ``density_ratio(p)``, compiled and evaluated node by node on the
+        available cores (the EHL solvers call it at every sweep).
+
+        Parameters
+        ----------
+        p : array_like
+            Pressure, Pa (negative counts as 0).
+        h : array_like
+            Film thickness, m, shaped like ``p`` (negative counts as 0).
+        sliding_speed : float
+            du = u2 - u1, m/s.
+
+        Returns
+        -------
+        sigma_x, sigma_y, rho_ratio : ndarray
+            Flow factors (in rho0 m^3/(Pa s)) and rho/rho0, shaped like ``p``.
         """
-        return eyring_flow_factors(h, self.eta(p), self.rho(p), sliding_speed, self.eyring_stress)
-
-
-def _x_over_asinh(x):
-    """X / asinh(X) for X >= 0, with the limit 1 + X^2/6 near 0 and no 0/0."""
-    small = x < 1e-4
-    safe = np.where(small, 1.0, x)
-    return np.where(small, 1.0 + x * x / 6.0, safe / np.arcsinh(safe))
+        p = np.asarray(p, dtype=float)
+        h = np.asarray(h, dtype=float)
+        if h.shape != p.shape:
+            raise InputError("h", f"the shape of p {p.shape}", h.shape)
+        rows = p.shape[0] if p.ndim else 1
+        out = [np.empty((rows, p.size // max(rows, 1))) for _ in range(3)]
+        roelands = self.viscosity_model == "roelands"
+        if roelands:
+            v1 = math.log(self.viscosity / self.roelands_kappa)
+            v2, v3 = self.roelands_chi, self.roelands_z
+        else:
+            v1, v2, v3 = self.pressure_viscosity, 0.0, 0.0
+        gamma, lam = (self.dh_gamma, self.dh_lambda) if self.compressible else (0.0, 0.0)
+        shear = 0.0 if self.newtonian else abs(float(sliding_speed)) / self.eyring_stress
+        _flow_field(p.reshape(out[0].shape), h.reshape(out[0].shape), roelands, self.viscosity,
+                    v1, v2, v3, gamma, lam, shear, *out)
+        return tuple(o.reshape(p.shape) for o in out)
 
 
 def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):
@@ -301,16 +386,12 @@ def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):
         raise InputError("h", "film thickness >= 0")
     if np.any(~(eta > 0)):
         raise InputError("eta", "viscosity > 0")
+    rho = np.asarray(rho, dtype=float)
     if tau0 is None:
-        s = rho * h**3 / (12.0 * eta)
-        return s, s
-    tau0 = check_positive("tau0", tau0)
-    du = np.abs(np.asarray(sliding_speed, dtype=float))
-    sigma_x = rho * h * h * np.sqrt((h / eta) ** 2 + (du / tau0) ** 2) / 12.0
-    wet = h > 0
-    x = eta * du / (tau0 * np.where(wet, h, 1.0))
-    sigma_y = np.where(wet, rho * h**3 / (12.0 * eta) * _x_over_asinh(x), 0.0)
-    return sigma_x, sigma_y
+        shear = 0.0
+    else:
+        shear = np.abs(np.asarray(sliding_speed, dtype=float)) / check_positive("tau0", tau0)
+    return _sigma_x(h, eta, rho, shear), _sigma_y(h, eta, rho, shear)
 
 
 def eyring_mean_shear_stress(h, eta, sliding_speed, tau0=None):

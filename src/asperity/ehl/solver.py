@@ -33,7 +33,7 @@ from ..elastic.kernels import love_integral
 from ..errors import InputError, check_int, check_positive
 from . import formulas
 from .kernels import line_sweep, point_sweep
-from .lubricant import eyring_flow_factors, friction_coefficient
+from .lubricant import friction_coefficient
 from .problem import LineContact, PointContact
 
 __all__ = ["EHLState", "SteadyResult", "solve_steady"]
@@ -196,11 +196,8 @@ class EHLState:
         """Dimensionless (eps_x, eps_y, rho_bar) at the current (P, H), lagged in a sweep."""
         prob = self.problem
         lub = prob.lubricant
-        p = self.P * prob.p_hertz
-        h = np.maximum(self.H, 0.0) * prob.film_scale
-        eta = lub.eta(p)
-        rho = lub.density_ratio(p)
-        sx, sy = eyring_flow_factors(h, eta, rho, prob.sliding_speed, lub.eyring_stress)
+        sx, sy, rho = lub.flow_field(self.P * prob.p_hertz, self.H * prob.film_scale,
+                                     prob.sliding_speed)
         scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
         return sx * scale, sy * scale, rho
 

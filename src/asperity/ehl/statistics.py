@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from .lubricant import eyring_flow_factors
 from .problem import LineContact
 
 __all__ = ["ContactStatistics", "count_rate", "flow_vectors", "hertz_mask"]
@@ -54,9 +53,7 @@ def flow_vectors(problem, x, y, pressure, film):
     """
     lub = problem.lubricant
     h = np.maximum(film, 0.0)
-    rho = lub.density_ratio(pressure)
-    sx, sy = eyring_flow_factors(h, lub.eta(pressure), rho, problem.sliding_speed,
-                                 lub.eyring_stress)
+    sx, sy, rho = lub.flow_field(pressure, h, problem.sliding_speed)
     qx = rho * problem.mean_speed * h - sx * np.gradient(pressure, x, axis=0)
     if pressure.shape[1] > 1:
         qy = -sy * np.gradient(pressure, y, axis=1)
