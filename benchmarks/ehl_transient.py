@@ -21,6 +21,7 @@ import numpy as np
 
 from asperity.ehl import solve_steady, solve_transient
 from asperity.ehl.solver import EHLState, _film_estimate
+from asperity.memory import retain_freed_memory
 
 sys.path.insert(0, str(Path(__file__).parent))
 from ehl_table2 import gear_case, mesh_profile, reduced_domain  # noqa: E402
@@ -91,7 +92,7 @@ def paper_spacing(steps=60):
     parts = {}
     coefficients = state.flow_coefficients
     for name, fun in (("flow factors", coefficients),
-                      ("derivatives", lambda: state.flow_derivatives(*coefficients()[:2])),
+                      ("with slopes", lambda: coefficients(slopes=True)),
                       ("refresh (FFT)", state.refresh),
                       ("sweep (all)", lambda: state.sweep("line"))):
         fun()
@@ -112,7 +113,11 @@ def main():
     parser.add_argument("--meshes", default="131x29,261x57")
     parser.add_argument("--paper", action="store_true",
                         help="also time rough steps at the seed's mesh spacing")
+    parser.add_argument("--default-allocator", action="store_true",
+                        help="leave glibc's malloc thresholds alone (the CLI raises them)")
     args = parser.parse_args()
+    retained = not args.default_allocator and retain_freed_memory()
+    print(f"freed memory retained for reuse (asperity.memory, as the CLI does): {retained}")
     print(f"{'mesh':>10} {'steps':>6} {'s/step':>8} {'sweeps/step':>12} {'max':>5} "
           f"{'failed':>6}")
     for mesh in args.meshes.split(","):

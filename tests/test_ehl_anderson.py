@@ -53,3 +53,25 @@ def test_reset_forgets_the_history():
     x = mixer.mix(x, g(x))
     mixer.reset()
     assert np.array_equal(mixer.mix(x, g(x)), g(x))
+
+
+def _reference_mix(xs, gs, memory):
+    """Walker & Ni Eq. 2.2 from the last memory + 1 pairs, by a direct least-squares solve."""
+    xs, gs = np.array(xs[-memory - 1:]), np.array(gs[-memory - 1:])
+    f = gs - xs
+    if len(f) < 2:
+        return gs[-1]
+    gamma = np.linalg.lstsq(np.diff(f, axis=0).T, f[-1], rcond=None)[0]
+    return gs[-1] - np.diff(gs, axis=0).T @ gamma
+
+
+def test_incremental_gram_matrix_equals_the_direct_least_squares():
+    """Past the memory (oldest pair dropped) every proposal equals the direct solve."""
+    g, _ = _linear_map(12, 0.9, seed=3)
+    mixer = AndersonMixer(3)
+    xs, gs, x = [], [], np.zeros(12)
+    for _ in range(8):
+        xs.append(x)
+        gs.append(np.tanh(g(x)))
+        x = mixer.mix(xs[-1], gs[-1])
+        np.testing.assert_allclose(x, _reference_mix(xs, gs, 3), rtol=1e-9, atol=1e-12)

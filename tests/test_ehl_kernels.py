@@ -1,10 +1,17 @@
-"""Compiled EHL row solves: the block elimination against a dense solve of the same rows."""
+"""Compiled EHL kernels: the block elimination against a dense solve of the same rows, the
+oscillation damping against its definition."""
 
 import numpy as np
 import pytest
 
 from asperity.ehl import Lubricant, PointContact
-from asperity.ehl.kernels import CAVITATED, CONTACT, _assemble_row, _block_band_solve
+from asperity.ehl.kernels import (
+    CAVITATED,
+    CONTACT,
+    _assemble_row,
+    _block_band_solve,
+    damp_oscillations,
+)
 from asperity.ehl.solver import EHLState, _film_estimate
 from asperity.materials import Material
 
@@ -44,8 +51,7 @@ def test_block_elimination_equals_dense_solve(rough_state, near):
     """Rows of fluid, contact and cavitated nodes: agreement to 1e-10 of the solution."""
     s = rough_state
     f_near = EHLState(GEAR, s.x, s.y, near=near).f_near
-    ex, ey, rho = s.flow_coefficients()
-    dex, dey = s.flow_derivatives(ex, ey)
+    ex, ey, rho, dex, dey = s.flow_coefficients(slopes=True)
     bl, bu = max(2, near), max(1, near)
     nx = s.P.shape[0]
     for j in (3, 10, 17):
@@ -60,3 +66,25 @@ def test_block_elimination_equals_dense_solve(rough_state, near):
             assert np.max(np.abs(b[:, k] - expected[:, k])) < 1e-10 * scale
         assert np.all(b[s.kind[:, j] == CONTACT, 1] == pytest.approx(0.0, abs=1e-12))
         assert np.all(b[s.kind[:, j] == CAVITATED, 0] == pytest.approx(0.0, abs=1e-12))
+
+
+def test_damping_scales_only_the_reversing_changes():
+    """Nodes whose p change reverses sign are moved back to before + damping * change (p and
+    h); the others keep the sweep's result; the recorded change is the damped one."""
+    rng = np.random.default_rng(5)
+    before_p, before_h = rng.uniform(0, 1, (2, 9, 4))
+    p = before_p + rng.standard_normal((9, 4))
+    h = before_h + rng.standard_normal((9, 4))
+    last = rng.standard_normal((9, 4))
+    reverse = (p - before_p) * last < 0
+    assert 0 < reverse.sum() < reverse.size
+    expected_p = np.where(reverse, before_p + 0.7 * (p - before_p), p)
+    expected_h = np.where(reverse, before_h + 0.7 * (h - before_h), h)
+    damp_oscillations(p, h, before_p, before_h, last, 0.7, True)
+    np.testing.assert_allclose(p, expected_p, rtol=1e-15)
+    np.testing.assert_allclose(h, expected_h, rtol=1e-15)
+    np.testing.assert_allclose(last, expected_p - before_p, rtol=1e-12)
+    p2, h2 = p + 1.0, h.copy()
+    damp_oscillations(p2, h2, p, h, last, 0.7, False)  # no previous change: nothing damped
+    np.testing.assert_array_equal(p2, p + 1.0)
+    np.testing.assert_allclose(last, 1.0)

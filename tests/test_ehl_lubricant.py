@@ -208,6 +208,30 @@ def test_flow_field_is_the_laws_at_every_node(model, compressible, tau0, shape):
     assert np.all(sx[h <= 0] == 0.0) and np.all(sy[h <= 0] == 0.0)
 
 
+@pytest.mark.parametrize("model", ["roelands", "barus"])
+@pytest.mark.parametrize("compressible", [True, False])
+@pytest.mark.parametrize("tau0", [10e6, 1e3, None])
+def test_flow_field_slopes_are_the_derivatives_in_p(model, compressible, tau0):
+    """Analytic d sigma/dp equals a central difference (1e-6 relative, or its round-off) at
+    p > 0, h > 0, including tiny Eyring arguments (series branch) and strongly shear-thinned
+    films."""
+    oil = Lubricant(ETA0, ALPHA, viscosity_model=model, compressible=compressible,
+                    eyring_stress=tau0)
+    rng = np.random.default_rng(2)
+    p = rng.uniform(0.05e9, 1.5e9, 40)
+    h = np.concatenate([rng.uniform(1e-8, 1e-6, 38), [1.0, 0.0]])
+    sx, sy, rho, dsx, dsy = oil.flow_field(p, h, -5.0, slopes=True)
+    np.testing.assert_array_equal(oil.flow_field(p, h, -5.0)[0], sx)
+    step = 1e-5 * p
+    up = oil.flow_field(p + step, h, -5.0)
+    down = oil.flow_field(p - step, h, -5.0)
+    for k, d in ((0, dsx), (1, dsy)):
+        central = (up[k] - down[k]) / (2 * step)
+        roundoff = 1e-9 * up[k] / p  # where sigma hardly depends on p (sigma_x at large X)
+        assert np.all(np.abs(d - central)[:-1] <= (1e-6 * np.abs(central) + roundoff)[:-1])
+    assert dsx[-1] == dsy[-1] == 0.0  # no film, no flow at any pressure
+
+
 # --- shear stress and friction --------------------------------------------------------------
 
 

@@ -18,6 +18,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import InputError
+from ..memory import retain_freed_memory
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="Mechanics of rough, loaded, lubricated contacts.")
@@ -217,6 +218,7 @@ def _warning_line(message, category, filename, lineno, file=None, line=None):
 
 
 def main() -> None:
-    """Entry point of the console script."""
+    """Entry point of the console script (keeps freed memory for reuse: :mod:`asperity.memory`)."""
     warnings.showwarning = _warning_line
+    retain_freed_memory()
     app()

@@ -27,7 +27,8 @@ __all__ = ["AndersonMixer"]
 
 
 class AndersonMixer:
-    """Remembers the last ``memory + 1`` pairs ``(x_i, g(x_i))`` and proposes the next iterate.
+    """Remembers the last ``memory`` differences of the pairs ``(x_i, g(x_i))`` and proposes
+    the next iterate.
 
     Parameters
     ----------
@@ -37,34 +38,42 @@ class AndersonMixer:
 
     def __init__(self, memory: int):
         self.memory = int(memory)
-        self._g: list[np.ndarray] = []
-        self._f: list[np.ndarray] = []
+        self.reset()
 
     def reset(self):
         """Forget the history (the next :meth:`mix` returns ``g`` unchanged)."""
-        self._g.clear()
-        self._f.clear()
+        self._last = None
+        self._d_f: list[np.ndarray] = []
+        self._d_g: list[np.ndarray] = []
+        self._gram = np.zeros((0, 0))
 
     def mix(self, x: np.ndarray, g: np.ndarray) -> np.ndarray:
         """Record the pair (x, g(x)) and return the accelerated next iterate.
 
         With a single pair in the history this is the plain fixed-point step ``g``. The
         least-squares problem is solved through its m x m normal equations (the vectors are
-        long, m is small).
+        long, m is small), whose Gram matrix gains one row of dot products per call.
         """
         g = np.asarray(g, dtype=float)
-        self._g.append(g)
-        self._f.append(g - np.asarray(x, dtype=float))
-        if len(self._g) > self.memory + 1:
-            self._g.pop(0)
-            self._f.pop(0)
-        if len(self._g) < 2:
+        f = g - np.asarray(x, dtype=float)
+        if self._last is not None:
+            self._d_f.append(f - self._last[0])
+            self._d_g.append(g - self._last[1])
+            gram = self._gram
+            if len(self._d_f) > self.memory:
+                self._d_f.pop(0)
+                self._d_g.pop(0)
+                gram = gram[1:, 1:]
+            row = np.array([np.dot(u, self._d_f[-1]) for u in self._d_f])
+            self._gram = np.empty((row.size, row.size))
+            self._gram[:-1, :-1] = gram
+            self._gram[-1] = self._gram[:, -1] = row
+        self._last = (f, g)
+        if not self._d_f:
             return g.copy()
-        d_f = [b - a for a, b in zip(self._f[:-1], self._f[1:], strict=True)]
-        gram = np.array([[np.dot(u, v) for v in d_f] for u in d_f])
-        rhs = np.array([np.dot(u, self._f[-1]) for u in d_f])
-        gamma = np.linalg.lstsq(gram, rhs, rcond=1e-12)[0]
+        rhs = np.array([np.dot(u, f) for u in self._d_f])
+        gamma = np.linalg.lstsq(self._gram, rhs, rcond=1e-12)[0]
         out = g.copy()
-        for k, gk in enumerate(gamma):
-            out -= gk * (self._g[k + 1] - self._g[k])
+        for gk, d_g in zip(gamma, self._d_g, strict=True):
+            out -= gk * d_g
         return out

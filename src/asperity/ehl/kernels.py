@@ -376,3 +376,23 @@ def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
                                               dy, theta, mass, c_el, f_near, kind, deps_x,
                                               deps_y, j)
     return dp_row.max(), dh_row.max()
+
+
+@numba.njit(cache=True, parallel=True)
+def damp_oscillations(p, h, p_before, h_before, last_change, damping, has_last):
+    """Scale by ``damping`` the change of a sweep at nodes where p moves against its last change.
+
+    ``p, h`` hold the sweep's result and ``p_before, h_before`` the iterate it started from;
+    where ``(p - p_before) * last_change < 0`` (and ``has_last``), p and h are moved back to
+    ``before + damping * (new - before)``. ``last_change`` becomes this sweep's (damped) change
+    of p. All arrays share one shape and are updated in place.
+    """
+    nx, ny = p.shape
+    for i in numba.prange(nx):
+        for j in range(ny):
+            change = p[i, j] - p_before[i, j]
+            if has_last and change * last_change[i, j] < 0.0:
+                change *= damping
+                p[i, j] = p_before[i, j] + change
+                h[i, j] = h_before[i, j] + damping * (h[i, j] - h_before[i, j])
+            last_change[i, j] = change

@@ -63,63 +63,118 @@ def _gauge(p):
     return np.maximum(np.asarray(p, dtype=float), 0.0)
 
 
-# The laws, once, as compiled element-wise functions: the public functions below apply them
-# to arrays, and Lubricant.flow_field evaluates them all in one parallel pass over the nodes
-# of an EHL solution. Pressures p < 0 are evaluated at 0.
+# The laws, once, as compiled scalar functions returning the value and its derivative (they
+# share their transcendental functions): the public functions below apply the values to arrays
+# (as ufuncs), and Lubricant.flow_field evaluates values and, on request, derivatives in one
+# parallel pass over the nodes of an EHL solution. Pressures p < 0 are evaluated at 0 (the
+# derivative there is the right derivative at 0).
+
+@numba.njit(cache=True)
+def _barus_law(p, eta0, alpha):
+    """Barus eta and d eta/dp."""
+    eta = eta0 * math.exp(alpha * max(p, 0.0))
+    return eta, alpha * eta
+
+
+@numba.njit(cache=True)
+def _roelands_law(p, eta0, log_ratio, chi, z):
+    """Roelands eta and d eta/dp, ``log_ratio = ln(eta0/kappa)``:
+    ``d eta/dp = eta ln(eta0/kappa) Z chi (1 + chi p)^(Z - 1)``."""
+    q = 1.0 + chi * max(p, 0.0)
+    t = q**z
+    eta = eta0 * math.exp(log_ratio * (t - 1.0))
+    return eta, eta * log_ratio * z * chi * t / q
+
+
+@numba.njit(cache=True)
+def _dowson_higginson_law(p, gamma, lam):
+    """rho/rho0 and its derivative ``(gamma - lambda)/(1 + lambda p)^2`` (1, 0 for
+    gamma = lam = 0)."""
+    q = 1.0 + lam * max(p, 0.0)
+    return (1.0 + gamma * max(p, 0.0)) / q, (gamma - lam) / (q * q)
+
+
+@numba.njit(cache=True)
+def _eyring_x(h, eta, shear):
+    """``sigma_x / rho = h^2 sqrt((h/eta)^2 + shear^2) / 12`` (``shear = |du|/tau0``, 0:
+    Newtonian) and its derivative in eta, ``-h^2 (h/eta)^2 / (12 eta sqrt(...))``."""
+    if h <= 0.0:
+        return 0.0, 0.0
+    u = h / eta
+    root = math.sqrt(u * u + shear * shear)
+    return h * h * root / 12.0, -h * h * u * u / (12.0 * eta * root)
+
+
+@numba.njit(cache=True)
+def _eyring_y(h, eta, shear):
+    """``sigma_y / rho = h^3 g / 12``, ``g = X / (eta asinh X)``, ``X = eta shear / h``, and its
+    derivative in eta with ``dg/deta = -(shear/h)^2 / (asinh(X)^2 sqrt(1 + X^2))``; near
+    X = 0 the series ``g = (1 + X^2/6) / eta``, ``dg/deta = -1/eta^2 + shear^2/(6 h^2)``."""
+    if h <= 0.0:
+        return 0.0, 0.0
+    x = eta * shear / h
+    if x < 1e-4:
+        g = (1.0 + x * x / 6.0) / eta
+        dg = -1.0 / (eta * eta) + shear * shear / (6.0 * h * h)
+    else:
+        s = math.asinh(x)
+        g = x / (eta * s)
+        dg = -(shear / h) ** 2 / (s * s * math.sqrt(1.0 + x * x))
+    return h * h * h * g / 12.0, h * h * h * dg / 12.0
+
 
 @numba.vectorize(cache=True)
 def _barus(p, eta0, alpha):
-    return eta0 * math.exp(alpha * max(p, 0.0))
+    return _barus_law(p, eta0, alpha)[0]
 
 
 @numba.vectorize(cache=True)
 def _roelands(p, eta0, log_ratio, chi, z):
-    """Roelands with ``log_ratio = ln(eta0/kappa)``."""
-    return eta0 * math.exp(log_ratio * ((1.0 + chi * max(p, 0.0)) ** z - 1.0))
+    return _roelands_law(p, eta0, log_ratio, chi, z)[0]
 
 
 @numba.vectorize(cache=True)
 def _dowson_higginson(p, gamma, lam):
-    """rho/rho0 (1 for gamma = lam = 0)."""
-    pg = max(p, 0.0)
-    return (1.0 + gamma * pg) / (1.0 + lam * pg)
+    return _dowson_higginson_law(p, gamma, lam)[0]
 
 
 @numba.vectorize(cache=True)
 def _sigma_x(h, eta, rho, shear):
-    """``rho h^2 sqrt((h/eta)^2 + shear^2) / 12`` with ``shear = |du|/tau0`` (0: Newtonian)."""
-    return rho * h * h * math.sqrt((h / eta) ** 2 + shear * shear) / 12.0
+    return rho * _eyring_x(h, eta, shear)[0]
 
 
 @numba.vectorize(cache=True)
 def _sigma_y(h, eta, rho, shear):
-    """``rho h^3 X / (12 eta asinh X)``, ``X = eta shear / h`` (limit 1 + X^2/6 near 0)."""
-    if h <= 0.0:
-        return 0.0
-    x = eta * shear / h
-    ratio = 1.0 + x * x / 6.0 if x < 1e-4 else x / math.asinh(x)
-    return rho * h * h * h / (12.0 * eta) * ratio
+    return rho * _eyring_y(h, eta, shear)[0]
 
 
 @numba.njit(parallel=True, cache=True)
-def _flow_field(p, h, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho):
-    """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (2-D arrays).
+def _flow_field(p, h, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho, slopes,
+                dsx, dsy):
+    """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (2-D arrays), and with
+    ``slopes`` their derivatives in p at constant h into ``dsx, dsy``.
 
     Viscosity: Roelands (``v1 = ln(eta0/kappa), v2 = chi, v3 = Z``) or Barus (``v1 = alpha``).
-    Films ``h < 0`` count as 0.
+    Films ``h < 0`` count as 0. Chain rule: ``d sigma/dp = (sigma/rho) rho' +
+    rho d(sigma/rho)/d eta eta'``.
     """
     for i in numba.prange(p.shape[0]):
         for j in range(p.shape[1]):
             pij = p[i, j]
             hij = max(h[i, j], 0.0)
             if roelands:
-                eta = _roelands(pij, eta0, v1, v2, v3)
+                eta, deta = _roelands_law(pij, eta0, v1, v2, v3)
             else:
-                eta = _barus(pij, eta0, v1)
-            r = _dowson_higginson(pij, gamma, lam)
-            sx[i, j] = _sigma_x(hij, eta, r, shear)
-            sy[i, j] = _sigma_y(hij, eta, r, shear)
+                eta, deta = _barus_law(pij, eta0, v1)
+            r, dr = _dowson_higginson_law(pij, gamma, lam)
+            fx, dfx = _eyring_x(hij, eta, shear)
+            fy, dfy = _eyring_y(hij, eta, shear)
+            sx[i, j] = r * fx
+            sy[i, j] = r * fy
             rho[i, j] = r
+            if slopes:
+                dsx[i, j] = fx * dr + r * dfx * deta
+                dsy[i, j] = fy * dr + r * dfy * deta
 
 
 def barus_viscosity(p, eta0, alpha):
@@ -301,7 +356,7 @@ class Lubricant:
         """Density at pressure ``p``, kg/m^3."""
         return self.density * self.density_ratio(p)
 
-    def flow_field(self, p, h, sliding_speed: float):
+    def flow_field(self, p, h, sliding_speed: float, slopes: bool = False):
         """Flow factors and density ratio of a pressure and film field, in one parallel pass.
 
         The same as ``eyring_flow_factors(h, eta(p), density_ratio(p), sliding_speed,
@@ -316,18 +371,24 @@ class Lubricant:
             Film thickness, m, shaped like ``p`` (negative counts as 0).
         sliding_speed : float
             du = u2 - u1, m/s.
+        slopes : bool
+            Also return the derivatives of the flow factors with respect to p at constant h
+            (analytic, through eta(p) and rho(p); the right derivative at p <= 0).
 
         Returns
         -------
         sigma_x, sigma_y, rho_ratio : ndarray
             Flow factors (in rho0 m^3/(Pa s)) and rho/rho0, shaped like ``p``.
+        dsigma_x, dsigma_y : ndarray
+            With ``slopes``: d sigma/dp, rho0 m^3/(Pa^2 s).
         """
         p = np.asarray(p, dtype=float)
         h = np.asarray(h, dtype=float)
         if h.shape != p.shape:
             raise InputError("h", f"the shape of p {p.shape}", h.shape)
         rows = p.shape[0] if p.ndim else 1
-        out = [np.empty((rows, p.size // max(rows, 1))) for _ in range(3)]
+        shape = (rows, p.size // max(rows, 1))
+        out = [np.empty(shape if k < 3 or slopes else (0, 0)) for k in range(5)]
         roelands = self.viscosity_model == "roelands"
         if roelands:
             v1 = math.log(self.viscosity / self.roelands_kappa)
@@ -336,9 +397,9 @@ class Lubricant:
             v1, v2, v3 = self.pressure_viscosity, 0.0, 0.0
         gamma, lam = (self.dh_gamma, self.dh_lambda) if self.compressible else (0.0, 0.0)
         shear = 0.0 if self.newtonian else abs(float(sliding_speed)) / self.eyring_stress
-        _flow_field(p.reshape(out[0].shape), h.reshape(out[0].shape), roelands, self.viscosity,
-                    v1, v2, v3, gamma, lam, shear, *out)
-        return tuple(o.reshape(p.shape) for o in out)
+        _flow_field(p.reshape(shape), h.reshape(shape), roelands, self.viscosity,
+                    v1, v2, v3, gamma, lam, shear, *out[:3], slopes, *out[3:])
+        return tuple(o.reshape(p.shape) for o in out[:5 if slopes else 3])
 
 
 def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):

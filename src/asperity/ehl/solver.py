@@ -32,14 +32,11 @@ from ..elastic.differential import (
 from ..elastic.kernels import love_integral
 from ..errors import InputError, check_int, check_positive
 from . import formulas
-from .kernels import line_sweep, point_sweep
+from .kernels import damp_oscillations, line_sweep, point_sweep
 from .lubricant import friction_coefficient
 from .problem import LineContact, PointContact
 
 __all__ = ["EHLState", "SteadyResult", "solve_steady"]
-
-#: Dimensionless pressure step of the forward difference d eps/dP (:meth:`EHLState.sweep`).
-NEWTON_STEP = 1e-4
 
 #: Smooth pressure (over p_hertz) 0.1 a downstream of the inlet above which the inlet lies in
 #: the pressure build-up: on the gear case an inlet at -1.4a gives 1.1 % and a central film
@@ -117,7 +114,10 @@ class EHLState:
         self.efar = np.zeros(shape)
         self.refreshes = 0
         self.damping = 1.0
-        self.last_change = None
+        self._p_before = np.empty(shape)
+        self._h_before = np.empty(shape)
+        self._last_change = np.zeros(shape)
+        self._has_change = False
         self.lag_derivatives = True
         self._derivatives = None
         self.edge = np.zeros(shape, dtype=bool)
@@ -192,24 +192,20 @@ class EHLState:
         self.H0 += delta
         self.H += delta
 
-    def flow_coefficients(self):
-        """Dimensionless (eps_x, eps_y, rho_bar) at the current (P, H), lagged in a sweep."""
+    def flow_coefficients(self, slopes: bool = False):
+        """Dimensionless (eps_x, eps_y, rho_bar) at the current (P, H), lagged in a sweep;
+        with ``slopes`` also (d eps_x/dP, d eps_y/dP) at constant H (analytic,
+        :meth:`asperity.ehl.lubricant.Lubricant.flow_field`)."""
         prob = self.problem
         lub = prob.lubricant
-        sx, sy, rho = lub.flow_field(self.P * prob.p_hertz, self.H * prob.film_scale,
-                                     prob.sliding_speed)
+        out = lub.flow_field(self.P * prob.p_hertz, self.H * prob.film_scale,
+                             prob.sliding_speed, slopes=slopes)
         scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
-        return sx * scale, sy * scale, rho
-
-    def flow_derivatives(self, ex, ey):
-        """d eps_x/dP and d eps_y/dP at the current (P, H) (forward difference, step 1e-4)."""
-        P = self.P
-        self.P = P + NEWTON_STEP
-        try:
-            ex2, ey2, _ = self.flow_coefficients()
-        finally:
-            self.P = P
-        return (ex2 - ex) / NEWTON_STEP, (ey2 - ey) / NEWTON_STEP
+        sx, sy, rho = out[:3]
+        if not slopes:
+            return sx * scale, sy * scale, rho
+        dscale = scale * prob.p_hertz
+        return sx * scale, sy * scale, rho, out[3] * dscale, out[4] * dscale
 
     def sweep(self, method: str):
         """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|.
@@ -222,22 +218,17 @@ class EHLState:
         """
         if self.damping >= 1.0:
             return self._sweep(method)
-        P0 = self.P.copy()
-        H0 = self.H.copy()
+        np.copyto(self._p_before, self.P)
+        np.copyto(self._h_before, self.H)
         dp, dh = self._sweep(method)
-        change = self.P - P0
-        if self.last_change is not None:
-            osc = np.flatnonzero(change * self.last_change < 0.0)  # few nodes: index them
-            step = self.damping * change.flat[osc]
-            self.P.flat[osc] = P0.flat[osc] + step
-            self.H.flat[osc] = H0.flat[osc] + self.damping * (self.H.flat[osc] - H0.flat[osc])
-            change.flat[osc] = step
-        self.last_change = change
+        damp_oscillations(self.P, self.H, self._p_before, self._h_before, self._last_change,
+                          self.damping, self._has_change)
+        self._has_change = True
         return dp, dh
 
     def start_iteration(self):
         """Forget the previous sweep's change (call when the problem changes, e.g. a new step)."""
-        self.last_change = None
+        self._has_change = False
 
     def _sweep(self, method: str):
         """The compiled sweep of :mod:`asperity.ehl.kernels` at the current flow factors.
@@ -248,9 +239,10 @@ class EHLState:
         as well as cheaper ones on rough surfaces); otherwise at every sweep (more robust where
         a node keeps changing state).
         """
-        ex, ey, rho = self.flow_coefficients()
         if self._derivatives is None or not self.lag_derivatives:
-            self._derivatives = self.flow_derivatives(ex, ey)
+            ex, ey, rho, *self._derivatives = self.flow_coefficients(slopes=True)
+        else:
+            ex, ey, rho = self.flow_coefficients()
         dex, dey = self._derivatives
         if method == "point":
             return point_sweep(

@@ -96,13 +96,28 @@ class Convolution:
         return cls(sfft.rfft2(kernel, workers=-1), (nx, ny), periodic)
 
     def spectrum_of(self, load: np.ndarray) -> np.ndarray:
-        """Forward transform of a load on the grid (zero-padded when non-periodic)."""
-        return sfft.rfft2(load, s=self.fft_shape, workers=-1)
+        """Forward transform of a load on the grid (zero-padded when non-periodic).
+
+        Non-periodic: the real transforms along y run over the ``nx`` loaded rows only (the
+        padding rows are zero), then the complex ones along x over the padded length; the
+        result equals ``rfft2(load, s=fft_shape)``.
+        """
+        if self.periodic:
+            return sfft.rfft2(load, workers=-1)
+        rows = sfft.rfft(load, n=self.fft_shape[1], axis=1, workers=-1)
+        return sfft.fft(rows, n=self.fft_shape[0], axis=0, overwrite_x=True, workers=-1)
 
     def from_spectrum(self, load_spectrum: np.ndarray) -> np.ndarray:
-        """Displacement on the grid from a load spectrum (kernel product, inverse FFT, crop)."""
-        u = sfft.irfft2(load_spectrum * self.spectrum, s=self.fft_shape, workers=-1)
-        return u if self.periodic else u[: self.shape[0], : self.shape[1]]
+        """Displacement on the grid from a load spectrum (kernel product, inverse FFT, crop).
+
+        Non-periodic: after the inverse transforms along x only the ``nx`` rows of the grid are
+        transformed back along y (the rows that are cropped away are never formed).
+        """
+        product = load_spectrum * self.spectrum
+        if self.periodic:
+            return sfft.irfft2(product, s=self.fft_shape, workers=-1)
+        columns = sfft.ifft(product, axis=0, overwrite_x=True, workers=-1)[: self.shape[0]]
+        return sfft.irfft(columns, n=self.fft_shape[1], axis=1, workers=-1)[:, : self.shape[1]]
 
     def __call__(self, load: np.ndarray) -> np.ndarray:
         """Convolve: the displacement due to ``load`` on the grid."""
