@@ -281,3 +281,17 @@ def test_friction_coefficient_newtonian_and_dry_nodes():
         friction_coefficient(x, p, h[:, :2], eta, du)
     with pytest.raises(InputError, match="p"):
         friction_coefficient(x, 0 * p, h, eta, du)
+
+
+def test_flow_field_keeps_the_memory_order_of_p():
+    """Fields stored x-fastest (Fortran order, as the EHL solver keeps them) come back so and
+    equal the C-ordered evaluation, also when h is stored the other way."""
+    oil = Lubricant(ETA0, ALPHA, eyring_stress=10e6)
+    rng = np.random.default_rng(3)
+    p = rng.uniform(0.0, 2e9, (11, 6))
+    h = rng.uniform(0.0, 1e-6, (11, 6))
+    expected = oil.flow_field(p, h, -5.0, slopes=True)
+    got = oil.flow_field(np.asfortranarray(p), h, -5.0, slopes=True)
+    for e, g in zip(expected, got, strict=True):
+        assert g.flags.f_contiguous
+        np.testing.assert_array_equal(g, e)

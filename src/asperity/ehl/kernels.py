@@ -388,8 +388,8 @@ def damp_oscillations(p, h, p_before, h_before, last_change, damping, has_last):
     of p. All arrays share one shape and are updated in place.
     """
     nx, ny = p.shape
-    for i in numba.prange(nx):
-        for j in range(ny):
+    for j in numba.prange(ny):  # x-fastest fields (asperity.ehl.solver.EHLState)
+        for i in range(nx):
             change = p[i, j] - p_before[i, j]
             if has_last and change * last_change[i, j] < 0.0:
                 change *= damping

@@ -151,30 +151,29 @@ def _sigma_y(h, eta, rho, shear):
 @numba.njit(parallel=True, cache=True)
 def _flow_field(p, h, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho, slopes,
                 dsx, dsy):
-    """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (2-D arrays), and with
-    ``slopes`` their derivatives in p at constant h into ``dsx, dsy``.
+    """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (1-D arrays, the nodes
+    in memory order), and with ``slopes`` their derivatives in p at constant h into ``dsx, dsy``.
 
     Viscosity: Roelands (``v1 = ln(eta0/kappa), v2 = chi, v3 = Z``) or Barus (``v1 = alpha``).
     Films ``h < 0`` count as 0. Chain rule: ``d sigma/dp = (sigma/rho) rho' +
     rho d(sigma/rho)/d eta eta'``.
     """
-    for i in numba.prange(p.shape[0]):
-        for j in range(p.shape[1]):
-            pij = p[i, j]
-            hij = max(h[i, j], 0.0)
-            if roelands:
-                eta, deta = _roelands_law(pij, eta0, v1, v2, v3)
-            else:
-                eta, deta = _barus_law(pij, eta0, v1)
-            r, dr = _dowson_higginson_law(pij, gamma, lam)
-            fx, dfx = _eyring_x(hij, eta, shear)
-            fy, dfy = _eyring_y(hij, eta, shear)
-            sx[i, j] = r * fx
-            sy[i, j] = r * fy
-            rho[i, j] = r
-            if slopes:
-                dsx[i, j] = fx * dr + r * dfx * deta
-                dsy[i, j] = fy * dr + r * dfy * deta
+    for k in numba.prange(p.size):
+        pk = p[k]
+        hk = max(h[k], 0.0)
+        if roelands:
+            eta, deta = _roelands_law(pk, eta0, v1, v2, v3)
+        else:
+            eta, deta = _barus_law(pk, eta0, v1)
+        r, dr = _dowson_higginson_law(pk, gamma, lam)
+        fx, dfx = _eyring_x(hk, eta, shear)
+        fy, dfy = _eyring_y(hk, eta, shear)
+        sx[k] = r * fx
+        sy[k] = r * fy
+        rho[k] = r
+        if slopes:
+            dsx[k] = fx * dr + r * dfx * deta
+            dsy[k] = fy * dr + r * dfy * deta
 
 
 def barus_viscosity(p, eta0, alpha):
@@ -386,9 +385,11 @@ class Lubricant:
         h = np.asarray(h, dtype=float)
         if h.shape != p.shape:
             raise InputError("h", f"the shape of p {p.shape}", h.shape)
-        rows = p.shape[0] if p.ndim else 1
-        shape = (rows, p.size // max(rows, 1))
-        out = [np.empty(shape if k < 3 or slopes else (0, 0)) for k in range(5)]
+        # the nodes in p's memory order (a field of the EHL solver is stored x-fastest)
+        order = "F" if p.ndim > 1 and p.flags.f_contiguous and not p.flags.c_contiguous else "C"
+        p = np.asarray(p, order=order)
+        h = np.asarray(h, order=order)
+        out = [np.empty(p.shape if k < 3 or slopes else 0, order=order) for k in range(5)]
         roelands = self.viscosity_model == "roelands"
         if roelands:
             v1 = math.log(self.viscosity / self.roelands_kappa)
@@ -397,9 +398,10 @@ class Lubricant:
             v1, v2, v3 = self.pressure_viscosity, 0.0, 0.0
         gamma, lam = (self.dh_gamma, self.dh_lambda) if self.compressible else (0.0, 0.0)
         shear = 0.0 if self.newtonian else abs(float(sliding_speed)) / self.eyring_stress
-        _flow_field(p.reshape(shape), h.reshape(shape), roelands, self.viscosity,
-                    v1, v2, v3, gamma, lam, shear, *out[:3], slopes, *out[3:])
-        return tuple(o.reshape(p.shape) for o in out[:5 if slopes else 3])
+        flat = [a.ravel(order=order) for a in (p, h, *out)]
+        _flow_field(*flat[:2], roelands, self.viscosity, v1, v2, v3, gamma, lam, shear,
+                    *flat[2:5], slopes, *flat[5:])
+        return tuple(out[:5 if slopes else 3])
 
 
 def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):

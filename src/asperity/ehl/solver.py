@@ -44,6 +44,24 @@ __all__ = ["EHLState", "SteadyResult", "solve_steady"]
 STARVED_INLET = 0.01
 
 
+class _XFastest:
+    """A nodal field of :class:`EHLState`, stored x-fastest (Fortran order) whatever is assigned.
+
+    The line sweep solves rows ``y = const`` (:func:`asperity.ehl.kernels.line_sweep`), whose
+    nodes are then contiguous in memory: on 801 x 201 nodes a rough sweep took 7.4 instead of
+    10 ms (median of 9).
+    """
+
+    def __set_name__(self, owner, name):
+        self.name = "_" + name
+
+    def __get__(self, obj, objtype=None):
+        return self if obj is None else getattr(obj, self.name)
+
+    def __set__(self, obj, value):
+        setattr(obj, self.name, np.asfortranarray(value))
+
+
 class EHLState:
     """Dimensionless state of an EHL solve on one grid (see :mod:`asperity.ehl.problem`).
 
@@ -60,7 +78,8 @@ class EHLState:
     Attributes
     ----------
     P, H : ndarray
-        Dimensionless pressure and film, indexed ``[ix, iy]``.
+        Dimensionless pressure and film, indexed ``[ix, iy]`` and stored x-fastest (like
+        ``kind``, ``rhs_t`` and ``efar``: assigned arrays are converted to Fortran order).
     H0 : float
         Dimensionless rigid separation.
     kind : ndarray of int8
@@ -72,6 +91,12 @@ class EHLState:
         Factor on the change of P and H at nodes that oscillate from sweep to sweep
         (:meth:`sweep`); 1 switches it off.
     """
+
+    P = _XFastest()
+    H = _XFastest()
+    kind = _XFastest()
+    rhs_t = _XFastest()
+    efar = _XFastest()
 
     def __init__(self, problem, x, y, near: int = 0):
         self.problem = problem
@@ -114,9 +139,9 @@ class EHLState:
         self.efar = np.zeros(shape)
         self.refreshes = 0
         self.damping = 1.0
-        self._p_before = np.empty(shape)
-        self._h_before = np.empty(shape)
-        self._last_change = np.zeros(shape)
+        self._p_before = np.empty(shape, order="F")
+        self._h_before = np.empty(shape, order="F")
+        self._last_change = np.zeros(shape, order="F")
         self._has_change = False
         self.lag_derivatives = True
         self._derivatives = None

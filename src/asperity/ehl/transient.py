@@ -314,16 +314,17 @@ def _relax_step(state, method, *, tol, max_sweeps, refresh, gain, film_scale, mi
 
 
 def _mix_vector(state, film_scale) -> np.ndarray:
-    """The iterate ``(P, H / film_scale, H0 / film_scale)`` as one vector (comparable scales)."""
-    return np.concatenate([state.P.ravel(), state.H.ravel() / film_scale,
+    """The iterate ``(P, H / film_scale, H0 / film_scale)`` as one vector (comparable scales;
+    the fields in their x-fastest memory order)."""
+    return np.concatenate([state.P.ravel(order="F"), state.H.ravel(order="F") / film_scale,
                            [state.H0 / film_scale]])
 
 
 def _set_mixed(state, v, film_scale):
     """Set (P, H, H0) from a mixed vector: p, h >= 0, p = 0 cavitated, h = 0 in contact."""
     n = state.P.size
-    state.P = np.maximum(v[:n].reshape(state.P.shape), 0.0)
-    state.H = np.maximum(v[n:2 * n].reshape(state.H.shape) * film_scale, 0.0)
+    state.P = np.maximum(v[:n].reshape(state.P.shape, order="F"), 0.0)
+    state.H = np.maximum(v[n:2 * n].reshape(state.H.shape, order="F") * film_scale, 0.0)
     state.H0 = float(v[-1]) * film_scale
     state.P[state.kind == CAVITATED] = 0.0
     state.H[state.kind == CONTACT] = 0.0
