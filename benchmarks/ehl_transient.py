@@ -4,20 +4,27 @@
    -2a..1.25a, -1.4b..1.4b at two meshes: median time and sweeps per step over the steps in
    which the roughness of both surfaces is inside the Hertz contact.
 2. ``--paper``: rough steps timed at the seed's spacing a/200 x b/50 (on a domain cut short
-   upstream so that the roughness reaches the contact in ~300 steps), scaled to the 801 x 201
-   mesh, the estimate for the paper's ~4,400 steps, and the cost of one sweep by part.
+   upstream so that the roughness reaches the contact in ~300 steps) with the solver settings
+   of the ``holmes-rough-CC-paper`` example, scaled to the 801 x 201 mesh, the estimate for
+   the paper's ~4,400 steps, and the cost of one sweep by part.
 
-Run: ``python benchmarks/ehl_transient.py [--meshes 131x29,261x57] [--paper]``.
+Like the command line, the benchmark keeps freed memory for reuse
+(:func:`asperity.memory.retain_freed_memory`); ``--default-allocator`` times without it.
+
+Run: ``python benchmarks/ehl_transient.py [--meshes 131x29,261x57] [--paper]
+[--default-allocator]``.
 """
 
 import argparse
 import inspect
 import sys
 import time
+from importlib.resources import files
 from pathlib import Path
 
 import numba
 import numpy as np
+import tomllib
 
 from asperity.ehl import solve_steady, solve_transient
 from asperity.ehl.solver import EHLState, _film_estimate
@@ -49,7 +56,14 @@ def rough_steps(nx, ny):
             int(r.sweeps[inside:].max()), int((~r.step_converged).sum()), steps)
 
 
-def paper_spacing(steps=60):
+def paper_refresh():
+    """Sweeps per far-field refresh of the built-in paper-mesh example (the benchmark times
+    the solver as that case runs it)."""
+    case = files("asperity.examples").joinpath("holmes-rough-CC-paper.toml").read_text()
+    return tomllib.loads(case)["solver"]["refresh"]
+
+
+def paper_spacing(steps=60, refresh=None):
     """Rough steps at the seed's spacing (a/200, b/50) on a domain cut short upstream.
 
     The seed's 801 x 201 mesh needs ~700 steps before the roughness reaches the contact, so
@@ -60,6 +74,7 @@ def paper_spacing(steps=60):
     sweep is linear in nx, the FFT refresh n log n).
     Also prints the cost of one sweep by part on 801 x 201.
     """
+    refresh = paper_refresh() if refresh is None else refresh
     prob = gear_case(0.25)
     a, b = prob.a, prob.b
     domain = (-1.6 * a, 1.25 * a), (-2.0 * b, 2.0 * b)
@@ -74,13 +89,14 @@ def paper_spacing(steps=60):
     inside = int(np.ceil((-a - x[0]) / (prob.u2 * dt)))
     stamps = [time.perf_counter()]
     r = solve_transient(prob, C, C, nx=nx, ny=ny, domain=domain, steady=st, warmup_steps=0,
-                        counting_steps=inside + steps,
+                        counting_steps=inside + steps, refresh=refresh,
                         callback=lambda step, res: stamps.append(time.perf_counter()))
     seconds = np.diff(stamps)[inside:]
     per_step = float(np.median(seconds)) * 801 / nx
     sweeps = r.sweeps[inside:]
     hours = PAPER_STEPS * per_step / 3600
-    print(f"seed spacing a/200 x b/50 ({nx} x {ny}, steady start {t_steady:.0f} s): "
+    print(f"seed spacing a/200 x b/50 ({nx} x {ny}, steady start {t_steady:.0f} s, "
+          f"refresh every {refresh} sweeps as holmes-rough-CC-paper): "
           f"{steps} rough steps, sweeps/step median {np.median(sweeps):.0f} (max {sweeps.max()}), "
           f"failed {int((~r.step_converged[inside:]).sum())}, "
           f"{np.median(seconds):.3f} s/step -> {per_step:.3f} s/step on 801 x 201")
