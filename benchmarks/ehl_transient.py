@@ -7,8 +7,9 @@
    upstream so that the roughness reaches the contact in ~300 steps) with the solver settings
    of the ``holmes-rough-CC-paper`` example, scaled to the 801 x 201 mesh, the estimate for
    the paper's ~4,400 steps, and the cost of one sweep by part. The estimate is optimistic:
-   on the seed's full domain a rough step takes ~27 sweeps against ~19 here, and the full
-   case ran 53 min end to end (docs/ehl-transient.md, Cost).
+   the timed steps have roughness on both surfaces only in the upstream part of the contact
+   (~19 sweeps); once it covers the contact a step takes ~27, and the full case ran 53 min
+   end to end (docs/ehl-transient.md, Cost).
 
 Like the command line, the benchmark keeps freed memory for reuse
 (:func:`asperity.memory.retain_freed_memory`); ``--default-allocator`` times without it.
