@@ -58,11 +58,6 @@ DH_LAMBDA = 1.68e-9
 """Dowson-Higginson lambda, 1/Pa."""
 
 
-def _gauge(p):
-    """Pressure as a float array with negative (cavitated) values set to zero."""
-    return np.maximum(np.asarray(p, dtype=float), 0.0)
-
-
 # The laws, once, as compiled scalar functions returning the value and its derivative (they
 # share their transcendental functions): the public functions below apply the values to arrays
 # (as ufuncs), and Lubricant.flow_field evaluates values and, on request, derivatives in one
