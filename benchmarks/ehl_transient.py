@@ -22,15 +22,15 @@ import argparse
 import inspect
 import sys
 import time
-from importlib.resources import files
 from pathlib import Path
 
 import numba
 import numpy as np
-import tomllib
 
+from asperity.cases import load_case
 from asperity.ehl import solve_steady, solve_transient
 from asperity.ehl.solver import EHLState, _film_estimate
+from asperity.examples import example_text
 from asperity.memory import retain_freed_memory
 
 sys.path.insert(0, str(Path(__file__).parent))
@@ -59,14 +59,7 @@ def rough_steps(nx, ny):
             int(r.sweeps[inside:].max()), int((~r.step_converged).sum()), steps)
 
 
-def paper_refresh():
-    """Sweeps per far-field refresh of the built-in paper-mesh example (the benchmark times
-    the solver as that case runs it)."""
-    case = files("asperity.examples").joinpath("holmes-rough-CC-paper.toml").read_text()
-    return tomllib.loads(case)["solver"]["refresh"]
-
-
-def paper_spacing(steps=60, refresh=None):
+def paper_spacing(steps=60):
     """Rough steps at the seed's spacing (a/200, b/50) on a domain cut short upstream.
 
     The seed's 801 x 201 mesh needs ~700 steps before the roughness reaches the contact, so
@@ -77,7 +70,7 @@ def paper_spacing(steps=60, refresh=None):
     sweep is linear in nx, the FFT refresh n log n).
     Also prints the cost of one sweep by part on 801 x 201.
     """
-    refresh = paper_refresh() if refresh is None else refresh
+    refresh = load_case(example_text("holmes-rough-CC-paper")).solver.refresh  # as it runs
     prob = gear_case(0.25)
     a, b = prob.a, prob.b
     domain = (-1.6 * a, 1.25 * a), (-2.0 * b, 2.0 * b)
