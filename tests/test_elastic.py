@@ -39,10 +39,13 @@ def _minimal_image(n):
 
 
 @pytest.mark.parametrize("periodic", [False, True])
-def test_fft_convolution_equals_direct_summation(periodic):
-    nx, ny, dx, dy = 7, 5, 2.0e-6, 3.0e-6
+@pytest.mark.parametrize("shape", [(7, 5), (9, 1)])
+@pytest.mark.parametrize("order", ["C", "F"])
+def test_fft_convolution_equals_direct_summation(periodic, shape, order):
+    """Also a single row (line contacts) and loads stored x-fastest (the EHL fields)."""
+    (nx, ny), dx, dy = shape, 2.0e-6, 3.0e-6
     rng = np.random.default_rng(7)
-    load = rng.uniform(0.0, 1.0, (nx, ny))
+    load = np.asarray(rng.uniform(0.0, 1.0, (nx, ny)), order=order)
 
     def kernel(X, Y):
         return love_integral(X, Y, dx, dy)
