@@ -13,6 +13,12 @@ x_i`` and the differences ``dF``, ``dG`` of the last ``m + 1`` pairs,
 
     gamma = argmin || f_k - dF gamma ||_2,      x_{k+1} = g_k - dG gamma.
 
+The dot products are compiled loops rather than ``np.dot``: numpy's ``np.dot`` of long vectors
+runs on OpenBLAS threads, which keep spinning for a while after each call; the mixer runs every
+few sweeps, so the spinning threads kept one of the solver's cores busy and slowed the compiled
+sweeps and the flow field by half (801 x 201 gear case on 2 cores: 26.1 against 17.2 ms per
+sweep).
+
 References
 ----------
 D. G. Anderson, J. ACM 12 (1965) 547-560.
@@ -21,9 +27,19 @@ H. F. Walker, P. Ni, SIAM J. Numer. Anal. 49 (2011) 1715-1735.
 
 from __future__ import annotations
 
+import numba
 import numpy as np
 
 __all__ = ["AndersonMixer"]
+
+
+@numba.njit(cache=True, fastmath={"reassoc"})
+def _dot(u, v):
+    """``u . v`` of two 1-D float arrays, on the calling thread (reassociated: vectorised)."""
+    total = 0.0
+    for i in range(u.size):
+        total += u[i] * v[i]
+    return total
 
 
 class AndersonMixer:
@@ -64,14 +80,14 @@ class AndersonMixer:
                 self._d_f.pop(0)
                 self._d_g.pop(0)
                 gram = gram[1:, 1:]
-            row = np.array([np.dot(u, self._d_f[-1]) for u in self._d_f])
+            row = np.array([_dot(u, self._d_f[-1]) for u in self._d_f])
             self._gram = np.empty((row.size, row.size))
             self._gram[:-1, :-1] = gram
             self._gram[-1] = self._gram[:, -1] = row
         self._last = (f, g)
         if not self._d_f:
             return g.copy()
-        rhs = np.array([np.dot(u, f) for u in self._d_f])
+        rhs = np.array([_dot(u, f) for u in self._d_f])
         gamma = np.linalg.lstsq(self._gram, rhs, rcond=1e-12)[0]
         out = g.copy()
         for gk, d_g in zip(gamma, self._d_g, strict=True):
