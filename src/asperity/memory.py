@@ -6,7 +6,9 @@ serves blocks of that size from the heap but returns the freed top of the heap t
 once more than ``M_TRIM_THRESHOLD`` of it is free (a few MB by default), so a new temporary
 page-faults on every page when it is first written. On the seed's gear case at its mesh
 spacing (571 x 201 nodes) that cost 16 % of a timestep (0.49 s against 0.41 s per step,
-median of 30 rough steps; docs/ehl-transient.md).
+median of 30 rough steps; docs/ehl-transient.md); measured again once the Anderson mixer no
+longer woke OpenBLAS' threads, on the 801 x 201 paper case (10 steps from step 1,900, medians
+of 5 runs alternated on a busy machine), 22.7 against 20.2 ms per sweep.
 
 :func:`retain_freed_memory` raises the trim threshold and fixes the mmap threshold (so that
 blocks up to it always come from the reusable heap). It changes the whole process, so the
