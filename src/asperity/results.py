@@ -66,6 +66,11 @@ class Outcome:
         False when a solver did not converge; the command line then exits non-zero.
     notes : list of str
         Remarks for the report (assumptions, discrepancies explained).
+    warnings : list of str
+        One line each for anything that makes the answer untrustworthy or dependent on a
+        choice of the user (a domain too small, a mesh too coarse, an inlet too short, a value
+        clipped): the quantity, its value, the limit and what to change. Written to
+        ``summary.json["warnings"]``, printed by the command line, shown in the report.
     """
 
     dataset: xr.Dataset
@@ -74,6 +79,7 @@ class Outcome:
     comparisons: list = field(default_factory=list)
     converged: bool = True
     notes: list = field(default_factory=list)
+    warnings: list = field(default_factory=list)
 
 
 def variable(dims, values, units: str, long_name: str, **attrs) -> xr.Variable:
@@ -138,7 +144,7 @@ def write_outcome(outcome: Outcome, out_dir: str | Path, figures: bool = True) -
     out.mkdir(parents=True, exist_ok=True)
     written = {"result": out / "result.nc", "summary": out / "summary.json"}
     write_netcdf(outcome.dataset, written["result"])
-    write_json(outcome.summary, written["summary"])
+    write_json({**outcome.summary, "warnings": list(outcome.warnings)}, written["summary"])
     for stem, (draw, _caption) in (outcome.figures.items() if figures else ()):
         fig = draw()
         path = out / f"{stem}.png"
