@@ -27,8 +27,11 @@ th{background:#f6f8fa} td.l,th.l{text-align:left}
 .pass{color:#1a7f37;font-weight:600} .fail{color:#cf222e;font-weight:600}
 .info{color:#57606a} figure{margin:1rem 0;display:inline-block;vertical-align:top;max-width:100%}
 figure img{max-width:520px;border:1px solid #d0d7de} figcaption{font-size:.85rem;color:#57606a;
-max-width:520px} .note{background:#fff8c5;border:1px solid #d4a72c;padding:.5rem .8rem;
+max-width:520px} .note{background:#f6f8fa;border:1px solid #d0d7de;padding:.5rem .8rem;
 border-radius:4px} .bad{background:#ffebe9;border-color:#cf222e}
+.ok{background:#dafbe1;border-color:#1a7f37}
+.warn{background:#fff1e5;border:2px solid #bc4c00;color:#762c00;padding:.5rem .8rem;
+border-radius:4px} .warn ul{margin:.3rem 0 0 0}
 pre{background:#f6f8fa;padding:.6rem;overflow:auto;font-size:.85rem}
 """
 
@@ -85,6 +88,23 @@ def _figures(outcome: Outcome, files: dict) -> str:
     return "".join(parts) or "<p class=info>No figures.</p>"
 
 
+def _status_banner(outcome: Outcome) -> str:
+    """"Converged." only when there is nothing to warn about; else the warnings, in a banner."""
+    parts = []
+    if not outcome.converged:
+        parts.append("<p class='note bad'><b>Not converged</b>: the results below are not "
+                     "trustworthy.</p>")
+    if outcome.warnings:
+        items = "".join(f"<li>{html.escape(w)}</li>" for w in outcome.warnings)
+        count = len(outcome.warnings)
+        parts.append(f"<div class=warn role=alert><b>{count} warning{'s' * (count > 1)}</b>: "
+                     f"the results below depend on choices of the case and may be wrong."
+                     f"<ul>{items}</ul></div>")
+    if not parts:
+        parts.append("<p class='note ok'>Converged.</p>")
+    return "".join(parts)
+
+
 def render_report(title: str, case: dict, outcome: Outcome, files: dict,
                   extra_html: str = "") -> str:
     """The report as an HTML string.
@@ -102,9 +122,7 @@ def render_report(title: str, case: dict, outcome: Outcome, files: dict,
     extra_html : str, optional
         Additional sections (already escaped HTML), e.g. a contact-time table.
     """
-    status = ("<p class='note'>Converged.</p>" if outcome.converged else
-              "<p class='note bad'><b>Not converged</b>: the results below are not trustworthy."
-              "</p>")
+    status = _status_banner(outcome)
     notes = "".join(f"<p class=note>{html.escape(n)}</p>" for n in outcome.notes)
     params = html.escape(json.dumps(case, indent=2, default=str))
     return f"""<!DOCTYPE html>

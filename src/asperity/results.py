@@ -4,6 +4,8 @@ Every analysis' runner returns an :class:`Outcome`; :func:`write_outcome` writes
 ``result.nc`` (CF-style: units and long names on every variable, coordinates in m),
 ``summary.json`` (scalars with unit-suffixed keys) and the figures as PNG. Each file is written
 to a temporary name in the same folder and renamed, so a killed run never leaves half a file.
+Both data files carry ``status``: ``"complete"``, or ``"partial"`` for the streamed results of
+a long run that was stopped (:func:`mark_partial`), and the run's warnings.
 """
 
 from __future__ import annotations
@@ -19,7 +21,8 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-__all__ = ["Comparison", "Outcome", "atomic_path", "write_outcome", "write_json", "variable"]
+__all__ = ["Comparison", "Outcome", "atomic_path", "mark_partial", "write_outcome", "write_json",
+           "variable"]
 
 
 @dataclass(frozen=True)
@@ -143,8 +146,11 @@ def write_outcome(outcome: Outcome, out_dir: str | Path, figures: bool = True) -
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = {"result": out / "result.nc", "summary": out / "summary.json"}
-    write_netcdf(outcome.dataset, written["result"])
-    write_json({**outcome.summary, "warnings": list(outcome.warnings)}, written["summary"])
+    status = {"status": "complete", "warnings": list(outcome.warnings)}
+    write_netcdf(outcome.dataset.assign_attrs(status="complete",
+                                              warnings="\n".join(outcome.warnings)),
+                 written["result"])
+    write_json({**outcome.summary, **status}, written["summary"])
     for stem, (draw, _caption) in (outcome.figures.items() if figures else ()):
         fig = draw()
         path = out / f"{stem}.png"
@@ -153,3 +159,42 @@ def write_outcome(outcome: Outcome, out_dir: str | Path, figures: bool = True) -
         plt.close(fig)
         written[stem] = path
     return written
+
+
+def mark_partial(out_dir: str | Path, stopped_at: str, command: str) -> int | None:
+    """Record in ``summary.json`` that a run was stopped; return the steps its results hold.
+
+    Long runs stream their statistics to ``result.nc`` with ``status = "partial"`` and the
+    ``steps_done`` they cover. This writes ``summary.json`` with ``status = "partial"``, where
+    the run stopped and the ``command`` that continues it. Without a partial ``result.nc``
+    nothing was saved: the summary then says ``status = "interrupted"``.
+
+    Parameters
+    ----------
+    out_dir : path
+        The run's output folder.
+    stopped_at : str
+        Where the run was when it stopped (the progress description, e.g. a step).
+    command : str
+        The command line that continues the run (or starts it again).
+
+    Returns
+    -------
+    int or None
+        The steps the partial results cover, or None when there are none.
+    """
+    out = Path(out_dir)
+    steps = None
+    try:
+        with xr.open_dataset(out / "result.nc", engine="h5netcdf") as ds:
+            if ds.attrs.get("status") == "partial":
+                steps = int(ds.attrs.get("steps_done", 0))
+    except (OSError, ValueError):
+        steps = None
+    summary = {"status": "interrupted" if steps is None else "partial", "stopped_at": stopped_at,
+               "steps_done": steps, "continue_with": command, "warnings": [
+                   f"the run was stopped at {stopped_at}; "
+                   + ("nothing was saved" if steps is None else
+                      f"result.nc holds the statistics of the first {steps} steps only")]}
+    write_json(summary, out / "summary.json")
+    return steps

@@ -1,13 +1,20 @@
 """Commands of ``asperity``: run, examples, example (and the sub-apps mounted below).
 
 The command line only parses arguments, loads cases, calls runners and writers, and prints.
-Bad input ends with one line ``error: <field>: expected ...`` on stderr and exit code 2; a solver
-that did not converge ends with exit code 3 after its files are written. Warnings of the library
-(e.g. an EHL inlet inside the pressure build-up) are one line ``warning: ...`` on stderr.
+Bad input (a case file, an option, an output folder that cannot be written) ends with one line
+``error: <field>: expected ...`` on stderr and exit code 2; a solver that did not converge ends
+with exit code 3 after its files are written. Every warning of a run (``Outcome.warnings``: a
+domain too small, a mesh too coarse, an inlet too short, ...) is one line ``warning: ...`` on
+stderr; ``run --strict`` makes them exit code 3. Ctrl-C or SIGTERM during a run prints one line
+saying where it stopped, where the partial results are and how to continue, and exits with
+128 + the signal number.
 """
 
 from __future__ import annotations
 
+import os
+import shlex
+import signal
 import sys
 import warnings
 from pathlib import Path
@@ -27,6 +34,8 @@ err_console = Console(stderr=True)
 
 EXIT_BAD_INPUT = 2
 EXIT_NOT_CONVERGED = 3
+#: ``run --strict`` with warnings exits with this code too (the answer is not to be trusted).
+EXIT_WARNINGS = 3
 
 
 def fail(message: str, code: int = EXIT_BAD_INPUT):
@@ -36,7 +45,8 @@ def fail(message: str, code: int = EXIT_BAD_INPUT):
 
 
 def guarded(fn):
-    """Run ``fn``; turn an InputError into one line and exit code 2."""
+    """Run ``fn``; turn bad input, an unreadable or unwritable file, or exhausted memory into
+    one line and exit code 2."""
     import functools
 
     @functools.wraps(fn)
@@ -45,8 +55,55 @@ def guarded(fn):
             return fn(*args, **kwargs)
         except InputError as exc:
             fail(str(exc))
+        except OSError as exc:
+            name = exc.filename if exc.filename is not None else "file"
+            fail(f"{name}: {exc.strerror or exc}")
+        except MemoryError:
+            fail("memory: the case needs more memory than this machine has; use fewer cells")
 
     return wrapper
+
+
+class Interrupted(Exception):
+    """Raised in the main thread by SIGINT or SIGTERM during a run."""
+
+    def __init__(self, signum: int):
+        super().__init__(signal.Signals(signum).name)
+        self.signum = signum
+
+
+def _raise_interrupted(signum, _frame):
+    raise Interrupted(signum)
+
+
+def _check_case_file(path: Path) -> None:
+    """Fail unless ``path`` is a readable UTF-8 text file (binary, UTF-16, a folder: no)."""
+    if path.is_dir():
+        raise InputError("case", "a TOML case file, not a folder", str(path))
+    if not path.is_file():
+        return  # load_case names the missing file
+    data = path.read_bytes()
+    if b"\x00" in data:
+        raise InputError("case", "a UTF-8 TOML text file (this one is binary or UTF-16)",
+                         str(path))
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError("case", f"a UTF-8 TOML text file (byte {exc.start} is not UTF-8)",
+                         str(path)) from None
+
+
+def _check_out_dir(out: Path) -> None:
+    """Fail unless ``out`` is (or can be made) a folder this process can write into."""
+    if out.exists() and not out.is_dir():
+        raise InputError("--out", "a folder (this is an existing file)", str(out))
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError("--out", f"a folder that can be created ({exc.strerror})",
+                         str(out)) from None
+    if not os.access(out, os.W_OK | os.X_OK):
+        raise InputError("--out", "a folder this user can write into", str(out))
 
 
 @app.command()
@@ -59,6 +116,8 @@ def run(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
     resume: Annotated[bool, typer.Option("--resume", help="Continue a checkpointed long run "
                                                           "(transient EHL) in OUT.")] = False,
+    strict: Annotated[bool, typer.Option("--strict", help="Exit with code 3 when the run has "
+                                                          "warnings.")] = False,
 ):
     """Run a case: write result.nc, summary.json, figures and report.html to OUT."""
     from ..cases import load_case
@@ -71,18 +130,56 @@ def run(
     if case is None:
         case = DEFAULT_EXAMPLE
     is_file = case.endswith(".toml") or Path(case).is_file()
+    if is_file:
+        _check_case_file(Path(case))
     model = load_case(Path(case) if is_file else example_text(case))
+    _check_out_dir(out)
     console.print(f"[bold]{model.title}[/bold] ({model.analysis})")
-    with progress_bar(console, disable=quiet) as progress:
-        outcome = run_case(model, progress=progress, workdir=out, resume=resume)
+    where = {"description": "the start"}
+    handlers = {sig: signal.signal(sig, _raise_interrupted)
+                for sig in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        with progress_bar(console, disable=quiet) as progress:
+            def tracked(done, total=None, description=None):
+                where["description"] = description or f"step {done}"
+                progress(done, total, description)
+
+            outcome = run_case(model, progress=tracked, workdir=out, resume=resume)
+    except Interrupted as exc:
+        _stopped(exc, where["description"], case, out, quiet)
+    finally:
+        for sig, handler in handlers.items():
+            signal.signal(sig, handler)
     files = write_outcome(outcome, out)
     files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
                                    outcome, files,
                                    Path(out) / "report.html")
     _print_summary(outcome.summary)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
+    for line in outcome.warnings:
+        err_console.print(f"warning: {line}", markup=False, highlight=False, soft_wrap=True)
     if not outcome.converged:
         fail("the solver did not converge; see report.html", EXIT_NOT_CONVERGED)
+    if outcome.warnings and strict:
+        fail(f"{len(outcome.warnings)} warning(s) and --strict; see report.html", EXIT_WARNINGS)
+    if not outcome.warnings:
+        console.print("Converged.")
+
+
+def _stopped(exc: Interrupted, where: str, case: str, out: Path, quiet: bool):
+    """Say where an interrupted run stopped and how to go on; mark its files partial; exit."""
+    from ..results import mark_partial
+
+    again = ["asperity", "run", case, "--out", str(out)] + (["--quiet"] if quiet else [])
+    steps = mark_partial(out, where, " ".join(map(shlex.quote, again + ["--resume"])))
+    if steps is None:
+        message = (f"{exc} at {where}: no partial results were saved yet; start again with: "
+                   f"{shlex.join(again)}")
+    else:
+        message = (f"{exc} at {where}: partial results (up to step {steps}) are in {out}/; "
+                   f"continue with: {shlex.join(again + ['--resume'])}")
+    err_console.print(f"stopped: {message}", markup=False, highlight=False, soft_wrap=True)
+    raise typer.Exit(128 + exc.signum)
 
 
 def _print_summary(summary: dict) -> None:
@@ -140,6 +237,10 @@ def validate(
     from ..validation import run_checks
 
     rows = run_checks(select, slow=slow)
+    if not rows:
+        hint = "" if slow else " (the paper-mesh checks need --slow)"
+        raise InputError("--select", "", select,
+                         problem=f"no check name contains it{hint}; 0 checks run")
     failed = [r for _, r in rows if r.passed is False]
     if as_json:
         sys.stdout.write(json.dumps([

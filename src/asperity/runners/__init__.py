@@ -7,6 +7,7 @@ figures and reference comparisons. They never read case files or write output fi
 
 from __future__ import annotations
 
+import warnings
 from importlib import import_module
 
 __all__ = ["RUNNERS", "run_case"]
@@ -35,8 +36,25 @@ def run_case(case, progress=None, *, workdir=None, resume=False):
         module sets ``CHECKPOINTS = True``); others ignore it.
     resume : bool
         Continue a checkpointed run from ``workdir``.
+
+    Notes
+    -----
+    Warnings the library issues during the run (``warnings.warn``) join the Outcome's
+    ``warnings``, so that they reach summary.json and the report; numpy's floating-point
+    warnings are shown as usual.
     """
     module = import_module(f".{RUNNERS[case.analysis]}", __name__)
-    if getattr(module, "CHECKPOINTS", False):
-        return module.run(case, progress=progress, workdir=workdir, resume=resume)
-    return module.run(case, progress=progress)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        if getattr(module, "CHECKPOINTS", False):
+            outcome = module.run(case, progress=progress, workdir=workdir, resume=resume)
+        else:
+            outcome = module.run(case, progress=progress)
+    for w in caught:
+        message = str(w.message)
+        numeric = " encountered in " in message
+        if issubclass(w.category, DeprecationWarning | FutureWarning) or numeric:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+        elif message not in outcome.warnings:
+            outcome.warnings.append(message)
+    return outcome

@@ -104,7 +104,7 @@ def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
          "max_pressure": variable("step", max_p, "Pa", "maximum pressure per step")},
         coords={"x": variable("x", x, "m", "x"), "y": variable("y", y, "m", "y"),
                 "step": variable("step", np.arange(1, max_p.size + 1), "1", "time step")},
-        attrs={"analysis": "ehl-transient", "partial": 1, "steps_done": done,
+        attrs={"analysis": "ehl-transient", "partial": 1, "status": "partial", "steps_done": done,
                "counting_steps_done": steps})
 
 
