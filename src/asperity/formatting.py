@@ -1,0 +1,298 @@
+"""Quantities as people read them: ``1.0464e9`` Pa -> ``"1.046 GPa"``.
+
+Everything inside asperity is SI; this module is the other edge of :mod:`asperity.units`. It
+chooses a readable unit for a value (GPa, MPa, um, nm, %, 1/ms), prints a few significant
+digits without float noise (``0.019100000000000002`` -> ``0.0191``; zero as ``0``), puts an
+imperial value beside the SI one when the case was given in imperial units, and turns the
+unit-suffixed keys of ``summary.json`` (``max_pressure_pa``) into words and a unit
+(``maximum pressure``, Pa). Conversions go through the shared pint registry.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from .units import registry
+
+__all__ = [
+    "SummaryRow",
+    "describe_key",
+    "format_number",
+    "format_quantity",
+    "given_in_imperial",
+    "summary_rows",
+    "unit_label",
+]
+
+#: SI unit (pint expression) -> readable units to choose from, largest first: (pint, label[,
+#: smallest magnitude shown in it, default 1]).
+_SI_CHOICES = {
+    "Pa": (("GPa", "GPa"), ("MPa", "MPa"), ("kPa", "kPa"), ("Pa", "Pa")),
+    "m": (("m", "m"), ("mm", "mm"), ("um", "µm"), ("nm", "nm")),
+    "m^2": (("m^2", "m²"), ("mm^2", "mm²"), ("um^2", "µm²")),
+    "N": (("MN", "MN"), ("kN", "kN"), ("N", "N"), ("mN", "mN")),
+    "N/m": (("MN/m", "MN/m"), ("kN/m", "kN/m"), ("N/m", "N/m")),
+    "N*m": (("kN*m", "kN m"), ("N*m", "N m"), ("N*mm", "N mm")),
+    "J": (("kJ", "kJ"), ("J", "J"), ("mJ", "mJ"), ("uJ", "µJ")),
+    "s": (("s", "s"), ("ms", "ms"), ("us", "µs"), ("ns", "ns")),
+    "m/s": (("m/s", "m/s"), ("mm/s", "mm/s")),
+    "rad": (("rad", "rad"), ("mrad", "mrad"), ("urad", "µrad")),
+    "Pa*s": (("Pa*s", "Pa s"), ("mPa*s", "mPa s")),
+    "1/Pa": (("1/GPa", "1/GPa"),),
+    "Hz": (("MHz", "MHz"), ("kHz", "kHz"), ("Hz", "Hz")),
+    "kg/m^3": (("kg/m^3", "kg/m³"),),
+    "kg": (("kg", "kg"), ("g", "g")),
+    "1/ms": (("1/ms", "1/ms"),),
+    "%": (("percent", "%"),),
+}
+
+#: SI unit -> imperial units to choose from, largest first.
+_IMPERIAL_CHOICES = {
+    "Pa": (("psi", "psi"),),
+    "m": (("in", "in", 0.01), ("microinch", "µin")),
+    "m^2": (("in^2", "in²"),),
+    "N": (("lbf", "lbf"),),
+    "N/m": (("lbf/in", "lbf/in"),),
+    "N*m": (("lbf*in", "lbf in"),),
+    "J": (("lbf*in", "in lbf"),),
+    "m/s": (("ft/s", "ft/s"),),
+}
+
+#: How unit strings written elsewhere in asperity (CF attributes, Comparison.unit) are read.
+_ALIASES = {"m2": "m^2", "m^2": "m^2", "N m": "N*m", "N*m": "N*m", "ms-1": "1/ms",
+            "1/ms": "1/ms", "m s-1": "m/s", "m/s": "m/s", "Pa s": "Pa*s", "Pa-1": "1/Pa",
+            "percent": "%", "%": "%"}
+
+#: Unit suffixes of summary keys, longest first.
+_SUFFIXES = (("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "m/s"), ("_pa_s", "Pa*s"),
+             ("_m2", "m^2"), ("_nm", "N*m"), ("_pa", "Pa"), ("_rad", "rad"), ("_hz", "Hz"),
+             ("_j", "J"), ("_n", "N"), ("_m", "m"), ("_s", "s"))
+
+#: Words of summary keys written out (whole words only).
+_WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
+          "nijenbanning": "Nijenbanning", "dowson": "Dowson", "higginson": "Higginson",
+          "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
+          "b": "b", "x": "x", "y": "y"}
+
+#: Labels of summary keys that words alone would not make clear (key without its suffix).
+_LABELS = {
+    "hertz_a": "Hertz semi-axis a (along x)",
+    "hertz_b": "Hertz semi-axis b (along y)",
+    "minimum_film_thickness_centreline": "minimum film thickness on the centre line",
+    "load_error": "load error (relative)",
+    "moment": "twisting moment",
+    "u1": "surface speed u1",
+    "u2": "surface speed u2",
+    "residual": "residual (relative)",
+    "steps_converged_fraction": "steps converged",
+    "contact_time_fraction": "contact time",
+    "friction_coefficient": "friction coefficient",
+    "load_capacity": "load / friction capacity",
+}
+
+_IMPERIAL_WORDS = {"inch", "microinch", "foot", "yard", "mile", "pound", "kip", "thou", "ounce",
+                   "fahrenheit", "poundal", "slug"}
+
+
+def format_number(value, digits: int = 4) -> str:
+    """A number with ``digits`` significant digits and no float noise.
+
+    Integers print whole; zero prints as ``0``; numbers below 1e-3 or from 1e6 on print as
+    ``1.235×10⁻⁸``; trailing zeros are dropped (``962.0`` -> ``962``); NaN and infinity print
+    as ``n/a``.
+
+    Parameters
+    ----------
+    value : float or int
+    digits : int
+        Significant digits kept.
+
+    Returns
+    -------
+    str
+    """
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    value = float(value)
+    if not math.isfinite(value):
+        return "n/a"
+    if value == 0.0:
+        return "0"
+    rounded = float(f"{value:.{digits}g}")
+    exponent = math.floor(math.log10(abs(rounded)))
+    if -3 <= exponent < 6:
+        text = f"{rounded:.{max(digits - 1 - exponent, 0)}f}"
+        return _strip(text) if "." in text else text
+    mantissa = _strip(f"{rounded / 10.0**exponent:.{digits - 1}f}")
+    power = str(exponent).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    return f"10{power}" if mantissa == "1" else f"{mantissa}×10{power}"
+
+
+def _strip(text: str) -> str:
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
+def unit_label(unit: str) -> str:
+    """A unit as printed: ``"m^2"`` -> ``"m²"``, ``"N*m"`` -> ``"N m"``, ``"ms-1"`` ->
+    ``"1/ms"``, ``"1"`` -> ``""``."""
+    unit = _ALIASES.get(unit, unit)
+    if unit in ("", "1"):
+        return ""
+    return unit.replace("^2", "²").replace("^3", "³").replace("*", " ")
+
+
+def _convert(value: float, si_unit: str, choices) -> tuple[float, str]:
+    """``value`` (in ``si_unit``) in the first of ``choices`` where it reads at least the
+    choice's smallest magnitude; zero in the SI unit itself where it is a choice."""
+    base = registry().Quantity(value, "percent" if si_unit == "%" else si_unit)
+    if value == 0:
+        choices = [c for c in choices if c[0] == si_unit] or choices[-1:]
+    for pint_unit, label, *smallest in choices:
+        converted = float(base.to(pint_unit).magnitude)
+        if abs(converted) >= (smallest[0] if smallest else 1.0):
+            return converted, label
+    return converted, label
+
+
+def format_quantity(value, unit: str = "", *, imperial: bool = False, digits: int = 4) -> str:
+    """A value in SI ``unit`` as a readable string in a well-chosen unit.
+
+    Parameters
+    ----------
+    value : float or int
+        The value in the SI unit ``unit``.
+    unit : str
+        Its SI unit as written in asperity: ``"Pa"``, ``"m"``, ``"m^2"`` (or ``"m2"``),
+        ``"N"``, ``"N*m"`` (or ``"N m"``), ``"1/ms"`` (or ``"ms-1"``), ``"%"``, ``""`` ...
+    imperial : bool
+        Add the imperial value in parentheses where one exists (``"9.608 kN (2160 lbf)"``).
+    digits : int
+        Significant digits.
+
+    Returns
+    -------
+    str
+        E.g. ``"1.046 GPa"``, ``"336.4 µm"``, ``"0 N"``, ``"38.54 %"``.
+
+    Examples
+    --------
+    >>> format_quantity(1.0464e9, "Pa")
+    '1.046 GPa'
+    >>> format_quantity(9608.1, "N", imperial=True)
+    '9.608 kN (2160 lbf)'
+    """
+    unit = _ALIASES.get(unit, unit)
+    if isinstance(value, bool) or not isinstance(value, int | float) or (
+            isinstance(value, float) and not math.isfinite(value)):
+        return format_number(value) if isinstance(value, int | float) else str(value)
+    choices = _SI_CHOICES.get(unit)
+    if choices is None:
+        number = format_number(value, digits)
+        label = unit_label(unit)
+        return f"{number} {label}" if label else number
+    converted, label = _convert(value, unit, choices)
+    text = f"{format_number(converted, digits)} {label}"
+    if imperial and unit in _IMPERIAL_CHOICES:
+        converted, label = _convert(value, unit, _IMPERIAL_CHOICES[unit])
+        text += f" ({format_number(converted, digits)} {label})"
+    return text
+
+
+def describe_key(key: str) -> tuple[str, str]:
+    """Words and SI unit of a summary key: ``"max_pressure_pa"`` -> ``("maximum pressure",
+    "Pa")``; a key ending in ``fraction`` is shown in percent.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``summary.json`` (its unit, if any, is the suffix: ``_pa``, ``_m``, ``_m2``,
+        ``_n``, ``_nm`` (N m), ``_m_s``, ``_s``, ``_rad``, ``_j``, ``_percent``, ``_per_ms``).
+
+    Returns
+    -------
+    (str, str)
+        The label and the unit (``""`` when dimensionless).
+    """
+    stem, unit = key, ""
+    for suffix, si in _SUFFIXES:
+        if key.endswith(suffix) and len(key) > len(suffix):
+            stem, unit = key[: -len(suffix)], si
+            break
+    if not unit and stem.endswith("fraction"):
+        unit = "%"
+    label = _LABELS.get(stem) or " ".join(_WORDS.get(w, w) for w in stem.split("_"))
+    return label, unit
+
+
+@dataclass(frozen=True)
+class SummaryRow:
+    """One line of a key-results table: the key, its label, unit and formatted value."""
+
+    key: str
+    label: str
+    unit: str
+    text: str
+
+
+def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
+    """The scalars of a summary as labelled, formatted rows (lists and tables are skipped).
+
+    Values of keys ending in ``fraction`` are shown in percent.
+
+    Parameters
+    ----------
+    summary : dict
+        ``Outcome.summary``.
+    imperial : bool
+        Put imperial values beside SI.
+
+    Returns
+    -------
+    list of SummaryRow
+    """
+    rows = []
+    for key, value in summary.items():
+        if isinstance(value, dict | list | tuple) or value is None:
+            continue
+        label, unit = describe_key(key)
+        if isinstance(value, str):
+            text = value
+        else:
+            if unit == "%" and key.endswith("fraction") and not isinstance(value, bool):
+                value = 100.0 * value
+            text = format_quantity(value, unit, imperial=imperial)
+        rows.append(SummaryRow(key, label, unit_label(unit), text))
+    return rows
+
+
+def given_in_imperial(data) -> bool:
+    """Whether a raw case (parsed TOML) gives any quantity in imperial or US units.
+
+    Parameters
+    ----------
+    data : dict, list or str
+        The case as read from its file, before validation.
+
+    Returns
+    -------
+    bool
+        True when some string value parses as a quantity in inches, feet, pounds, psi, ...
+    """
+    if isinstance(data, dict):
+        return any(given_in_imperial(v) for v in data.values())
+    if isinstance(data, list):
+        return any(given_in_imperial(v) for v in data)
+    if not isinstance(data, str) or not re.match(r"\s*[-+]?\.?\d", data):
+        return False
+    try:
+        quantity = registry().Quantity(data.strip())
+    except Exception:  # pint raises many kinds on text that is not a quantity
+        return False
+    if not hasattr(quantity, "unit_items"):  # a bare number
+        return False
+    words = {w for name, _power in quantity.unit_items() for w in name.lower().split("_")}
+    return bool(words & _IMPERIAL_WORDS)
