@@ -12,14 +12,13 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import tempfile
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
+
+from .atomic import atomic_path
 
 __all__ = ["Comparison", "Outcome", "atomic_path", "mark_partial", "write_outcome", "write_json",
            "variable"]
@@ -89,24 +88,6 @@ def variable(dims, values, units: str, long_name: str, **attrs) -> xr.Variable:
     """An xarray Variable with CF ``units`` and ``long_name`` attributes."""
     return xr.Variable(dims, np.asarray(values), attrs={"units": units, "long_name": long_name,
                                                          **attrs})
-
-
-@contextmanager
-def atomic_path(path: str | Path):
-    """Yield a temporary path next to ``path``; rename it onto ``path`` if the block succeeds."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the usual permissions
-    try:
-        yield Path(tmp)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
 
 
 def _jsonable(value):

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import atomic_path
 from ..errors import InputError
 
 __all__ = ["fingerprint", "load_checkpoint", "save_checkpoint"]
@@ -33,8 +34,6 @@ def fingerprint(*parts) -> str:
 
 def save_checkpoint(path, key: str, arrays: dict) -> Path:
     """Write ``arrays`` and the fingerprint ``key`` to ``path`` atomically; return the path."""
-    from ..results import atomic_path
-
     path = Path(path)
     with atomic_path(path) as tmp, open(tmp, "wb") as fh:
         np.savez(fh, fingerprint=np.array(key), **arrays)
