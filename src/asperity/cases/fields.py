@@ -62,9 +62,11 @@ def _converter(dimension: str):
 def Quantity(dimension: str, **constraints):  # noqa: N802 - reads as a type in annotations
     """An annotated float field measured in ``dimension`` (a key of ``units.DIMENSIONS``).
 
-    Keyword constraints (``gt``, ``ge``, ``lt``, ``le``) apply to the SI value.
+    Keyword constraints (``gt``, ``ge``, ``lt``, ``le``) apply to the SI value. The dimension is
+    kept in the field's JSON-schema extra (``{"dimension": ...}``) for the key reference.
     """
-    return Annotated[float, BeforeValidator(_converter(dimension)), Field(**constraints)]
+    return Annotated[float, BeforeValidator(_converter(dimension)),
+                     Field(json_schema_extra={"dimension": dimension}, **constraints)]
 
 
 Length = Quantity("length")
