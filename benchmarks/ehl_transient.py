@@ -33,7 +33,8 @@ import numpy as np
 
 from asperity.cases import load_case
 from asperity.ehl import solve_steady, solve_transient
-from asperity.ehl.solver import EHLState, _film_estimate
+from asperity.ehl.nodal import film_estimate
+from asperity.ehl.solver import EHLState
 from asperity.examples import example_text
 from asperity.memory import retain_freed_memory
 from asperity.runners import run_case
@@ -106,7 +107,7 @@ def paper_spacing(steps=60):
     x, y = prob.grid(801, 201, None)
     near = inspect.signature(solve_transient).parameters["near"].default
     state = EHLState(prob, x, y, near=near)  # the transient solver's default
-    state.hertz_start(_film_estimate(prob) / prob.film_scale)
+    state.hertz_start(film_estimate(prob) / prob.film_scale)
     parts = {}
     coefficients = state.flow_coefficients
     for name, fun in (("flow factors", coefficients),

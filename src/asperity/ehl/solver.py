@@ -31,9 +31,11 @@ from ..elastic.differential import (
 )
 from ..elastic.kernels import love_integral
 from ..errors import InputError, check_int, check_positive
-from . import formulas
 from .kernels import damp_oscillations, line_sweep, point_sweep
 from .lubricant import friction_coefficient
+from .nodal import at_centre as _at_centre
+from .nodal import centre_line as _centre_line
+from .nodal import film_estimate as _film_estimate
 from .problem import LineContact, PointContact
 
 __all__ = ["EHLState", "SteadyResult", "solve_steady"]
@@ -313,19 +315,6 @@ def _bilinear(xc, yc, field, x, y):
     return np.array([np.interp(y, yc, tmp[i]) for i in range(tmp.shape[0])])
 
 
-def _at_centre(state: EHLState, field) -> float:
-    """Value of a nodal field at the Hertz centre (0, 0), bilinear."""
-    row = np.array([np.interp(0.0, state.X, field[:, j]) for j in range(field.shape[1])])
-    return float(row[0]) if state.line else float(np.interp(0.0, state.Y, row))
-
-
-def _centre_line(state: EHLState, field) -> np.ndarray:
-    """A nodal field along y = 0 (linear interpolation between rows)."""
-    if state.line:
-        return field[:, 0]
-    return np.array([np.interp(0.0, state.Y, field[i]) for i in range(field.shape[0])])
-
-
 @dataclass(frozen=True)
 class SteadyResult:
     """Steady EHL solution, SI units.
@@ -577,20 +566,6 @@ def check_damping(value) -> float:
             or not 0.0 < value <= 1.0:
         raise InputError("damping", "a factor 0 < damping <= 1", value)
     return float(value)
-
-
-def _film_estimate(problem) -> float:
-    """Central film of the Hertzian start, m: Moes (line) or Nijenbanning (point).
-
-    Nijenbanning's fit covers ``ry >= rx``; for ``ry < rx`` it is evaluated at ``ry = rx``,
-    which is good enough for a start value.
-    """
-    lub = problem.lubricant
-    args = (problem.mean_speed, lub.viscosity, lub.pressure_viscosity, problem.reduced_modulus)
-    if isinstance(problem, LineContact):
-        return formulas.moes_line(problem.load_per_length, problem.radius, *args).central
-    ry = max(problem.ry, problem.rx)
-    return formulas.nijenbanning_point(problem.load, problem.rx, ry, *args).central
 
 
 def _result(state, converged, residual, sweeps, total, history, grids, method, mu_b):

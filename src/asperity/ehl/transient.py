@@ -41,14 +41,8 @@ from ..surfaces.topography import Profile, Topography
 from .anderson import AndersonMixer
 from .checkpoint import fingerprint, load_checkpoint, save_checkpoint
 from .kernels import CAVITATED, CONTACT
-from .solver import (
-    EHLState,
-    _centre_line,
-    _film_estimate,
-    check_contact_and_method,
-    check_damping,
-    solve_steady,
-)
+from .nodal import centre_line, film_estimate
+from .solver import EHLState, check_contact_and_method, check_damping, solve_steady
 from .statistics import ContactStatistics, flow_vectors, hertz_mask
 
 __all__ = ["TransientResult", "default_warmup_steps", "solve_transient"]
@@ -499,7 +493,7 @@ def solve_transient(
             z[k] = surface.heights(t)
         return z
 
-    film_ref = _film_estimate(problem)
+    film_ref = film_estimate(problem)
     contact_film = tol * film_ref if contact_film is None else float(contact_film)
     if not contact_film >= 0.0:
         raise InputError("contact_film", "a film thickness >= 0 in m", contact_film)
@@ -594,7 +588,7 @@ def solve_transient(
         if hit.size:
             for name, field in (("centre_pressure", p), ("centre_film", h),
                                 ("centre_surface1", z1), ("centre_surface2", z2)):
-                centre[name][hit[0]] = _centre_line(state, field)
+                centre[name][hit[0]] = centre_line(state, field)
         steps_done = step
         finite = np.isfinite(res)
         if finite and checkpoint is not None and (step % checkpoint_every == 0
