@@ -52,7 +52,12 @@ import numpy as np
 import scipy.fft as sfft
 from scipy import ndimage, optimize
 
-from ..elastic import Convolution, grid_spacing, tangential_influence
+from ..elastic import (
+    Convolution,
+    grid_spacing,
+    periodic_tangential_spectra,
+    tangential_influence,
+)
 from ..errors import InputError, check_finite
 from ..materials import Material, coupling_compliance
 
@@ -104,20 +109,26 @@ class TangentialOperator:
 
 @lru_cache(maxsize=8)
 def _operator(nx, ny, dx, dy, body1, body2, periodic):
-    influence = {}  # the Cerruti integrals, evaluated once on the FFT grid for all components
-
-    def component_of(name):
-        def coefficient(X, Y):
-            if "all" not in influence:
-                influence["all"] = tangential_influence(X, Y, dx, dy, body1, body2)
-            return getattr(influence["all"], name)
-        return coefficient
-
-    def conv(component):
-        return Convolution.from_coefficients(component_of(component), dx, dy, (nx, ny),
-                                             periodic)
-
     coupled = coupling_compliance(body1, body2) != 0.0
+    if periodic:
+        spectra = periodic_tangential_spectra((nx, ny), dx, dy, body1, body2)
+
+        def conv(component):
+            return Convolution(getattr(spectra, component), (nx, ny), True)
+    else:
+        influence = {}  # the Cerruti integrals, evaluated once on the FFT grid for all components
+
+        def component_of(name):
+            def coefficient(X, Y):
+                if "all" not in influence:
+                    influence["all"] = tangential_influence(X, Y, dx, dy, body1, body2)
+                return getattr(influence["all"], name)
+            return coefficient
+
+        def conv(component):
+            return Convolution.from_coefficients(component_of(component), dx, dy, (nx, ny),
+                                                 False)
+
     return TangentialOperator(conv("xx"), conv("xy"), conv("yy"),
                               conv("xz") if coupled else None, conv("yz") if coupled else None)
 
@@ -126,7 +137,9 @@ def tangential_operator(x, y, body1: Material, body2: Material, periodic: bool =
     """The cached :class:`TangentialOperator` for the cell-centre coordinates ``x``, ``y``.
 
     Non-periodic: exact uniform-traction (Cerruti) cells with zero padding (DC-FFT). Periodic:
-    the same cell coefficients at minimal-image offsets (truncated at half the period).
+    the periodic half-space, i.e. the exact response to every traction mode of the grid
+    (:func:`asperity.elastic.periodic_tangential_spectra`: all periodic images, mean mode
+    removed), the continuum model of the periodic normal operator.
     """
     dx, dy = grid_spacing(x, "x"), grid_spacing(y, "y")
     return _operator(len(x), len(y), dx, dy, body1, body2, bool(periodic))
@@ -510,7 +523,10 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
         State of the previous load step on the same grid (history: unloading, reversal). The
         new load is reached from it; shift and rotation are then totals. None: virgin contact.
     periodic : bool
-        Periodic half-space (for comparisons with periodic codes).
+        Periodic half-space (a representative cell of a rough interface; comparisons with
+        periodic codes): the exact response to every traction mode of the cell
+        (:func:`tangential_operator`). Displacements are then measured from their mean, and
+        so is ``shift`` (the mean displacement under a net force is unbounded).
     max_iter : int, optional
         Iteration limit (default ``100 + 20 max(nx, ny)``).
     rotation : {"free", "fixed"}

@@ -6,6 +6,7 @@ from .convolution import (
     normal_operator,
     padded_shape,
     periodic_halfspace_spectrum,
+    periodic_tangential_spectra,
 )
 from .differential import differential_coefficients, line_differential_coefficients
 from .kernels import (
@@ -14,6 +15,7 @@ from .kernels import (
     love_integral,
     normal_influence,
     tangential_influence,
+    tangential_transfer,
 )
 
 __all__ = [
@@ -27,5 +29,7 @@ __all__ = [
     "normal_operator",
     "padded_shape",
     "periodic_halfspace_spectrum",
+    "periodic_tangential_spectra",
     "tangential_influence",
+    "tangential_transfer",
 ]

@@ -22,7 +22,7 @@ import scipy.fft as sfft
 
 from ..errors import InputError
 from ..materials import Material, contact_modulus
-from .kernels import love_integral
+from .kernels import TangentialInfluence, love_integral, tangential_transfer
 
 __all__ = [
     "Convolution",
@@ -30,6 +30,7 @@ __all__ = [
     "normal_operator",
     "padded_shape",
     "periodic_halfspace_spectrum",
+    "periodic_tangential_spectra",
 ]
 
 
@@ -141,6 +142,40 @@ def periodic_halfspace_spectrum(shape, dx: float, dy: float, modulus: float) -> 
     with np.errstate(divide="ignore"):
         g = np.where(q > 0, 2.0 / (modulus * q), 0.0)
     return g
+
+
+def periodic_tangential_spectra(shape, dx: float, dy: float, body1: Material,
+                                body2: Material) -> TangentialInfluence:
+    """rfft2-layout spectra of the periodic Cerruti half-space (two bodies, relative), m/Pa.
+
+    The exact surface response of the half-space to each traction mode of the periodic grid,
+    :func:`asperity.elastic.tangential_transfer` at ``k = 2 pi (m/Lx, n/Ly)``: the periodic
+    operator is then the sum over all periodic images (not a kernel truncated at half the
+    period), the same continuum model as :func:`periodic_halfspace_spectrum`. The mean mode
+    ``k = 0`` is set to zero (displacements from their mean; the rigid shift is measured from
+    it). On an even grid the Nyquist row and column cannot carry a component odd in that
+    wavenumber (``xy``, ``zx``, ``zy`` there are their own mirror images): those entries are
+    zero, which keeps the block operator real and symmetric.
+    """
+    nx, ny = int(shape[0]), int(shape[1])
+    kx = 2 * np.pi * np.fft.fftfreq(nx, d=dx)[:, None]
+    ky = 2 * np.pi * np.fft.rfftfreq(ny, d=dy)[None, :]
+    KX, KY = np.broadcast_arrays(kx, ky)
+    mean = (KX == 0) & (KY == 0)
+    t = tangential_transfer(np.where(mean, 1.0, KX), KY, body1, body2)
+    odd_x = np.zeros(KX.shape, dtype=bool)
+    odd_y = np.zeros(KX.shape, dtype=bool)
+    if nx % 2 == 0:
+        odd_x[nx // 2, :] = True
+    if ny % 2 == 0:
+        odd_y[:, -1] = True
+
+    def clean(a, odd):
+        return np.where(mean | odd, 0.0, a)
+
+    return TangentialInfluence(xx=clean(t.xx, False), xy=clean(t.xy, odd_x | odd_y),
+                               yy=clean(t.yy, False), zx=clean(t.zx, odd_x),
+                               zy=clean(t.zy, odd_y))
 
 
 @lru_cache(maxsize=16)

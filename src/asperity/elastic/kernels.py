@@ -12,6 +12,7 @@ References
 ----------
 A. E. H. Love, Phil. Trans. R. Soc. A 228 (1929) 377-420.
 K. L. Johnson, *Contact Mechanics*, 1985, sec. 3.2 (Boussinesq, Cerruti), eq. 3.25.
+J. R. Barber, *Elasticity*, 3rd ed., 2010, ch. 21-22 (Fourier solutions of the half-space).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
 from ..materials import Material, contact_modulus
 
 __all__ = [
@@ -28,6 +30,7 @@ __all__ = [
     "normal_influence",
     "TangentialInfluence",
     "tangential_influence",
+    "tangential_transfer",
 ]
 
 
@@ -187,6 +190,62 @@ def tangential_influence(x, y, dx, dy, body1: Material, body2: Material | None =
     if body2 is None:
         return one
     two = _one_body(g, body2)
+    return TangentialInfluence(
+        xx=one.xx + two.xx,
+        xy=one.xy + two.xy,
+        yy=one.yy + two.yy,
+        zx=one.zx - two.zx,
+        zy=one.zy - two.zy,
+    )
+
+
+def _one_body_transfer(kx, ky, k, body: Material) -> TangentialInfluence:
+    """Fourier transfer functions of one half-space's surface (z into the body), m/Pa.
+
+    The 2-D Fourier transforms (``f(k) = int f(r) exp(-i k.r) dA``) of the Cerruti kernels of
+    :func:`_one_body`, from FT(1/r) = 2 pi/k, FT(r) = -2 pi/k^3 (so that
+    x^2/r^3 = d^2 r/dy^2 and x y/r^3 = -d^2 r/dx dy transform to 2 pi k_y^2/k^3 and
+    -2 pi k_x k_y/k^3) and FT(ln r) = -2 pi/k^2 (x/r^2 = d ln r/dx)::
+
+        u_x = [1 - nu k_x^2/k^2] q_x/(G k) - nu k_x k_y/(G k^3) q_y
+        u_z = -i (1 - 2 nu) k_x/(2 G k^2) q_x   (and y alike)
+    """
+    if body.rigid:
+        zero = np.zeros_like(k)
+        return TangentialInfluence(zero, zero, zero, zero.astype(complex), zero.astype(complex))
+    G, nu = body.shear_modulus, body.poisson_ratio
+    return TangentialInfluence(
+        xx=(1.0 - nu * kx * kx / (k * k)) / (G * k),
+        xy=-nu * kx * ky / (G * k**3),
+        yy=(1.0 - nu * ky * ky / (k * k)) / (G * k),
+        zx=-0.5j * (1.0 - 2.0 * nu) * kx / (G * k * k),
+        zy=-0.5j * (1.0 - 2.0 * nu) * ky / (G * k * k),
+    )
+
+
+def tangential_transfer(kx, ky, body1: Material, body2: Material | None = None):
+    """Fourier transfer functions of the Cerruti half-space (continuum), m/Pa.
+
+    The exact surface displacement of a half-space under a traction mode
+    ``q exp(i k.r)`` is ``T(k) q exp(i k.r)``; ``T`` is returned for the wavevectors
+    ``(kx, ky)`` (rad/m, ``k > 0``) as a :class:`TangentialInfluence` whose components are
+    the transforms of :func:`tangential_influence`'s point-load kernels (Johnson 1985,
+    eq. 3.86; Barber 2010, ch. 22), with the same one-body and two-body (relative
+    displacement) conventions::
+
+        T_xx = (1 - nu k_x^2/k^2)/(G k),  T_xy = -nu k_x k_y/(G k^3),
+        T_yy = (1 - nu k_y^2/k^2)/(G k),  T_zx = -i (1 - 2 nu) k_x/(2 G k^2)
+
+    summed over the bodies (``T_zx`` differenced).
+    """
+    kx, ky = np.broadcast_arrays(np.asarray(kx, dtype=float), np.asarray(ky, dtype=float))
+    k = np.hypot(kx, ky)
+    if np.any(k <= 0):
+        raise InputError("kx, ky", "non-zero wavevectors (the mean mode is not defined)")
+    one = _one_body_transfer(kx, ky, k, body1)
+    if body2 is None:
+        return one
+    two = _one_body_transfer(kx, ky, k, body2)
     return TangentialInfluence(
         xx=one.xx + two.xx,
         xy=one.xy + two.xy,
