@@ -4,9 +4,9 @@ Builds the pressure field the case describes (Hertz, uniform regions, or ``solve
 solves the frictional contact with :func:`asperity.contact.solve_tangential` at the applied
 load and, with a ``[load_path]``, along the path with
 :func:`asperity.contact.tangential_load_path` (compliance, centre of rotation, slip progression,
-load sharing, energy per cycle). The result is set beside the published numbers of the case's
-``[reference]`` table and the closed forms that apply (Cattaneo-Mindlin, Lubkin, uniform-pressure
-torsion, gross-slip loads).
+load sharing, energy per cycle). :func:`asperity.references.tangential_comparisons` sets the
+result beside the closed forms that apply and the published numbers of the case's
+``[reference]`` table.
 """
 
 from __future__ import annotations
@@ -18,10 +18,10 @@ import xarray as xr
 
 from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
-from ..contact import reference as ref
 from ..contact.load_path import proportional_path, tangential_load_path
 from ..errors import InputError
-from ..results import Comparison, Outcome, variable
+from ..references import tangential_comparisons
+from ..results import Outcome, variable
 
 __all__ = ["run"]
 
@@ -91,143 +91,6 @@ def _field(case, body1, body2) -> _Field:
     if case.pressure.source == "uniform":
         return _uniform_field(case)
     return _hertz_field(case, body1, body2)
-
-
-def _rectangles(spec, mu):
-    """Boxes (x1, x2, y1, y2) and weights mu p of the uniformly loaded rectangular regions."""
-    weights, boxes = [], []
-    for region, center in zip(spec.regions, spec.centers(), strict=True):
-        hx, hy = region.half_extents()
-        weights.append((region.mu or mu) * region.pressure)
-        boxes.append((center[0] - hx, center[0] + hx, center[1] - hy, center[1] + hy))
-    return boxes, weights
-
-
-def _closed_forms(case, fld, res, body1, body2, applied, identical):
-    """Closed-form rows that apply to this case (checked with a grid-dependent tolerance)."""
-    rows = []
-    fx, fy, moment = applied
-    force = math.hypot(fx, fy)
-    mu = case.mu
-    uniform_mu = np.all(fld.mu == mu) and all(
-        r.mu is None for r in (case.pressure.regions or []))
-    free = case.loading.rotation == "free"
-    h = fld.hertz
-    dx = max(fld.x[1] - fld.x[0], fld.y[1] - fld.y[0])
-    if case.pressure.source == "hertz" and uniform_mu:
-        circular = abs(h.a - h.b) <= 1e-9 * h.a
-        size = min(h.a, h.b)
-        if force == 0.0 and free:
-            gs = ref.gross_slip_moment_ellipse(mu, h.p_max, h.a, h.b)
-            rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
-                                   "(pi/4) mu p0 a^2 b E(1 - b^2/a^2) (3 pi mu P a / 16 for a "
-                                   "circle)", "N m", max(0.005, 0.5 * (dx / size) ** 2)))
-        if circular and force == 0.0 and free and not res.gross_slip:
-            c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
-            twist = ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
-            tol = max(0.01, 2.0 * (dx / h.a) ** 2)
-            rows.append(Comparison("rotation (relative)", abs(res.rotation), twist,
-                                   "Lubkin (1951), Johnson eq. 7.50", "rad", tol))
-            if identical:
-                rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
-                                       ref.lubkin_twist(c, h.a, mu, h.p_max, body1), "Lubkin "
-                                       "(1951), one body vs the interface", "rad", tol))
-            stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
-            rows.append(Comparison("stick radius", stick, c, "Lubkin (1951)", "m",
-                                   max(0.01, 1.5 * dx / c)))
-        if circular and moment == 0.0 and force > 0.0 and not res.gross_slip:
-            cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
-            tol = max(0.01, 2.0 * (dx / h.a) ** 2)
-            rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift), cm.shift,
-                                   "Cattaneo-Mindlin, Johnson eq. 7.42", "m", tol))
-            if identical:
-                rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
-                                       0.5 * cm.shift, "Cattaneo-Mindlin, one of two "
-                                       "identical bodies vs the interface", "m", tol))
-            if cm.stick_radius > 2 * dx:
-                stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
-                rows.append(Comparison("stick radius", stick, cm.stick_radius,
-                                       "Cattaneo-Mindlin", "m",
-                                       max(0.01, 1.5 * dx / cm.stick_radius)))
-        if circular and moment != 0.0 and force > 0.0 and not res.gross_slip:
-            note = "one load alone: the combined load couples them; not a check"
-            if force < mu * h.load:
-                cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
-                rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift),
-                                       cm.shift, "Cattaneo-Mindlin, force alone", "m", None,
-                                       note))
-            if abs(moment) < ref.gross_slip_moment_hertz(mu, h.load, h.a):
-                c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
-                rows.append(Comparison("rotation (relative)", abs(res.rotation),
-                                       ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2),
-                                       "Lubkin, moment alone", "rad", None, note))
-    if case.pressure.source == "uniform" and uniform_mu:
-        regions = case.pressure.regions
-        if force > 0.0 and not free:
-            total = sum(mu * r.pressure * (r.size[0] * r.size[1] if r.shape == "rectangle"
-                                           else math.pi * r.radius**2) for r in regions)
-            exact = all(r.shape == "rectangle" for r in regions)
-            rows.append(Comparison("gross-slip force (rotation fixed)",
-                                   res.load_capacity * force, total, "mu sum p_i A_i", "N",
-                                   1e-9 if exact else max(0.01, 4 * dx / regions[0].radius)))
-        if force == 0.0 and free and all(r.shape == "rectangle" for r in regions):
-            gs, _ = ref.gross_slip_moment_rectangles(*_rectangles(case.pressure, mu))
-            rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
-                                   "min over c of sum mu p_i int |r - c| dA (exact rectangles)",
-                                   "N m", 0.01))
-        if (force == 0.0 and free and len(regions) == 1 and regions[0].shape == "circle"):
-            r0, a = regions[0], regions[0].radius
-            rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment),
-                                   ref.gross_slip_moment_uniform(mu, r0.pressure, a),
-                                   "(2 pi / 3) mu p a^3", "N m", max(0.01, 2 * dx / a)))
-            if not res.gross_slip:
-                c = ref.uniform_torsion_stick_radius(abs(moment), a, mu, r0.pressure)
-                rows.append(Comparison("rotation (relative)", abs(res.rotation),
-                                       ref.uniform_torsion_twist(c, a, mu, r0.pressure, body1,
-                                                                 body2),
-                                       "uniform-pressure torsion, Johnson sec. 7.3", "rad",
-                                       max(0.02, 3 * dx / a)))
-    return rows
-
-
-def _equilibrium(res, applied, free):
-    """Carried vs applied load (the solver's constraints), below gross slip."""
-    if res.gross_slip:
-        return []
-    rows = []
-    force = np.array(applied[:2])
-    if np.any(force):
-        along = float(np.dot(res.force, force) / np.linalg.norm(force))
-        rows.append(Comparison("force carried", along, float(np.linalg.norm(force)),
-                               "equilibrium", "N", 1e-6))
-    if free and applied[2] != 0.0:
-        rows.append(Comparison("moment carried", res.moment, applied[2], "equilibrium", "N m",
-                               1e-6))
-    return rows
-
-
-def _reference_rows(spec, res, applied, identical):
-    """Rows for the published numbers of the case's [reference] table."""
-    rows = []
-    tol, src = spec.tolerance, spec.source
-    if identical and not res.gross_slip:
-        if spec.shift_per_body is not None:
-            rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
-                                   spec.shift_per_body, src, "m", tol))
-        if spec.rotation_per_body is not None:
-            rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
-                                   spec.rotation_per_body, src, "rad", tol))
-        if spec.closed_form_rotation_per_body is not None:
-            rows.append(Comparison("rotation per body vs the book's closed-form value",
-                                   0.5 * abs(res.rotation), spec.closed_form_rotation_per_body,
-                                   src, "rad", tol))
-    if spec.gross_slip_moment is not None and applied[2] != 0.0:
-        rows.append(Comparison("gross-slip moment", res.load_capacity * abs(applied[2]),
-                               spec.gross_slip_moment, src, "N m", tol))
-    if spec.gross_slip_force is not None and any(applied[:2]):
-        rows.append(Comparison("gross-slip force", res.load_capacity * math.hypot(*applied[:2]),
-                               spec.gross_slip_force, src, "N", tol))
-    return rows
 
 
 # --- outputs --------------------------------------------------------------------------------
@@ -410,12 +273,10 @@ def run(case, progress=None) -> Outcome:
     if path is not None:
         summary.update(_path_summary(path))
     free = case.loading.rotation == "free"
-    comparisons = _equilibrium(res, applied, free)
-    comparisons += _closed_forms(case, fld, res, body1, body2, applied, identical)
-    if case.reference is not None:
-        comparisons += _reference_rows(case.reference, res, applied, identical)
-        if case.reference.note:
-            notes.append(case.reference.note)
+    comparisons = tangential_comparisons(case, res, fld.x, fld.y, fld.mu, body1, body2,
+                                         fld.hertz)
+    if case.reference is not None and case.reference.note:
+        notes.append(case.reference.note)
     if identical:
         notes.append(_PER_BODY_NOTE)
     if res.gross_slip:

@@ -1,0 +1,347 @@
+"""Which references apply to a run: the comparison rows of each analysis.
+
+A runner solves; this module decides which closed forms and published numbers its result is set
+beside, and with what tolerance, so that the choice is tested on its own
+(``tests/test_references.py``). Every formula and number is stated, with its source, in
+``docs/references.md``; the closed forms themselves live in :mod:`asperity.contact.reference`
+and :mod:`asperity.ehl.formulas`.
+
+- :func:`tangential_comparisons`: equilibrium, Cattaneo-Mindlin (Johnson eq. 7.42), Lubkin
+  torsion (Johnson eq. 7.50), uniform-pressure torsion (Johnson sec. 7.3), gross-slip loads, and
+  the case's ``[reference]`` table (Seireg ch. 3).
+- :func:`ehl_steady_comparisons`: the case's ``[reference]`` table, the Newtonian film formulas
+  (Moes 1992 and Dowson-Higginson 1977 for line contacts; Nijenbanning, Venner & Moes 1994 and
+  Hamrock-Dowson 1977 for point contacts) and the dry Hertz pressure.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .contact import reference as ref
+from .ehl import formulas
+from .ehl.problem import LineContact
+from .results import Comparison
+
+__all__ = ["DOCS", "ehl_steady_comparisons", "film_formulas", "lubricant_laws",
+           "tangential_comparisons"]
+
+DOCS = "docs/references.md"
+"""The page that states every formula and published number a comparison uses."""
+
+
+def _cite(text: str, anchor: str) -> str:
+    """``"<text>; docs/references.md#<anchor>"``: the source and where the project states it."""
+    return f"{text}; {DOCS}#{anchor}"
+
+
+# --- tangential contact ---------------------------------------------------------------------
+
+
+def _equilibrium(res, applied, free):
+    """Carried vs applied load (the solver's constraints), below gross slip."""
+    if res.gross_slip:
+        return []
+    rows = []
+    force = np.array(applied[:2])
+    if np.any(force):
+        along = float(np.dot(res.force, force) / np.linalg.norm(force))
+        rows.append(Comparison("force carried", along, float(np.linalg.norm(force)),
+                               "equilibrium", "N", 1e-6))
+    if free and applied[2] != 0.0:
+        rows.append(Comparison("moment carried", res.moment, applied[2], "equilibrium", "N m",
+                               1e-6))
+    return rows
+
+
+def _rectangles(spec, mu):
+    """Boxes (x1, x2, y1, y2) and weights mu p of the uniformly loaded rectangular regions."""
+    weights, boxes = [], []
+    for region, center in zip(spec.regions, spec.centers(), strict=True):
+        hx, hy = region.half_extents()
+        weights.append((region.mu or mu) * region.pressure)
+        boxes.append((center[0] - hx, center[0] + hx, center[1] - hy, center[1] + hy))
+    return boxes, weights
+
+
+def _hertz_rows(mu, h, res, body1, body2, applied, free, identical, dx, cell_area):
+    """Closed forms of a Hertz pressure with one friction coefficient."""
+    fx, fy, moment = applied
+    force = math.hypot(fx, fy)
+    rows = []
+    circular = abs(h.a - h.b) <= 1e-9 * h.a
+    size = min(h.a, h.b)
+    stick = math.sqrt(res.stick.sum() * cell_area / math.pi)
+    if force == 0.0 and free:
+        gs = ref.gross_slip_moment_ellipse(mu, h.p_max, h.a, h.b)
+        rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
+                               _cite("(pi/4) mu p0 a^2 b E(1 - b^2/a^2), 3 pi mu P a / 16 for a "
+                                     "circle", "gross-slip-loads"),
+                               "N m", max(0.005, 0.5 * (dx / size) ** 2)))
+    if circular and force == 0.0 and free and not res.gross_slip:
+        c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
+        twist = ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
+        tol = max(0.01, 2.0 * (dx / h.a) ** 2)
+        src = _cite("Lubkin (1951), Johnson eq. 7.50", "lubkin-torsion")
+        rows.append(Comparison("rotation (relative)", abs(res.rotation), twist, src, "rad", tol))
+        if identical:
+            rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
+                                   ref.lubkin_twist(c, h.a, mu, h.p_max, body1),
+                                   _cite("Lubkin (1951), one body vs the interface",
+                                         "lubkin-torsion"), "rad", tol))
+        rows.append(Comparison("stick radius", stick, c, src, "m", max(0.01, 1.5 * dx / c)))
+    if circular and moment == 0.0 and force > 0.0 and not res.gross_slip:
+        cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+        tol = max(0.01, 2.0 * (dx / h.a) ** 2)
+        src = _cite("Cattaneo-Mindlin, Johnson eq. 7.42", "cattaneo-mindlin")
+        rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift), cm.shift, src,
+                               "m", tol))
+        if identical:
+            rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
+                                   0.5 * cm.shift, _cite("Cattaneo-Mindlin, one of two identical "
+                                                         "bodies vs the interface",
+                                                         "cattaneo-mindlin"), "m", tol))
+        if cm.stick_radius > 2 * dx:
+            rows.append(Comparison("stick radius", stick, cm.stick_radius, src, "m",
+                                   max(0.01, 1.5 * dx / cm.stick_radius)))
+    if circular and moment != 0.0 and force > 0.0 and not res.gross_slip:
+        note = "one load alone: the combined load couples them; not a check"
+        if force < mu * h.load:
+            cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+            rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift), cm.shift,
+                                   _cite("Cattaneo-Mindlin, force alone", "cattaneo-mindlin"),
+                                   "m", None, note))
+        if abs(moment) < ref.gross_slip_moment_hertz(mu, h.load, h.a):
+            c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
+            rows.append(Comparison("rotation (relative)", abs(res.rotation),
+                                   ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2),
+                                   _cite("Lubkin, moment alone", "lubkin-torsion"), "rad", None,
+                                   note))
+    return rows
+
+
+def _uniform_rows(spec, mu, res, body1, body2, applied, free, dx):
+    """Closed forms of uniformly loaded regions with one friction coefficient."""
+    fx, fy, moment = applied
+    force = math.hypot(fx, fy)
+    regions = spec.regions
+    rows = []
+    if force > 0.0 and not free:
+        total = sum(mu * r.pressure * (r.size[0] * r.size[1] if r.shape == "rectangle"
+                                       else math.pi * r.radius**2) for r in regions)
+        exact = all(r.shape == "rectangle" for r in regions)
+        rows.append(Comparison("gross-slip force (rotation fixed)", res.load_capacity * force,
+                               total, _cite("mu sum p_i A_i", "gross-slip-loads"), "N",
+                               1e-9 if exact else max(0.01, 4 * dx / regions[0].radius)))
+    if force == 0.0 and free and all(r.shape == "rectangle" for r in regions):
+        gs, _ = ref.gross_slip_moment_rectangles(*_rectangles(spec, mu))
+        rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
+                               _cite("min over c of sum mu p_i int |r - c| dA (exact "
+                                     "rectangles)", "gross-slip-loads"), "N m", 0.01))
+    if force == 0.0 and free and len(regions) == 1 and regions[0].shape == "circle":
+        r0, a = regions[0], regions[0].radius
+        rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment),
+                               ref.gross_slip_moment_uniform(mu, r0.pressure, a),
+                               _cite("(2 pi / 3) mu p a^3", "uniform-pressure-torsion"), "N m",
+                               max(0.01, 2 * dx / a)))
+        if not res.gross_slip:
+            c = ref.uniform_torsion_stick_radius(abs(moment), a, mu, r0.pressure)
+            rows.append(Comparison("rotation (relative)", abs(res.rotation),
+                                   ref.uniform_torsion_twist(c, a, mu, r0.pressure, body1, body2),
+                                   _cite("uniform-pressure torsion, Johnson sec. 7.3",
+                                         "uniform-pressure-torsion"), "rad",
+                                   max(0.02, 3 * dx / a)))
+    return rows
+
+
+def _published_rows(spec, res, applied, identical):
+    """Rows for the published numbers of the case's ``[reference]`` table."""
+    rows = []
+    tol, src = spec.tolerance, spec.source
+    if identical and not res.gross_slip:
+        if spec.shift_per_body is not None:
+            rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
+                                   spec.shift_per_body, src, "m", tol))
+        if spec.rotation_per_body is not None:
+            rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
+                                   spec.rotation_per_body, src, "rad", tol))
+        if spec.closed_form_rotation_per_body is not None:
+            rows.append(Comparison("rotation per body vs the book's closed-form value",
+                                   0.5 * abs(res.rotation), spec.closed_form_rotation_per_body,
+                                   src, "rad", tol))
+    if spec.gross_slip_moment is not None and applied[2] != 0.0:
+        rows.append(Comparison("gross-slip moment", res.load_capacity * abs(applied[2]),
+                               spec.gross_slip_moment, src, "N m", tol))
+    if spec.gross_slip_force is not None and any(applied[:2]):
+        rows.append(Comparison("gross-slip force", res.load_capacity * math.hypot(*applied[:2]),
+                               spec.gross_slip_force, src, "N", tol))
+    return rows
+
+
+def tangential_comparisons(case, result, x, y, mu, body1, body2, hertz=None) -> list[Comparison]:
+    """The comparison rows of a tangential run.
+
+    Parameters
+    ----------
+    case : asperity.cases.tangential.TangentialCase
+        The validated case (pressure source, loading, ``[reference]`` table).
+    result : asperity.contact.TangentialResult
+        The solution at the applied load.
+    x, y : ndarray
+        Cell-centre coordinates of the grid, m.
+    mu : ndarray
+        Friction coefficient per cell.
+    body1, body2 : asperity.materials.Material
+        The two bodies.
+    hertz : asperity.contact.HertzPoint, optional
+        The Hertz solution the pressure was built from (``source = "hertz"`` or ``"normal"``).
+
+    Returns
+    -------
+    list of Comparison
+        In this order: equilibrium (force and moment carried, tolerance 1e-6); the closed forms
+        that apply, each with a tolerance that grows with the cell size (Cattaneo-Mindlin under
+        a force alone on a circular Hertz contact; Lubkin under a moment alone; the gross-slip
+        moment of an elliptical Hertz pressure; uniform-pressure torsion and gross-slip loads of
+        uniformly loaded regions; under force and moment together the single-load values are
+        shown unchecked); then the published numbers of ``case.reference``. "Per body" rows
+        (half the relative motion) appear only for identical bodies. Closed forms apply only
+        with one friction coefficient everywhere. See ``docs/references.md``.
+    """
+    fx, fy = case.loading.vector()
+    applied = (fx, fy, case.loading.moment)
+    identical = (body1.youngs_modulus, body1.poisson_ratio) == (body2.youngs_modulus,
+                                                               body2.poisson_ratio)
+    mu = np.broadcast_to(np.asarray(mu, dtype=float), result.stick.shape)
+    uniform_mu = bool(np.all(mu == case.mu)) and all(
+        r.mu is None for r in (case.pressure.regions or []))
+    dx = max(x[1] - x[0], y[1] - y[0])
+    cell_area = (x[1] - x[0]) * (y[1] - y[0])
+    free = case.loading.rotation == "free"
+    rows = _equilibrium(result, applied, free)
+    if uniform_mu and case.pressure.source == "hertz" and hertz is not None:
+        rows += _hertz_rows(case.mu, hertz, result, body1, body2, applied, free, identical, dx,
+                            cell_area)
+    if uniform_mu and case.pressure.source == "uniform":
+        rows += _uniform_rows(case.pressure, case.mu, result, body1, body2, applied, free, dx)
+    if case.reference is not None:
+        rows += _published_rows(case.reference, result, applied, identical)
+    return rows
+
+
+# --- steady EHL -----------------------------------------------------------------------------
+
+_NEWTONIAN_NOTE = (
+    "Newtonian isothermal fit; the solution uses the case's lubricant laws ({laws}), so the "
+    "two differ by design: not a check")
+
+
+def lubricant_laws(lubricant) -> str:
+    """The lubricant's laws in words, e.g. ``"Roelands, incompressible, Newtonian"``."""
+    lub = lubricant
+    shear = "Newtonian" if lub.newtonian else f"Eyring tau0 = {lub.eyring_stress / 1e6:.3g} MPa"
+    density = "Dowson-Higginson density" if lub.compressible else "incompressible"
+    return ", ".join([lub.viscosity_model.capitalize(), density, shear])
+
+
+def film_formulas(problem) -> dict[str, float]:
+    """The Newtonian film-thickness formulas that apply to an EHL problem, m.
+
+    Line contact: Moes (1992) central film, and Dowson-Higginson (1977) minimum film when the
+    pressure-viscosity coefficient is positive. Point contact: Nijenbanning, Venner & Moes
+    (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and
+    Hamrock-Dowson (1977) central and minimum films when alpha > 0.
+
+    Returns
+    -------
+    dict
+        Summary key (``moes_central_film_m``, ``dowson_higginson_minimum_film_m``,
+        ``nijenbanning_central_film_m``, ``hamrock_dowson_central_film_m``,
+        ``hamrock_dowson_minimum_film_m``) -> film thickness, m.
+    """
+    lub = problem.lubricant
+    args = (problem.mean_speed, lub.viscosity, lub.pressure_viscosity, problem.reduced_modulus)
+    values = {}
+    if isinstance(problem, LineContact):
+        values["moes_central_film_m"] = formulas.moes_line(problem.load_per_length,
+                                                           problem.radius, *args).central
+        if lub.pressure_viscosity > 0:
+            values["dowson_higginson_minimum_film_m"] = formulas.dowson_higginson_line(
+                problem.load_per_length, problem.radius, *args).minimum
+        return values
+    if problem.ry >= problem.rx:
+        values["nijenbanning_central_film_m"] = formulas.nijenbanning_point(
+            problem.load, problem.rx, problem.ry, *args).central
+    if lub.pressure_viscosity > 0:
+        hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
+        values.update(hamrock_dowson_central_film_m=hd.central,
+                      hamrock_dowson_minimum_film_m=hd.minimum)
+    return values
+
+
+_FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
+    "moes_central_film_m": ("central film", "central_film", "Moes (1992)", "moes-line"),
+    "dowson_higginson_minimum_film_m": ("minimum film", "minimum_film",
+                                        "Dowson-Higginson (1977)", "dowson-higginson-line"),
+    "nijenbanning_central_film_m": ("central film", "central_film",
+                                    "Nijenbanning, Venner & Moes (1994)", "nijenbanning-point"),
+    "hamrock_dowson_central_film_m": ("central film", "central_film", "Hamrock-Dowson (1977)",
+                                      "hamrock-dowson-point"),
+    "hamrock_dowson_minimum_film_m": ("minimum film", "minimum_film", "Hamrock-Dowson (1977)",
+                                      "hamrock-dowson-point"),
+}
+# The central-film fits (Moes, Nijenbanning) are checked at 5 % when the lubricant is their own
+# model; Dowson-Higginson and Hamrock-Dowson are regressions over other solutions: shown only.
+_CHECKED_FITS = {"moes_central_film_m", "nijenbanning_central_film_m"}
+
+
+def ehl_steady_comparisons(problem, result, reference=None) -> list[Comparison]:
+    """The comparison rows of a steady EHL run.
+
+    Parameters
+    ----------
+    problem : asperity.ehl.PointContact or asperity.ehl.LineContact
+        The solved problem (geometry, load, speeds, lubricant).
+    result : asperity.ehl.SteadyResult
+        The solution.
+    reference : asperity.cases.ehl.ReferenceSpec, optional
+        The case's ``[reference]`` table of published numbers.
+
+    Returns
+    -------
+    list of Comparison
+        The published numbers (at the table's tolerance); the film formulas of
+        :func:`film_formulas` (the central-film fits of Moes and Nijenbanning checked at 5 %
+        when the lubricant is Newtonian, Barus and incompressible, the fits' own model; every
+        other row is shown with a note); the dry Hertz maximum pressure (shown, not checked:
+        the EHL pressure differs by design).
+    """
+    rows = []
+    if reference is not None:
+        for key, quantity, unit in (
+            ("central_film", "central film", "m"),
+            ("minimum_film_centreline", "minimum film on y = 0", "m"),
+            ("minimum_film", "minimum film", "m"),
+            ("max_pressure", "maximum pressure", "Pa"),
+        ):
+            published = getattr(reference, key)
+            if published is not None:
+                rows.append(Comparison(quantity, getattr(result, key), published,
+                                       reference.source, unit, reference.tolerance))
+    lub = problem.lubricant
+    own_model = lub.newtonian and lub.viscosity_model == "barus" and not lub.compressible
+    own_note = "Newtonian, Barus, incompressible: the formula's own model"
+    other_note = _NEWTONIAN_NOTE.format(laws=lubricant_laws(lub))
+    for key, film in film_formulas(problem).items():
+        quantity, attribute, source, anchor = _FILM_ROWS[key]
+        checked = own_model and key in _CHECKED_FITS
+        rows.append(Comparison(quantity, getattr(result, attribute), film,
+                               _cite(source, anchor), "m", 0.05 if checked else None,
+                               own_note if own_model else other_note))
+    rows.append(Comparison(
+        "maximum pressure", result.max_pressure, problem.hertz.p_max,
+        _cite("dry Hertz", "hertz"), "Pa",
+        note="EHL pressure (inlet build-up, exit spike or shoulder) vs the dry contact"))
+    return rows
