@@ -31,9 +31,14 @@ __all__ = [
 
 
 class CaseModel(BaseModel):
-    """Base of every case-file table: unknown keys are errors, instances are immutable."""
+    """Base of every case-file table: unknown keys are errors, instances are immutable.
 
-    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+    A field's docstring (the string under it) is its description, listed by ``asperity schema``
+    and in ``docs/cases.md``.
+    """
+
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True,
+                              use_attribute_docstrings=True)
 
 
 class CaseHeader(CaseModel):
@@ -41,8 +46,11 @@ class CaseHeader(CaseModel):
     book figure or paper table a built-in example reproduces)."""
 
     title: str = "asperity case"
+    """Heading of the report."""
     description: str = ""
+    """One or two sentences under the heading: what the case is."""
     source: str = ""
+    """The book figure or paper table the case reproduces."""
 
 
 def _converter(dimension: str):

@@ -304,10 +304,12 @@ def sweep(
 
 
 def _mount_sub_apps() -> None:
+    from .schema import schema
     from .surface import surface_app
 
     app.add_typer(surface_app, name="surface",
                   help="Roughness of measured or generated surfaces: stats, generate, plot.")
+    app.command()(guarded(schema))
 
 
 _mount_sub_apps()
