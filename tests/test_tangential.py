@@ -283,3 +283,27 @@ def test_periodic_rough_partial_slip_matches_tamaas():
     assert np.linalg.norm(r.traction - q_ref) < 0.01 * np.linalg.norm(q_ref)
     stick_ref = (p > 0) & (np.hypot(*q_ref) < mu * p * (1 - 1e-6))
     assert np.array_equal(r.stick, stick_ref)
+
+
+def test_cattaneo_on_an_offset_grid_has_no_twist():
+    """Grid from 0 to 2.1 a with the contact in its middle: a force alone is Cattaneo-Mindlin.
+
+    The moment is taken about the centre of the normal load by default; about the coordinate
+    origin (the old default) the same force came out as force plus twist.
+    """
+    n = 48
+    x = (np.arange(n) + 0.5) * (2.1 * A / n)
+    mid = 1.05 * A
+    X, Y = np.meshgrid(x - mid, x - mid, indexing="ij")
+    p = HZ.pressure(X, Y)
+    p *= P / (p.sum() * (x[1] - x[0]) ** 2)
+    Q = 0.5 * MU * P
+    r = solve_tangential(p, x, x, MU, STEEL, STEEL, force=(Q, 0.0))
+    cm = ref.cattaneo_mindlin(P, Q, MU, A, STEEL, STEEL)
+    np.testing.assert_allclose(r.center, [mid, mid], rtol=1e-12)
+    assert r.converged and not r.gross_slip
+    assert abs(r.rotation) * A < 1e-6 * cm.shift
+    assert r.shift[0] == pytest.approx(cm.shift, rel=0.02)
+    assert stick_radius(r, x) == pytest.approx(cm.stick_radius, rel=0.03)
+    t, _ = friction_capacity(p, x, x, MU, force=(Q, 0.0))
+    assert t == pytest.approx(MU * P / Q, rel=1e-6)

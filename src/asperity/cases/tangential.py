@@ -20,7 +20,7 @@ applied (Goodman's approximation, exact for identical materials)::
     size = ["0.6 in", "0.6 in"]
     pressure = "10000 psi"
     [loading]
-    moment = "700 in lbf"       # about loading.center (the origin by default)
+    moment = "700 in lbf"       # about loading.center (the centre of the normal load by default)
     force = "0 lbf"             # magnitude, acting along loading.direction
     rotation = "free"           # or "fixed": twist prevented, the fixture's moment reported
     [grid]
@@ -205,12 +205,16 @@ class PressureSpec(CaseModel):
 class TangentialLoading(CaseModel):
     """``[loading]``: tangential ``force`` (N) along ``direction`` (angle from +x,
     counter-clockwise), twisting ``moment`` about ``center`` (counter-clockwise positive), and
-    whether body 1 may twist (``rotation = "free"``) or is guided (``"fixed"``)."""
+    whether body 1 may twist (``rotation = "free"``) or is guided (``"fixed"``).
+
+    ``center`` (two lengths) is the reference point of the moment; omitted, it is the centre
+    of the normal load (the pressure centroid), so that a force alone causes no twist wherever
+    the grid lies. The point used is in the summary (``moment_center_x_m``, ``_y_m``)."""
 
     force: Quantity("force") = 0.0
     direction: Quantity("angle") = 0.0
     moment: Quantity("moment") = 0.0
-    center: tuple[Length, Length] = (0.0, 0.0)
+    center: tuple[Length, Length] | None = None
     rotation: Literal["free", "fixed"] = "free"
 
     @model_validator(mode="after")

@@ -66,6 +66,7 @@ __all__ = [
     "TangentialOperator",
     "TangentialResult",
     "friction_capacity",
+    "load_centroid",
     "solve_tangential",
     "tangential_operator",
 ]
@@ -361,7 +362,9 @@ def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, cente
                       rotation="free"):
     """Gross-slip limit along the direction of an applied load.
 
-    With ``rotation="fixed"`` (twist prevented) only the force counts: ``mu P / |F|``.
+    With ``rotation="fixed"`` (twist prevented) only the force counts: ``mu P / |F|``. The
+    moment is about ``center``, by default the centre of the normal load (as in
+    :func:`solve_tangential`).
 
     Returns
     -------
@@ -413,7 +416,7 @@ def _setup(pressure, x, y, mu, force, moment, center, rotation="free") -> _Setup
         raise InputError("moment", "a finite number in N m", moment)
     if rotation not in ("free", "fixed"):
         raise InputError("rotation", "'free' or 'fixed'", rotation)
-    c = np.zeros(2) if center is None else np.asarray(center, dtype=float)
+    c = load_centroid(p, x, y) if center is None else np.asarray(center, dtype=float)
     if c.shape != (2,) or not np.all(np.isfinite(c)):
         raise InputError("center", "two finite coordinates (m)", center)
     X, Y = np.meshgrid(x - c[0], y - c[1], indexing="ij")
@@ -426,6 +429,19 @@ def _setup(pressure, x, y, mu, force, moment, center, rotation="free") -> _Setup
     target = np.array([f[0], f[1], float(moment) / L]) / area
     return _Setup(g, _Constraints(X, Y, L), target, area, c, load,
                   FREE if rotation == "free" else FIXED)
+
+
+def load_centroid(pressure, x, y) -> np.ndarray:
+    """Centre of the normal load, sum p r / sum p over the cells (m); the origin without load.
+
+    The default reference point of the twisting moment: about it a tangential force through
+    the centre of the normal load carries no moment, wherever the grid lies.
+    """
+    p = np.asarray(pressure, dtype=float)
+    total = p.sum()
+    if not total > 0:
+        return np.zeros(2)
+    return np.array([np.dot(p.sum(axis=1), x), np.dot(p.sum(axis=0), y)]) / total
 
 
 def _center_of_rotation(yv, prob: _Setup):
@@ -510,7 +526,9 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
     moment : float
         Applied twisting moment Mz about ``center``, N m (counter-clockwise positive).
     center : (float, float), optional
-        Reference point of the moment, m; the coordinate origin by default.
+        Reference point of the moment, m; by default the centre of the normal load (the
+        pressure centroid, :func:`load_centroid`), so that a force alone causes no twist
+        whatever the coordinates. The point used is :attr:`TangentialResult.center`.
     method : {"fft", "lp"}
         ``"fft"``: accelerated projected gradient on the FFT operator (module docstring).
         ``"lp"``: Seireg's modified linear programming with predetermined traction directions

@@ -138,6 +138,8 @@ def _summary(case, fld, res, applied, identical):
              residual=float(res.residual), convolutions=int(res.convolutions),
              converged=bool(res.converged))
     return s
+    # the reference point of the moment (loading.center, or the centre of the normal load)
+    s.update(moment_center_x_m=float(res.center[0]), moment_center_y_m=float(res.center[1]))
 
 
 def _dataset(case, fld, res, path):
@@ -223,7 +225,7 @@ def _figures(case, fld, res, path):
                             "Force and moment carried by each contact region along the path.")
     if case.loading.rotation == "free" and np.any(np.isfinite(path.center_of_rotation)):
         figs["center_of_rotation"] = (
-            lambda: tplot.center_of_rotation_curve(path, case.loading.center),
+            lambda: tplot.center_of_rotation_curve(path, res.center),
             "Centre of rotation relative to the moment's reference point vs the moment.")
     return figs
 
@@ -286,8 +288,10 @@ def run(case, progress=None) -> Outcome:
             f"M {res.excess[2]:.4g} N m. The traction shown is the full-slip traction.")
     if math.hypot(fx, fy) > 0:
         notes.append(f"The force acts at {math.degrees(case.loading.direction):.4g} deg from +x "
-                     "(loading.direction); the moment is about loading.center "
-                     f"({case.loading.center[0]:.4g}, {case.loading.center[1]:.4g}) m.")
+                     "(loading.direction); the moment is about "
+                     + ("loading.center" if case.loading.center is not None
+                        else "the centre of the normal load")
+                     + f" ({res.center[0]:.4g}, {res.center[1]:.4g}) m.")
     if not free:
         notes.append("Rotation is fixed (loading.rotation): body 1 translates only, the moment "
                      "equation is dropped and the fixture supplies the reaction moment "
