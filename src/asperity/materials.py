@@ -32,11 +32,15 @@ class Material:
         Poisson's ratio nu, -1 < nu <= 0.5.
     name : str, optional
         A label for reports.
+    hardness : float, optional
+        Indentation hardness in Pa. Not used by the elastic solvers; where a contact pressure
+        exceeds it, the result carries a warning (the elastic answer is not physical there).
     """
 
     youngs_modulus: float
     poisson_ratio: float
     name: str = "material"
+    hardness: float | None = None
 
     def __post_init__(self):
         e = float(self.youngs_modulus)
@@ -49,6 +53,12 @@ class Material:
                              self.poisson_ratio)
         object.__setattr__(self, "youngs_modulus", e)
         object.__setattr__(self, "poisson_ratio", nu)
+        if self.hardness is not None:
+            h = float(self.hardness)
+            if not (0 < h < float("inf")):
+                raise InputError(f"{self.name}.hardness", "a finite number > 0 in Pa",
+                                 self.hardness)
+            object.__setattr__(self, "hardness", h)
 
     @property
     def shear_modulus(self) -> float:

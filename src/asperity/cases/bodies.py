@@ -13,15 +13,20 @@ __all__ = ["MaterialSpec", "GridSpec"]
 
 
 class MaterialSpec(CaseModel):
-    """An elastic body: ``youngs_modulus`` (e.g. ``"30e6 psi"``) and ``poisson_ratio``."""
+    """An elastic body: ``youngs_modulus`` (e.g. ``"30e6 psi"``) and ``poisson_ratio``.
+
+    ``hardness`` (optional, e.g. ``"6 GPa"``): contact pressures above it make the run warn
+    that the elastic answer is not physical there.
+    """
 
     youngs_modulus: Quantity("pressure", gt=0)
     poisson_ratio: Annotated[float, Field(gt=-1.0, le=0.5)] = 0.3
     name: str = "steel"
+    hardness: Quantity("pressure", gt=0) | None = None
 
     def material(self) -> Material:
         """The :class:`asperity.Material` this table describes."""
-        return Material(self.youngs_modulus, self.poisson_ratio, self.name)
+        return Material(self.youngs_modulus, self.poisson_ratio, self.name, self.hardness)
 
 
 class GridSpec(CaseModel):

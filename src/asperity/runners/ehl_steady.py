@@ -7,15 +7,18 @@ of the case's ``[reference]`` table, the Newtonian film formulas and the dry Her
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import xarray as xr
 
+from .. import diagnostics
 from ..ehl import solve_steady
 from ..ehl.problem import LineContact
 from ..references import ehl_steady_comparisons, film_formulas, lubricant_laws
 from ..results import Outcome, variable
 
-__all__ = ["run"]
+__all__ = ["ehl_warnings", "run"]
 
 def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
@@ -28,10 +31,12 @@ def run(case, progress=None) -> Outcome:
         def callback(sweep, residual):
             progress(sweep, None, f"EHL sweep {sweep}, residual {residual:.1e}")
 
-    res = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=case.solver.method,
-                       levels=case.solver.levels, tol=case.solver.tolerance,
-                       max_sweeps=case.solver.sweep_limit(line),
-                       boundary_friction=case.solver.boundary_friction, callback=callback)
+    with warnings.catch_warnings():  # the solver's starved-inlet warning: see ehl_warnings
+        warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
+        res = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=case.solver.method,
+                           levels=case.solver.levels, tol=case.solver.tolerance,
+                           max_sweeps=case.solver.sweep_limit(line),
+                           boundary_friction=case.solver.boundary_friction, callback=callback)
     lub = problem.lubricant
     hz = problem.hertz
     ds = xr.Dataset(
@@ -81,7 +86,25 @@ def run(case, progress=None) -> Outcome:
     if not res.converged:
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
                      f"(residual {res.residual:.2e}); the numbers above are not trustworthy.")
-    return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes)
+    return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
+                   warnings=ehl_warnings(case, problem, res.pressure, res.x, res.y))
+
+
+def ehl_warnings(case, problem, pressure, x, y) -> list[str]:
+    """Trust checks of an EHL pressure field: inlet, sides, mesh, hardness.
+
+    Shared by the steady and transient runners (:mod:`asperity.diagnostics`).
+    """
+    hz = problem.hertz
+    b = None if isinstance(problem, LineContact) else hz.b
+    lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max)
+    if b is not None:
+        lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
+    lines += diagnostics.ehl_mesh(x, y, hz.a, b)
+    if getattr(case, "body1", None) is not None:
+        lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
+                                                       ("body2", case.body2.material())])
+    return lines
 
 
 def _figures(title, problem, res, line):

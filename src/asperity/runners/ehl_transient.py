@@ -14,16 +14,19 @@ nothing is lost if the run is stopped; the final result replaces that file.
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
+from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
 from ..ehl.transient import default_warmup_steps
 from ..results import Comparison, Outcome, variable, write_netcdf
+from .ehl_steady import ehl_warnings
 
 __all__ = ["CHECKPOINTS", "run"]
 
@@ -136,15 +139,17 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             if partial is not None:
                 write_netcdf(partial, Path(workdir) / "result.nc")
 
-    res = solve_transient(
-        problem, rough1, rough2, nx=nx, ny=ny, domain=domain, dt=dt,
-        counting_steps=case.time.counting_steps, warmup_steps=warmup,
-        theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
-        max_sweeps=case.solver.max_sweeps, refresh=case.solver.refresh,
-        acceleration=case.solver.acceleration, damping=case.solver.damping,
-        contact_film=case.solver.contact_film,
-        snapshot_steps=snaps, checkpoint=checkpoint,
-        checkpoint_every=case.solver.checkpoint_every, resume=resume, callback=callback)
+    with warnings.catch_warnings():  # the steady start's inlet warning: see ehl_warnings
+        warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
+        res = solve_transient(
+            problem, rough1, rough2, nx=nx, ny=ny, domain=domain, dt=dt,
+            counting_steps=case.time.counting_steps, warmup_steps=warmup,
+            theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
+            max_sweeps=case.solver.max_sweeps, refresh=case.solver.refresh,
+            acceleration=case.solver.acceleration, damping=case.solver.damping,
+            contact_film=case.solver.contact_film,
+            snapshot_steps=snaps, checkpoint=checkpoint,
+            checkpoint_every=case.solver.checkpoint_every, resume=resume, callback=callback)
     summary = {**res.summary(),
                "contact_time_percent": 100.0 * res.contact_time_fraction,
                "max_contact_count_rate_per_ms": float(np.max(res.contact_count_rate)),
@@ -180,5 +185,31 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     if not line:
         figures["flow_vectors"] = (lambda: plots.plot_flow_vectors(res, problem),
                                    "Film contours and lubricant flow vectors (Fig. 14).")
+    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y)
+    trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
+                                           case.solver.tolerance, case.solver.max_sweeps)
+    trust += _roughness_warnings(case, problem, x, y, total, dt, (rough1, rough2))
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
-                   converged=res.converged, notes=notes)
+                   converged=res.converged, notes=notes, warnings=trust)
+
+
+def _roughness_warnings(case, problem, x, y, total, dt, surfaces) -> list[str]:
+    """Roughness the mesh cannot resolve, or that ``lowpass`` removed, per surface."""
+    dx = x[1] - x[0]
+    specs = (case.surface1, case.surface2)
+    raw = surfaces
+    if any(spec.lowpass > 0 for spec in specs):
+        unfiltered = {f"surface{k}": spec.model_copy(update={"lowpass": 0.0})
+                      for k, spec in enumerate(specs, 1)}
+        raw = _surfaces(case.model_copy(update=unfiltered), problem, x, y, total, dt)
+    lines = []
+    for k, (spec, surf, before) in enumerate(zip(specs, surfaces, raw, strict=True), 1):
+        if surf is None:
+            continue
+        if spec.lowpass > 0:
+            lines += diagnostics.lowpass_removed(f"surface{k}", before.z, surf.z,
+                                                 spec.lowpass * dx)
+        else:
+            lines += diagnostics.unresolved_roughness(f"surface{k}", surf.z,
+                                                      surf.x[1] - surf.x[0], dx)
+    return lines

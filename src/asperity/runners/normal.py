@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from .. import diagnostics
 from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..results import Comparison, Outcome, variable
@@ -96,4 +97,20 @@ def run(case, progress=None) -> Outcome:
     notes = [] if res.converged else [
         f"The solver did not converge in {res.iterations} iterations "
         f"(residual {res.residual:.2e}); the numbers above are not trustworthy."]
-    return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes)
+    return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
+                   warnings=_warnings(case, res, x, y, body1, body2))
+
+
+def _warnings(case, res, x, y, body1, body2) -> list[str]:
+    """Trust checks: domain, mesh and hardness (:mod:`asperity.diagnostics`)."""
+    if case.grid.periodic:
+        lines = diagnostics.periodic_contact(res.contact, x, y)
+    else:
+        rx, ry = case.geometry.radii()
+        size = None
+        if np.isfinite(rx) and np.isfinite(ry):
+            h = hertz_point(res.load, rx, ry, body1, body2)
+            size = (2.0 * h.a, 2.0 * h.b)
+        lines = diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
+    lines += diagnostics.contact_resolution(res.contact, x, y)
+    return lines + diagnostics.above_hardness(res.pressure, [("body1", body1), ("body2", body2)])

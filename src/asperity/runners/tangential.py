@@ -16,6 +16,7 @@ import math
 import numpy as np
 import xarray as xr
 
+from .. import diagnostics
 from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact.load_path import proportional_path, tangential_load_path
@@ -310,5 +311,11 @@ def run(case, progress=None) -> Outcome:
                      f"{res.residual:.2e}); the numbers above are not trustworthy.")
     if path is not None and not path.converged:
         notes.append("A step of the load path did not converge; the path is not trustworthy.")
+    # prescribed pressures (Hertz, uniform regions) lie inside the grid by construction; a
+    # normal solve's contact can be cut off by it
+    trust = (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
+             if case.pressure.source == "normal" else [])
+    trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
+    trust += diagnostics.above_hardness(fld.pressure, [("body1", body1), ("body2", body2)])
     return Outcome(_dataset(case, fld, res, path), summary, _figures(case, fld, res, path),
-                   comparisons, converged=converged, notes=notes)
+                   comparisons, converged=converged, notes=notes, warnings=trust)

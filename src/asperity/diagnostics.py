@@ -1,0 +1,478 @@
+"""Trust checks of a result: does the answer depend on a choice the user made badly?
+
+Each function takes fields and grids (SI units) and returns a list of warning lines, empty when
+there is nothing to say. A line names the quantity, its value, the limit, and what to change
+in the case, e.g. ``inlet: x_min = -1.05 a leaves pressure 3.1 % of p_h within 0.1 a of the
+inlet boundary (limit 1 %); the film is starved and too thin; use x_min <= -2.5 a``. Runners
+append the lines to :attr:`asperity.results.Outcome.warnings`; the command line prints them,
+and ``asperity run --strict`` fails on them.
+
+The checks are deliberately simple and conservative: a warning means "this answer is not the
+answer to the problem you meant", not "this answer is wrong by exactly so much".
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+import numpy as np
+
+__all__ = [
+    "FILL_FRACTION",
+    "PATCH_PERIOD_FRACTION",
+    "MIN_CELLS_PER_SEMI_AXIS",
+    "BOUNDARY_PRESSURE",
+    "BOUNDARY_BAND",
+    "UNRESOLVED_WAVELENGTH_CELLS",
+    "UNRESOLVED_RMS_SHARE",
+    "LOWPASS_RMS_SHARE",
+    "above_hardness",
+    "contact_at_grid_edge",
+    "contact_resolution",
+    "ehl_inlet",
+    "ehl_mesh",
+    "ehl_sides",
+    "lowpass_removed",
+    "periodic_contact",
+    "unconverged_steps",
+    "unresolved_roughness",
+]
+
+#: Contact fraction of a periodic cell above which the contact "fills the cell".
+FILL_FRACTION = 0.9
+#: Width of one contact patch, as a fraction of the period, above which its periodic images
+#: interact (the periodic answer is then not that of an isolated contact).
+PATCH_PERIOD_FRACTION = 0.5
+#: Fewest cells across the smallest semi-axis of a contact (dry or the EHL Hertz zone).
+MIN_CELLS_PER_SEMI_AXIS = 10
+#: EHL pressure, as a fraction of the Hertz pressure, allowed near an inlet or side boundary.
+BOUNDARY_PRESSURE = 0.01
+#: Width of the band next to an EHL boundary, in semi-axes, where that pressure is measured.
+BOUNDARY_BAND = 0.1
+#: Roughness at wavelengths shorter than this many mesh spacings is not resolved by the mesh.
+UNRESOLVED_WAVELENGTH_CELLS = 4.0
+#: Share of the rms height at unresolved wavelengths above which the mesh is reported coarse.
+UNRESOLVED_RMS_SHARE = 0.2
+#: Share of the rms height a low-pass filter may remove before it is reported.
+LOWPASS_RMS_SHARE = 0.01
+
+
+def _pct(value: float) -> str:
+    return f"{100.0 * value:.3g} %"
+
+
+def _spacing(coord) -> float:
+    coord = np.asarray(coord, dtype=float)
+    return float(coord[1] - coord[0]) if coord.size > 1 else math.inf
+
+
+def contact_at_grid_edge(pressure, x, y, contact_size=None) -> list[str]:
+    """Contact on the edge cells of a non-periodic grid: the domain is too small.
+
+    A non-periodic solve takes the pressure beyond the grid to be zero, so a contact that
+    reaches the edge is cut off: its pressure is too high and its size too small.
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (nx, ny)
+        Contact pressure, Pa (contact where > 0).
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    contact_size : tuple of float, optional
+        The expected contact width along x and y (e.g. Hertz 2a, 2b), m, for the advice.
+
+    Returns
+    -------
+    list of str
+        One line when the contact reaches an edge, else empty.
+    """
+    p = np.asarray(pressure, dtype=float)
+    nx, ny = p.shape
+    total = float(p.sum())
+    if not total > 0:
+        return []
+    edge = np.zeros(p.shape, dtype=bool)
+    sides = []
+    for name, index, axis_len in (("x_min", (0, slice(None)), nx), ("x_max", (-1, slice(None)), nx),
+                                  ("y_min", (slice(None), 0), ny),
+                                  ("y_max", (slice(None), -1), ny)):
+        if axis_len < 3:  # a single row (line contact) has no edge across it
+            continue
+        edge[index] = True
+        if np.any(p[index] > 0):
+            sides.append(name)
+    if not sides:
+        return []
+    share = float(p[edge].sum()) / total
+    extent = (nx * _spacing(x), ny * _spacing(y) if ny > 1 else math.inf)
+    advice = "enlarge the grid (x_extent, y_extent) well beyond the contact"
+    if contact_size is not None:
+        wx, wy = contact_size
+        need = [f"{name} >= {1.5 * w:.3g} m" for name, w, e in
+                (("x_extent", wx, extent[0]), ("y_extent", wy, extent[1]))
+                if math.isfinite(e) and e < 1.5 * w]
+        if need:
+            advice = (f"the expected contact is {wx:.3g} m x {wy:.3g} m wide; use "
+                      + " and ".join(need))
+    return [f"domain: the contact reaches the grid edge at {', '.join(sides)} "
+            f"({int(np.count_nonzero(edge & (p > 0)))} edge cells carry {_pct(share)} of the "
+            "load; limit: no contact on the edge cells); the pressure beyond the grid is taken "
+            f"as zero, so the contact is cut off and its pressures are wrong; {advice}"]
+
+
+def _patch_widths(contact) -> list[tuple[float, float]]:
+    """Widths (fractions of the period along x and y) of the patches of a periodic contact."""
+    from scipy import ndimage
+
+    labels, count = ndimage.label(contact)
+    if count == 0:
+        return []
+    parent = np.arange(count + 1)
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for a, b in ((labels[0, :], labels[-1, :]), (labels[:, 0], labels[:, -1])):
+        for i, j in zip(a, b, strict=True):
+            if i and j:
+                parent[find(i)] = find(j)
+    roots = np.array([find(i) for i in range(count + 1)])
+    merged = roots[labels]
+    widths = []
+    for root in np.unique(roots[1:]):
+        mask = merged == root
+        per_axis = []
+        for axis in (0, 1):
+            occupied = mask.any(axis=1 - axis)
+            n = occupied.size
+            if occupied.all():
+                per_axis.append(1.0)
+                continue
+            # the widest run of empty rows, around the circle; the patch fills the rest
+            empty = np.concatenate([~occupied, ~occupied]).astype(int)
+            run = best = 0
+            for v in empty:
+                run = run + 1 if v else 0
+                best = max(best, run)
+            per_axis.append((n - min(best, n)) / n)
+        widths.append(tuple(per_axis))
+    return widths
+
+
+def periodic_contact(contact, x, y) -> list[str]:
+    """A periodic contact that fills its cell, or one patch wider than half the period.
+
+    Parameters
+    ----------
+    contact : ndarray of bool, shape (nx, ny)
+        Contact indicator.
+    x, y : ndarray
+        Cell-centre coordinates, m (the period is the grid length).
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    c = np.asarray(contact, dtype=bool)
+    fraction = float(c.mean())
+    if fraction > FILL_FRACTION:
+        return [f"contact: fills {_pct(fraction)} of the periodic cell (limit "
+                f"{_pct(FILL_FRACTION)}); the periodic images of the contact merge, so this is "
+                "a flat punch, not the contact of the case; use a larger period (x_extent, "
+                "y_extent) or, for a single contact, periodic = false"]
+    widths = _patch_widths(c)
+    if not widths:
+        return []
+    wx, wy = max(w[0] for w in widths), max(w[1] for w in widths)
+    axis, width = ("x", wx) if wx >= wy else ("y", wy)
+    if width <= PATCH_PERIOD_FRACTION:
+        return []
+    period = c.shape[0 if axis == "x" else 1] * _spacing(x if axis == "x" else y)
+    return [f"contact: one contact patch spans {_pct(width)} of the period along {axis} "
+            f"({width * period:.3g} of {period:.3g} m; limit {_pct(PATCH_PERIOD_FRACTION)}); "
+            f"its periodic images interact; use a period at least twice the patch "
+            f"({axis}_extent >= {2 * width * period:.3g} m) unless the case is meant to be a "
+            "periodic array"]
+
+
+def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS) -> list[str]:
+    """A contact resolved by too few cells across its smallest semi-axis.
+
+    The semi-axes are half the number of grid columns (rows) the contact occupies, so for a
+    rough contact they are those of the apparent contact, not of single asperity contacts.
+
+    Parameters
+    ----------
+    contact : ndarray of bool, shape (nx, ny)
+        Contact indicator.
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    min_cells : float
+        Fewest cells per semi-axis.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    c = np.asarray(contact, dtype=bool)
+    if not c.any():
+        return []
+    lines = []
+    for axis, coord, name in ((0, x, "x"), (1, y, "y")):
+        n = c.shape[axis]
+        if n < 3:
+            continue
+        cells = 0.5 * np.count_nonzero(c.any(axis=1 - axis))
+        if cells < min_cells:
+            need = math.ceil(n * min_cells / cells)
+            lines.append(f"{cells:g} cells per semi-axis along {name} (about "
+                         f"{cells * _spacing(coord):.3g} m; n{name} = {n}; use "
+                         f"n{name} >= {need} on the same extent, or a smaller "
+                         f"{name}_extent)")
+    if not lines:
+        return []
+    return ["mesh: the contact is resolved by " + " and ".join(lines) + f" (limit {min_cells:g}"
+            " cells per semi-axis); pressures and contact size are then mesh-dependent"]
+
+
+def above_hardness(pressure, materials: Iterable) -> list[str]:
+    """Elastic pressures above the hardness of a body (when a material gives one).
+
+    Parameters
+    ----------
+    pressure : ndarray
+        Contact pressure, Pa.
+    materials : iterable of (label, Material)
+        The bodies, e.g. ``[("body1", m1), ("body2", m2)]``; those without ``hardness`` are
+        skipped.
+
+    Returns
+    -------
+    list of str
+        One line per body whose hardness is exceeded.
+    """
+    p = np.asarray(pressure, dtype=float)
+    in_contact = np.count_nonzero(p > 0)
+    if not in_contact:
+        return []
+    p_max = float(p.max())
+    lines = []
+    for label, material in materials:
+        hardness = getattr(material, "hardness", None)
+        if hardness is None or p_max <= hardness:
+            continue
+        share = np.count_nonzero(p > hardness) / in_contact
+        lines.append(f"pressure: the maximum {p_max / 1e9:.4g} GPa exceeds the hardness "
+                     f"{hardness / 1e9:.4g} GPa of {label} ({material.name}) on {_pct(share)} "
+                     "of the contact area; the elastic answer is not physical there (the body "
+                     "yields): lower the load, or treat the result as an elastic bound")
+    return lines
+
+
+def ehl_inlet(pressure, x, a: float, p_hertz: float) -> list[str]:
+    """Pressure not back to ambient near the inlet boundary: a starved, too thin film.
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (nx, ny)
+        Film pressure on the nodes, Pa (x first, the entrainment direction).
+    x : ndarray
+        Node coordinates along x, m (the inlet at ``x[0]``).
+    a : float
+        Hertz semi-axis along x, m.
+    p_hertz : float
+        Hertz pressure, Pa.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    x = np.asarray(x, dtype=float)
+    near = x <= x[0] + BOUNDARY_BAND * a
+    near[0:2] = True
+    level = float(np.max(np.asarray(pressure, dtype=float)[near])) / p_hertz
+    if level <= BOUNDARY_PRESSURE:
+        return []
+    x_min = x[0] / a
+    use = min(-2.5, math.floor(2 * (x_min - 1.0)) / 2)
+    return [f"inlet: x_min = {x_min:.3g} a leaves pressure {_pct(level)} of p_h within "
+            f"{BOUNDARY_BAND:g} a of the inlet boundary (limit {_pct(BOUNDARY_PRESSURE)}); the "
+            f"inlet is too short, the film starved and too thin; use x_min <= {use:g} a"]
+
+
+def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:
+    """Pressure at the side boundaries of a point contact: side leakage cut off.
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (nx, ny)
+        Film pressure on the nodes, Pa.
+    y : ndarray
+        Node coordinates across the entrainment direction, m.
+    b : float
+        Hertz semi-axis along y, m.
+    p_hertz : float
+        Hertz pressure, Pa.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    y = np.asarray(y, dtype=float)
+    if y.size < 3:
+        return []
+    near = (y <= y[0] + BOUNDARY_BAND * b) | (y >= y[-1] - BOUNDARY_BAND * b)
+    near[[0, 1, -2, -1]] = True
+    level = float(np.max(np.asarray(pressure, dtype=float)[:, near])) / p_hertz
+    if level <= BOUNDARY_PRESSURE:
+        return []
+    reach = max(abs(y[0]), abs(y[-1])) / b
+    use = max(2.0, math.ceil(2 * (reach + 0.5)) / 2)
+    return [f"sides: the side boundaries at y = {y[0] / b:.3g} b and {y[-1] / b:.3g} b leave "
+            f"pressure {_pct(level)} of p_h within {BOUNDARY_BAND:g} b of them (limit "
+            f"{_pct(BOUNDARY_PRESSURE)}); the side leakage is cut off; use y_min <= -{use:g} b "
+            f"and y_max >= {use:g} b"]
+
+
+def ehl_mesh(x, y, a: float, b: float | None,
+             min_cells: float = MIN_CELLS_PER_SEMI_AXIS) -> list[str]:
+    """A mesh too coarse for the Hertz zone (fewer than ``min_cells`` spacings per semi-axis).
+
+    Parameters
+    ----------
+    x, y : ndarray
+        Node coordinates, m.
+    a, b : float
+        Hertz semi-axes, m (``b`` None for a line contact).
+    min_cells : float
+        Fewest mesh spacings per semi-axis.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    parts = []
+    for name, coord, semi, key in (("a", x, a, "x"), ("b", y, b, "y")):
+        if semi is None or np.asarray(coord).size < 2:
+            continue
+        spacing = _spacing(coord)
+        cells = round(semi / spacing, 6)
+        if cells < min_cells:
+            n = np.asarray(coord).size
+            need = math.ceil((n - 1) * min_cells / cells) + 1
+            parts.append(f"{name}/d{key} = {cells:.3g} (n{key} = {n}; use n{key} >= {need}, "
+                         f"or cells_per_{name} >= {min_cells:g})")
+    if not parts:
+        return []
+    return ["mesh: the Hertz zone is resolved by " + " and ".join(parts) + f" (limit "
+            f"{min_cells:g} spacings per semi-axis); film and pressure are mesh-dependent"]
+
+
+def _rms(z) -> float:
+    z = np.asarray(z, dtype=float)
+    return float(np.sqrt(np.mean((z - z.mean()) ** 2))) if z.size else 0.0
+
+
+def unresolved_roughness(label: str, z, spacing: float, dx: float) -> list[str]:
+    """Roughness at wavelengths the mesh cannot resolve (shorter than a few mesh spacings).
+
+    Parameters
+    ----------
+    label : str
+        The surface, e.g. ``"surface1"``.
+    z : ndarray
+        Heights along x (first axis) sampled at ``spacing``, m.
+    spacing : float
+        Sampling interval of ``z``, m.
+    dx : float
+        Mesh spacing of the solver, m.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    from .surfaces import gaussian_filter
+
+    z = np.asarray(z, dtype=float)
+    total = _rms(z)
+    cutoff = UNRESOLVED_WAVELENGTH_CELLS * dx
+    if not total > 0 or cutoff <= 2 * spacing or z.shape[0] < 8:
+        return []
+    xs = spacing * np.arange(z.shape[0])
+    smooth = gaussian_filter(z, xs, cutoff, periodic=False) if z.ndim == 1 else np.stack(
+        [gaussian_filter(col, xs, cutoff, periodic=False) for col in z.T], axis=1)
+    share = _rms(z - smooth) / total
+    if share <= UNRESOLVED_RMS_SHARE:
+        return []
+    return [f"{label}: {_pct(share)} of the rms height ({total * 1e6:.3g} um) lies at "
+            f"wavelengths shorter than {UNRESOLVED_WAVELENGTH_CELLS:g} dx = {cutoff * 1e6:.3g} "
+            f"um, which the mesh (dx = {dx * 1e6:.3g} um) cannot resolve (limit "
+            f"{_pct(UNRESOLVED_RMS_SHARE)}); refine the mesh (dx <= {spacing * 2e6:.3g} um "
+            "resolves all of it) or set lowpass to say that the smoothing is intended"]
+
+
+def lowpass_removed(label: str, raw, filtered, cutoff: float) -> list[str]:
+    """The roughness a low-pass filter removed before the solve.
+
+    Parameters
+    ----------
+    label : str
+        The surface, e.g. ``"surface1"``.
+    raw, filtered : ndarray
+        Heights before and after the filter, m.
+    cutoff : float
+        The filter's cut-off wavelength, m.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    total = _rms(raw)
+    if not total > 0:
+        return []
+    share = _rms(np.asarray(raw, dtype=float) - np.asarray(filtered, dtype=float)) / total
+    if share <= LOWPASS_RMS_SHARE:
+        return []
+    return [f"{label}: the low-pass filter (lowpass, cut-off {cutoff * 1e6:.3g} um) removed "
+            f"{_pct(share)} of the rms height ({total * 1e6:.3g} um; limit "
+            f"{_pct(LOWPASS_RMS_SHARE)}); the results are those of the smoothed surface; refine "
+            "the mesh and lower lowpass to keep that roughness"]
+
+
+def unconverged_steps(step_converged, tolerance: float, max_sweeps: int) -> list[str]:
+    """Time steps that did not reach the tolerance.
+
+    Parameters
+    ----------
+    step_converged : ndarray of bool
+        One flag per step done.
+    tolerance : float
+        The solver's tolerance.
+    max_sweeps : int
+        Sweeps allowed per step.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    flags = np.asarray(step_converged, dtype=bool)
+    bad = np.flatnonzero(~flags)
+    if not bad.size:
+        return []
+    first = ", ".join(str(k + 1) for k in bad[:5]) + (", ..." if bad.size > 5 else "")
+    return [f"steps: {bad.size} of {flags.size} time steps ({_pct(bad.size / flags.size)}; "
+            f"limit 0) did not reach the tolerance {tolerance:g} within {max_sweeps} sweeps "
+            f"(steps {first}); their statistics are included; raise max_sweeps or use a "
+            "smaller dt"]
