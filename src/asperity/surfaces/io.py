@@ -2,37 +2,48 @@
 
 Formats (chosen by the file's suffix):
 
-- Text (``.txt``, ``.csv``, ``.dat``, ``.asc``; commas, semicolons, tabs or spaces): one column
-  = heights z (needs a spacing), two columns = x, z, three or more = a height matrix with
-  rows along x and columns along y (``z[ix, iy]``, needs a spacing). Lines starting with ``#``
-  are comments, except the metadata ``# spacing: dx [dy]``, ``# origin: x0 [y0]`` and
-  ``# periodic: true|false`` that :func:`write_surface` writes; a first line of words (a column
-  header) is skipped. All values in metres.
+- Text (``.txt``, ``.csv``, ``.dat``, ``.asc``, ``.xyz``): instrument text exports and plain
+  columns, read by :mod:`asperity.surfaces.readers` -- the data block found after any metadata
+  block, columns and units from column names (``x_um``, ``Height [nm]``) and header keys
+  (``Unit: um``, ``Value units``, ``Width``, ``Z scale``), missing-value markers (``NaN``,
+  ``BAD``, ``***``). Without a unit, numbers are metres, with a warning when that is
+  implausible (:data:`PLAUSIBLE_HEIGHT`). An x column rounded to its printed precision is taken
+  as uniform (with a note); a non-uniform one is resampled by cubic spline on request.
 - ``.npy``: a 1-D array of heights or a 2-D height matrix (needs a spacing).
 - ``.npz``: arrays ``z`` and optionally ``x``, ``y``, ``periodic`` (what :func:`write_surface`
   writes); without ``x`` a spacing is needed.
-- Any other suffix (``.x3p``, ``.sur``, ``.opd``, ``.plu``, ``.datx``, ...; note that ``.dat``
-  is read as text) is read by
+- Any other suffix (``.x3p``, ``.sdf``, ``.sur``, ``.opd``, ``.plu``, ``.datx``, ...) is read by
   ``SurfaceTopography.read_topography`` when that optional package is installed
-  (``pip install asperity[instruments]``), converted to metres.
+  (``pip install 'asperity[instruments]'``), converted to metres.
 
-Without coordinates in the file, positions are the cell centres ``(i + 1/2) * spacing``.
+Missing points are refused, or filled on request (:mod:`asperity.surfaces.missing`). Without
+coordinates in the file, positions are the cell centres ``(i + 1/2) * spacing``. The rules are
+written out for users in docs/surfaces.md.
 """
 
 from __future__ import annotations
 
-import re
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from scipy.interpolate import CubicSpline
 
 from ..errors import InputError, check_positive
+from .missing import fill_missing
+from .readers.layout import interpret
+from .readers.text import read_table
+from .readers.units import parse_length
 from .topography import Profile, Topography
 
-__all__ = ["TEXT_SUFFIXES", "read_surface", "write_surface"]
+__all__ = ["PLAUSIBLE_HEIGHT", "PLAUSIBLE_LENGTH", "TEXT_SUFFIXES", "Reading", "read_measured",
+           "read_surface", "write_surface"]
 
-TEXT_SUFFIXES = (".txt", ".csv", ".dat", ".asc")
-_SEPARATORS = re.compile(r"[,;\s]+")
+TEXT_SUFFIXES = (".txt", ".csv", ".dat", ".asc", ".xyz")
+#: Peak-to-valley height (m) and profile length (m) above which numbers read without a unit are
+#: taken to be in another unit than metres, and a warning says so.
+PLAUSIBLE_HEIGHT = 1e-2
+PLAUSIBLE_LENGTH = 1.0
 
 
 def _spacings(spacing, ndim: int, source: str) -> tuple[float, ...]:
@@ -60,139 +71,274 @@ def _from_heights(z, spacing, source, origin=None, periodic=False):
     return Topography(coords[0], coords[1], z, periodic)
 
 
-def _number(token: str) -> float | None:
-    try:
-        return float(token)
-    except ValueError:
-        return None
+@dataclass(frozen=True)
+class Reading:
+    """A surface read from a file, with what the reader did to it.
+
+    Attributes
+    ----------
+    surface : Profile or Topography
+        Heights and coordinates in metres.
+    style : str
+        The format or text layout recognised (``"two columns, x and z named 'x_um', 'z_um'"``).
+    notes : tuple of str
+        What was assumed or changed: units taken from the file, rounded coordinates accepted,
+        points filled, data resampled.
+    warnings : tuple of str
+        Reasons to doubt the result (heights implausible in metres without a unit).
+    filled : int
+        Number of missing points filled.
+    """
+
+    surface: Profile | Topography
+    style: str
+    notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+    filled: int = 0
 
 
-def _read_text(path: Path, spacing):
-    meta: dict[str, list[str]] = {}
-    rows: list[list[float]] = []
-    first_line = 0
-    with path.open("r", encoding="utf-8", errors="replace") as fh:
-        for lineno, line in enumerate(fh, start=1):
-            text = line.strip()
-            if not text:
-                continue
-            if text.startswith("#"):
-                key, sep, value = text[1:].partition(":")
-                if sep:
-                    meta[key.strip().lower()] = value.split()
-                continue
-            tokens = [t for t in _SEPARATORS.split(text) if t]
-            values = [_number(t) for t in tokens]
-            if not rows and all(v is None for v in values):
-                continue  # a column header
-            where = f"{path}:{lineno}"
-            bad = [t for t, v in zip(tokens, values, strict=True) if v is None]
-            if bad:
-                raise InputError(where, "numbers only", bad[0])
-            if rows and len(values) != len(rows[0]):
-                raise InputError(where, f"{len(rows[0])} columns like line {first_line}",
-                                 f"{len(values)} columns")
-            if not all(np.isfinite(values)):
-                raise InputError(where, "finite numbers (no NaN or infinity)")
-            if not rows:
-                first_line = lineno
-            rows.append(values)
-    if len(rows) < 2:
-        raise InputError(str(path), "at least 2 rows of numbers")
-    data = np.array(rows)
-    periodic = meta.get("periodic", ["false"])[0].lower() == "true"
-    if spacing is None and "spacing" in meta:
-        spacing = [_number(v) for v in meta["spacing"]]
-        if None in spacing:
-            raise InputError(f"{path}: spacing", "numbers", " ".join(meta["spacing"]))
-    origin = None
-    if "origin" in meta:
-        origin = [_number(v) for v in meta["origin"]]
-        if None in origin:
-            raise InputError(f"{path}: origin", "numbers", " ".join(meta["origin"]))
-    if data.shape[1] == 2:
-        return Profile(data[:, 0], data[:, 1], periodic)
-    heights = data[:, 0] if data.shape[1] == 1 else data
-    return _from_heights(heights, spacing, str(path), origin, periodic)
+@dataclass
+class _Units:
+    """Explicit units (metres per file unit) given by the user, None where not given."""
+
+    x: float | None
+    z: float | None
+
+    @classmethod
+    def of(cls, unit, x_unit, z_unit):
+        both = None if unit is None else parse_length(unit, "unit")
+        return cls(both if x_unit is None else parse_length(x_unit, "x_unit"),
+                   both if z_unit is None else parse_length(z_unit, "z_unit"))
 
 
-def _read_npz(path: Path, spacing):
+def _missing(z: np.ndarray, missing: str, where: str, notes: list) -> tuple[np.ndarray, int]:
+    count = int(np.size(z) - np.isfinite(z).sum())
+    if count == 0:
+        return z, 0
+    share = f"{count} of {z.size} points ({100 * count / z.size:.3g} %)"
+    if missing != "fill":
+        raise InputError(where, "no missing points, or missing points filled on request "
+                                "(--missing fill; case file: missing = \"fill\")",
+                         f"{share} missing")
+    z, count = fill_missing(z)
+    method = "linear interpolation" if z.ndim == 1 else "harmonic interpolation"
+    notes.append(f"filled {share} that the file marks as missing, by {method} from the "
+                 "measured neighbours")
+    return z, count
+
+
+def _uniform_x(x: np.ndarray, resolution: float, resample: bool, where: str, notes: list,
+               unit: float) -> tuple[np.ndarray, bool]:
+    """Uniform positions for ``x`` (file units): the fitted grid, or a request to resample."""
+    if not np.all(np.isfinite(x)):
+        raise InputError(where, "a position on every line (an x value is missing)")
+    if x.size > 1 and x[-1] < x[0]:
+        x = x[::-1]
+    steps = np.diff(x)
+    if np.any(steps <= 0):
+        raise InputError(where, "strictly increasing x positions")
+    i = np.arange(x.size)
+    slope, intercept = np.polyfit(i, x, 1)
+    deviation = float(np.max(np.abs(x - (intercept + slope * i))))
+    exact = 1e-9 * slope
+    if deviation <= exact:
+        return intercept + slope * i, False
+    if deviation <= resolution * (1 + 1e-6) + exact:
+        notes.append(f"x is printed to {resolution * unit:.3g} m: uniform to that precision "
+                     f"(largest deviation {deviation * unit:.3g} m from a straight-line fit), "
+                     f"taken as uniform with spacing {slope * unit:.6g} m")
+        return intercept + slope * i, False
+    if not resample:
+        raise InputError(where, "uniformly spaced x (the spacing varies from "
+                         f"{steps.min() * unit:.4g} to {steps.max() * unit:.4g} m, more than the "
+                         "printed precision); resample on request: --resample (case file: "
+                         "resample = true)")
+    return x, True
+
+
+def _resampled(x, z, notes) -> tuple[np.ndarray, np.ndarray]:
+    grid = np.linspace(x[0], x[-1], x.size)
+    notes.append(f"non-uniform x resampled onto {x.size} uniform points by a cubic spline "
+                 f"(spacing {grid[1] - grid[0]:.4g} m; the file's spacing ranged "
+                 f"{np.diff(x).min():.4g} to {np.diff(x).max():.4g} m)")
+    return grid, CubicSpline(x, z)(grid)
+
+
+def _plausible(surface, known: tuple[bool, bool], warnings: list):
+    """Warn when heights or lengths read without a unit are implausible in metres."""
+    if not known[1] and np.ptp(surface.z) > PLAUSIBLE_HEIGHT:
+        warnings.append(f"heights: peak-to-valley {np.ptp(surface.z):.4g} m read as metres (the "
+                        f"file gives no unit) exceeds {PLAUSIBLE_HEIGHT * 1e3:g} mm; give the "
+                        "unit: --z-unit um (case file: z_unit = \"um\")")
+    length = surface.x[-1] - surface.x[0]
+    if not known[0] and length > PLAUSIBLE_LENGTH:
+        warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit) "
+                        f"exceeds {PLAUSIBLE_LENGTH:g} m; give the unit: --x-unit um (case "
+                        "file: x_unit = \"um\")")
+
+
+def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool) -> Reading:
+    lay = interpret(read_table(path), str(path))
+    notes: list[str] = []
+    warnings: list[str] = []
+    xf = units.x if units.x is not None else lay.x_factor
+    zf = units.z if units.z is not None else lay.z_factor
+    for name, given, found in (("x", units.x, lay.x_factor), ("z", units.z, lay.z_factor)):
+        if given is not None and found is not None and not np.isclose(given, found):
+            notes.append(f"{name} unit given ({given:g} m) replaces the file's ({found:g} m)")
+    z = lay.z * (1.0 if zf is None else zf)
+    z, filled = _missing(z, missing, str(path), notes)
+    if lay.x is not None and lay.y is None:
+        unit = 1.0 if xf is None else xf
+        x, uneven = _uniform_x(lay.x, lay.resolution, resample, f"{path}: x", notes, unit)
+        x = x * unit
+        if uneven:
+            x, z = _resampled(lay.x * unit, z, notes)
+        surface = Profile(x, z, lay.periodic)
+    elif lay.x is not None:
+        unit = 1.0 if xf is None else xf
+        xs, ys = [_uniform_x(c, 0.0, False, f"{path}: {n}", notes, unit)[0] * unit
+                  for c, n in ((lay.x, "x"), (lay.y, "y"))]
+        surface = Topography(xs, ys, z, lay.periodic)
+    else:
+        if spacing is None and lay.spacing is not None:
+            factor = lay.spacing_factor or (1.0 if xf is None else xf)
+            spacing = [v * factor for v in lay.spacing]
+            xf = xf or lay.spacing_factor
+        surface = _from_heights(z, spacing, str(path), lay.origin, lay.periodic)
+    known = (xf is not None or lay.x is None and spacing is not None, zf is not None)
+    if zf is not None and units.z is None:
+        notes.append(f"heights in units of {zf:g} m, as the file says")
+    _plausible(surface, known, warnings)
+    return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled)
+
+
+def _read_npz(path: Path, spacing, missing: str) -> Reading:
     with np.load(path, allow_pickle=False) as f:
         arrays = {k: f[k] for k in f.files}
     if "z" not in arrays:
         raise InputError(str(path), "an array named 'z' (and optionally 'x', 'y')",
                          sorted(arrays))
-    z = arrays["z"]
+    notes: list[str] = []
+    z, filled = _missing(np.asarray(arrays["z"], float), missing, str(path), notes)
     periodic = bool(arrays.get("periodic", False))
     if "x" not in arrays:
-        return _from_heights(z, spacing, str(path), periodic=periodic)
-    if z.ndim == 1:
-        return Profile(arrays["x"], z, periodic)
-    if "y" not in arrays:
+        surface = _from_heights(z, spacing, str(path), periodic=periodic)
+    elif z.ndim == 1:
+        surface = Profile(arrays["x"], z, periodic)
+    elif "y" not in arrays:
         raise InputError(str(path), "an array 'y' with the 2-D heights 'z'")
-    return Topography(arrays["x"], arrays["y"], z, periodic)
+    else:
+        surface = Topography(arrays["x"], arrays["y"], z, periodic)
+    return Reading(surface, "numpy .npz (metres)", tuple(notes), (), filled)
 
 
-def _read_instrument(path: Path):
+def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) -> Reading:
     try:
         import SurfaceTopography
     except ImportError:
         raise InputError(str(path), f"a text, .npy or .npz file; {path.suffix or 'this'} files "
-                                    "need SurfaceTopography: pip install asperity[instruments]"
-                         ) from None
+                                    "need the optional SurfaceTopography reader: pip install "
+                                    "'asperity[instruments]'") from None
+    notes: list[str] = []
     try:
         topo = SurfaceTopography.read_topography(str(path))
-        if getattr(topo, "unit", None) not in (None, "m"):
-            topo = topo.to_unit("m")
-        if not topo.is_uniform:
-            raise InputError(str(path), "uniformly sampled data")
-        if topo.has_undefined_data:
-            raise InputError(str(path), "data without undefined (missing) points")
-        z = np.asarray(topo.heights(), dtype=float)
-        h = np.atleast_1d(topo.pixel_size)
-    except InputError:
-        raise
     except Exception as err:  # any failure of the third-party reader
         raise InputError(str(path), "a file SurfaceTopography can read", str(err)) from err
-    return _from_heights(z, tuple(h), str(path), periodic=bool(topo.is_periodic))
+    if getattr(topo, "unit", None) is None:
+        if units.x is None:
+            raise InputError(str(path), "a unit: the file gives none (--unit um; case file: "
+                                        "unit = \"um\")")
+        factor = units.x
+    else:
+        factor = SurfaceTopography.Support.UnitConversion.get_unit_conversion_factor(
+            topo.unit, "m")
+    heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * factor
+    heights, filled = _missing(heights, missing, str(path), notes)
+    if not topo.is_uniform:
+        x = np.asarray(topo.positions(), float) * factor
+        if not resample:
+            raise InputError(str(path), "uniformly sampled data; resample on request: "
+                                        "--resample (case file: resample = true)")
+        x, heights = _resampled(x, heights, notes)
+        surface = Profile(x, heights)
+    else:
+        h = tuple(np.atleast_1d(topo.pixel_size) * factor)
+        surface = _from_heights(heights, h, str(path), periodic=bool(topo.is_periodic))
+    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes), (), filled)
 
 
-def read_surface(path, spacing=None):
-    """Read a profile or topography (see the module docstring for the formats).
+def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
+                  missing="refuse", resample=False) -> Reading:
+    """Read a profile or topography with the reader's notes (module docstring: formats, rules).
 
     Parameters
     ----------
     path : str or Path
     spacing : float or (float, float), optional
-        Grid spacing (m), needed when the file holds heights without coordinates; ignored when
-        it has them.
+        Grid spacing (m) for files without coordinates; replaces a spacing from the header.
+    unit, x_unit, z_unit : str, optional
+        Length unit of the file's numbers (``"um"``): of both, of the coordinates, of the
+        heights. They replace units found in the file (with a note).
+    missing : {"refuse", "fill"}
+        What to do with missing points: refuse the file (naming how many), or fill them by
+        linear (profile) or harmonic (topography) interpolation
+        (:func:`asperity.surfaces.missing.fill_missing`).
+    resample : bool
+        Resample non-uniform x onto a uniform grid by a cubic spline instead of refusing.
 
     Returns
     -------
-    Profile or Topography
+    Reading
 
     Raises
     ------
     InputError
         Missing file, unknown format, ragged or non-numeric text (naming file and line),
-        missing spacing.
+        missing spacing or points, non-uniform x, a format that needs an extra.
     """
+    if missing not in ("refuse", "fill"):
+        raise InputError("missing", '"refuse" or "fill"', missing)
+    units = _Units.of(unit, x_unit, z_unit)
     path = Path(path)
     if not path.is_file():
         raise InputError("file", "an existing file", str(path))
     suffix = path.suffix.lower()
     if suffix in TEXT_SUFFIXES:
-        return _read_text(path, spacing)
+        return _read_text(path, spacing, units, missing, resample)
+    if suffix == ".npz":
+        return _read_npz(path, spacing, missing)
     if suffix == ".npy":
         try:
-            z = np.load(path, allow_pickle=False)
+            z = np.load(path, allow_pickle=False).astype(float)
         except ValueError as err:
             raise InputError(str(path), "a numeric .npy array", str(err)) from err
-        return _from_heights(z, spacing, str(path))
-    if suffix == ".npz":
-        return _read_npz(path, spacing)
-    return _read_instrument(path)
+        notes: list[str] = []
+        z = z * (1.0 if units.z is None else units.z)
+        z, filled = _missing(z, missing, str(path), notes)
+        surface = _from_heights(z, spacing, str(path))
+        warnings: list[str] = []
+        _plausible(surface, (True, units.z is not None), warnings)
+        return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled)
+    return _read_instrument(path, units, missing, resample)
 
+
+def read_surface(path, spacing=None, **options):
+    """Read a profile or topography: :func:`read_measured`'s surface alone.
+
+    Parameters
+    ----------
+    path : str or Path
+    spacing : float or (float, float), optional
+        Grid spacing (m), needed when the file holds heights without coordinates.
+    **options
+        ``unit``, ``x_unit``, ``z_unit``, ``missing``, ``resample`` of :func:`read_measured`.
+
+    Returns
+    -------
+    Profile or Topography
+    """
+    return read_measured(path, spacing, **options).surface
 
 def write_surface(surface, path) -> Path:
     """Write a Profile or Topography; the suffix picks the format.
@@ -213,7 +359,7 @@ def write_surface(surface, path) -> Path:
         np.savez(path, x=surface.x, z=surface.z, periodic=surface.periodic, **extra)
     elif suffix in TEXT_SUFFIXES:
         sep = "," if suffix == ".csv" else " "
-        head = [f"periodic: {str(surface.periodic).lower()}"]
+        head = ["unit: m", f"periodic: {str(surface.periodic).lower()}"]
         if isinstance(surface, Profile):
             data = np.column_stack([surface.x, surface.z])
             head = ["asperity profile, columns x z (m)", *head]

@@ -1,0 +1,238 @@
+"""What the columns of a text export mean: x, y, z columns or a height matrix, units, scales.
+
+Rules, in order (documented for users in docs/surfaces.md):
+
+- Named columns: a column named like a position (``x``, ``lateral``, ``position``,
+  ``distance``, ``horizontal``, ``length``, ``scan``) is x, one like ``y`` is y, and one named
+  like a height (``z``, ``height``, ``raw``, ``profile``, ``data``, ``value``, ``depth``, ...)
+  is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export).
+- Unnamed columns: one = heights, two = x and z, three or more = a height matrix.
+- A height matrix with an instrument header (Gwyddion/MountainsMap ``Width``/``Height``,
+  ``x-pixels``, ``NX``, ``x-length``, ``Value units``) has one line per y, values along x (how
+  instruments write images); without one, one line per x (how :func:`write_surface` writes).
+- Units: the unit in a column's name (``x_um``, ``Height [nm]``) or the header's ``x-unit``,
+  ``z-unit``, ``Lateral units``, ``Value units``, ``Unit`` keys; a height scale factor
+  (``Z scale``, ``Height scale``, ``Bit2nm``, ``height conversion factor (-> um)``) multiplies
+  the stored values. Spacing from ``spacing``/``pixel size``/``resolution``/``Scale X`` keys or
+  from the physical size (``Width``, ``x-length``) divided by the number of points.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import InputError
+from .text import TextTable
+from .units import length_factor, unit_of_name
+
+__all__ = ["Layout", "interpret"]
+
+_X_WORDS = ("x", "lateral", "position", "distance", "horizontal", "length", "scan", "pos")
+_Y_WORDS = ("y",)
+_Z_WORDS = ("z", "height", "heights", "raw", "profile", "data", "value", "depth", "elevation",
+            "total", "normal", "roughness", "surface", "amplitude", "h", "topography")
+_UNIT_KEYS = ("unit", "units", "length unit", "lateral and height unit")
+_X_UNIT_KEYS = ("x unit", "x units", "xunit", "lateral unit", "lateral units", "unit x",
+                "horizontal unit", "x axis unit")
+_Z_UNIT_KEYS = ("z unit", "z units", "zunit", "value unit", "value units", "height unit",
+                "height units", "unit data", "data unit", "vertical unit", "z axis unit")
+_SCALE_KEYS = ("z scale", "zscale", "height scale", "scale z", "z factor", "height factor",
+               "z scaling", "z multiplier", "height multiplier", "z scale factor",
+               "height scale factor")
+_SPACING_KEYS = ("spacing", "pixel size", "x spacing", "dx", "sampling interval",
+                 "x increment", "resolution", "scale x", "x resolution", "point spacing",
+                 "sampling distance", "x pitch", "pitch", "x step", "step size", "x scale")
+_Y_SPACING_KEYS = ("y spacing", "dy", "scale y", "y increment", "y resolution", "y pitch",
+                   "y step", "y scale")
+_WIDTH_KEYS = ("width", "x length", "x size", "image width", "x range")
+_HEIGHT_KEYS = ("y length", "y size", "image height", "y range")
+_MISSING_KEYS = ("no data value", "nodata", "no data", "invalid value", "undefined value",
+                 "missing value", "bad value", "void value", "nodata value")
+_INSTRUMENT_KEYS = ("width", "x pixels", "y pixels", "nx", "ny", "x length", "value units",
+                    "value unit", "channel")
+_QUANTITY = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+
+
+@dataclass(frozen=True)
+class Layout:
+    """A text export's data as a surface in the file's units, with what is known of them.
+
+    Attributes
+    ----------
+    z : ndarray
+        Stored heights times any header scale factor (1-D, or 2-D ``[ix, iy]``); NaN missing.
+    x, y : ndarray or None
+        Coordinates from the file (file units), or None for gridded data without them.
+    x_factor, z_factor : float or None
+        Metres per file unit of the coordinates and of ``z``, None when the file does not say.
+    spacing : tuple of float or None
+        Grid spacing from the header, in units of ``spacing_factor``.
+    spacing_factor : float or None
+        Metres per unit of ``spacing``; None when it is in the file's x unit.
+    resolution : float
+        Printed resolution of the x column (file units), 0 when there is none.
+    periodic : bool
+    origin : list of float or None
+    style : str
+        What was recognised, for the user (``"x, z columns named x_um, z_um"``).
+    """
+
+    z: np.ndarray
+    x: np.ndarray | None
+    y: np.ndarray | None
+    x_factor: float | None
+    z_factor: float | None
+    spacing: tuple[float, ...] | None
+    spacing_factor: float | None
+    resolution: float
+    periodic: bool
+    origin: list[float] | None
+    style: str
+
+
+def _first(header: dict, keys) -> str | None:
+    return next((header[k] for k in keys if k in header), None)
+
+
+def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
+    """Numbers and the unit's factor of ``"0.5 um"``, ``"0.333 um/pt"``, ``"1e-6 2e-6"``."""
+    if text is None:
+        return None
+    numbers = []
+    rest = text
+    while True:
+        match = _QUANTITY.match(rest)
+        if match is None:
+            break
+        numbers.append(float(match.group(1)))
+        rest = match.group(2)
+    if not numbers:
+        return None
+    unit = rest.split("/")[0].strip().strip("[]()")
+    return numbers, length_factor(unit) if unit else None
+
+
+def _role(name: str) -> str | None:
+    word = re.split(r"[\s_\[\](),/.:-]+", name.strip().lower())[0] if name.strip() else ""
+    for role, words in (("x", _X_WORDS), ("y", _Y_WORDS), ("z", _Z_WORDS)):
+        if word in words:
+            return role
+    return None
+
+
+def _columns(table: TextTable):
+    """Indices of the x, y, z columns from their names (None where a role is absent)."""
+    roles = {}
+    for j, name in enumerate(table.names or ()):
+        role = _role(name)
+        if role is not None and role not in roles:
+            roles[role] = j
+    return roles.get("x"), roles.get("y"), roles.get("z")
+
+
+def _scale(header: dict, z_unit_factor: float | None) -> tuple[float, float | None]:
+    """(multiplier of the stored heights, metres per unit of the product or None)."""
+    for key, value in header.items():
+        match = re.match(r"height conversion factor \(\s*->\s*(.+?)\s*\)", key)
+        if match is not None:
+            q = _quantity(value)
+            if q is not None:
+                return q[0][0], length_factor(match.group(1))
+    if "bit2nm" in header:
+        q = _quantity(header["bit2nm"])
+        if q is not None:
+            return q[0][0], 1e-9
+    q = _quantity(_first(header, _SCALE_KEYS))
+    if q is not None:
+        return q[0][0], q[1] if q[1] is not None else z_unit_factor
+    return 1.0, z_unit_factor
+
+
+def _grid_from_points(x, y, z, where: str):
+    """Heights ``[ix, iy]`` from an XYZ point list that covers a full grid."""
+    xs, ix = np.unique(x, return_inverse=True)
+    ys, iy = np.unique(y, return_inverse=True)
+    if xs.size * ys.size != z.size or xs.size < 2 or ys.size < 2:
+        raise InputError(where, "x, y, z points on a full rectangular grid",
+                         f"{z.size} points over {xs.size} x and {ys.size} y values")
+    grid = np.full((xs.size, ys.size), np.nan)
+    grid[ix, iy] = z
+    return xs, ys, grid
+
+
+def interpret(table: TextTable, where: str) -> Layout:
+    """Decide what the columns of ``table`` are and what units they carry (module docstring)."""
+    h = table.header
+    unit_all = length_factor(_first(h, _UNIT_KEYS) or "")
+    x_factor = length_factor(_first(h, _X_UNIT_KEYS) or "") or unit_all
+    z_unit = length_factor(_first(h, _Z_UNIT_KEYS) or "") or unit_all
+    data, names = table.data, table.names
+    ix, iy, iz = _columns(table)
+    x = y = None
+    resolution = 0.0
+    ncol = data.shape[1]
+    if names is not None and ix is not None and iz is not None:
+        x, z = data[:, ix], data[:, iz]
+        resolution = float(table.resolution[ix])
+        found = unit_of_name(names[ix])
+        x_factor = found[1] if found else x_factor
+        found = unit_of_name(names[iz])
+        z_unit = found[1] if found else z_unit
+        style = f"columns named {names[ix]!r} (x) and {names[iz]!r} (z)"
+        if iy is not None:
+            x, y, z = _grid_from_points(x, data[:, iy], z, where)
+            style = f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
+    elif ncol == 1:
+        z = data[:, 0]
+        found = unit_of_name(names[0]) if names else None
+        z_unit = found[1] if found else z_unit
+        style = "one column of heights" + (f" named {names[0]!r}" if names else "")
+    elif ncol == 2:
+        x, z = data[:, 0], data[:, 1]
+        resolution = float(table.resolution[0])
+        if names:
+            found = [unit_of_name(n) for n in names]
+            x_factor = found[0][1] if found[0] else x_factor
+            z_unit = found[1][1] if found[1] else z_unit
+        style = "two columns, x and z" + (f" named {names[0]!r}, {names[1]!r}" if names else "")
+    elif ncol == 3 and ("lateral units" in h or "lateral unit" in h):
+        x, y, z = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where)
+        style = "x, y, z points (Gwyddion XYZ export)"
+    else:
+        instrument = any(k in h for k in _INSTRUMENT_KEYS)
+        z = data.T if instrument else data
+        style = ("height matrix, one line per y (instrument header)" if instrument
+                 else "height matrix, one line per x")
+    scale, z_factor = _scale(h, z_unit)
+    spacing = _spacing(h, z)
+    periodic = str(h.get("periodic", "false")).lower() == "true"
+    origin = _quantity(h.get("origin"))
+    return Layout(np.asarray(z, float) * scale, x, y, x_factor, z_factor,
+                  None if spacing is None else spacing[0], None if spacing is None else spacing[1],
+                  resolution,
+                  periodic, None if origin is None else origin[0],
+                  style + ("" if scale == 1.0 else f", heights scaled by {scale:g}"))
+
+
+def _spacing(h: dict, z: np.ndarray) -> tuple[tuple[float, ...], float | None] | None:
+    """Spacing from the header's spacing or size keys, and metres per its unit (None: the
+    file's x unit)."""
+    text = _first(h, _SPACING_KEYS)
+    q = _quantity(text)
+    if q is not None and (q[1] is not None or "." in text or len(q[0]) > 1 or "spacing" in h):
+        values = list(q[0])
+        qy = _quantity(_first(h, _Y_SPACING_KEYS))
+        if qy is not None and len(values) == 1 and qy[1] == q[1]:
+            values += qy[0]
+        return tuple(values), q[1]
+    width = _quantity(_first(h, _WIDTH_KEYS))
+    if width is None:
+        return None
+    out = [width[0][0] / z.shape[0]]
+    height = _quantity(_first(h, _HEIGHT_KEYS) or (h.get("height") if "width" in h else None))
+    if z.ndim == 2 and height is not None and height[1] == width[1]:
+        out.append(height[0][0] / z.shape[1])
+    return tuple(out), width[1]

@@ -1,0 +1,204 @@
+"""Text and CSV exports of profilometers: find the data block, its columns, units and scales.
+
+A text export is a header (comment lines, ``key: value`` / ``key = value`` / ``key,value,unit``
+lines, a line of column names) followed by a block of numbers. The reader
+
+1. splits each line on tabs or semicolons if it has any, else on commas, else on white space
+   (a decimal comma is accepted when the separator is not a comma), dropping a trailing empty
+   field (``0.1,0.2,``);
+2. takes as the data block the last run of lines whose fields are all numbers or missing-value
+   markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, ...); every
+   line before it is header, every non-comment line after it is an error naming the line;
+3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
+   the last header line with one name per column.
+
+:func:`read_table` returns the numbers with NaN for missing values, the column names, the header
+pairs and the printed resolution of each column (for rounded coordinates). Interpreting them
+(which column is x, units, scale factors) is :mod:`asperity.surfaces.readers.layout`'s job.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ...errors import InputError
+
+__all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "read_table"]
+
+#: Field values that instruments write for a point they could not measure (lower case).
+MISSING_TOKENS = frozenset({"", "nan", "-nan", "+nan", "bad", "nd", "n/a", "na", "***", "*",
+                            "-", "--", "undefined", "invalid", "void", "inf", "-inf", "+inf",
+                            "infinity", "-infinity", "null", "none"})
+_COMMENT = re.compile(r"^\s*(#|%|//|;|!)\s*")
+_KEY_VALUE = re.compile(r"^([^=:：]{1,60}?)\s*[=:：]\s*(.*)$")
+_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+
+
+@dataclass(frozen=True)
+class TextTable:
+    """What a text export holds, before interpretation.
+
+    Attributes
+    ----------
+    data : ndarray, shape (rows, columns)
+        The data block, NaN where a value is missing.
+    names : list of str or None
+        Column names from the header line above the block.
+    header : dict of str to str
+        Header pairs, keys normalised by :func:`normalise_key`.
+    resolution : ndarray, shape (columns,)
+        The coarsest printed resolution of each column (1e-3 for ``12.345``), 0 if unknown.
+    first_line : int
+        Line number (1-based) of the first data row.
+    comments : list of str
+        Header lines that are not key-value pairs.
+    """
+
+    data: np.ndarray
+    names: list[str] | None
+    header: dict[str, str]
+    resolution: np.ndarray
+    first_line: int
+    comments: list[str]
+
+
+def normalise_key(key: str) -> str:
+    """Lower case; runs of spaces, underscores, hyphens as one space (``X-Unit`` -> ``x unit``)."""
+    return re.sub(r"[\s_\-]+", " ", key.strip().lower()).strip()
+
+
+def _split(text: str) -> list[str]:
+    if "\t" in text or ";" in text:
+        fields = re.split(r"[\t;]", text)
+    elif "," in text:
+        fields = text.split(",")
+    else:
+        fields = text.split()
+    fields = [f.strip() for f in fields]
+    while fields and not fields[-1]:
+        fields.pop()
+    return fields
+
+
+def _value(token: str, decimal_comma: bool) -> float | None:
+    """The number a field holds, NaN for a missing-value marker, None for a word."""
+    t = token.replace(",", ".") if decimal_comma else token
+    if _NUMBER.match(t):
+        return float(t)
+    if token.lower() in MISSING_TOKENS:
+        return np.nan
+    return None
+
+
+def _resolution(token: str) -> float:
+    """The last printed digit's value: ``12.345`` -> 1e-3, ``1.5e-6`` -> 1e-7, ``7`` -> 1."""
+    mantissa, _, exponent = token.lower().replace(",", ".").partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 10.0 ** (int(exponent or 0) - decimals)
+
+
+def header_pairs(lines: list[str]) -> tuple[dict[str, str], list[str]]:
+    """``key: value``, ``key = value`` or ``key,value[,unit]`` header lines as a dict.
+
+    Returns the pairs (keys normalised, values with the fields joined by spaces) and the lines
+    that are not pairs.
+    """
+    pairs, other = {}, []
+    for line in lines:
+        text = _COMMENT.sub("", line).strip()
+        match = _KEY_VALUE.match(text)
+        if match is not None and match.group(2).strip():
+            pairs.setdefault(normalise_key(match.group(1)), match.group(2).strip())
+            continue
+        fields = _split(text)
+        if len(fields) >= 2 and not _NUMBER.match(fields[0]) and fields[1]:
+            pairs.setdefault(normalise_key(fields[0]), " ".join(fields[1:]))
+        elif text:
+            other.append(text)
+    return pairs, other
+
+
+def _lines(path: Path) -> list[str]:
+    raw = path.read_bytes()
+    if b"\x00" in raw[:4096] and not raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+        raise InputError(str(path), "a text file (this one is binary; a binary format needs "
+                                    "its own suffix, e.g. .x3p, .sdf, .sur)")
+    for encoding in ("utf-8-sig", "utf-16") if raw[:2] in (b"\xff\xfe", b"\xfe\xff") else (
+            "utf-8-sig", "latin-1"):
+        try:
+            return raw.decode(encoding).splitlines()
+        except UnicodeDecodeError:
+            continue
+    raise InputError(str(path), "a text file in UTF-8, UTF-16 or Latin-1")
+
+
+def _row(text: str) -> tuple[list[float], list[str]] | None:
+    """The values of a data line, or None when it is not one."""
+    fields = _split(text)
+    if not fields:
+        return None
+    decimal_comma = ("\t" in text or ";" in text) and "," in text
+    values = [_value(f, decimal_comma) for f in fields]
+    if any(v is None for v in values) or all(f.lower() in MISSING_TOKENS for f in fields):
+        return None
+    return values, fields
+
+
+def read_table(path: Path) -> TextTable:
+    """Read a text export's header and data block (see the module docstring).
+
+    Raises
+    ------
+    InputError
+        No data block, a data line with another number of columns than the first (naming the
+        file and line), words after the data block, a binary file.
+    """
+    lines = _lines(path)
+    parsed = [None if _COMMENT.match(line) else _row(line) for line in lines]
+    last = max((i for i, p in enumerate(parsed) if p is not None), default=None)
+    if last is None:
+        raise InputError(str(path), "a block of numbers (one column of heights, x and z "
+                                    "columns, or a height matrix)")
+    start = last
+    while start > 0 and (parsed[start - 1] is not None or not lines[start - 1].strip()):
+        start -= 1
+    while parsed[start] is None:  # blank lines at the top of the block
+        start += 1
+    width = len(parsed[start][0])
+    rows, tokens = [], []
+    for i in range(start, len(lines)):
+        if parsed[i] is None:
+            text = lines[i].strip()
+            if not text or _COMMENT.match(lines[i]):
+                continue
+            bad = next((f for f in _split(text) if _value(f, False) is None), text)
+            raise InputError(f"{path}:{i + 1}", "numbers only", bad)
+        values, fields = parsed[i]
+        if len(values) != width:
+            raise InputError(f"{path}:{i + 1}", f"{width} columns like line {start + 1}",
+                             f"{len(values)} columns")
+        rows.append(values)
+        tokens.append(fields)
+    if len(rows) < 2:
+        raise InputError(str(path), "at least 2 rows of numbers")
+    data = np.array(rows, dtype=float)
+    resolution = np.zeros(width)
+    for j in range(width):
+        column = [row[j] for row in tokens if _NUMBER.match(row[j].replace(",", "."))]
+        fractional = [t for t in column if "." in t or "," in t or "e" in t.lower()]
+        resolution[j] = max((_resolution(t) for t in fractional), default=1.0)
+    header_lines = lines[:start]
+    names = None
+    plain = [line for line in header_lines if line.strip() and not _COMMENT.match(line)]
+    candidates = plain[-1:] or [_COMMENT.sub("", line) for line in header_lines[-1:]]
+    for line in candidates:
+        fields = _split(line) if width > 1 else [line.strip()]
+        if len(fields) == width and all(_value(f, False) is None for f in fields):
+            names = fields
+            header_lines = [h for h in header_lines if h is not line]
+    pairs, other = header_pairs([line for line in header_lines if line.strip()])
+    return TextTable(data, names, pairs, resolution, start + 1, other)
