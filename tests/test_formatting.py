@@ -123,3 +123,14 @@ def test_unit_labels():
 ])
 def test_imperial_input_detected(data, imperial):
     assert given_in_imperial(data) is imperial
+
+
+def test_round_off_of_zero_shown_as_zero():
+    # a force along an unloaded axis comes out as 3e-13 N beside a 48 kN load: zero, not noise
+    rows = {r.key: r.text for r in summary_rows(
+        {"normal_load_n": 48040.0, "force_x_n": 3.269e-13, "force_y_n": 5338.0,
+         "shift_m": 2.606e-6, "shift_x_m": 1.2e-22, "residual": 5.24e-9})}
+    assert rows["force_x_n"] == "0 N"
+    assert rows["shift_x_m"] == "0 m"
+    assert rows["force_y_n"] == "5.338 kN"
+    assert rows["residual"] == "5.24×10⁻⁹"      # dimensionless numbers are never rounded away

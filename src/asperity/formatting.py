@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from .units import registry
 
 __all__ = [
+    "NOISE",
     "SummaryRow",
     "describe_key",
     "format_number",
@@ -91,6 +92,9 @@ _LABELS = {
     "friction_coefficient": "friction coefficient",
     "load_capacity": "load / friction capacity",
 }
+
+#: Relative size below which a value is round-off of zero (see :func:`summary_rows`).
+NOISE = 1e-9
 
 _IMPERIAL_WORDS = {"inch", "microinch", "foot", "yard", "mile", "pound", "kip", "thou", "ounce",
                    "fahrenheit", "poundal", "slug"}
@@ -241,7 +245,9 @@ class SummaryRow:
 def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
     """The scalars of a summary as labelled, formatted rows (lists and tables are skipped).
 
-    Values of keys ending in ``fraction`` are shown in percent.
+    Values of keys ending in ``fraction`` are shown in percent. A value whose magnitude is at
+    most :data:`NOISE` times the largest of the summary's values in the same unit is round-off
+    and shown as zero (``3.3e-13 N`` beside a load of 48 kN).
 
     Parameters
     ----------
@@ -254,6 +260,12 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
     -------
     list of SummaryRow
     """
+    scalars = {k: v for k, v in summary.items()
+               if isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)}
+    scale: dict[str, float] = {}
+    for key, value in scalars.items():
+        unit = describe_key(key)[1]
+        scale[unit] = max(scale.get(unit, 0.0), abs(value))
     rows = []
     for key, value in summary.items():
         if isinstance(value, dict | list | tuple) or value is None:
@@ -262,6 +274,8 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
         if isinstance(value, str):
             text = value
         else:
+            if key in scalars and unit and abs(value) <= NOISE * scale[unit]:
+                value = 0.0  # round-off of a quantity that is zero (a force along an unloaded axis)
             if unit == "%" and key.endswith("fraction") and not isinstance(value, bool):
                 value = 100.0 * value
             text = format_quantity(value, unit, imperial=imperial)

@@ -8,10 +8,11 @@ from __future__ import annotations
 
 import base64
 import html
-import json
 import math
+import re
 from pathlib import Path
 
+from .formatting import SummaryRow, format_number, format_quantity, summary_rows
 from .results import Outcome, atomic_path
 
 __all__ = ["render_report", "write_report"]
@@ -33,30 +34,67 @@ border-radius:4px} .bad{background:#ffebe9;border-color:#cf222e}
 .warn{background:#fff1e5;border:2px solid #bc4c00;color:#762c00;padding:.5rem .8rem;
 border-radius:4px} .warn ul{margin:.3rem 0 0 0}
 pre{background:#f6f8fa;padding:.6rem;overflow:auto;font-size:.85rem}
+h3{font-size:1rem;margin:1rem 0 .2rem;color:#57606a}
+.headline{display:flex;flex-wrap:wrap;gap:.8rem;margin:1rem 0}
+.card{border:1px solid #d0d7de;border-radius:6px;padding:.6rem 1rem;min-width:11rem;
+background:#f6f8fa} .cv{font-size:1.45rem;font-weight:600} .cl{color:#57606a;font-size:.9rem}
+code{font-size:.85rem}
 """
 
 
-def _fmt(value) -> str:
-    if isinstance(value, bool):
-        return "yes" if value else "no"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):
-        if not math.isfinite(value):
-            return "n/a"
-        return f"{value:.5g}"
-    return html.escape(str(value))
+#: Summary keys shown as the headline, in this order of preference (the first four present).
+HEADLINE_KEYS = (
+    "contact_time_percent", "contact_time_fraction", "central_film_thickness_m",
+    "minimum_film_thickness_m", "max_pressure_pa", "contact_area_m2", "approach_m",
+    "max_contact_count_rate_per_ms", "gross_slip", "stick_fraction", "shift_m", "rotation_rad",
+    "friction_capacity_n", "mean_contact_pressure_pa", "friction_coefficient", "pa_m", "pq_m",
+    "kinematic_rt_m",
+)
+
+#: Bookkeeping of the solver, listed after the physical results.
+_SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps", "steps",
+                "mean_sweeps_per_step", "steps_converged_fraction", "load_error", "path_steps",
+                "path_iterations", "path_converged", "path_gross_slip_step")
 
 
-def _summary_table(summary: dict) -> str:
-    rows = "".join(
-        f"<tr><td class=l>{html.escape(k)}</td><td>{_fmt(v)}</td></tr>"
-        for k, v in summary.items() if not isinstance(v, dict | list)
-    )
-    return f"<table><tr><th class=l>quantity</th><th>value</th></tr>{rows}</table>"
+def _headline(rows: list[SummaryRow]) -> str:
+    by_key = {r.key: r for r in rows}
+    chosen = [by_key[k] for k in HEADLINE_KEYS if k in by_key][:4]
+    if not chosen:
+        chosen = [r for r in rows if r.key not in _SOLVER_KEYS][:3]
+    cards = "".join(f"<div class=card><div class=cv>{html.escape(r.text)}</div>"
+                    f"<div class=cl>{html.escape(r.label)}</div></div>" for r in chosen)
+    return f"<div class=headline>{cards}</div>" if cards else ""
 
 
-def _comparison_table(comparisons) -> str:
+def _summary_table(rows: list[SummaryRow]) -> str:
+    physics = [r for r in rows if r.key not in _SOLVER_KEYS]
+    solver = [r for r in rows if r.key in _SOLVER_KEYS]
+
+    def body(items):
+        return "".join(f"<tr><td class=l>{html.escape(r.label)}</td>"
+                       f"<td>{html.escape(r.text)}</td></tr>" for r in items)
+
+    table = f"<table><tr><th class=l>quantity</th><th>value</th></tr>{body(physics)}</table>"
+    if solver:
+        table += ("<h3>Solver</h3><table><tr><th class=l>quantity</th><th>value</th></tr>"
+                  f"{body(solver)}</table>")
+    return table
+
+
+def _difference(relative_error: float) -> str:
+    """A relative difference in percent: ``+0.63 %``, ``0 %`` when exact, ``< 0.01 %``."""
+    if not math.isfinite(relative_error):
+        return "n/a"
+    percent = 100.0 * relative_error
+    if percent == 0.0:
+        return "0 %"
+    if abs(percent) < 0.005:
+        return "&lt; 0.01 %"
+    return f"{percent:+.2f} %".replace("-", "\u2212")
+
+
+def _comparison_table(comparisons, imperial: bool = False) -> str:
     if not comparisons:
         return "<p class=info>No closed-form or published reference applies to this case.</p>"
     rows = []
@@ -64,16 +102,59 @@ def _comparison_table(comparisons) -> str:
         status = c.passed
         badge = ("<span class=info>info</span>" if status is None else
                  "<span class=pass>pass</span>" if status else "<span class=fail>differs</span>")
-        tol = "" if c.tolerance is None else f"{100 * c.tolerance:.3g} %"
+        tol = "" if c.tolerance is None else f"{format_number(100 * c.tolerance, 3)} %"
+        value = format_quantity(c.value, c.unit, imperial=imperial)
+        reference = format_quantity(c.reference, c.unit, imperial=imperial)
         rows.append(
-            f"<tr><td class=l>{html.escape(c.quantity)}</td><td>{_fmt(c.value)}</td>"
-            f"<td>{_fmt(c.reference)}</td><td class=l>{html.escape(c.unit)}</td>"
-            f"<td>{100 * c.relative_error:+.2f} %</td><td>{tol}</td><td>{badge}</td>"
+            f"<tr><td class=l>{html.escape(c.quantity)}</td><td>{html.escape(value)}</td>"
+            f"<td>{html.escape(reference)}</td><td>{_difference(c.relative_error)}</td>"
+            f"<td>{tol}</td><td>{badge}</td>"
             f"<td class=l>{html.escape(c.source)}{(': ' + html.escape(c.note)) if c.note else ''}"
             "</td></tr>")
-    head = ("<tr><th class=l>quantity</th><th>asperity</th><th>reference</th><th class=l>unit"
-            "</th><th>difference</th><th>tolerance</th><th></th><th class=l>source</th></tr>")
+    head = ("<tr><th class=l>quantity</th><th>asperity</th><th>reference</th>"
+            "<th>difference</th><th>tolerance</th><th></th><th class=l>source</th></tr>")
     return f"<table>{head}{''.join(rows)}</table>"
+
+
+def _flatten(data, prefix: str = ""):
+    """(dotted key, value) of a nested case dict; lists of tables as ``key[i].field``."""
+    for key, value in data.items():
+        path = f"{prefix}{key}"
+        if isinstance(value, dict):
+            yield from _flatten(value, path + ".")
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            for i, item in enumerate(value):
+                yield from _flatten(item, f"{path}[{i}].")
+        else:
+            yield path, value
+
+
+def _parameters_table(case: dict, imperial: bool = False) -> str:
+    """The case's keys and values, quantities in readable units (SI as validated)."""
+    from .cases import ANALYSES
+    from .cases.keys import field_units
+
+    model = ANALYSES.get(case.get("analysis"))
+    units = field_units(model) if model is not None else {}
+    rows = []
+    for key, value in _flatten(case):
+        if key in ("title", "description", "source"):
+            continue
+        unit = units.get(re.sub(r"\[\d+\]", "[]", key), "")
+        if isinstance(value, list | tuple):
+            text = ", ".join(format_quantity(v, unit, imperial=imperial)
+                             if isinstance(v, int | float) and not isinstance(v, bool)
+                             else str(v) for v in value)
+        elif isinstance(value, float) or (isinstance(value, int) and unit):
+            text = format_quantity(value, unit, imperial=imperial)
+        elif isinstance(value, bool):
+            text = "true" if value else "false"
+        else:
+            text = str(value)
+        rows.append(f"<tr><td class=l><code>{html.escape(key)}</code></td>"
+                    f"<td class=l>{html.escape(text)}</td></tr>")
+    return ("<table><tr><th class=l>key</th><th class=l>value</th></tr>"
+            f"{''.join(rows)}</table>")
 
 
 def _figures(outcome: Outcome, files: dict) -> str:
@@ -106,8 +187,11 @@ def _status_banner(outcome: Outcome) -> str:
 
 
 def render_report(title: str, case: dict, outcome: Outcome, files: dict,
-                  extra_html: str = "") -> str:
+                  extra_html: str = "", *, imperial: bool = False) -> str:
     """The report as an HTML string.
+
+    The headline results come first, then the key results in words with their units, the
+    comparison with references, the figures and the case's parameters.
 
     Parameters
     ----------
@@ -121,31 +205,36 @@ def render_report(title: str, case: dict, outcome: Outcome, files: dict,
         Name -> path of the files written (figures are read from here and embedded).
     extra_html : str, optional
         Additional sections (already escaped HTML), e.g. a contact-time table.
+    imperial : bool
+        Show imperial values beside SI (for a case given in imperial units; see
+        :func:`asperity.formatting.given_in_imperial`).
     """
     status = _status_banner(outcome)
     notes = "".join(f"<p class=note>{html.escape(n)}</p>" for n in outcome.notes)
-    params = html.escape(json.dumps(case, indent=2, default=str))
+    rows = summary_rows(outcome.summary, imperial=imperial)
+    units = "SI and imperial" if imperial else "SI"
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)} - asperity</title>
 <style>{_CSS}</style></head><body>
 <h1>{html.escape(title)}</h1>
 <p class=sub>{html.escape(str(case.get('description', '')))}
 {('<br>Source: ' + html.escape(str(case['source']))) if case.get('source') else ''}</p>
-{status}{notes}
-<h2>Key results</h2>{_summary_table(outcome.summary)}
-<h2>Comparison with references</h2>{_comparison_table(outcome.comparisons)}
+{status}{_headline(rows)}{notes}
+<h2>Key results</h2>{_summary_table(rows)}
+<h2>Comparison with references</h2>{_comparison_table(outcome.comparisons, imperial)}
 {extra_html}
 <h2>Figures</h2>{_figures(outcome, files)}
-<h2>Case parameters (SI)</h2><pre>{params}</pre>
+<h2>Case parameters ({units})</h2>{_parameters_table(case, imperial)}
 <p class=info>Written by asperity. Files: {', '.join(html.escape(Path(p).name)
                                              for p in files.values())}.</p>
 </body></html>
 """
 
 
-def write_report(title: str, case: dict, outcome: Outcome, files: dict, path) -> Path:
-    """Render the report and write it atomically to ``path``."""
-    text = render_report(title, case, outcome, files)
+def write_report(title: str, case: dict, outcome: Outcome, files: dict, path, *,
+                 imperial: bool = False) -> Path:
+    """Render the report (:func:`render_report`) and write it atomically to ``path``."""
+    text = render_report(title, case, outcome, files, imperial=imperial)
     with atomic_path(path) as tmp:
         tmp.write_text(text, encoding="utf-8")
     return Path(path)

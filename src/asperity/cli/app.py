@@ -152,8 +152,8 @@ def run(
             signal.signal(sig, handler)
     files = write_outcome(outcome, out)
     files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
-                                   outcome, files,
-                                   Path(out) / "report.html")
+                                   outcome, files, Path(out) / "report.html",
+                                   imperial=_in_imperial(case, is_file))
     _print_summary(outcome.summary)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
@@ -164,6 +164,16 @@ def run(
         fail(f"{len(outcome.warnings)} warning(s) and --strict; see report.html", EXIT_WARNINGS)
     if not outcome.warnings:
         console.print("Converged.")
+
+
+def _in_imperial(case: str, is_file: bool) -> bool:
+    """Whether the case file (or built-in example) gives quantities in imperial units."""
+    from ..cases import parse_toml
+    from ..examples import example_text
+    from ..formatting import given_in_imperial
+
+    text = Path(case).read_text(encoding="utf-8") if is_file else example_text(case)
+    return given_in_imperial(parse_toml(text, case))
 
 
 def _stopped(exc: Interrupted, where: str, case: str, out: Path, quiet: bool):
