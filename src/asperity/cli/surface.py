@@ -138,6 +138,25 @@ def _require(value, option: str, kind: str):
     return value
 
 
+def _check_size(length: float, spacing: float, width: float | None) -> None:
+    """Bound a generated surface like a case file's (:data:`asperity.cases.surface.MAX_POINTS`)."""
+    from ..cases.surface import MAX_POINTS
+
+    for option, value in (("--length", length), ("--spacing", spacing), ("--width", width)):
+        if value is not None and not (0 < value < math.inf):
+            raise InputError(option, "a finite length > 0", value)
+    along = length / spacing
+    if along < 8:
+        raise InputError("--length", f"at least 8 spacings ({8 * spacing:.4g} m)", length)
+    if width is not None and width / spacing < 8:
+        raise InputError("--width", f"at least 8 spacings ({8 * spacing:.4g} m)", width)
+    points = along * (1.0 if width is None else width / spacing)
+    if points > MAX_POINTS:
+        option = "--length" if width is None else "--length, --width"
+        raise InputError(option, f"at most {MAX_POINTS} points (got {points:.3g}); raise "
+                         "--spacing or make the surface smaller")
+
+
 @surface_app.command()
 @_one_line_errors
 def generate(
@@ -184,6 +203,7 @@ def generate(
     L = _length(length, "--length")
     h = _length(spacing, "--spacing")
     W = _length(width, "--width")
+    _check_size(L, h, W)
     ell = _length(correlation_length, "--correlation-length")
     if kind == "gaussian":
         rms_m = _require(_length(rms, "--rms"), "--rms", kind)
