@@ -51,7 +51,8 @@ class TextTable:
     header : dict of str to str
         Header pairs, keys normalised by :func:`normalise_key`.
     resolution : ndarray, shape (columns,)
-        The coarsest printed resolution of each column (1e-3 for ``12.345``), 0 if unknown.
+        The coarsest printed resolution of each column (1e-3 for ``12.345``); 0 for a column
+        of integers, taken as exact.
     first_line : int
         Line number (1-based) of the first data row.
     comments : list of str
@@ -190,7 +191,7 @@ def read_table(path: Path) -> TextTable:
     for j in range(width):
         column = [row[j] for row in tokens if _NUMBER.match(row[j].replace(",", "."))]
         fractional = [t for t in column if "." in t or "," in t or "e" in t.lower()]
-        resolution[j] = max((_resolution(t) for t in fractional), default=1.0)
+        resolution[j] = max((_resolution(t) for t in fractional), default=0.0)
     header_lines = lines[:start]
     names = None
     plain = [line for line in header_lines if line.strip() and not _COMMENT.match(line)]
