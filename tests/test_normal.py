@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from asperity.contact import hertz_point, solve_normal
+from asperity.elastic import normal_influence
 from asperity.errors import InputError
 from asperity.materials import Material, contact_modulus
 
@@ -203,3 +204,32 @@ def test_bad_input(rough):
         solve_normal(gap0, x, x, BODY, BODY, tol=0.0, **ok)
     with pytest.raises(InputError, match="max_iterations"):
         solve_normal(gap0, x, x, BODY, BODY, max_iterations=0, **ok)
+
+
+@pytest.mark.parametrize("bow", [0.0, 1e-15])
+def test_flat_full_contact_converges_to_the_direct_solution(bow):
+    """A flat (or nearly flat) punch in full contact on a non-periodic grid.
+
+    Reference: the linear system of Love's influence matrix with the load equation,
+    K p - delta 1 = -gap0, sum p A = P, solved directly. The displacement is then uniform on
+    the grid, so a measure divided by its range never converged (500 of 500 iterations,
+    converged False, although the pressure matched to 2e-13).
+    """
+    n, length, load = 16, 1e-3, 100.0
+    x = (np.arange(n) + 0.5) * length / n - 0.5 * length
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    gap0 = bow * (X**2 + Y**2) / length**2
+    res = solve_normal(gap0, x, x, BODY, BODY, load=load, max_iterations=500)
+    dx = x[1] - x[0]
+    xf, yf = X.ravel(), Y.ravel()
+    K = normal_influence(xf[:, None] - xf[None, :], yf[:, None] - yf[None, :], dx, dx, BODY,
+                         BODY)
+    m = n * n
+    system = np.zeros((m + 1, m + 1))
+    system[:m, :m], system[:m, m], system[m, :m] = K, -1.0, dx * dx
+    solution = np.linalg.solve(system, np.r_[-gap0.ravel(), load])
+    expected = solution[:m].reshape(n, n)
+    assert expected.min() > 0  # full contact
+    assert res.converged and res.iterations < 50 and res.contact.all()
+    np.testing.assert_allclose(res.pressure, expected, rtol=0, atol=1e-7 * expected.max())
+    assert res.approach == pytest.approx(solution[m], rel=1e-7)

@@ -37,7 +37,7 @@ import numba
 import numpy as np
 import scipy.fft as sfft
 
-from ..elastic import grid_spacing, normal_operator
+from ..elastic import grid_spacing, normal_influence, normal_operator
 from ..errors import InputError, check_positive
 from ..materials import Material, contact_modulus
 
@@ -308,8 +308,12 @@ def solve_normal(
     Notes
     -----
     The residual is the largest of (i) the rms gap on the contact set, (ii) the largest
-    penetration off the contact set, both divided by the range of the displacement, and (iii)
-    the relative load error (load control; the pressure is rescaled to the load at every step,
+    penetration off the contact set, both divided by the larger of the range of the
+    displacement and the displacement of a cell's centre under the mean contact pressure on
+    that cell (Love's coefficient, about ``1.12 mean(p) dx / E*`` on square cells; it keeps the
+    measure finite when the displacement is flat, as in the full contact of a flat gap, and
+    bounds the pressure error by about ``tol mean(p)`` there), and (iii) the relative load
+    error (load control; the pressure is rescaled to the load at every step,
     Polonsky & Keer step 10). Pressure is zero off the contact set by construction, so (i) and
     (ii) measure the complementarity ``p >= 0, g >= 0, p g = 0``.
     """
@@ -320,6 +324,7 @@ def solve_normal(
     tol = check_positive("tol", tol)
     cell = dx * dy
     op = normal_operator(x, y, body1, body2, periodic)
+    cell_compliance = float(normal_influence(0.0, 0.0, dx, dy, body1, body2))
     load_control = load is not None
 
     shape = h.shape
@@ -362,8 +367,10 @@ def solve_normal(
             shift = total / n
             lowest -= shift
         gsq = _gap_on_contact(u, h, p, shift, g)
-        # gap errors relative to the range of the displacement (of the gap while u is flat)
-        scale = u_range or h_range or 1.0
+        # gap errors relative to the range of the displacement, but never below the
+        # displacement of one cell under the mean contact pressure, which stays finite when
+        # u is flat (a flat gap in full contact: u_range -> 0 although p is exact)
+        scale = max(u_range, np.sum(p) / n * cell_compliance) or h_range or 1.0
         residual = max(np.sqrt(gsq / n), -lowest) / scale
         if load_control:
             residual = max(residual, abs(p.sum() * cell - load) / load)
