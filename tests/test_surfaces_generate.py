@@ -130,6 +130,43 @@ def test_self_affine_rms_height_and_slope_in_expectation():
     assert np.sqrt(np.mean(np.square(grads))) == pytest.approx(0.1, rel=0.01)
 
 
+def _rms(z):
+    return np.sqrt(np.mean((z - z.mean()) ** 2))
+
+
+def _rms_periodic_slope(z, spacings):
+    """sqrt(<|grad z|^2>) from periodic forward differences along each axis."""
+    return np.sqrt(sum(np.mean(((np.roll(z, -1, axis=k) - z) / h) ** 2)
+                       for k, h in enumerate(spacings)))
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_exact_rescales_the_realisation_to_the_requested_rms(seed):
+    kw = {"hurst": 0.8, "seed": seed}
+    plain = self_affine_topography(0.5e-3, 2e-6, rms_height=1e-6, **kw)
+    exact = self_affine_topography(0.5e-3, 2e-6, rms_height=1e-6, exact=True, **kw)
+    assert _rms(exact.z) == pytest.approx(1e-6, rel=1e-12)
+    # the same realisation, only rescaled (its own Sq scatters about the expected 1 um)
+    ratio = exact.z / plain.z
+    assert np.ptp(ratio) < 1e-9 * ratio.mean()
+    assert ratio.mean() == pytest.approx(1e-6 / _rms(plain.z), rel=1e-12)
+    slope = self_affine_profile(0.01, 1e-6, 0.7, rms_slope=0.1, exact=True, seed=seed)
+    assert _rms_periodic_slope(slope.z, [1e-6]) == pytest.approx(0.1, rel=1e-12)
+    area = self_affine_topography((0.2e-3, 0.1e-3), 1e-6, 0.5, rms_slope=0.2, exact=True,
+                                  seed=seed)
+    assert _rms_periodic_slope(area.z, [1e-6, 1e-6]) == pytest.approx(0.2, rel=1e-12)
+    g = gaussian_profile(1e-3, 1e-6, 0.3e-6, 20e-6, seed=seed, exact=True)
+    assert _rms(g.z) == pytest.approx(0.3e-6, rel=1e-12)
+    gt = gaussian_topography(0.2e-3, 2e-6, 0.3e-6, 20e-6, seed=seed, exact=True)
+    assert _rms(gt.z) == pytest.approx(0.3e-6, rel=1e-12)
+
+
+def test_without_exact_one_realisation_scatters_about_the_expected_rms():
+    sq = [_rms(self_affine_topography(0.5e-3, 2e-6, 0.8, rms_height=1e-6, seed=s).z)
+          for s in range(6)]
+    assert np.ptp(sq) > 0.1e-6
+
+
 def _hurst_from_psd(spec, q_lo, q_hi):
     m = (spec.q > q_lo) & (spec.q < q_hi)
     slope = np.polyfit(np.log(spec.q[m]), np.log(spec.psd[m]), 1)[0]
@@ -184,8 +221,8 @@ def test_run_in_makes_negative_skew_at_the_target_ra():
     fresh = roughness_parameters(transverse_ground_profile(5e-3, 0.5e-6, 0.4e-6, seed=1))
     worn = roughness_parameters(transverse_ground_profile(5e-3, 0.5e-6, 0.4e-6, run_in=0.3,
                                                           seed=1))
-    assert fresh["Ra"] == pytest.approx(0.4e-6, rel=1e-12)
-    assert worn["Ra"] == pytest.approx(0.4e-6, rel=1e-12)
+    # fresh: Gaussian heights, Rq / Ra = sqrt(pi / 2) (one 5 mm realisation: 2 %)
+    assert fresh["Rq"] / fresh["Ra"] == pytest.approx(np.sqrt(np.pi / 2), rel=0.02)
     assert abs(fresh["Rsk"]) < 0.2
     assert worn["Rsk"] < -0.5
     assert worn["Rp"] < fresh["Rp"]  # peaks truncated

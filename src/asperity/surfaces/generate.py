@@ -4,10 +4,13 @@ A field with power spectral density S(q) is made by filtering Gaussian white noi
 ``z = IFFT(FFT(w) * A(q))`` with ``A = sqrt(S)`` on the discrete wavevectors of the grid
 (Hu & Tonder, Int. J. Mach. Tools Manuf. 32 (1992) 83; Persson et al., J. Phys.: Condens. Matter
 17 (2005) R1). With ``E|FFT(w)_k|^2 = N``, the expected mean square height is ``mean(A^2)``, so
-scaling A to ``mean(A^2) = rms^2`` makes the *expected* rms exactly the requested one (a single
-realisation scatters around it; nothing is rescaled after the fact). The mean (q = 0 mode) is
-zero. All generated surfaces are periodic, on cell-centre grids starting at ``spacing / 2``,
-with ``n = round(length / spacing)`` points. Randomness comes only from
+scaling A to ``mean(A^2) = rms^2`` makes the *expected* rms exactly the requested one: a single
+realisation scatters around it (a long-wavelength self-affine spectrum, few modes carrying most
+of the power, by tens of percent). With ``exact=True`` the realisation is rescaled so that its
+own Rq/Sq (or Rdq/Sdq) is the requested value, as measured by
+:func:`~asperity.surfaces.roughness_parameters`. The mean (q = 0 mode) is zero. All generated
+surfaces are periodic, on cell-centre grids starting at ``spacing / 2``, with
+``n = round(length / spacing)`` points. Randomness comes only from
 ``numpy.random.default_rng(seed)``.
 """
 
@@ -17,6 +20,7 @@ import numpy as np
 import scipy.fft
 
 from ..errors import InputError, check_positive
+from .parameters import roughness_parameters
 from .topography import Profile, Topography, cell_centres
 
 __all__ = [
@@ -89,8 +93,19 @@ def _scaled(spectrum: np.ndarray, rms: float) -> np.ndarray:
     return np.sqrt(spectrum) * (rms / np.sqrt(spectrum.mean()))
 
 
+def _exact(surface, rms_height=None, rms_slope=None):
+    """The surface rescaled so that its own rms height (or rms slope) is the requested one."""
+    area = isinstance(surface, Topography)
+    if rms_height is not None:
+        key, target = ("Sq" if area else "Rq"), rms_height
+    else:
+        key, target = ("Sdq" if area else "Rdq"), rms_slope
+    measured = roughness_parameters(surface)[key]
+    return surface.with_heights(surface.z * (target / measured))
+
+
 def gaussian_profile(length, spacing, rms, correlation_length, *, acf="gaussian",
-                     seed=0) -> Profile:
+                     seed=0, exact=False) -> Profile:
     """Periodic profile with Gaussian heights and a given autocorrelation.
 
     Parameters
@@ -105,17 +120,20 @@ def gaussian_profile(length, spacing, rms, correlation_length, *, acf="gaussian"
         ``exp(-(tau/beta)^2)`` or ``exp(-|tau|/beta)``, beta chosen from correlation_length.
     seed : int or None
         Seed of ``numpy.random.default_rng``.
+    exact : bool
+        Rescale the realisation so that its Rq is ``rms`` exactly (default: the expected Rq).
     """
     n, h = _grid(length, spacing)
     rms = check_positive("rms", rms)
     ell = check_positive("correlation_length", correlation_length)
     (q,) = _wavevectors((n,), (h,))
     z = _filter_noise(_scaled(_gaussian_spectrum([q], [ell], acf), rms), seed)
-    return Profile(cell_centres(n, h), z, periodic=True)
+    profile = Profile(cell_centres(n, h), z, periodic=True)
+    return _exact(profile, rms) if exact else profile
 
 
 def gaussian_topography(size, spacing, rms, correlation_length, *, acf="gaussian",
-                        seed=0) -> Topography:
+                        seed=0, exact=False) -> Topography:
     """Periodic topography with Gaussian heights, isotropic or anisotropic autocorrelation.
 
     Parameters
@@ -132,6 +150,8 @@ def gaussian_topography(size, spacing, rms, correlation_length, *, acf="gaussian
         direction, like a transverse-ground finish).
     acf, seed
         As in :func:`gaussian_profile`.
+    exact : bool
+        Rescale the realisation so that its Sq is ``rms`` exactly (default: the expected Sq).
     """
     (lx, ly), (dx, dy) = _pair(size, "size"), _pair(spacing, "spacing")
     nx, dx = _grid(lx, dx, "size")
@@ -140,7 +160,8 @@ def gaussian_topography(size, spacing, rms, correlation_length, *, acf="gaussian
     ells = _pair(correlation_length, "correlation_length")
     qx, qy = _wavevectors((nx, ny), (dx, dy))
     z = _filter_noise(_scaled(_gaussian_spectrum([qx, qy], ells, acf), rms), seed)
-    return Topography(cell_centres(nx, dx), cell_centres(ny, dy), z, periodic=True)
+    topography = Topography(cell_centres(nx, dx), cell_centres(ny, dy), z, periodic=True)
+    return _exact(topography, rms) if exact else topography
 
 
 def _self_affine(shape, spacings, hurst, rms_height, rms_slope, rolloff, cutoff, seed):
@@ -176,7 +197,8 @@ def _self_affine(shape, spacings, hurst, rms_height, rms_slope, rolloff, cutoff,
 
 
 def self_affine_profile(length, spacing, hurst, *, rms_height=None, rms_slope=None,
-                        rolloff_wavelength=None, short_cutoff=None, seed=0) -> Profile:
+                        rolloff_wavelength=None, short_cutoff=None, seed=0,
+                        exact=False) -> Profile:
     """Periodic self-affine (fractal) profile by Fourier filtering.
 
     The one-sided PSD is ``C(q) ~ q^-(1+2H)`` between the roll-off wavevector
@@ -199,26 +221,34 @@ def self_affine_profile(length, spacing, hurst, *, rms_height=None, rms_slope=No
         Shortest wavelength (m), at least two spacings (the default).
     seed : int or None
         Seed of ``numpy.random.default_rng``.
+    exact : bool
+        Rescale the realisation so that its own Rq (or Rdq) is the requested value; by default
+        only the expected value is (one realisation of a spectrum with a long roll-off
+        wavelength scatters by tens of percent).
     """
     n, h = _grid(length, spacing)
     z = _self_affine((n,), (h,), hurst, rms_height, rms_slope, rolloff_wavelength, short_cutoff,
                      seed)
-    return Profile(cell_centres(n, h), z, periodic=True)
+    profile = Profile(cell_centres(n, h), z, periodic=True)
+    return _exact(profile, rms_height, rms_slope) if exact else profile
 
 
 def self_affine_topography(size, spacing, hurst, *, rms_height=None, rms_slope=None,
-                           rolloff_wavelength=None, short_cutoff=None, seed=0) -> Topography:
+                           rolloff_wavelength=None, short_cutoff=None, seed=0,
+                           exact=False) -> Topography:
     """Periodic isotropic self-affine topography, ``C(q) ~ q^-2(1+H)``.
 
     Parameters are those of :func:`self_affine_profile`; ``size`` and ``spacing`` may be pairs
-    (x, y), and ``rms_slope`` is then the rms gradient Sdq.
+    (x, y), ``rms_slope`` is then the rms gradient Sdq and ``exact=True`` makes the
+    realisation's Sq (or Sdq) the requested value.
     """
     (lx, ly), (dx, dy) = _pair(size, "size"), _pair(spacing, "spacing")
     nx, dx = _grid(lx, dx, "size")
     ny, dy = _grid(ly, dy, "size")
     z = _self_affine((nx, ny), (dx, dy), hurst, rms_height, rms_slope, rolloff_wavelength,
                      short_cutoff, seed)
-    return Topography(cell_centres(nx, dx), cell_centres(ny, dy), z, periodic=True)
+    topography = Topography(cell_centres(nx, dx), cell_centres(ny, dy), z, periodic=True)
+    return _exact(topography, rms_height, rms_slope) if exact else topography
 
 
 def add_waviness(surface, wavelength, amplitude, *, direction="x", phase=0.0):
