@@ -86,7 +86,7 @@ def test_text_errors_name_the_file_and_line(tmp_path):
     with pytest.raises(InputError, match="file: expected an existing file"):
         read_surface(tmp_path / "missing.txt")
     with pytest.raises(InputError, match="path"):
-        write_surface(Profile(np.arange(3.0), np.zeros(3)), tmp_path / "p.xyz")
+        write_surface(Profile(np.arange(3.0), np.zeros(3)), tmp_path / "p.abc")
 
 
 def test_instrument_formats_need_surface_topography(tmp_path, monkeypatch):
