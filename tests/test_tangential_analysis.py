@@ -267,3 +267,34 @@ def test_books_coarse_grid_with_the_lp_method():
     assert runs["lp"]["rotation_rad"] == pytest.approx(runs["fft"]["rotation_rad"], rel=0.01)
     assert runs["lp"]["rotation_per_body_rad"] == pytest.approx(1.0641e-3, rel=0.02)
 
+
+def test_a_force_on_a_contact_away_from_the_origin_causes_no_twist():
+    """The moment is about the centre of the normal load by default (reported in the summary):
+    a force below mu P on a patch centred at (5, 3) mm sticks in part and does not twist."""
+    text = """
+analysis = "tangential"
+mu = 0.2
+[body1]
+youngs_modulus = "206 GPa"
+[body2]
+youngs_modulus = "206 GPa"
+[pressure]
+source = "uniform"
+[[pressure.regions]]
+shape = "circle"
+center = ["5 mm", "3 mm"]
+radius = "1 mm"
+pressure = "100 MPa"
+[loading]
+force = "30 N"
+[grid]
+nx = 24
+ny = 24
+"""
+    out = run_case(load_case(text))
+    s = out.summary
+    assert out.converged and not s["gross_slip"]
+    assert s["moment_center_x_m"] == pytest.approx(5e-3, rel=1e-9)
+    assert s["moment_center_y_m"] == pytest.approx(3e-3, rel=1e-9)
+    assert abs(s["rotation_rad"]) * 1e-3 < 1e-9 * s["shift_m"]
+    assert 0 < s["stick_fraction"] < 1
