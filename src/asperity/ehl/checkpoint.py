@@ -17,7 +17,7 @@ import numpy as np
 from ..atomic import atomic_path
 from ..errors import InputError
 
-__all__ = ["fingerprint", "load_checkpoint", "save_checkpoint"]
+__all__ = ["Checkpointer", "fingerprint", "load_checkpoint", "save_checkpoint"]
 
 
 def fingerprint(*parts) -> str:
@@ -59,3 +59,34 @@ def load_checkpoint(path, key: str) -> dict | None:
         raise InputError("checkpoint", f"a checkpoint of this same run ({path} was written by a "
                                        "run with other inputs; delete it to start afresh)")
     return arrays
+
+
+class Checkpointer:
+    """Checkpoints of one run every ``every`` steps and at its last step.
+
+    Parameters
+    ----------
+    path : path or None
+        The ``.npz`` file; None: no checkpoints (:meth:`load` gives None, :meth:`due` False).
+    key : str
+        Fingerprint of the run's inputs (:func:`fingerprint`).
+    every : int
+        Steps between checkpoints.
+    """
+
+    def __init__(self, path, key: str, every: int):
+        self.path = None if path is None else Path(path)
+        self.key = key
+        self.every = every
+
+    def load(self) -> dict | None:
+        """The arrays of this run's checkpoint, or None (:func:`load_checkpoint`)."""
+        return None if self.path is None else load_checkpoint(self.path, self.key)
+
+    def due(self, step: int, total: int) -> bool:
+        """Whether step ``step`` of ``total`` is checkpointed."""
+        return self.path is not None and (step % self.every == 0 or step == total)
+
+    def save(self, arrays: dict):
+        """Write ``arrays`` atomically (:func:`save_checkpoint`)."""
+        save_checkpoint(self.path, self.key, arrays)

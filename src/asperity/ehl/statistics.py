@@ -13,7 +13,7 @@ import numpy as np
 
 from .problem import LineContact
 
-__all__ = ["ContactStatistics", "count_rate", "flow_vectors", "hertz_mask"]
+__all__ = ["ContactStatistics", "StepHistory", "count_rate", "flow_vectors", "hertz_mask"]
 
 
 def hertz_mask(problem, x, y) -> np.ndarray:
@@ -134,3 +134,71 @@ class ContactStatistics:
         self.steps = int(arrays["stat_steps"])
         self.steps_with_contact = int(arrays["stat_steps_with_contact"])
         self.film_counts = np.array(arrays["stat_film_counts"], dtype=np.int64)
+
+
+class StepHistory:
+    """Per-step records of a transient run and its centre-line snapshots.
+
+    Parameters
+    ----------
+    steps : int
+        Steps of the run (records are indexed ``step - 1``).
+    snapshot_steps : ndarray of int
+        Sorted steps whose centre line is kept.
+    nx : int
+        Nodes along x.
+
+    Attributes
+    ----------
+    record : dict of ndarray
+        Per step: ``max_pressure`` (Pa), ``min_film`` (m), ``sweeps``, ``refreshes`` (far-field
+        FFT refreshes), ``residuals``, ``step_converged``, ``load_errors``; NaN, 0 or False for
+        steps not done.
+    centre : dict of ndarray
+        ``centre_pressure``, ``centre_film``, ``centre_surface1``, ``centre_surface2`` along
+        y = 0 at the snapshot steps, shape ``(len(snapshot_steps), nx)``.
+    """
+
+    def __init__(self, steps: int, snapshot_steps, nx: int):
+        self.snapshot_steps = np.asarray(snapshot_steps)
+        self.record = {"max_pressure": np.full(steps, np.nan), "min_film": np.full(steps, np.nan),
+                       "sweeps": np.zeros(steps, dtype=np.int64),
+                       "refreshes": np.zeros(steps, dtype=np.int64),
+                       "residuals": np.full(steps, np.nan),
+                       "step_converged": np.zeros(steps, dtype=bool),
+                       "load_errors": np.full(steps, np.nan)}
+        self.centre = {name: np.full((self.snapshot_steps.size, nx), np.nan) for name in
+                       ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
+
+    def add(self, step: int, pressure, film, report):
+        """Record step ``step`` (1-based): its fields (Pa, m) and its solver report
+        (:class:`asperity.ehl.stepper.StepReport`)."""
+        n = step - 1
+        self.record["max_pressure"][n] = pressure.max()
+        self.record["min_film"][n] = film.min()
+        self.record["sweeps"][n] = report.sweeps
+        self.record["refreshes"][n] = report.refreshes
+        self.record["residuals"][n] = report.residual
+        self.record["step_converged"][n] = report.converged
+        self.record["load_errors"][n] = report.load_error
+
+    def wants_snapshot(self, step: int) -> bool:
+        """Whether the centre line of step ``step`` is kept."""
+        return bool(np.any(self.snapshot_steps == step))
+
+    def snapshot(self, step: int, lines: dict):
+        """Keep the centre lines ``lines`` (the keys of :attr:`centre`) of step ``step``."""
+        k = int(np.flatnonzero(self.snapshot_steps == step)[0])
+        for name, values in lines.items():
+            self.centre[name][k] = values
+
+    def arrays(self) -> dict:
+        """All records as plain arrays (for a checkpoint and the result)."""
+        return {**self.record, **self.centre}
+
+    def restore(self, arrays):
+        """Set the records from :meth:`arrays` output; a checkpoint without the refresh
+        counts (written before they were recorded) leaves them at 0."""
+        for name, values in (*self.record.items(), *self.centre.items()):
+            if name in arrays:
+                values[...] = arrays[name]

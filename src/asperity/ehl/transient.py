@@ -19,6 +19,13 @@ nodal update through ``EHLState.rhs_t = (1 - theta) L^n + (lam/dT) (rho H)^n``; 
 taken as zero at nodes that were cavitated or in contact at level n (the Reynolds equation
 does not hold there).
 
+Structure: :func:`solve_transient` checks the inputs, moves the surfaces and drives the run;
+one timestep and the iteration settings are :class:`~asperity.ehl.stepper.TimeStepper` and
+:class:`~asperity.ehl.stepper.StepOptions`; the per-step records and the counting-period
+statistics are :class:`~asperity.ehl.statistics.StepHistory` and
+:class:`~asperity.ehl.statistics.ContactStatistics`; checkpoints are
+:class:`~asperity.ehl.checkpoint.Checkpointer`.
+
 Roughness. Surface k (height ``z_k``, metal below, as :class:`~asperity.surfaces.Profile` or
 :class:`~asperity.surfaces.Topography`) moves at ``u_k`` along +x. At time t the node at x
 carries the surface point that crossed the inlet ``x_in`` (the first node) at
@@ -38,23 +45,15 @@ import numpy as np
 
 from ..errors import InputError, check_int, check_positive
 from ..surfaces.topography import Profile, Topography
-from .anderson import AndersonMixer
-from .checkpoint import fingerprint, load_checkpoint, save_checkpoint
+from .checkpoint import Checkpointer, fingerprint
 from .kernels import CAVITATED, CONTACT
 from .nodal import centre_line, film_estimate
-from .solver import EHLState, check_contact_and_method, check_damping, solve_steady
-from .statistics import ContactStatistics, flow_vectors, hertz_mask
+from .problem import LineContact
+from .solver import solve_steady
+from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
+from .stepper import StepOptions, TimeStepper
 
 __all__ = ["TransientResult", "default_warmup_steps", "solve_transient"]
-
-#: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
-DIVERGED = 1e3
-
-#: Residual of a refresh cycle below which its result joins the Anderson history: the
-#: asperity-scale errors of the new step (changes of order p_h) are relaxed by then and what
-#: is left is the slow smooth part (:func:`_relax_step`).
-MIX_BELOW = 1e-2
-
 
 class MovingSurface:
     """A rough surface entering the domain at the inlet and moving along +x at ``speed``.
@@ -150,8 +149,9 @@ class TransientResult:
         Steps at which the centre line was recorded.
     centre_pressure, centre_film, centre_surface1, centre_surface2 : ndarray
         p, h, z1, z2 along y = 0 at those steps, shape ``(len(snapshot_steps), x.size)``.
-    sweeps, residuals, step_converged, load_errors : ndarray
-        Per step: relaxation sweeps, final residual, convergence flag, relative load error.
+    sweeps, refreshes, residuals, step_converged, load_errors : ndarray
+        Per step: relaxation sweeps, far-field FFT refreshes, final residual, convergence flag,
+        relative load error.
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -190,6 +190,7 @@ class TransientResult:
     centre_surface1: np.ndarray
     centre_surface2: np.ndarray
     sweeps: np.ndarray
+    refreshes: np.ndarray
     residuals: np.ndarray
     step_converged: np.ndarray
     load_errors: np.ndarray
@@ -226,102 +227,6 @@ class TransientResult:
             if self.steps_done else 0.0,
             "converged": bool(self.converged),
         }
-
-
-def _reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
-    """Discrete Reynolds operator ``L`` (Poiseuille + upwind wedge) of the current state.
-
-    The same finite differences as the nodal update (docs/ehl.md): arithmetic face
-    conductances, second-order upwind ``(3/2, -2, 1/2)`` wedge (first order next to the inlet);
-    zero on the edges and at cavitated or contact nodes. ``ex, ey, rho`` are the state's
-    :meth:`~EHLState.flow_coefficients`.
-    """
-    P = state.P
-    q = rho * state.H
-    L = np.zeros_like(P)
-    dx2 = state.dX**2
-    fe = 0.5 * (ex[1:-1] + ex[2:]) / dx2
-    fw = 0.5 * (ex[1:-1] + ex[:-2]) / dx2
-    L[1:-1] = fe * (P[2:] - P[1:-1]) + fw * (P[:-2] - P[1:-1])
-    wedge = np.zeros_like(P)
-    wedge[2:-1] = 1.5 * q[2:-1] - 2.0 * q[1:-2] + 0.5 * q[:-3]
-    wedge[1] = q[1] - q[0]
-    L -= state.lam * wedge / state.dX
-    if not state.line:
-        dy2 = state.dY**2
-        fn = 0.5 * (ey[:, 1:-1] + ey[:, 2:]) / dy2
-        fs = 0.5 * (ey[:, 1:-1] + ey[:, :-2]) / dy2
-        L[:, 1:-1] += fn * (P[:, 2:] - P[:, 1:-1]) + fs * (P[:, :-2] - P[:, 1:-1])
-    L[state.edge] = 0.0
-    L[(P <= 0.0) | (state.H <= 0.0)] = 0.0
-    return L
-
-
-def _relax_step(state, method, *, tol, max_sweeps, refresh, gain, film_scale, mixer=None):
-    """Relax one timestep; return (converged, residual, sweeps, load error).
-
-    The far field is refreshed every ``refresh`` sweeps; the step has converged when the
-    first sweep after a refresh changes p by less than ``tol``, h by less than
-    ``tol * film_scale`` and leaves a relative load error below ``tol``. A step still
-    unconverged after a quarter of ``max_sweeps`` goes on with the Newton derivatives
-    evaluated at every sweep (:meth:`EHLState._sweep`).
-
-    With an :class:`~asperity.ehl.anderson.AndersonMixer`, each refresh cycle (refresh and
-    sweeps) is a fixed-point map of ``(P, H / film_scale, H0 / film_scale)``; once a cycle
-    ends with a residual below ``MIX_BELOW`` the next cycle starts from the mixer's
-    extrapolation (clipped to p, h >= 0 and to the active set), and the history is forgotten
-    whenever the residual is above it again. The convergence test is unchanged: a sweep from
-    the mixed state must itself change nothing by more than ``tol``.
-    """
-    target = state.problem.load_integral
-    state.start_iteration()
-    state.lag_derivatives = True
-    if mixer is not None:
-        mixer.reset()
-    sweeps = 0
-    residual = np.inf
-    load_err = np.inf
-    while sweeps < max_sweeps:
-        if sweeps >= max_sweeps // 4:
-            state.lag_derivatives = False
-        state.refresh()
-        first = sweeps + 1
-        start = _mix_vector(state, film_scale) if mixer is not None else None
-        for _ in range(refresh):
-            dp, dh = state.sweep(method)
-            sweeps += 1
-            load_err = (state.load() - target) / target
-            state.shift_separation(gain * load_err)
-            residual = max(dp, dh / film_scale, abs(load_err))
-            if not (np.isfinite(residual) and np.abs(state.P).max() < DIVERGED):
-                return False, np.inf, sweeps, load_err
-            if residual < tol or sweeps >= max_sweeps:
-                break
-        if residual < tol and sweeps == first:
-            return True, residual, sweeps, load_err
-        if mixer is not None:
-            if residual < MIX_BELOW:
-                _set_mixed(state, mixer.mix(start, _mix_vector(state, film_scale)), film_scale)
-            else:
-                mixer.reset()
-    return False, residual, sweeps, load_err
-
-
-def _mix_vector(state, film_scale) -> np.ndarray:
-    """The iterate ``(P, H / film_scale, H0 / film_scale)`` as one vector (comparable scales;
-    the fields in their x-fastest memory order)."""
-    return np.concatenate([state.P.ravel(order="F"), state.H.ravel(order="F") / film_scale,
-                           [state.H0 / film_scale]])
-
-
-def _set_mixed(state, v, film_scale):
-    """Set (P, H, H0) from a mixed vector: p, h >= 0, p = 0 cavitated, h = 0 in contact."""
-    n = state.P.size
-    state.P = np.maximum(v[:n].reshape(state.P.shape, order="F"), 0.0)
-    state.H = np.maximum(v[n:2 * n].reshape(state.H.shape, order="F") * film_scale, 0.0)
-    state.H0 = float(v[-1]) * film_scale
-    state.P[state.kind == CAVITATED] = 0.0
-    state.H[state.kind == CONTACT] = 0.0
 
 
 def default_warmup_steps(x, rough_speeds, dt: float) -> int:
@@ -450,22 +355,12 @@ def solve_transient(
     -------
     TransientResult
     """
-    line, method = check_contact_and_method(problem, method)
-    theta = float(theta)
-    if not 0.5 <= theta <= 1.0:
-        raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)
-    tol = check_positive("tol", tol)
-    if load_gain is None:
-        load_gain = 0.03 if line else 0.15 * min(1.0, problem.b / problem.a)
-    load_gain = check_positive("load_gain", load_gain)
-    damping = check_damping(damping)
+    opts = StepOptions.for_problem(problem, method=method, theta=theta, near=near, tol=tol,
+                                   max_sweeps=max_sweeps, refresh=refresh,
+                                   acceleration=acceleration, load_gain=load_gain,
+                                   damping=damping)
+    line = isinstance(problem, LineContact)
     counting_steps = check_int("counting_steps", counting_steps, 1)
-    max_sweeps = check_int("max_sweeps", max_sweeps, 1)
-    refresh = check_int("refresh", refresh, 1)
-    near = check_int("near", near, 0)
-    if acceleration is None:
-        acceleration = 3 if method == "line" else 0
-    acceleration = check_int("acceleration", acceleration, 0)
     checkpoint_every = check_int("checkpoint_every", checkpoint_every, 1)
     if line:
         ny = 1
@@ -494,7 +389,7 @@ def solve_transient(
         return z
 
     film_ref = film_estimate(problem)
-    contact_film = tol * film_ref if contact_film is None else float(contact_film)
+    contact_film = opts.tol * film_ref if contact_film is None else float(contact_film)
     if not contact_film >= 0.0:
         raise InputError("contact_film", "a film thickness >= 0 in m", contact_film)
     if film_edges is None:
@@ -507,23 +402,20 @@ def solve_transient(
         raise InputError("snapshot_steps", f"steps between 1 and {total}", snapshot_steps)
     snaps = np.unique(snaps)
 
-    state = EHLState(problem, x, y, near if method == "line" else 0)
-    state.damping = damping
+    stepper = TimeStepper(problem, x, y, opts, dt, film_ref / problem.film_scale)
+    state = stepper.state
     stats = ContactStatistics((nx, ny), film_edges, hertz_mask(problem, x, y))
-    record = {"max_pressure": np.full(total, np.nan), "min_film": np.full(total, np.nan),
-              "sweeps": np.zeros(total, dtype=np.int64), "residuals": np.full(total, np.nan),
-              "step_converged": np.zeros(total, dtype=bool),
-              "load_errors": np.full(total, np.nan)}
-    centre = {name: np.full((snaps.size, nx), np.nan) for name in
-              ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
-    key = fingerprint(repr(problem), x, y, dt, warmup_steps, counting_steps, theta, method, near,
-                      tol, max_sweeps, refresh, acceleration, load_gain, damping, contact_film,
+    history = StepHistory(total, snaps, nx)
+    key = fingerprint(repr(problem), x, y, dt, warmup_steps, counting_steps, opts.theta,
+                      opts.method, opts.near, opts.tol, opts.max_sweeps, opts.refresh,
+                      opts.acceleration, opts.load_gain, opts.damping, contact_film,
                       film_edges, snaps,
                       *[(type(r).__name__, r.periodic, r.x, r.z) for r in
                         (roughness1, roughness2) if r is not None], slots)
+    checkpointer = Checkpointer(checkpoint, key, checkpoint_every)
 
     start = 0
-    arrays = load_checkpoint(checkpoint, key) if (resume and checkpoint is not None) else None
+    arrays = checkpointer.load() if resume else None
     if arrays is not None:
         state.P = arrays["P"].copy()
         state.H = arrays["H"].copy()
@@ -533,13 +425,12 @@ def solve_transient(
         steady_converged = bool(arrays["steady_converged"])
         steady_hc = float(arrays["steady_central_film"])
         stats.restore(arrays)
-        for name in (*record, *centre):
-            (record if name in record else centre)[name] = arrays[name].copy()
+        history.restore(arrays)
     else:
         if steady is None:
-            steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,
-                                  levels=_levels(nx, ny, line), near=near,
-                                  tol=min(tol, 1e-5), max_sweeps=20000)
+            steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,
+                                  levels=_levels(nx, ny, line), near=opts.near,
+                                  tol=min(opts.tol, 1e-5), max_sweeps=20000)
         if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
             raise InputError("steady", f"a steady solution on the same {nx} x {ny} grid")
         state.P = steady.pressure / problem.p_hertz
@@ -553,53 +444,30 @@ def solve_transient(
 
     z1, z2 = heights(start * dt)
     state.roughness = -(z1 + z2) / problem.film_scale
-    mass = state.lam / (dt * problem.mean_speed / problem.a)
-    h_scale = film_ref / problem.film_scale
     interior = ~state.edge
-    mixer = AndersonMixer(acceleration) if acceleration else None
     steps_done = start
-    for n in range(start, total):
-        step = n + 1
-        # explicit part of the theta-scheme from level n, then move the surfaces to level n+1
-        ex, ey, rho = state.flow_coefficients()
-        state.theta = theta
-        state.mass = mass
-        state.rhs_t = (1.0 - theta) * _reynolds_operator(state, ex, ey, rho) + mass * rho * state.H
+    for step in range(start + 1, total + 1):
         z1, z2 = heights(step * dt)
-        phi = -(z1 + z2) / problem.film_scale
-        state.H += phi - state.roughness
-        state.roughness = phi
-        ok, res, sw, load_err = _relax_step(state, method, tol=tol, max_sweeps=max_sweeps,
-                                            refresh=refresh, gain=load_gain,
-                                            film_scale=h_scale, mixer=mixer)
-        # the last separation shift moves the h = 0 contact nodes too: they stay in contact
-        np.maximum(state.H, 0.0, out=state.H)
+        report = stepper.advance(-(z1 + z2) / problem.film_scale)
         p = state.P * problem.p_hertz
         h = state.H * problem.film_scale
-        record["max_pressure"][n] = p.max()
-        record["min_film"][n] = h.min()
-        record["sweeps"][n] = sw
-        record["residuals"][n] = res
-        record["step_converged"][n] = ok
-        record["load_errors"][n] = load_err
-        if n >= warmup_steps:
+        history.add(step, p, h, report)
+        if step > warmup_steps:
             stats.add(h, (h <= contact_film) & interior)
-        hit = np.flatnonzero(snaps == step)
-        if hit.size:
-            for name, field in (("centre_pressure", p), ("centre_film", h),
-                                ("centre_surface1", z1), ("centre_surface2", z2)):
-                centre[name][hit[0]] = centre_line(state, field)
+        if history.wants_snapshot(step):
+            history.snapshot(step, {name: centre_line(state, field) for name, field in (
+                ("centre_pressure", p), ("centre_film", h), ("centre_surface1", z1),
+                ("centre_surface2", z2))})
         steps_done = step
-        finite = np.isfinite(res)
-        if finite and checkpoint is not None and (step % checkpoint_every == 0
-                                                  or step == total):
-            save_checkpoint(checkpoint, key, {
+        finite = np.isfinite(report.residual)
+        if finite and checkpointer.due(step, total):
+            checkpointer.save({
                 "P": state.P, "H": state.H, "H0": np.float64(state.H0), "kind": state.kind,
                 "step": np.int64(step), "steady_converged": np.bool_(steady_converged),
-                "steady_central_film": np.float64(steady_hc), **stats.arrays(), **record,
-                **centre})
+                "steady_central_film": np.float64(steady_hc), **stats.arrays(),
+                **history.arrays()})
         if callback is not None:  # after the checkpoint, so a callback sees this step's file
-            callback(step, res)
+            callback(step, report.residual)
         if not finite:
             break
 
@@ -609,6 +477,7 @@ def solve_transient(
         qx, qy = flow_vectors(problem, x, y, p, h)
     else:
         qx = qy = np.full((nx, ny), np.nan)
+    record = history.record
     done = record["step_converged"][:steps_done]
     return TransientResult(
         x=x, y=y, dt=float(dt), warmup_steps=warmup_steps, counting_steps=counting_steps,
@@ -619,5 +488,6 @@ def solve_transient(
         snapshot_steps=snaps, iterations=int(record["sweeps"].sum()),
         converged=bool(steady_converged and steps_done == total and done.all()),
         residual=float(np.nanmax(record["residuals"])) if steps_done else float("nan"),
-        steady_central_film=steady_hc, method=method, theta=theta, **record, **centre,
+        steady_central_film=steady_hc, method=opts.method, theta=opts.theta,
+        **history.arrays(),
     )

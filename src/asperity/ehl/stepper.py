@@ -1,0 +1,293 @@
+"""One timestep of the transient mixed-EHL solver: its settings, explicit part and relaxation.
+
+The time-discrete equations (Holmes, Evans & Snidle, J. Tribol. 127 (2005) 61, with the
+theta-scheme of docs/ehl-transient.md; dimensionless, ``T = t u_mean / a``, node P)::
+
+    theta L^{n+1} + (1 - theta) L^n - lam [(rho H)^{n+1} - (rho H)^n] / dT = 0
+
+with ``L`` the discrete Reynolds operator (Poiseuille + wedge, :func:`reynolds_operator`),
+coupled to the differential deflection equation and the contact condition (seed Eqs. 1-8) of
+:class:`~asperity.ehl.solver.EHLState`. :class:`TimeStepper` advances the state by one step:
+it forms the explicit part ``rhs_t = (1 - theta) L^n + (lam/dT) (rho H)^n``, moves the
+surfaces, then relaxes (p, h, H0) at level n+1 by refresh cycles of x-line (or point) sweeps
+with the far-field deflection lagged over a cycle, Anderson-mixed once the asperity-scale
+errors are relaxed (:mod:`asperity.ehl.anderson`). :class:`StepOptions` holds the settings of
+that iteration; they change the path to the fixed point, not the discrete equations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+
+from ..errors import InputError, check_int, check_positive
+from .anderson import AndersonMixer
+from .kernels import CAVITATED, CONTACT
+from .solver import EHLState, check_contact_and_method, check_damping
+
+__all__ = ["DIVERGED", "MIX_BELOW", "StepOptions", "StepReport", "TimeStepper",
+           "reynolds_operator"]
+
+#: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
+DIVERGED = 1e3
+
+#: Residual of a refresh cycle below which its result joins the Anderson history: the
+#: asperity-scale errors of the new step (changes of order p_h) are relaxed by then and what
+#: is left is the slow smooth part (:meth:`TimeStepper.relax`).
+MIX_BELOW = 1e-2
+
+
+@dataclass(frozen=True)
+class StepOptions:
+    """Settings of the transient solver's iteration within a timestep.
+
+    Build with :meth:`for_problem`, which applies the problem-dependent defaults and checks
+    the values. Only ``theta`` changes the discrete equations (the time scheme); the others
+    change the path to their solution.
+
+    Attributes
+    ----------
+    method : {"line", "point"}
+        x-line relaxation (point contacts) or the seed's point update (line contacts).
+    theta : float
+        Time-scheme weight, 1/2 (Crank-Nicolson) to 1 (implicit Euler).
+    near : int
+        x-neighbour pressure coefficients implicit in the line relaxation (0 with the point
+        update).
+    tol : float
+        Per-step convergence: max |dP|, max |dH| relative to the estimated central film and
+        the relative load error below ``tol`` on the first sweep after a far-field refresh.
+    max_sweeps : int
+        Sweep limit per step.
+    refresh : int
+        Sweeps between FFT refreshes of the far field and the edge films.
+    acceleration : int
+        Memory of the Anderson mixing of the refresh cycles; 0 off.
+    load_gain : float
+        Separation shift per sweep per relative load error.
+    damping : float
+        Factor on the change at nodes oscillating from sweep to sweep; 1 off.
+    """
+
+    method: str
+    theta: float
+    near: int
+    tol: float
+    max_sweeps: int
+    refresh: int
+    acceleration: int
+    load_gain: float
+    damping: float
+
+    @classmethod
+    def for_problem(cls, problem, *, method=None, theta=0.5, near=2, tol=1e-4, max_sweeps=400,
+                    refresh=3, acceleration=None, load_gain=None, damping=0.7) -> StepOptions:
+        """Options for ``problem`` with its defaults (see :func:`asperity.ehl.solve_transient`).
+
+        ``method`` None: line relaxation for a point contact, point update for a line contact.
+        ``acceleration`` None: 3 with line relaxation, 0 with the point update. ``load_gain``
+        None: ``0.15 min(1, b/a)`` (point contact), 0.03 (line contact).
+
+        Raises
+        ------
+        InputError
+            For a value out of range, naming the argument.
+        """
+        line, method = check_contact_and_method(problem, method)
+        theta = float(theta)
+        if not 0.5 <= theta <= 1.0:
+            raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)
+        tol = check_positive("tol", tol)
+        if load_gain is None:
+            load_gain = 0.03 if line else 0.15 * min(1.0, problem.b / problem.a)
+        load_gain = check_positive("load_gain", load_gain)
+        damping = check_damping(damping)
+        max_sweeps = check_int("max_sweeps", max_sweeps, 1)
+        refresh = check_int("refresh", refresh, 1)
+        near = check_int("near", near, 0)
+        if acceleration is None:
+            acceleration = 3 if method == "line" else 0
+        acceleration = check_int("acceleration", acceleration, 0)
+        return cls(method=method, theta=theta, near=near, tol=tol, max_sweeps=max_sweeps,
+                   refresh=refresh, acceleration=acceleration, load_gain=load_gain,
+                   damping=damping)
+
+    @property
+    def implicit_near(self) -> int:
+        """Near-field coefficients the sweep keeps implicit (none with the point update)."""
+        return self.near if self.method == "line" else 0
+
+
+class StepReport(NamedTuple):
+    """Outcome of one timestep's relaxation.
+
+    ``sweeps`` and ``refreshes`` count the finest-grid relaxation sweeps and the far-field
+    FFT refreshes the step took; ``load_error`` is the relative load error after the last
+    sweep.
+    """
+
+    converged: bool
+    residual: float
+    sweeps: int
+    refreshes: int
+    load_error: float
+
+
+def reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
+    """Discrete Reynolds operator ``L`` (Poiseuille + upwind wedge) of the current state.
+
+    The same finite differences as the nodal update (docs/ehl.md): arithmetic face
+    conductances, second-order upwind ``(3/2, -2, 1/2)`` wedge (first order next to the inlet);
+    zero on the edges and at cavitated or contact nodes. ``ex, ey, rho`` are the state's
+    :meth:`~asperity.ehl.solver.EHLState.flow_coefficients`.
+    """
+    P = state.P
+    q = rho * state.H
+    L = np.zeros_like(P)
+    dx2 = state.dX**2
+    fe = 0.5 * (ex[1:-1] + ex[2:]) / dx2
+    fw = 0.5 * (ex[1:-1] + ex[:-2]) / dx2
+    L[1:-1] = fe * (P[2:] - P[1:-1]) + fw * (P[:-2] - P[1:-1])
+    wedge = np.zeros_like(P)
+    wedge[2:-1] = 1.5 * q[2:-1] - 2.0 * q[1:-2] + 0.5 * q[:-3]
+    wedge[1] = q[1] - q[0]
+    L -= state.lam * wedge / state.dX
+    if not state.line:
+        dy2 = state.dY**2
+        fn = 0.5 * (ey[:, 1:-1] + ey[:, 2:]) / dy2
+        fs = 0.5 * (ey[:, 1:-1] + ey[:, :-2]) / dy2
+        L[:, 1:-1] += fn * (P[:, 2:] - P[:, 1:-1]) + fs * (P[:, :-2] - P[:, 1:-1])
+    L[state.edge] = 0.0
+    L[(P <= 0.0) | (state.H <= 0.0)] = 0.0
+    return L
+
+
+class TimeStepper:
+    """Advances an :class:`~asperity.ehl.solver.EHLState` by timesteps of fixed length.
+
+    Parameters
+    ----------
+    problem : PointContact or LineContact
+        The contact.
+    x, y : ndarray
+        Node coordinates, m.
+    options : StepOptions
+        Iteration settings.
+    dt : float
+        Timestep, s.
+    film_scale : float
+        Dimensionless film of the convergence test's film criterion (the estimated central
+        film over ``problem.film_scale``).
+
+    Attributes
+    ----------
+    state : EHLState
+        The state advanced in place; set its P, H, H0, kind and roughness before the first
+        :meth:`advance`.
+    """
+
+    def __init__(self, problem, x, y, options: StepOptions, dt: float, film_scale: float):
+        self.problem = problem
+        self.options = options
+        self.state = EHLState(problem, x, y, options.implicit_near)
+        self.state.damping = options.damping
+        self.mass = self.state.lam / (dt * problem.mean_speed / problem.a)
+        self.film_scale = film_scale
+        self.mixer = AndersonMixer(options.acceleration) if options.acceleration else None
+
+    def advance(self, phi) -> StepReport:
+        """One timestep to the dimensionless roughness ``phi`` of level n+1.
+
+        The explicit part of the theta-scheme comes from level n (the current state), then
+        the film moves with the surfaces (``H += phi - phi^n``, which keeps the deflection
+        equation's source consistent) and the step is relaxed (:meth:`relax`). The last
+        separation shift also moves the h = 0 contact nodes; they are put back to 0.
+        """
+        state = self.state
+        ex, ey, rho = state.flow_coefficients()
+        theta = self.options.theta
+        state.theta = theta
+        state.mass = self.mass
+        state.rhs_t = (1.0 - theta) * reynolds_operator(state, ex, ey, rho) \
+            + self.mass * rho * state.H
+        state.H += phi - state.roughness
+        state.roughness = phi
+        report = self.relax()
+        np.maximum(state.H, 0.0, out=state.H)
+        return report
+
+    def relax(self) -> StepReport:
+        """Relax the current step to convergence by refresh cycles.
+
+        The far field is refreshed every ``refresh`` sweeps; the step has converged when the
+        first sweep after a refresh changes p by less than ``tol``, h by less than
+        ``tol * film_scale`` and leaves a relative load error below ``tol``. A step still
+        unconverged after a quarter of ``max_sweeps`` goes on with the Newton derivatives
+        evaluated at every sweep (:meth:`EHLState._sweep`).
+
+        With Anderson acceleration each refresh cycle (refresh and sweeps) is a fixed-point
+        map of ``(P, H / film_scale, H0 / film_scale)``; once a cycle ends with a residual
+        below ``MIX_BELOW`` the next cycle starts from the mixer's extrapolation (clipped to
+        p, h >= 0 and to the active set), and the history is forgotten whenever the residual
+        is above it again. The convergence test is unchanged: a sweep from the mixed state
+        must itself change nothing by more than ``tol``.
+        """
+        state, opts, mixer = self.state, self.options, self.mixer
+        tol, max_sweeps, refresh = opts.tol, opts.max_sweeps, opts.refresh
+        target = state.problem.load_integral
+        refreshes_before = state.refreshes
+        state.start_iteration()
+        state.lag_derivatives = True
+        if mixer is not None:
+            mixer.reset()
+        sweeps = 0
+        residual = np.inf
+        load_err = np.inf
+
+        def report(converged, residual):
+            return StepReport(converged, residual, sweeps, state.refreshes - refreshes_before,
+                              load_err)
+
+        while sweeps < max_sweeps:
+            if sweeps >= max_sweeps // 4:
+                state.lag_derivatives = False
+            state.refresh()
+            first = sweeps + 1
+            start = self.mix_vector() if mixer is not None else None
+            for _ in range(refresh):
+                dp, dh = state.sweep(opts.method)
+                sweeps += 1
+                load_err = (state.load() - target) / target
+                state.shift_separation(opts.load_gain * load_err)
+                residual = max(dp, dh / self.film_scale, abs(load_err))
+                if not (np.isfinite(residual) and np.abs(state.P).max() < DIVERGED):
+                    return report(False, np.inf)
+                if residual < tol or sweeps >= max_sweeps:
+                    break
+            if residual < tol and sweeps == first:
+                return report(True, residual)
+            if mixer is not None:
+                if residual < MIX_BELOW:
+                    self.set_mixed(mixer.mix(start, self.mix_vector()))
+                else:
+                    mixer.reset()
+        return report(False, residual)
+
+    def mix_vector(self) -> np.ndarray:
+        """The iterate ``(P, H / film_scale, H0 / film_scale)`` as one vector (comparable
+        scales; the fields in their x-fastest memory order)."""
+        state, scale = self.state, self.film_scale
+        return np.concatenate([state.P.ravel(order="F"), state.H.ravel(order="F") / scale,
+                               [state.H0 / scale]])
+
+    def set_mixed(self, v):
+        """Set (P, H, H0) from a mixed vector: p, h >= 0, p = 0 cavitated, h = 0 in contact."""
+        state, scale = self.state, self.film_scale
+        n = state.P.size
+        state.P = np.maximum(v[:n].reshape(state.P.shape, order="F"), 0.0)
+        state.H = np.maximum(v[n:2 * n].reshape(state.H.shape, order="F") * scale, 0.0)
+        state.H0 = float(v[-1]) * scale
+        state.P[state.kind == CAVITATED] = 0.0
+        state.H[state.kind == CONTACT] = 0.0
