@@ -1,0 +1,221 @@
+"""Trust checks: each one fires on a field built to break it, at the value an independent
+calculation gives (closed-form shares of Hertz and uniform fields, filter transmissions), and
+stays silent on a field that respects its limit."""
+
+import math
+import re
+
+import numpy as np
+import pytest
+
+from asperity import diagnostics as dg
+from asperity.materials import Material
+
+
+def _percent(line: str, after: str) -> float:
+    """The first ``N %`` following ``after`` in a warning line, as a fraction."""
+    match = re.search(re.escape(after) + r"[^0-9]*([0-9.e+-]+) %", line)
+    assert match, line
+    return float(match.group(1)) / 100.0
+
+
+def _cells(n, length):
+    dx = length / n
+    return -0.5 * length + dx * (np.arange(n) + 0.5)
+
+
+def _hertz(x, y, a, p0=1e9):
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    return p0 * np.sqrt(np.clip(1.0 - (X**2 + Y**2) / a**2, 0.0, None))
+
+
+def _every_line_names_a_limit(lines):
+    for line in lines:
+        assert "limit" in line and ":" in line.split()[0], line
+
+
+# ------------------------------------------------------------------------- dry contact edge
+def test_edge_share_of_a_uniform_pressure_is_the_edge_cell_count():
+    """Uniform pressure on every cell: the edge cells carry (2 nx + 2 ny - 4) / (nx ny)."""
+    nx, ny = 20, 12
+    lines = dg.contact_at_grid_edge(np.ones((nx, ny)), _cells(nx, 1e-3), _cells(ny, 1e-3))
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and lines[0].startswith("domain:")
+    assert "x_min, x_max, y_min, y_max" in lines[0]
+    expected = (2 * nx + 2 * ny - 4) / (nx * ny)
+    assert _percent(lines[0], "carry") == pytest.approx(expected, rel=2e-3)
+
+
+def test_edge_advice_uses_the_expected_contact_size():
+    x = y = _cells(32, 0.1e-3)  # the issue's 0.1 mm domain, contact 0.67 mm wide
+    lines = dg.contact_at_grid_edge(_hertz(x, y, 0.335e-3), x, y, (0.67e-3, 0.67e-3))
+    assert "x_extent >= 0.001" in lines[0] and "y_extent >= 0.001" in lines[0]
+
+
+def test_contact_inside_the_grid_is_silent():
+    x = y = _cells(64, 2e-3)
+    assert dg.contact_at_grid_edge(_hertz(x, y, 0.6e-3), x, y) == []
+
+
+def test_one_edge_touched_is_named():
+    x = y = _cells(64, 2e-3)
+    p = _hertz(x + 0.8e-3, y, 0.3e-3)  # centred at x = -0.8 mm: reaches x_min
+    lines = dg.contact_at_grid_edge(p, x, y)
+    assert len(lines) == 1 and "at x_min (" in lines[0]
+
+
+# ------------------------------------------------------------------------- periodic contact
+def test_periodic_contact_filling_the_cell():
+    c = np.ones((32, 32), dtype=bool)
+    c[:3, :3] = False  # 99.1 % in contact
+    lines = dg.periodic_contact(c, _cells(32, 1.0), _cells(32, 1.0))
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and _percent(lines[0], "fills") == pytest.approx(1 - 9 / 1024,
+                                                                            abs=5e-4)
+
+
+@pytest.mark.parametrize("shift", [0, 16])
+def test_periodic_patch_width_also_across_the_boundary(shift):
+    """A disc of radius 0.3 L spans 0.6 L (+ one cell) of the period, also when it is split
+    across the cell boundary (shift by half the period)."""
+    n, L = 64, 1.0
+    x = y = _cells(n, L)
+    c = _hertz(x, y, 0.3 * L) > 0
+    c = np.roll(c, shift, axis=0)
+    lines = dg.periodic_contact(c, x, y)
+    assert len(lines) == 1 and lines[0].startswith("contact: one contact patch")
+    width = _percent(lines[0], "spans")
+    assert width == pytest.approx(0.6, abs=2 / n)
+
+
+def test_periodic_patch_below_half_the_period_is_silent():
+    x = y = _cells(64, 1.0)
+    assert dg.periodic_contact(_hertz(x, y, 0.2) > 0, x, y) == []
+
+
+# ------------------------------------------------------------------------------ resolution
+def test_contact_resolved_by_too_few_cells():
+    """A disc 2 r = 8 cells wide: 4 cells per semi-axis, against a limit of 10."""
+    x = y = _cells(64, 64.0)
+    lines = dg.contact_resolution(_hertz(x, y, 4.0) > 0, x, y)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and lines[0].startswith("mesh:")
+    assert "4 cells per semi-axis along x" in lines[0] and "nx >= 160" in lines[0]
+
+
+def test_contact_resolved_by_enough_cells_is_silent():
+    x = y = _cells(64, 64.0)
+    assert dg.contact_resolution(_hertz(x, y, 12.0) > 0, x, y) == []
+    assert dg.contact_resolution(np.zeros((64, 64), bool), x, y) == []
+
+
+# -------------------------------------------------------------------------------- hardness
+def test_hardness_exceeded_on_the_hertz_share_of_the_area():
+    """Hertz pressure p0 sqrt(1 - r^2/a^2) exceeds H on r^2 < a^2 (1 - (H/p0)^2): that share of
+    the contact area."""
+    x = y = _cells(400, 2.4)
+    p0, h = 2e9, 1.5e9
+    soft = Material(200e9, 0.3, "soft steel", hardness=h)
+    lines = dg.above_hardness(_hertz(x, y, 1.0, p0),
+                              [("body1", soft), ("body2", Material(200e9, 0.3))])
+    assert len(lines) == 1 and "body1 (soft steel)" in lines[0] and "1.5 GPa" in lines[0]
+    assert _percent(lines[0], "GPa of body1 (soft steel) on") == pytest.approx(
+        1 - (h / p0) ** 2, abs=0.01)
+
+
+def test_hardness_not_reached_or_not_given_is_silent():
+    x = y = _cells(64, 2.4)
+    p = _hertz(x, y, 1.0, 1e9)
+    assert dg.above_hardness(p, [("body1", Material(200e9, 0.3, hardness=2e9))]) == []
+    assert dg.above_hardness(p, [("body1", Material(200e9, 0.3))]) == []
+
+
+# ------------------------------------------------------------------------------------- EHL
+def _hertz_line(x, a, p_h):
+    return p_h * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+
+
+def test_ehl_inlet_inside_the_build_up():
+    """Hertz pressure on a domain from -1.05 a: within 0.1 a of the inlet it reaches
+    sqrt(1 - 0.95^2) = 31 % of p_h."""
+    a, p_h = 1e-4, 1e9
+    x = np.linspace(-1.05 * a, 1.5 * a, 256)
+    field = np.repeat(_hertz_line(x, a, p_h)[:, None], 5, axis=1)
+    lines = dg.ehl_inlet(field, x, a, p_h)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and lines[0].startswith("inlet: x_min = -1.05 a")
+    near = x[x <= x[0] + 0.1 * a]
+    assert _percent(lines[0], "leaves pressure") == pytest.approx(
+        math.sqrt(1 - (near[-1] / a) ** 2), rel=1e-3)
+    assert "use x_min <= -2.5 a" in lines[0]
+
+
+def test_ehl_inlet_far_upstream_is_silent():
+    a = 1e-4
+    x = np.linspace(-2.5 * a, 1.5 * a, 256)
+    assert dg.ehl_inlet(_hertz_line(x, a, 1e9)[:, None], x, a, 1e9) == []
+
+
+def test_ehl_sides():
+    a, b, p_h = 1e-4, 4e-4, 1e9
+    x = np.linspace(-2.5 * a, 1.5 * a, 65)
+    for y_max, fires in ((1.05, True), (2.0, False)):
+        y = np.linspace(-y_max * b, y_max * b, 81)
+        X, Y = np.meshgrid(x, y, indexing="ij")
+        field = p_h * np.sqrt(np.clip(1 - (X / a) ** 2 - (Y / b) ** 2, 0, None))
+        lines = dg.ehl_sides(field, y, b, p_h)
+        assert bool(lines) is fires, lines
+        if fires:
+            _every_line_names_a_limit(lines)
+            assert "y_max >= 2 b" in lines[0]
+            band = np.abs(y) >= y_max * b - 0.1 * b - 1e-15
+            assert _percent(lines[0], "leave pressure") == pytest.approx(
+                field[:, band].max() / p_h, rel=1e-3)
+
+
+def test_ehl_mesh():
+    a, b = 1e-4, 4e-4
+    coarse = dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 17), np.linspace(-2 * b, 2 * b, 81),
+                         a, b)
+    _every_line_names_a_limit(coarse)
+    assert len(coarse) == 1 and "a/dx = 4" in coarse[0] and "b/dy" not in coarse[0]
+    assert "nx >= 41" in coarse[0]
+    assert dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 41), np.linspace(-2 * b, 2 * b, 41),
+                       a, b) == []  # exactly 10 spacings per semi-axis
+    assert dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 41), np.zeros(1), a, None) == []
+
+
+# ------------------------------------------------------------------------------- roughness
+def test_unresolved_roughness_share():
+    """A wave of 2 dx (the Gaussian filter at 4 dx passes exp(-pi (0.47 * 2)^2) = 6 % of it)
+    beside a wave of 64 dx of the same amplitude: about 0.94 / sqrt(2) of the rms is
+    unresolved."""
+    dx, s = 8e-6, 1e-6
+    xs = s * np.arange(8192)
+    long_, short = np.sin(2 * np.pi * xs / (64 * dx)), np.sin(2 * np.pi * xs / (2 * dx))
+    lines = dg.unresolved_roughness("surface1", 1e-7 * (long_ + short), s, dx)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and lines[0].startswith("surface1:")
+    alpha = math.sqrt(math.log(2) / math.pi)
+    passed = 1 - math.exp(-math.pi * (alpha * 4 / 2) ** 2)
+    assert _percent(lines[0], "surface1:") == pytest.approx(passed / math.sqrt(2), abs=0.02)
+    assert dg.unresolved_roughness("surface1", 1e-7 * (long_ + 0.05 * short), s, dx) == []
+
+
+def test_lowpass_removed_share():
+    xs = np.linspace(0, 1e-3, 2000)
+    long_, short = np.sin(2 * np.pi * xs / 2e-4), 0.5 * np.sin(2 * np.pi * xs / 1e-5)
+    lines = dg.lowpass_removed("surface2", long_ + short, long_, 3e-5)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and "30 um" in lines[0]
+    assert _percent(lines[0], "removed") == pytest.approx(0.5 / math.sqrt(1.25), rel=1e-3)
+    assert dg.lowpass_removed("surface2", long_, long_ + 1e-4 * short, 3e-5) == []
+
+
+def test_unconverged_steps():
+    flags = np.ones(200, dtype=bool)
+    flags[[3, 50, 51]] = False
+    lines = dg.unconverged_steps(flags, 1e-4, 400)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and lines[0].startswith("steps: 3 of 200") and "4, 51, 52" in lines[0]
+    assert dg.unconverged_steps(np.ones(5, bool), 1e-4, 400) == []
