@@ -1,14 +1,15 @@
 """Figures of a steady EHL solution in the style of the mixed-EHL seed's Fig. 2.
 
-Contour maps of pressure (GPa) and film thickness (um) over x/a and y/b, where the Hertz
-ellipse is the unit circle (drawn heavy); profiles along the entrainment centre line y = 0
-(pressure and film on their own axes, Hertz pressure dashed); and a transverse section at
-x = 0 that shows the side constrictions of a point contact.
+Contour maps of pressure (GPa) and film thickness (um) over x/a and y/a on equal axes, so that
+the Hertz ellipse (drawn heavy) looks like the ellipse it is; profiles along the entrainment
+centre line y = 0 (pressure and film on their own axes, Hertz pressure dashed); and a
+transverse section at x = 0 that shows the side constrictions of a point contact.
 """
 
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from .style import hertz_outline, new_figure, plt
 
@@ -16,14 +17,16 @@ __all__ = ["contour_maps", "centre_line_profiles", "transverse_section"]
 
 
 def _film_levels(film_um, h_c_um):
-    """Film contour levels from the minimum to twice the central film (the contact region)."""
+    """Film contour levels from the minimum to twice the central film (the contact region),
+    at round values."""
     lo = float(np.min(film_um))
     hi = max(2.0 * h_c_um, lo * 1.5, lo + 1e-6)
-    return np.linspace(lo, hi, 17)
+    return MaxNLocator(14).tick_values(lo, hi)
 
 
 def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
-    """Pressure (GPa, upper) and film (um, lower) contours over x/a, y/b with the Hertz ellipse.
+    """Pressure (GPa, left) and film (um, right) contours over x/a, y/a on equal axes, the
+    Hertz ellipse heavy (it looks like the ellipse it is: b/a tall).
 
     Parameters
     ----------
@@ -42,29 +45,33 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     -------
     matplotlib.figure.Figure
     """
-    X, Y = np.meshgrid(np.asarray(x) / a, np.asarray(y) / b, indexing="ij")
-    fig, (ax_p, ax_h) = plt.subplots(2, 1, figsize=(6.4, 8.0), layout="constrained",
-                                     sharex=True)
+    xa, ya = np.asarray(x) / a, np.asarray(y) / a
+    X, Y = np.meshgrid(xa, ya, indexing="ij")
+    tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))  # height / width of a panel
+    height = float(np.clip(3.4 * tall, 2.4, 7.5))
+    width = float(np.clip(height / tall, 2.0, 4.5))
+    fig, (ax_p, ax_h) = plt.subplots(1, 2, figsize=(2 * width + 3.2, height + 1.2),
+                                     layout="constrained", sharey=True)
     p_gpa = np.asarray(pressure) / 1e9
-    levels = np.linspace(0.0, max(p_gpa.max(), 1e-12), 12)[1:]
-    filled = ax_p.contourf(X, Y, p_gpa, levels=np.r_[0.0, levels], cmap="magma_r")
-    lines = ax_p.contour(X, Y, p_gpa, levels=levels[::2], colors="k", linewidths=0.5)
-    ax_p.clabel(lines, fmt="%.2f", fontsize=7)
-    fig.colorbar(filled, ax=ax_p, label="pressure (GPa)")
-    hertz_outline(ax_p, label="Hertz contact")
-    ax_p.set(ylabel="y / b", title=f"{title}: pressure (GPa)")
+    levels = MaxNLocator(12).tick_values(0.0, max(p_gpa.max(), 1e-12))
+    filled = ax_p.contourf(X, Y, p_gpa, levels=levels, cmap="magma_r")
+    ax_p.contour(X, Y, p_gpa, levels=levels[1::2], colors="k", linewidths=0.4)
+    fig.colorbar(filled, ax=ax_p, label="pressure (GPa)", shrink=0.9)
+    ax_p.set(xlabel="x / a  (entrainment ->)", ylabel="y / a", title="pressure (GPa)")
 
     h_um = np.asarray(film) * 1e6
     h_levels = _film_levels(h_um, central_film * 1e6)
     filled = ax_h.contourf(X, Y, np.clip(h_um, None, h_levels[-1]), levels=h_levels,
                            cmap="viridis")
-    lines = ax_h.contour(X, Y, h_um, levels=h_levels[1::3], colors="k", linewidths=0.5)
-    ax_h.clabel(lines, fmt="%.2f", fontsize=7)
-    fig.colorbar(filled, ax=ax_h, label="film thickness (um)")
-    hertz_outline(ax_h, label="Hertz contact")
-    ax_h.set(xlabel="x / a  (entrainment ->)", ylabel="y / b", title="film thickness (um)")
+    ax_h.contour(X, Y, h_um, levels=h_levels[1::2], colors="k", linewidths=0.4)
+    fig.colorbar(filled, ax=ax_h, label="film thickness (um)", shrink=0.9)
+    ax_h.set(xlabel="x / a  (entrainment ->)", title="film thickness (um)")
     for ax in (ax_p, ax_h):
+        hertz_outline(ax, b / a, label="Hertz contact")
         ax.set_aspect("equal")
+    fig.legend(*ax_p.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
+               frameon=False)
+    fig.suptitle(title, fontsize=11)
     return fig
 
 

@@ -19,10 +19,11 @@ def plot_contact_rate(result, problem):
     levels = np.linspace(0.0, max(q.max(), 1e-9), 11)
     cs = ax.contourf(X, Y, q, levels=levels, cmap="Greys")
     fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)")
-    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a)
-    ax.set_xlabel("x / a")
+    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a, label="Hertz contact")
+    ax.set_xlabel("x / a  (entrainment ->)")
     ax.set_ylabel("y / a")
     ax.set_aspect("equal")
+    ax.legend(loc="upper left", fontsize=8, framealpha=0.8)
     return fig
 
 
@@ -47,9 +48,14 @@ def plot_centre_line(result, problem, index=-1, offset=None):
     ax.set_ylabel("pressure (GPa)")
     ax2 = ax.twinx()
     h = result.centre_film[index] * 1e6
-    ax2.plot(x, h, color="tab:blue", lw=1.0, label="h (um)")
+    ax2.plot(x, h, color="tab:blue", lw=1.0, label="film h (um)")
     surfaces_below(ax2, x, h, result.centre_surface1[index], result.centre_surface2[index],
                    offset)
+    band = ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
+    film_line, surface_line = ax2.get_lines()[:2]
+    ax.legend([ax.get_lines()[0], film_line, surface_line, band],
+              ["pressure p", "film h", "surfaces (offset)", "Hertz width"], loc="upper left",
+              fontsize=8, framealpha=0.8)
     ax.set_title(f"step {int(result.snapshot_steps[index])}")
     return fig
 
@@ -77,10 +83,15 @@ def plot_film_histogram(result):
     """Distribution of the film thickness over the Hertz area and the counting period."""
     fig, ax = new_figure()
     edges = result.film_edges * 1e6
-    total = max(result.film_counts.sum(), 1)
-    ax.stairs(result.film_counts / total, edges, fill=True, color="tab:gray")
+    share = result.film_counts / max(result.film_counts.sum(), 1)
+    ax.stairs(share[:-1], edges[:-1], fill=True, color="tab:gray", label="film in the bin")
+    ax.stairs(share[-1:], edges[-2:], fill=True, color="tab:orange",
+              label=f"overflow: h >= {edges[-2]:.3g} um")
+    ax.annotate(f">= {edges[-2]:.3g} um", (0.5 * (edges[-2] + edges[-1]), share[-1]),
+                xytext=(0, 4), textcoords="offset points", ha="right", fontsize=8)
     ax.set_xlabel("film thickness h (um)")
-    ax.set_ylabel("fraction of node-steps")
+    ax.set_ylabel("fraction of node-steps in the Hertz contact")
+    ax.legend(loc="upper right", fontsize=8)
     return fig
 
 
@@ -90,11 +101,25 @@ def plot_flow_vectors(result, problem, stride=(4, 4)):
     fig, ax = new_figure()
     X, Y = np.meshgrid(result.x / problem.a, result.y / problem.a, indexing="ij")
     cs = ax.contourf(X, Y, result.film * 1e6, levels=20, cmap="viridis")
-    fig.colorbar(cs, ax=ax, label="h (um)")
+    fig.colorbar(cs, ax=ax, label="film thickness h (um)")
     sx, sy = stride
-    ax.quiver(X[::sx, ::sy], Y[::sx, ::sy], result.flow_x[::sx, ::sy],
-              result.flow_y[::sx, ::sy], color="white")
-    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a)
-    ax.set_xlabel("x / a")
+    qx, qy = result.flow_x[::sx, ::sy] * 1e6, result.flow_y[::sx, ::sy] * 1e6  # mm^2/s
+    arrows = ax.quiver(X[::sx, ::sy], Y[::sx, ::sy], qx, qy, color="white")
+    reference = _round_125(float(np.max(np.hypot(qx, qy))))
+    if reference > 0:
+        ax.quiverkey(arrows, 0.80, 1.03, reference, f"flow {reference:g} mm²/s per unit width",
+                     labelpos="W", coordinates="axes", color="k", fontproperties={"size": 8})
+    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a, label="Hertz contact")
+    ax.set_xlabel("x / a  (entrainment ->)")
     ax.set_ylabel("y / a")
+    ax.set_aspect("equal")
+    ax.legend(loc="lower left", fontsize=8, framealpha=0.8)
     return fig
+
+
+def _round_125(value: float) -> float:
+    """The largest 1, 2 or 5 times a power of ten not above ``value`` (an arrow-key length)."""
+    if not value > 0 or not np.isfinite(value):
+        return 0.0
+    power = 10.0 ** np.floor(np.log10(value))
+    return float(max(m for m in (1.0, 2.0, 5.0) if m * power <= value * (1 + 1e-12)) * power)

@@ -16,6 +16,8 @@ def pressure_map(x, y, pressure, contact=None, title="Contact pressure"):
     m = ax.pcolormesh(X, Y, pressure / 1e9, shading="auto", cmap="magma")
     if contact is not None and contact.any() and not contact.all():
         ax.contour(X, Y, contact.astype(float), levels=[0.5], colors="cyan", linewidths=0.8)
+        ax.plot([], [], color="cyan", lw=0.8, label="contact boundary")
+        ax.legend(loc="upper right", fontsize=8, framealpha=0.8)
     fig.colorbar(m, ax=ax, label="pressure (GPa)")
     ax.set(xlabel="x (mm)", ylabel="y (mm)", title=title, aspect="equal")
     return fig
@@ -33,5 +35,6 @@ def centre_line(x, pressure_line, gap_line, reference=None, title="Centre line y
     ax2.plot(xm, gap_line * 1e6, "b-", lw=1.0, label="gap")
     ax2.set_ylabel("gap (um)", color="b")
     lines = ax.get_lines() + ax2.get_lines()
-    ax.legend(lines, [ln.get_label() for ln in lines], loc="upper right", fontsize=8)
+    ax.legend(lines, [ln.get_label() for ln in lines], loc="upper center", fontsize=8,
+              framealpha=0.9)
     return fig

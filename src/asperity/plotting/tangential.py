@@ -54,10 +54,16 @@ def traction_map(result, x, y, title="Tangential traction", arrows=16):
               pivot="middle")
     _border(ax, x, y, contact, colors="k", linewidths=1.0)
     _border(ax, x, y, result.stick, colors="k", linestyles="--", linewidths=1.2)
+    ax.plot([], [], "k-", lw=1.0, label="contact outline")
+    if result.stick.any():
+        ax.plot([], [], "k--", lw=1.2, label="stick/slip border")
+    ax.plot([], [], marker=r"$\rightarrow$", ls="none", color="0.3", ms=10,
+            label="traction direction")
     if np.all(np.isfinite(result.center_of_rotation)):
         ax.plot(*(result.center_of_rotation * MM), "r+", ms=10, mew=2,
                 label="centre of rotation")
-        ax.legend(loc="best", fontsize=8, framealpha=0.7)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncols=4, fontsize=8,
+              frameon=False)
     ax.set(xlabel="x (mm)", ylabel="y (mm)", aspect="equal")
     ax.set_title(title, fontsize=10)
     return fig
@@ -73,6 +79,10 @@ def slip_progression(path, x, y, title="Progression of slip"):
         _border(ax, x, y, stick, colors=[colors[k]], linestyles="--", linewidths=1.0)
     sm = _scalar_mappable(path.loads)
     fig.colorbar(sm, ax=ax, label="load step")
+    ax.plot([], [], "k-", lw=1.5, label="contact outline")
+    ax.plot([], [], "--", color=colors[-1], lw=1.0, label="stick border at a load step")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncols=2, fontsize=8,
+              frameon=False)
     ax.set(xlabel="x (mm)", ylabel="y (mm)", title=title, aspect="equal")
     return fig
 
@@ -103,11 +113,13 @@ def compliance_curves(path, title="Compliance"):
         if panel == "force":
             sign = np.sign(path.loads[:, 0] + path.loads[:, 1])
             sign = np.where(sign == 0, 1, sign)
-            ax.plot(np.hypot(*path.shift.T) * sign * 1e6, force * sign, "o-")
+            ax.plot(np.hypot(*path.shift.T) * sign * 1e6, force * sign, "o-",
+                    label="load steps")
             ax.set(xlabel="rigid shift (um)", ylabel="tangential force (N)")
         else:
-            ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-")
+            ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-", label="load steps")
             ax.set(xlabel="twist (mrad)", ylabel="twisting moment (N m)")
+        ax.legend(loc="lower right", fontsize=8)
     fig.suptitle(title)
     return fig
 
@@ -145,8 +157,10 @@ def load_sharing(path, title="Load sharing between regions"):
         a1.set(xlabel="applied force (N)", ylabel="force carried (N)")
         carried = region_moment.sum(axis=1)
         ok = force > 0
-        a2.plot(force[ok], carried[ok] / force[ok] * MM, "o-")
+        a2.plot(force[ok], carried[ok] / force[ok] * MM, "o-", color="k",
+                label="resultant traction")
         a2.set(xlabel="applied force (N)", ylabel="line of action offset (mm)")
+        a2.legend(fontsize=8)
     else:
         m = loads[:, 2]
         for r in range(k):
@@ -155,6 +169,7 @@ def load_sharing(path, title="Load sharing between regions"):
                     label=f"region {r + 1}")
         a1.set(xlabel="applied moment (N m)", ylabel="moment carried (N m)")
         a2.set(xlabel="applied moment (N m)", ylabel="share of the moment")
-    a1.legend()
+        a2.legend(fontsize=8)
+    a1.legend(fontsize=8)
     fig.suptitle(title)
     return fig
