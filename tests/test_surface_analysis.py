@@ -286,3 +286,29 @@ def test_cli_run_writes_the_report(tmp_path):
     with xr.open_dataset(out / "result.nc") as ds:
         _check_dataset(ds)
         assert list(ds["surface"].values) == ["A", "B", "C"]
+
+
+def test_copied_example_runs_where_it_is_written(tmp_path, monkeypatch):
+    # the issue: `asperity example measured-profile > mp.toml && asperity run mp.toml`
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(app, ["example", "measured-profile"])
+    (tmp_path / "mp.toml").write_text(result.stdout)
+    assert 'path = "builtin:ground-profile.csv"' in result.stdout
+    ran = CliRunner().invoke(app, ["run", "mp.toml", "--out", "o", "--quiet"])
+    assert ran.exit_code == 0, ran.output
+    # --out DIR writes the case and its data beside it, the path made relative
+    result = CliRunner().invoke(app, ["example", "measured-profile", "--out", "copy"])
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "copy" / "ground-profile.csv").is_file()
+    case = (tmp_path / "copy" / "measured-profile.toml").read_text()
+    assert 'path = "ground-profile.csv"' in case
+    assert load_case(tmp_path / "copy" / "measured-profile.toml").surface.path == str(
+        tmp_path / "copy" / "ground-profile.csv")
+
+
+def test_unknown_builtin_data_and_bad_unit_are_named():
+    text = example_text("measured-profile")
+    with pytest.raises(InputError, match="surface.path: .*builtin:ground-profile.csv"):
+        load_case(text.replace("builtin:ground-profile.csv", "builtin:nope.csv"))
+    with pytest.raises(InputError, match="surface.unit: expected a length unit"):
+        load_case(text.replace('path = "builtin', 'unit = "parsec per fortnight"\npath = "builtin'))

@@ -14,7 +14,58 @@ from pydantic import Field, field_validator, model_validator
 
 from .fields import CaseModel, Quantity, existing_file
 
-__all__ = ["RoughnessSpec", "WavinessSpec", "surface_heights", "undeformed_gap"]
+__all__ = ["MeasuredFile", "RoughnessSpec", "WavinessSpec", "length_unit", "measured_file",
+           "surface_heights", "undeformed_gap"]
+
+
+def measured_file(cls, value, info):
+    """Field validator of a measured surface's ``path``: ``builtin:NAME`` names a data file
+    shipped with asperity (:func:`asperity.examples.builtin_data`); any other path must exist,
+    a relative one relative to the case file's folder (:func:`~.fields.existing_file`)."""
+    from ..errors import InputError
+    from ..examples import BUILTIN_PREFIX, builtin_data
+
+    if isinstance(value, str) and value.startswith(BUILTIN_PREFIX):
+        try:
+            return str(builtin_data(value))
+        except InputError as err:
+            raise ValueError(err.expected) from None
+    return existing_file(cls, value, info)
+
+
+def length_unit(cls, value):
+    """Field validator of a unit name (``"um"``, ``"nm"``, ``"angstrom"``, ``"in"``)."""
+    from ..errors import InputError
+    from ..surfaces.readers.units import parse_length
+
+    if value is not None:
+        try:
+            parse_length(value, "unit")
+        except InputError as err:
+            raise ValueError(f"expected {err.expected}") from None
+    return value
+
+
+class MeasuredFile(CaseModel):
+    """The keys of a measured surface file, shared by ``[roughness]`` and ``[surface]``.
+
+    ``unit`` (of both coordinates and heights), ``x_unit``, ``z_unit``: length units of the
+    file's numbers when it does not say (they replace what it says); ``missing``: ``"refuse"``
+    (default) or ``"fill"`` missing points; ``resample``: resample non-uniform x by cubic spline.
+    """
+
+    unit: str | None = None
+    x_unit: str | None = None
+    z_unit: str | None = None
+    missing: Literal["refuse", "fill"] | None = None
+    resample: bool | None = None
+
+    _units = field_validator("unit", "x_unit", "z_unit")(length_unit)
+
+    def read_options(self) -> dict:
+        """Keyword arguments of :func:`asperity.surfaces.io.read_measured`."""
+        return {"unit": self.unit, "x_unit": self.x_unit, "z_unit": self.z_unit,
+                "missing": self.missing or "refuse", "resample": bool(self.resample)}
 
 
 class WavinessSpec(CaseModel):
@@ -25,7 +76,7 @@ class WavinessSpec(CaseModel):
     direction: Literal["x", "y"] = "y"
 
 
-class RoughnessSpec(CaseModel):
+class RoughnessSpec(MeasuredFile):
     """Which surface: ``kind`` and its parameters (unused ones must be left out).
 
     - ``gaussian``: ``rms``, ``correlation_length`` (or ``correlation_length_y`` too), ``acf``
@@ -34,8 +85,10 @@ class RoughnessSpec(CaseModel):
     - ``ground``: transverse-ground profile along x with ``ra``, ``correlation_length``,
       ``run_in`` (0 fresh .. <1 strongly run-in)
     - ``builtin``: ``profile`` "A", "B" or "C" (synthetic stand-ins of the mixed-EHL seed)
-    - ``file``: ``path`` (text, npy, npz, or an instrument format), ``spacing`` if the file has
-      no coordinates
+    - ``file``: ``path`` (text, npy, npz, or an instrument format; relative to the case file, or
+      ``builtin:NAME`` for shipped data), ``spacing`` if the file has no coordinates, and the
+      reading keys of :class:`MeasuredFile` (``unit``, ``x_unit``, ``z_unit``, ``missing``,
+      ``resample``)
     All kinds take ``scale`` (multiplies the heights), ``seed`` and an optional ``waviness``.
     """
 
@@ -57,7 +110,7 @@ class RoughnessSpec(CaseModel):
     seed: Annotated[int, Field(ge=0)] = 0
     waviness: WavinessSpec | None = None
 
-    _path = field_validator("path")(existing_file)
+    _path = field_validator("path")(measured_file)
 
     @model_validator(mode="after")
     def _required(self):
@@ -66,6 +119,11 @@ class RoughnessSpec(CaseModel):
         for key in need:
             if getattr(self, key) is None:
                 raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
+        if self.kind != "file":
+            for key in MeasuredFile.model_fields:
+                if getattr(self, key) is not None:
+                    raise ValueError(f"expected no {key} for kind = \"{self.kind}\" (it is "
+                                     "for a measured file)")
         if self.kind == "self-affine" and (self.rms is None) == (self.rms_slope is None):
             raise ValueError("expected exactly one of rms or rms_slope for a self-affine surface")
         return self
@@ -95,7 +153,7 @@ def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
     elif spec.kind == "builtin":
         surf = s.builtin_profile(spec.profile, length=size[0] + dx, spacing=min(dx, 0.5e-6))
     else:
-        surf = s.read_surface(spec.path, spec.spacing)
+        surf = s.read_surface(spec.path, spec.spacing, **spec.read_options())
     if spec.waviness is not None:
         w = spec.waviness
         if isinstance(surf, s.Profile) and w.direction == "y":

@@ -18,7 +18,8 @@ from typing import Annotated, Literal
 from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from .fields import CaseHeader, CaseModel, Quantity, existing_file
+from .fields import CaseHeader, CaseModel, Quantity
+from .roughness import MeasuredFile, measured_file
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
 
@@ -44,7 +45,7 @@ KEYS = {
                     {"width", "rms", "rms_slope", "rolloff_wavelength", "short_cutoff", "seed"}),
     "ground": ({"length", "spacing", "ra"}, {"correlation_length", "run_in", "seed"}),
     "builtin": ({"profile"}, {"length", "spacing"}),
-    "file": ({"path"}, {"spacing"}),
+    "file": ({"path"}, {"spacing", *MeasuredFile.model_fields}),
     "turned": ({"feed", "nose_radius"}, {"length", "spacing", "end_relief_angle"}),
 }
 #: Keys of the tool-vibration model of a turned surface: all required with natural_frequency.
@@ -71,7 +72,7 @@ def _as_list(value):
     return value if isinstance(value, list | tuple) else [value]
 
 
-class SurfaceSpec(CaseModel):
+class SurfaceSpec(MeasuredFile):
     """The surface to analyse: ``kind`` and the keys of that kind (others must be left out).
 
     - ``gaussian``: ``length``, ``spacing``, ``rms``, ``correlation_length`` (lag where the
@@ -84,8 +85,10 @@ class SurfaceSpec(CaseModel):
       ``seed``.
     - ``builtin``: ``profile`` "A", "B", "C" or a list of them (synthetic stand-ins of the
       mixed-EHL seed's Fig. 1 traces); optional ``length`` (5 mm), ``spacing`` (0.5 um).
-    - ``file``: ``path`` (text, npy, npz, or an instrument format), relative to the case file;
-      ``spacing`` if the file has no coordinates.
+    - ``file``: ``path`` (text, npy, npz, or an instrument format), relative to the case file,
+      or ``builtin:NAME`` for data shipped with asperity; ``spacing`` if the file has no
+      coordinates; ``unit``/``x_unit``/``z_unit``, ``missing`` and ``resample`` as in
+      :class:`~asperity.cases.roughness.MeasuredFile`.
     - ``turned``: feed marks of a tool of ``nose_radius`` at ``feed`` per revolution, optional
       ``end_relief_angle`` (checks f <= 2 r sin(kappa_e), Seireg eq. 4.1), ``length`` (default
       20 feeds, rounded to whole feeds) and ``spacing`` (default feed/201, reduced to an odd
@@ -136,7 +139,7 @@ class SurfaceSpec(CaseModel):
             raise ValueError("expected distinct values")
         return value
 
-    _path = field_validator("path")(existing_file)
+    _path = field_validator("path")(measured_file)
 
     @model_validator(mode="after")
     def _keys_of_kind(self):

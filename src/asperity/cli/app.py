@@ -225,11 +225,19 @@ def examples():
 
 @app.command()
 @guarded
-def example(name: Annotated[str, typer.Argument(help="Example name (see asperity examples).")]):
-    """Print a built-in example as TOML (save it, edit it, run it)."""
-    from ..examples import example_text
+def example(
+    name: Annotated[str, typer.Argument(help="Example name (see asperity examples).")],
+    out: Annotated[Path | None, typer.Option(
+        "--out", help="Write NAME.toml and the data it names into this folder.")] = None,
+):
+    """Print a built-in example as TOML (save it, edit it, run it), or write it to --out."""
+    from ..examples import example_text, write_example
 
-    sys.stdout.write(example_text(name))
+    if out is None:
+        sys.stdout.write(example_text(name))
+        return
+    for path in write_example(name, out):
+        console.print(f"wrote {path}")
 
 
 @app.command()

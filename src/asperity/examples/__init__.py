@@ -2,17 +2,26 @@
 
 Each file carries ``title``, ``description`` and ``source`` keys; ``long_running = true`` marks
 full-size paper reproductions that take much longer than a minute.
+
+Data shipped with the examples (``data/``) is named in case files as ``builtin:NAME``
+(``path = "builtin:ground-profile.csv"``), which resolves wherever the case file is;
+:func:`write_example` writes an example with its data beside it, the path made relative.
 """
 
 from __future__ import annotations
 
+import shutil
 from dataclasses import dataclass
 from importlib import resources
+from pathlib import Path
 
 from ..errors import InputError
 
-__all__ = ["DEFAULT_EXAMPLE", "Example", "example_text", "list_examples", "list_studies",
-           "study_text"]
+__all__ = ["BUILTIN_PREFIX", "DEFAULT_EXAMPLE", "Example", "builtin_data", "example_text",
+           "list_examples", "list_studies", "study_text", "write_example"]
+
+#: Prefix of the names of data files shipped with asperity (``builtin:ground-profile.csv``).
+BUILTIN_PREFIX = "builtin:"
 
 #: What ``asperity run`` runs when no case is given.
 DEFAULT_EXAMPLE = "holmes-rough-CC"
@@ -75,3 +84,34 @@ def list_studies() -> list[tuple[str, str]]:
 def study_text(name: str) -> str:
     """The TOML text of a built-in study."""
     return _text(name, "studies", "study", "a study file or one of: ")
+
+
+def builtin_data(name: str) -> Path:
+    """The path of a shipped data file named ``builtin:NAME`` or ``NAME``."""
+    name = name.removeprefix(BUILTIN_PREFIX)
+    folder = resources.files(__name__) / "data"
+    for item in folder.iterdir():
+        if item.name == name:
+            return Path(str(item))
+    names = ", ".join(sorted(BUILTIN_PREFIX + p.name for p in folder.iterdir()
+                             if not p.name.startswith((".", "_"))))
+    raise InputError("path", f"one of the shipped data files: {names}", name)
+
+
+def write_example(name: str, folder) -> list[Path]:
+    """Write example ``name`` to ``folder/NAME.toml`` with the shipped data it names beside it.
+
+    Every ``"builtin:FILE"`` in the case becomes ``"FILE"``, which a case file resolves relative
+    to its own folder, and FILE is copied there. Returns the paths written, the case first.
+    """
+    text = example_text(name)
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    written = [folder / f"{name}.toml"]
+    for token in sorted(set(text.split('"'))):
+        if token.startswith(BUILTIN_PREFIX):
+            source = builtin_data(token)
+            written.append(Path(shutil.copyfile(source, folder / source.name)))
+            text = text.replace(f'"{token}"', f'"{source.name}"')
+    written[0].write_text(text, encoding="utf-8")
+    return written
