@@ -49,10 +49,16 @@ range = {start = 5, stop = 10, num = 2, unit = "mm"}
 """
 
 
-def test_cross_study_has_the_axes_as_dimensions(tmp_path):
+@pytest.fixture(scope="module")
+def cross_study(tmp_path_factory):
+    tmp_path = tmp_path_factory.mktemp("cross")
     study = _study(tmp_path, AXES)
+    return study, run_study(study, tmp_path / "out"), tmp_path / "out"
+
+
+def test_cross_study_has_the_axes_as_dimensions(cross_study):
+    study, ds, out = cross_study
     assert len(study.cases) == 6
-    ds = run_study(study, tmp_path / "out")
     assert ds["max_pressure_pa"].dims == ("loading__load", "geometry__rx")
     assert np.allclose(ds["loading__load"], [5, 10, 20])
     assert np.allclose(ds["geometry__rx"], [0.005, 0.01])
@@ -60,8 +66,34 @@ def test_cross_study_has_the_axes_as_dimensions(tmp_path):
     # Hertz: p_max grows like P^(1/3) at fixed radius
     p = ds["max_pressure_pa"].sel(geometry__rx=0.01).values
     assert p[2] / p[0] == pytest.approx(4 ** (1 / 3), rel=0.03)
-    with xr.open_dataset(tmp_path / "out" / "study.nc") as saved:
+    with xr.open_dataset(out / "study.nc") as saved:
         assert saved["load_n"].shape == (3, 2)
+
+
+def test_every_variable_of_study_nc_has_units(cross_study):
+    _, _, out = cross_study
+    with xr.open_dataset(out / "study.nc") as ds:
+        for name, var in {**ds.data_vars, **ds.coords}.items():
+            assert var.attrs.get("units"), name
+            assert var.attrs.get("long_name"), name
+        # CF spellings of the summary keys' units; the swept quantities in SI
+        assert ds["max_pressure_pa"].attrs["units"] == "Pa"
+        assert ds["contact_area_m2"].attrs["units"] == "m2"
+        assert ds["contact_area_fraction"].attrs["units"] == "1"
+        assert ds["max_pressure_pa"].attrs["long_name"] == "maximum pressure"
+        assert ds["loading__load"].attrs["units"] == "N"
+        assert ds["geometry__rx"].attrs["units"] == "m"
+
+
+def test_study_report_plots_results_against_the_axes_and_lists_cases(cross_study):
+    _, _, out = cross_study
+    html = (out / "report.html").read_text()
+    assert (out / "study.png").stat().st_size > 10_000
+    assert html.count("data:image/png;base64,") == 1
+    assert html.count("<tr><td>00") == 6                  # one row per case
+    assert "<td>10 mm</td>" in html and "<td>5 N</td>" in html   # axis values in units
+    assert "maximum pressure" in html and "max_pressure_pa" not in html
+    assert "6 of 6 cases done" in html
 
 
 def test_dask_two_workers_match_serial(tmp_path):

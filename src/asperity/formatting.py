@@ -19,12 +19,15 @@ from .units import registry
 __all__ = [
     "NOISE",
     "SummaryRow",
+    "cf_units",
+    "display_unit",
     "describe_key",
     "format_number",
     "format_quantity",
     "given_in_imperial",
     "summary_rows",
     "unit_label",
+    "units_from_cf",
 ]
 
 #: SI unit (pint expression) -> readable units to choose from, largest first: (pint, label[,
@@ -140,6 +143,22 @@ def _strip(text: str) -> str:
     return text.rstrip("0").rstrip(".") if "." in text else text
 
 
+#: asperity unit spellings -> CF/UDUNITS strings (for netCDF attributes).
+_CF = {"": "1", "m^2": "m2", "N*m": "N m", "m/s": "m s-1", "Pa*s": "Pa s", "1/Pa": "Pa-1",
+       "1/ms": "ms-1", "%": "percent", "kg/m^3": "kg m-3", "N/m": "N m-1", "N*s/m": "N s m-1"}
+
+
+def cf_units(unit: str) -> str:
+    """An asperity unit (``"m^2"``, ``"N*m"``, ``"m/s"``, ``"%"``, ``""``) as a CF/UDUNITS
+    string (``"m2"``, ``"N m"``, ``"m s-1"``, ``"percent"``, ``"1"``)."""
+    return _CF.get(unit, unit)
+
+
+def units_from_cf(cf: str) -> str:
+    """The inverse of :func:`cf_units`: ``"m2"`` -> ``"m^2"``, ``"1"`` -> ``""``."""
+    return {v: k for k, v in _CF.items()}.get(cf, cf)
+
+
 def unit_label(unit: str) -> str:
     """A unit as printed: ``"m^2"`` -> ``"m²"``, ``"N*m"`` -> ``"N m"``, ``"ms-1"`` ->
     ``"1/ms"``, ``"1"`` -> ``""``."""
@@ -160,6 +179,29 @@ def _convert(value: float, si_unit: str, choices) -> tuple[float, str]:
         if abs(converted) >= (smallest[0] if smallest else 1.0):
             return converted, label
     return converted, label
+
+
+def display_unit(magnitude: float, unit: str) -> tuple[float, str]:
+    """The readable unit for values up to ``magnitude`` (in SI ``unit``), for an axis or column.
+
+    Parameters
+    ----------
+    magnitude : float
+        The largest absolute value to show, in ``unit``.
+    unit : str
+        SI unit as in :func:`format_quantity`.
+
+    Returns
+    -------
+    (float, str)
+        The factor from SI to the chosen unit and its label: ``(1e-9, "GPa")`` for 1.4e10 Pa.
+    """
+    unit = _ALIASES.get(unit, unit)
+    choices = _SI_CHOICES.get(unit)
+    if choices is None or not math.isfinite(magnitude) or magnitude == 0:
+        return 1.0, unit_label(unit)
+    converted, label = _convert(abs(magnitude), unit, choices)
+    return converted / abs(magnitude), label
 
 
 def format_quantity(value, unit: str = "", *, imperial: bool = False, digits: int = 4) -> str:

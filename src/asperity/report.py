@@ -12,10 +12,18 @@ import math
 import re
 from pathlib import Path
 
-from .formatting import SummaryRow, format_number, format_quantity, summary_rows
+from .formatting import (
+    SummaryRow,
+    describe_key,
+    format_number,
+    format_quantity,
+    summary_rows,
+    units_from_cf,
+)
 from .results import Outcome, atomic_path
 
-__all__ = ["render_report", "write_report"]
+__all__ = ["render_report", "render_study_report", "study_variables", "write_report",
+           "write_study_report"]
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:2rem auto;
@@ -34,6 +42,7 @@ border-radius:4px} .bad{background:#ffebe9;border-color:#cf222e}
 .warn{background:#fff1e5;border:2px solid #bc4c00;color:#762c00;padding:.5rem .8rem;
 border-radius:4px} .warn ul{margin:.3rem 0 0 0}
 pre{background:#f6f8fa;padding:.6rem;overflow:auto;font-size:.85rem}
+td{white-space:nowrap} td.l{white-space:normal}
 h3{font-size:1rem;margin:1rem 0 .2rem;color:#57606a}
 .headline{display:flex;flex-wrap:wrap;gap:.8rem;margin:1rem 0}
 .card{border:1px solid #d0d7de;border-radius:6px;padding:.6rem 1rem;min-width:11rem;
@@ -238,3 +247,145 @@ def write_report(title: str, case: dict, outcome: Outcome, files: dict, path, *,
     with atomic_path(path) as tmp:
         tmp.write_text(text, encoding="utf-8")
     return Path(path)
+
+
+def study_variables(ds, limit: int = 9) -> list[str]:
+    """The numeric results of a study that vary from case to case: headline quantities first,
+    solver bookkeeping left out, at most ``limit``."""
+    import numpy as np
+
+    axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
+    numeric = []
+    for name, var in ds.data_vars.items():
+        if name in _SOLVER_KEYS or not np.issubdtype(var.dtype, np.number):
+            continue
+        values = var.values.astype(float)
+        finite = values[np.isfinite(values)]
+        if finite.size and np.ptp(finite) > 1e-12 * max(np.max(np.abs(finite)), 1e-300) and \
+                not any(_repeats_axis(var, ds[a]) for a in axes):
+            numeric.append(str(name))
+    ranked = [k for k in HEADLINE_KEYS if k in numeric] + [
+        k for k in numeric if k not in HEADLINE_KEYS]
+    return ranked[:limit]
+
+
+def _repeats_axis(var, coord) -> bool:
+    """Whether a result only repeats a swept value (the load of a load sweep)."""
+    import numpy as np
+
+    if not np.issubdtype(coord.dtype, np.number) or coord.attrs.get("units") != var.attrs.get(
+            "units"):
+        return False
+    import xarray as xr
+
+    values, axis = xr.broadcast(var.astype(float), coord.astype(float))
+    return bool(np.allclose(values.values, axis.values, rtol=1e-9, equal_nan=True))
+
+
+def _cases_table(ds, variables) -> str:
+    import numpy as np
+
+    axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
+    dims = list(ds["state"].dims)
+    head = "".join(f"<th>{html.escape(ds[a].attrs.get('long_name', a))}</th>" for a in axes)
+    head += "".join(f"<th>{html.escape(describe_key(v)[0])}</th>" for v in variables)
+    rows = []
+    for n, index in enumerate(np.ndindex(*ds["state"].shape)):
+        sel = dict(zip(dims, index, strict=True))
+        cells = []
+        for a in axes:
+            coord = ds[a].isel({d: i for d, i in sel.items() if d in ds[a].dims})
+            value = coord.values.item()
+            unit = units_from_cf(ds[a].attrs.get("units", "1"))
+            cells.append(format_quantity(value, unit) if isinstance(value, int | float)
+                         else str(value))
+        for v in variables:
+            value = float(ds[v].isel(sel).values)
+            label, unit = describe_key(v)
+            if unit == "%" and v.endswith("fraction"):
+                value *= 100.0
+            cells.append(format_quantity(value, unit))
+        state = str(ds["state"].isel(sel).values)
+        error = str(ds["error"].isel(sel).values)
+        badge = ("<span class=pass>done</span>" if state == "done" else
+                 f"<span class=fail>{html.escape(state)}</span>")
+        rows.append(f"<tr><td>{n:04d}</td>" + "".join(f"<td>{html.escape(c)}</td>"
+                                                       for c in cells)
+                    + f"<td>{badge}</td><td class=l>{html.escape(error)}</td></tr>")
+    return (f"<table><tr><th>case</th>{head}<th>state</th><th class=l>error</th></tr>"
+            f"{''.join(rows)}</table>")
+
+
+def render_study_report(ds, figure_png: bytes | None = None) -> str:
+    """The HTML report of a parameter study: the swept results against the axes (a figure)
+    and the table of cases.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` (:func:`asperity.sweep.combine`).
+    figure_png : bytes, optional
+        The figure of :func:`asperity.plotting.study.plot_study`, embedded as PNG.
+    """
+    title = str(ds.attrs.get("title", "Parameter study"))
+    states = ds["state"].values.ravel()
+    done, failed = int((states == "done").sum()), int((states == "failed").sum())
+    status = (f"<p class='note ok'>{done} of {states.size} cases done.</p>" if done == states.size
+              else f"<p class='note bad'><b>{done} of {states.size} cases done</b>, {failed} "
+                   "failed (errors in the table), "
+                   f"{states.size - done - failed} missing.</p>")
+    variables = study_variables(ds)
+    figure = ("<p class=info>No result varies from case to case.</p>" if figure_png is None else
+              '<figure><img style="max-width:100%" alt="study" src="data:image/png;base64,'
+              f'{base64.b64encode(figure_png).decode("ascii")}"><figcaption>Each result '
+              "against the first axis (one line per value of the other axes).</figcaption>"
+              "</figure>")
+    axes = ", ".join(html.escape(ds[a].attrs.get("long_name", a))
+                     for a in ds.attrs.get("axes", "").split(",") if a)
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)} - asperity study</title>
+<style>{_CSS}</style></head><body>
+<h1>{html.escape(title)}</h1>
+<p class=sub>Parameter study ({html.escape(str(ds.attrs.get('mode', 'cross')))}) over {axes};
+{states.size} cases.</p>
+{status}
+<h2>Results against the axes</h2>{figure}
+<h2>Cases</h2>{_cases_table(ds, variables[:6])}
+<p class=info>Written by asperity. Every case's files are in cases/NNNN; all scalars, with
+units, in study.nc.</p>
+</body></html>
+"""
+
+
+def write_study_report(ds, out_dir) -> Path:
+    """Draw the study figure (``study.png``) and write ``report.html`` into ``out_dir``.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` (:func:`asperity.sweep.combine`).
+    out_dir : path
+        The study's output folder.
+
+    Returns
+    -------
+    pathlib.Path
+        The report's path.
+    """
+    import matplotlib.pyplot as plt
+
+    from .plotting.study import plot_study
+
+    out = Path(out_dir)
+    variables = study_variables(ds)
+    png = None
+    if variables:
+        fig = plot_study(ds, variables)
+        with atomic_path(out / "study.png") as tmp:
+            fig.savefig(tmp, format="png", dpi=110, bbox_inches="tight")
+        plt.close(fig)
+        png = (out / "study.png").read_bytes()
+    path = out / "report.html"
+    with atomic_path(path) as tmp:
+        tmp.write_text(render_study_report(ds, png), encoding="utf-8")
+    return path

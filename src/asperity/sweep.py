@@ -22,7 +22,9 @@ Each case runs in its own folder ``OUT/cases/NNNN`` (``summary.json`` and ``resu
 marked done by ``status.json`` written last, so an interrupted study resumes where it stopped and
 never runs a finished case twice. A failing case is recorded with its error and does not stop the
 others. The scalars of all cases are combined into ``OUT/study.nc`` with the swept parameters as
-dimensions (``mode = "cross"``) or along a ``case`` dimension (``mode = "zip"``).
+dimensions (``mode = "cross"``) or along a ``case`` dimension (``mode = "zip"``), units and long
+names on every variable; ``OUT/report.html`` plots the results against the axes
+(``OUT/study.png``) and lists the cases.
 """
 
 from __future__ import annotations
@@ -38,9 +40,11 @@ import numpy as np
 import xarray as xr
 
 from .errors import InputError
+from .formatting import cf_units, describe_key
+from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
 
-__all__ = ["Study", "load_study", "run_study", "run_one", "combine"]
+__all__ = ["Study", "combine", "load_study", "run_one", "run_study"]
 
 
 @dataclass(frozen=True)
@@ -194,7 +198,8 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
     ----------
     study : Study
     out : path
-        Output folder; ``cases/NNNN`` per case and ``study.nc``.
+        Output folder; ``cases/NNNN`` per case, ``study.nc``, ``study.png`` and
+        ``report.html``.
     client : dask.distributed.Client, optional
         Where to run; ``None`` runs the cases one after the other in this process.
     progress : callable, optional
@@ -225,6 +230,7 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
                 progress(done, total, f"{study.title}: case {futures[future]}")
     ds = combine(study, out)
     write_netcdf(ds, out / "study.nc")
+    write_study_report(ds, out)
     with atomic_path(out / "study.json") as tmp:
         tmp.write_text(json.dumps({"title": study.title, "mode": study.mode,
                                    "cases": [c for c, _, _ in study.cases]}, indent=2))
@@ -232,19 +238,22 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
 
 
 def _coordinate(values: list):
-    from .units import registry
+    """Axis values as numbers in the SI unit of their dimension (and that unit, CF-style), or
+    as strings."""
+    from .units import DIMENSIONS, registry
 
     try:
-        return np.array([float(v) for v in values]), ""
+        return np.array([float(v) for v in values]), "1"
     except (TypeError, ValueError):
         pass
     try:
         ureg = registry()
         qs = [ureg.Quantity(v) for v in values]
-        base = qs[0].to_base_units()
-        return np.array([q.to(base.units).magnitude for q in qs]), f"{base.units:~}"
+        si = next(u for u in DIMENSIONS.values()
+                  if u and ureg.Quantity(1, u).dimensionality == qs[0].dimensionality)
+        return np.array([q.to(si).magnitude for q in qs], dtype=float), cf_units(si)
     except Exception:  # labels that are not quantities stay strings
-        return np.array([str(v) for v in values]), ""
+        return np.array([str(v) for v in values]), "1"
 
 
 def combine(study: Study, out: str | Path) -> xr.Dataset:
@@ -259,9 +268,9 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
     names = [ax[0] for ax in study.axes]
     coords = {}
     for name, axis_keys, values, labels in study.axes:
-        arr, unit = (np.array(labels), "") if labels is not None else _coordinate(values)
+        arr, unit = (np.array(labels), "1") if labels is not None else _coordinate(values)
         coords[name] = (name if study.mode == "cross" else "case", arr,
-                        {"units": unit or "1", "long_name": ", ".join(axis_keys)})
+                        {"units": unit, "long_name": ", ".join(axis_keys)})
     shape = (tuple(len(ax[2]) for ax in study.axes) if study.mode == "cross"
              else (len(study.cases),))
     dims = tuple(names) if study.mode == "cross" else ("case",)
@@ -271,11 +280,15 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
 
     data = {}
     for k in keys:
+        label, unit = describe_key(k)
+        if k.endswith("fraction") and unit == "%":
+            unit = ""  # stored as a fraction; shown in percent only in reports
         data[k] = (dims, field(lambda s, k=k: (s.get("summary") or {}).get(k, math.nan)),
-                   {"long_name": k})
+                   {"long_name": label, "units": cf_units(unit)})
     data["state"] = (dims, field(lambda s: s["state"], object).astype(str),
-                     {"long_name": "done, failed or missing"})
+                     {"long_name": "done, failed or missing", "units": "1"})
     data["error"] = (dims, field(lambda s: s.get("error", ""), object).astype(str),
-                     {"long_name": "error message of a failed case"})
-    return xr.Dataset(data, coords=coords, attrs={"title": study.title, "mode": study.mode})
+                     {"long_name": "error message of a failed case", "units": "1"})
+    return xr.Dataset(data, coords=coords, attrs={"title": study.title, "mode": study.mode,
+                                                  "axes": ",".join(names)})
 

@@ -1,0 +1,82 @@
+"""Figures of a parameter study: each swept result against the first axis, one line per value of
+the other axes (small multiples, one panel per result)."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from ..formatting import describe_key, display_unit, format_quantity, units_from_cf
+from .style import plt
+
+__all__ = ["plot_study"]
+
+def _axis_values(ds, name):
+    """(numbers for the x axis or None for labels, tick labels) of a study coordinate."""
+    values = ds[name].values
+    unit = units_from_cf(ds[name].attrs.get("units", "1"))
+    if np.issubdtype(values.dtype, np.number):
+        return values.astype(float), [format_quantity(float(v), unit) for v in values]
+    return None, [str(v) for v in values]
+
+
+def plot_study(ds, variables, columns: int = 3):
+    """One panel per variable against the study's first axis.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` as combined by :func:`asperity.sweep.combine`.
+    variables : list of str
+        Summary keys to plot (numeric variables of ``ds``).
+    columns : int
+        Panels per row.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    mode = ds.attrs.get("mode", "cross")
+    axes_names = [str(n) for n in ds.attrs.get("axes", "").split(",") if n] or [
+        d for d in ds.dims]
+    first = axes_names[0]
+    x, labels = _axis_values(ds, first)
+    x_shown = ""
+    if x is not None:
+        x_scale, x_shown = display_unit(float(np.nanmax(np.abs(x))),
+                                        units_from_cf(ds[first].attrs.get("units", "1")))
+        x = x * x_scale
+    rows = int(np.ceil(len(variables) / columns))
+    fig, axes = plt.subplots(rows, min(columns, len(variables)), squeeze=False,
+                             figsize=(4.0 * min(columns, len(variables)), 3.2 * rows),
+                             layout="constrained")
+    others = axes_names[1:] if mode == "cross" else []
+    combos = list(itertools.product(*(range(ds.sizes[o]) for o in others)))[:10]
+    for ax, key in zip(axes.flat, variables, strict=False):
+        label, unit = describe_key(key)
+        if unit == "%" and key.endswith("fraction"):
+            scale, shown = 100.0, "%"
+        else:
+            scale, shown = display_unit(float(np.nanmax(np.abs(ds[key].values))), unit)
+        for combo in combos:
+            sel = dict(zip(others, combo, strict=True))
+            y = ds[key].isel(sel).values.astype(float) * scale
+            text = ", ".join(f"{ds[o].attrs.get('long_name', o)} = "
+                             f"{_axis_values(ds, o)[1][i]}" for o, i in sel.items())
+            xs = x if x is not None else np.arange(len(labels))
+            ax.plot(xs, y, "o-", ms=4, lw=1.2, label=text or None)
+        if x is None:
+            ax.set_xticks(np.arange(len(labels)), labels, rotation=30, ha="right")
+        elif len(x) > 2 and np.all(x > 0) and x.max() / x.min() > 50:
+            ax.set_xscale("log")
+        xlabel = ds[first].attrs.get("long_name", first)
+        ax.set_xlabel(f"{xlabel} ({x_shown})" if x is not None and x_shown else xlabel)
+        ax.set_ylabel(f"{label} ({shown})" if shown else label)
+        ax.grid(True, lw=0.3, alpha=0.6)
+        if others:
+            ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(variables):]:
+        ax.set_visible(False)
+    fig.suptitle(ds.attrs.get("title", "Parameter study"), fontsize=11)
+    return fig
