@@ -1,0 +1,61 @@
+"""Choosing the filters of a roughness measurement: ISO 4288 cut-offs, ISO 3274 lambda_s.
+
+ISO 4288 (1996) clause 7 and Table 1: for a non-periodic profile the cut-off lambda_c follows
+from the Ra the profile has when filtered with it; one estimates Ra, picks the cut-off of its
+range, re-measures with that cut-off and repeats until the measured Ra falls in the range of the
+cut-off used. The ranges (Ra in um -> lambda_c in mm):
+
+    (0.006, 0.02] -> 0.08,  (0.02, 0.1] -> 0.25,  (0.1, 2] -> 0.8,  (2, 10] -> 2.5,
+    (10, 80] -> 8
+
+ISO 3274 (1996) Table 1 pairs each cut-off with the short-wave filter lambda_s and the largest
+sampling spacing for which that lambda_s applies:
+
+    lambda_c 0.08, 0.25, 0.8 mm -> lambda_s 2.5 um (spacing <= 0.5 um);
+    2.5 mm -> 8 um (spacing <= 1.5 um);  8 mm -> 25 um (spacing <= 5 um).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import InputError
+
+__all__ = ["CUTOFFS", "LAMBDA_S", "cutoff_for_ra", "lambda_s_for"]
+
+#: ISO 4288 Table 1: (upper Ra bound in m, cut-off in m), Ra ranges open below, closed above.
+CUTOFFS = ((0.02e-6, 0.08e-3), (0.1e-6, 0.25e-3), (2e-6, 0.8e-3), (10e-6, 2.5e-3),
+           (np.inf, 8e-3))
+#: ISO 3274 Table 1: cut-off (m) -> (lambda_s in m, largest sampling spacing in m).
+LAMBDA_S = {0.08e-3: (2.5e-6, 0.5e-6), 0.25e-3: (2.5e-6, 0.5e-6), 0.8e-3: (2.5e-6, 0.5e-6),
+            2.5e-3: (8e-6, 1.5e-6), 8e-3: (25e-6, 5e-6)}
+
+
+def cutoff_for_ra(ra: float) -> float:
+    """The ISO 4288 Table 1 cut-off (m) of a non-periodic profile with roughness ``ra`` (m)."""
+    if not np.isfinite(ra) or ra < 0:
+        raise InputError("Ra", "a finite roughness >= 0", ra)
+    return next(cut for upper, cut in CUTOFFS if ra <= upper)
+
+
+def lambda_s_for(cutoff: float, spacing: float) -> tuple[float | None, str]:
+    """ISO 3274's lambda_s for ``cutoff`` when the sampling ``spacing`` allows it.
+
+    Returns
+    -------
+    lambda_s : float or None
+        The short-wave cut-off (m), or None when it does not apply: a cut-off outside the table,
+        or a spacing coarser than the table's largest for it (the data's own spacing then
+        bounds the short wavelengths).
+    reason : str
+        One line saying which and why.
+    """
+    match = next((key for key in LAMBDA_S if np.isclose(key, cutoff, rtol=1e-6)), None)
+    if match is None:
+        return None, (f"no lambda_s: the cut-off {cutoff * 1e3:.4g} mm is not one of ISO "
+                      "3274's (0.08, 0.25, 0.8, 2.5, 8 mm)")
+    lam, largest = LAMBDA_S[match]
+    if spacing > largest * (1 + 1e-9):
+        return None, (f"no lambda_s: the spacing {spacing * 1e6:.4g} um is coarser than the "
+                      f"{largest * 1e6:g} um ISO 3274 allows for lambda_s = {lam * 1e6:g} um")
+    return lam, f"lambda_s = {lam * 1e6:g} um (ISO 3274 Table 1 for lambda_c = {match * 1e3:g} mm)"

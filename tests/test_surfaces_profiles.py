@@ -1,0 +1,121 @@
+"""P, W and R profiles (ISO 4287 / 16610-21), ISO 4288 cut-offs and ISO 3274 lambda_s.
+
+References: the Gaussian filter's amplitude transmission exp(-pi (alpha lambda_c / lambda)^2),
+alpha = sqrt(ln 2 / pi), 50 % at lambda = lambda_c (ISO 16610-21 eq. 2); the moments of a
+Gaussian height distribution, Rq/Ra = sqrt(pi/2) and Rku = 3; the tables of ISO 4288 and
+ISO 3274 (docs/surfaces.md).
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.special import ndtri
+
+from asperity.errors import InputError
+from asperity.surfaces import Profile
+from asperity.surfaces.cutoffs import cutoff_for_ra, lambda_s_for
+from asperity.surfaces.profiles import profile_families, profile_parameters
+
+ALPHA = math.sqrt(math.log(2) / math.pi)
+H = 0.5e-6
+
+
+def trace(length, heights_of_x):
+    x = (np.arange(int(round(length / H))) + 0.5) * H
+    return Profile(x, heights_of_x(x))
+
+
+def amplitude(z, x, wavelength):
+    """Amplitude of the sine of ``wavelength`` in z by least squares (with a constant)."""
+    basis = np.column_stack([np.sin(2 * np.pi * x / wavelength),
+                             np.cos(2 * np.pi * x / wavelength), np.ones_like(x)])
+    coef = np.linalg.lstsq(basis, z, rcond=None)[0]
+    return float(np.hypot(*coef[:2]))
+
+
+@pytest.mark.parametrize("ratio", [1.0, 1 / 3, 3.0, 0.5, 2.0])
+def test_sine_transmission_is_the_gaussian_one(ratio):
+    cutoff = 0.8e-3
+    wavelength = ratio * cutoff
+    # form_degree=0: a least-squares line would take part of a long sine with it
+    fam = profile_families(trace(6e-3, lambda x: 1e-6 * np.sin(2 * np.pi * x / wavelength)),
+                           cutoff, lambda_s=None, form_degree=0)
+    x = fam.primary.x[fam.evaluation]
+    w = amplitude(fam.evaluated("W"), x, wavelength) / 1e-6
+    r = amplitude(fam.evaluated("R"), x, wavelength) / 1e-6
+    expected = math.exp(-math.pi * (ALPHA * cutoff / wavelength) ** 2)
+    assert w == pytest.approx(expected, abs=2e-3)
+    assert r == pytest.approx(1 - expected, abs=2e-3)
+    if ratio == 1.0:
+        assert w == pytest.approx(0.5, abs=2e-3)  # 50 % at lambda_c
+
+
+def test_sum_of_sines_split_by_wavelength():
+    # 5 um ripples are roughness, 4 mm waves are waviness, at lambda_c = 0.8 mm
+    fam = profile_families(trace(12e-3, lambda x: 0.3e-6 * np.sin(2 * np.pi * x / 50e-6)
+                                 + 2e-6 * np.sin(2 * np.pi * x / 4e-3)), 0.8e-3,
+                           lambda_s=None, form_degree=0)
+    x = fam.primary.x[fam.evaluation]
+    t_long = math.exp(-math.pi * (ALPHA * 0.8e-3 / 4e-3) ** 2)
+    t_short = math.exp(-math.pi * (ALPHA * 0.8e-3 / 50e-6) ** 2)
+    assert amplitude(fam.evaluated("R"), x, 50e-6) == pytest.approx(0.3e-6 * (1 - t_short),
+                                                                   rel=1e-3)
+    assert amplitude(fam.evaluated("W"), x, 4e-3) == pytest.approx(2e-6 * t_long, rel=2e-3)
+    params = profile_parameters(fam)
+    # Rq of the remaining sines: amplitude / sqrt(2) each, in quadrature
+    rq = math.hypot(0.3e-6 * (1 - t_short), 2e-6 * (1 - t_long)) / math.sqrt(2)
+    assert params["R"]["Rq"] == pytest.approx(rq, rel=0.02)
+
+
+def test_gaussian_heights_moments():
+    # Exactly Gaussian quantiles in random order: white noise whose wavelengths lie far below
+    # lambda_c, so R keeps the distribution; Rq/Ra = sqrt(pi/2), Rku = 3, Rsk = 0.
+    n = int(4.8e-3 / H)
+    z = 0.5e-6 * np.random.default_rng(3).permutation(ndtri((np.arange(n) + 0.5) / n))
+    fam = profile_families(Profile((np.arange(n) + 0.5) * H, z), 0.8e-3)
+    assert fam.sampling_lengths == 5 and fam.lambda_s == pytest.approx(2.5e-6)
+    # lambda_s = 2.5 um removes part of the white noise; without it the ratio is exact
+    plain = profile_parameters(profile_families(Profile(fam.primary.x, z), 0.8e-3,
+                                                lambda_s=None))["R"]
+    assert plain["Rq"] / plain["Ra"] == pytest.approx(math.sqrt(math.pi / 2), rel=0.01)
+    assert plain["Rku"] == pytest.approx(3.0, abs=0.15)
+    assert plain["Rsk"] == pytest.approx(0.0, abs=0.1)
+
+
+def test_rz_is_the_mean_of_five_sampling_lengths():
+    # one spike of height 5 um in one sampling length of a 0.1 um sine profile
+    base = trace(4.8e-3, lambda x: 0.1e-6 * np.sin(2 * np.pi * x / 20e-6))
+    fam = profile_families(base, 0.8e-3, lambda_s=None)
+    z = base.z.copy()
+    spike = fam.evaluation.start + 100 + int(np.argmax(fam.evaluated("R")[100:140]))
+    z[spike] += 5e-6  # on a crest, so the highest peak of its sampling length rises by 5 um
+    spiked = profile_parameters(profile_families(base.with_heights(z), 0.8e-3,
+                                                 lambda_s=None))["R"]
+    plain = profile_parameters(fam)["R"]
+    assert spiked["Rz"] - plain["Rz"] == pytest.approx(5e-6 / 5, rel=0.02)
+    assert spiked["Rt"] - plain["Rt"] == pytest.approx(5e-6, rel=0.02)
+
+
+def test_iso4288_cutoff_from_the_profile():
+    # Ra of a fine ripple 0.05 um -> 0.25 mm; 0.5 um -> 0.8 mm; 5 um -> 2.5 mm (Table 1)
+    for ra, expected in ((0.05e-6, 0.25e-3), (0.5e-6, 0.8e-3), (5e-6, 2.5e-3)):
+        amp = ra * math.pi / 2  # Ra of a sine = 2 A / pi
+        fam = profile_families(trace(16e-3, lambda x, a=amp: a * np.sin(2 * np.pi * x / 30e-6)))
+        assert fam.cutoff == pytest.approx(expected)
+        assert "ISO 4288" in fam.notes[0]
+    assert cutoff_for_ra(0.01e-6) == 0.08e-3 and cutoff_for_ra(20e-6) == 8e-3
+
+
+def test_lambda_s_only_where_the_spacing_allows():
+    assert lambda_s_for(0.8e-3, 0.5e-6)[0] == pytest.approx(2.5e-6)
+    assert lambda_s_for(2.5e-3, 1.5e-6)[0] == pytest.approx(8e-6)
+    value, reason = lambda_s_for(0.8e-3, 1e-6)
+    assert value is None and "coarser" in reason
+
+
+def test_short_profiles_warn_or_refuse():
+    fam = profile_families(trace(3e-3, lambda x: 1e-6 * np.sin(2 * np.pi * x / 50e-6)), 0.8e-3)
+    assert fam.sampling_lengths == 2 and "2 of the 5" in fam.warnings[0]
+    with pytest.raises(InputError, match="cutoff"):
+        profile_families(trace(1e-3, lambda x: np.sin(x)), 0.8e-3)
