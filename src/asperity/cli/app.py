@@ -204,23 +204,43 @@ def _print_summary(summary: dict) -> None:
 @app.command()
 @guarded
 def examples():
-    """List the built-in examples."""
+    """List the built-in examples and parameter studies."""
+    show_examples(console)
+
+
+def show_examples(out: Console) -> None:
+    """Print the built-in examples grouped by analysis, then the studies, on ``out``.
+
+    Each name stands on its own line with its description and source indented below, so the
+    list reads at any width down to 80 columns (no table columns squeezed to a letter).
+    """
+    from rich.padding import Padding
+    from rich.text import Text
+
     from ..examples import DEFAULT_EXAMPLE, list_examples, list_studies
 
-    table = Table(title="asperity examples (asperity example NAME prints one)")
-    for col in ("name", "analysis", "description", "source"):
-        table.add_column(col, overflow="fold")
+    out.print("[bold]asperity examples[/] (asperity example NAME prints one, asperity run NAME "
+              "runs it)", highlight=False)
+    by_analysis: dict[str, list] = {}
     for ex in list_examples():
-        name = ex.name + (" (default)" if ex.name == DEFAULT_EXAMPLE else "")
-        name += " [long]" if ex.long_running else ""
-        table.add_row(name, ex.analysis, ex.description or ex.title, ex.source)
-    console.print(table)
-    studies = Table(title="parameter studies (asperity sweep NAME)")
-    studies.add_column("name")
-    studies.add_column("description", overflow="fold")
+        by_analysis.setdefault(ex.analysis, []).append(ex)
+    for analysis, items in by_analysis.items():
+        out.print(f"\n[bold underline]{analysis}[/]", highlight=False)
+        for ex in items:
+            name = Text(ex.name, style="bold cyan")
+            if ex.name == DEFAULT_EXAMPLE:
+                name.append(" (default)", style="green")
+            if ex.long_running:
+                name.append(" (long run)", style="yellow")
+            out.print(Padding(name, (0, 0, 0, 2)), highlight=False)
+            text = Text(ex.description or ex.title)
+            if ex.source:
+                text.append(f"\nSource: {ex.source}", style="dim")
+            out.print(Padding(text, (0, 0, 0, 6)), highlight=False)
+    out.print("\n[bold]parameter studies[/] (asperity sweep NAME)", highlight=False)
     for name, description in list_studies():
-        studies.add_row(name, description)
-    console.print(studies)
+        out.print(Padding(Text(name, style="bold cyan"), (0, 0, 0, 2)), highlight=False)
+        out.print(Padding(Text(description), (0, 0, 0, 6)), highlight=False)
 
 
 @app.command()
