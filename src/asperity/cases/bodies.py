@@ -20,9 +20,14 @@ class MaterialSpec(CaseModel):
     """
 
     youngs_modulus: Quantity("pressure", gt=0)
+    """Young's modulus E of the body."""
     poisson_ratio: Annotated[float, Field(gt=-1.0, le=0.5)] = 0.3
+    """Poisson's ratio nu of the body."""
     name: str = "steel"
+    """Name of the material, shown in reports."""
     hardness: Quantity("pressure", gt=0) | None = None
+    """Indentation hardness; contact pressures above it make the run warn that the elastic answer is
+    not physical there."""
 
     def material(self) -> Material:
         """The :class:`asperity.Material` this table describes."""
@@ -37,12 +42,19 @@ class GridSpec(CaseModel):
     """
 
     nx: Annotated[int, Field(ge=4, le=8192)] = 128
+    """Cells along x."""
     ny: Annotated[int, Field(ge=1, le=8192)] = 128
+    """Cells along y."""
     x_extent: Quantity("length", gt=0)
+    """Full length of the domain along x."""
     y_extent: Quantity("length", gt=0)
+    """Full length of the domain along y."""
     x_start: Quantity("length") | None = None
+    """x of the domain's lower edge (default: the domain is centred on the origin)."""
     y_start: Quantity("length") | None = None
+    """y of the domain's lower edge (default: the domain is centred on the origin)."""
     periodic: bool = False
+    """Periodic domain (a nominally flat rough interface) instead of an isolated contact."""
 
     def coordinates(self):
         """Cell-centre coordinates ``(x, y)`` as numpy arrays, m."""

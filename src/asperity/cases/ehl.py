@@ -69,16 +69,27 @@ class LubricantSpec(CaseModel):
     """
 
     name: str = "lubricant"
+    """Name of the lubricant, shown in reports."""
     eta0: Quantity("viscosity", gt=0)
+    """Viscosity at ambient pressure."""
     alpha: Quantity("inverse_pressure", ge=0)
+    """Pressure-viscosity coefficient (e.g. "11.1 1/GPa")."""
     viscosity_model: Literal["roelands", "barus"] = "roelands"
+    """Viscosity law: "roelands" (constants kappa, chi) or "barus"."""
     kappa: Quantity("viscosity", gt=0) = ROELANDS_KAPPA
+    """Roelands constant kappa (the viscosity limit at infinite pressure)."""
     chi: Quantity("inverse_pressure", gt=0) = ROELANDS_CHI
+    """Roelands constant chi (the pressure scale)."""
     density_model: Literal["dowson-higginson", "incompressible"] = "dowson-higginson"
+    """Density law: "dowson-higginson" (constants gamma, lambda) or "incompressible"."""
     rho0: Quantity("density", gt=0) = 850.0
+    """Density at ambient pressure."""
     gamma: Quantity("inverse_pressure", ge=0) = DH_GAMMA
+    """Dowson-Higginson constant gamma."""
     lambda_: Quantity("inverse_pressure", ge=0) = Field(DH_LAMBDA, alias="lambda")
+    """Dowson-Higginson constant lambda."""
     tau0: Quantity("pressure", gt=0) | None = None
+    """Eyring stress (absent or "none": Newtonian)."""
 
     @field_validator("tau0", mode="before")
     @classmethod
@@ -114,11 +125,17 @@ class ContactSpec(CaseModel):
     """
 
     type: Literal["point", "line"] = "point"
+    """"point" (rx, ry, load) or "line" (radius or rx, load_per_length)."""
     rx: Quantity("length", gt=0) | None = None
+    """Radius of relative curvature along x, the entrainment direction."""
     ry: Quantity("length", gt=0) | None = None
+    """Radius of relative curvature along y (point contact)."""
     radius: Quantity("length", gt=0) | None = None
+    """Radius of relative curvature of a line contact (or give rx)."""
     load: Quantity("force", gt=0) | None = None
+    """Normal load of a point contact."""
     load_per_length: Quantity("force_per_length", gt=0) | None = None
+    """Load per unit length of a line contact (e.g. "527 kN/m")."""
 
     @model_validator(mode="after")
     def _complete(self):
@@ -154,9 +171,13 @@ class SpeedSpec(CaseModel):
     """
 
     u: Quantity("speed") | None = None
+    """Mean entrainment speed (u1 + u2)/2 (with xi)."""
     xi: Quantity("dimensionless") | None = None
+    """Slide/roll ratio (u1 - u2)/u (default 0, pure rolling)."""
     u1: Quantity("speed") | None = None
+    """Surface speed of body 1 (with u2, instead of u and xi)."""
     u2: Quantity("speed") | None = None
+    """Surface speed of body 2 (with u1, instead of u and xi)."""
 
     @model_validator(mode="after")
     def _one_form(self):
@@ -188,11 +209,17 @@ class EHLCaseBase(CaseHeader):
 
     title: str = "EHL contact"
     reduced_modulus: Quantity("pressure", gt=0) | None = None
+    """Reduced modulus E' (instead of [body1] and [body2])."""
     body1: MaterialSpec | None = None
+    """First elastic body (or give reduced_modulus)."""
     body2: MaterialSpec | None = None
+    """Second elastic body (or give reduced_modulus)."""
     contact: ContactSpec
+    """Contact shape and load."""
     speeds: SpeedSpec
+    """Surface speeds."""
     lubricant: LubricantSpec
+    """Lubricant properties."""
 
     @model_validator(mode="after")
     def _bodies(self):
@@ -233,11 +260,17 @@ class EHLGridSpec(CaseModel):
     """
 
     nx: Annotated[int, Field(ge=9, le=8193)] = 129
+    """Nodes along x (or cells_per_a: nodes per Hertz semi-axis a)."""
     ny: Annotated[int, Field(ge=1, le=4097)] = 65
+    """Nodes along y; 1 for a line contact (or cells_per_b)."""
     x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
+    """Inlet end of the domain in Hertz semi-axes a (a number) or as a length (e.g. "-1.2 mm")."""
     x_max: Annotated[float, Field(gt=1.0, le=100.0)] = 1.5
+    """Outlet end of the domain in Hertz semi-axes a (a number) or as a length."""
     y_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.0
+    """Lower side of the domain in Hertz semi-axes b (a number) or as a length."""
     y_max: Annotated[float, Field(gt=1.0, le=100.0)] = 2.0
+    """Upper side of the domain in Hertz semi-axes b (a number) or as a length."""
 
     @model_validator(mode="before")
     @classmethod
@@ -288,10 +321,15 @@ class SolverSpec(CaseModel):
     """
 
     levels: Annotated[int, Field(ge=1, le=6)] = 1
+    """Grids in the multilevel sequence (node counts 2^(levels-1) m + 1)."""
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
+    """Relative convergence tolerance."""
     max_sweeps: Annotated[int, Field(ge=1, le=200_000)] | None = None
+    """Sweep limit per grid (default 5000 for a point contact, 40000 for a line contact)."""
     method: Literal["line", "point"] | None = None
+    """Relaxation: "line" or "point" (default by contact type)."""
     boundary_friction: Annotated[float, Field(ge=0, le=10)] = 0.1
+    """Friction coefficient of dry (contact) nodes."""
 
     def sweep_limit(self, line: bool) -> int:
         """``max_sweeps``, or its default for the contact type."""
@@ -304,21 +342,31 @@ class ReferenceSpec(CaseModel):
     """``[reference]``: published numbers for this case, compared in the report."""
 
     source: str
+    """Where the published numbers come from."""
     central_film: Quantity("length", gt=0) | None = None
+    """Published central film thickness."""
     minimum_film_centreline: Quantity("length", gt=0) | None = None
+    """Published minimum film thickness on the centre line."""
     minimum_film: Quantity("length", gt=0) | None = None
+    """Published minimum film thickness."""
     max_pressure: Quantity("pressure", gt=0) | None = None
+    """Published maximum pressure."""
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.05
+    """Relative tolerance of the comparison."""
 
 
 class EHLSteadyCase(EHLCaseBase):
     """``analysis = "ehl-steady"``: smooth steady EHL of a point or line contact."""
 
     analysis: Literal["ehl-steady"]
+    """Selects the steady smooth EHL analysis."""
     title: str = "Steady EHL contact"
     grid: EHLGridSpec = EHLGridSpec()
+    """Mesh and domain (in Hertz semi-axes)."""
     solver: SolverSpec = SolverSpec()
+    """Solver options."""
     reference: ReferenceSpec | None = None
+    """Published numbers to compare with."""
 
     @model_validator(mode="after")
     def _mesh(self):

@@ -52,17 +52,29 @@ class MovingSurfaceSpec(CaseModel):
     """
 
     kind: Literal["smooth", "builtin", "ground", "gaussian", "file"] = "smooth"
+    """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian" or "file"."""
     profile: Literal["A", "B", "C"] | None = None
+    """Built-in profile "A", "B" or "C" (stand-ins of the seed's transverse-ground profiles)."""
     ra: Quantity("length", gt=0) | None = None
+    """Arithmetic mean height Ra of a ground profile."""
     rms: Quantity("length", gt=0) | None = None
+    """Root-mean-square height of a gaussian profile."""
     correlation_length: Quantity("length", gt=0) | None = None
+    """Lag where the autocorrelation falls to 0.2 (ground, gaussian)."""
     run_in: Annotated[float, Field(ge=0, lt=1)] = 0.0
+    """Degree of running-in of a ground profile, 0 fresh to < 1 strongly run-in."""
     seed: Annotated[int, Field(ge=0)] = 0
+    """Seed of the random generator (the same seed gives the same surface)."""
     path: str | None = None
+    """Measured profile file, relative to the case file."""
     spacing: Quantity("length", gt=0) | None = None
+    """Sampling interval of a file without an x column."""
     scale: Annotated[float, Field(ge=0, le=100)] = 1.0
+    """Factor on the heights (the seed's sqrt(2) x C)."""
     lowpass: Annotated[float, Field(ge=0, le=100)] = 0.0
+    """Remove wavelengths shorter than this many mesh spacings (ISO Gaussian filter; 0: off)."""
     waviness: WavinessSpec | None = None
+    """A sinusoidal waviness along y (transverse) or x."""
 
     _path = field_validator("path")(existing_file)
 
@@ -117,9 +129,13 @@ class TimeSpec(CaseModel):
     centre-line snapshots spread over the counting period (Figs. 3, 10)."""
 
     counting_steps: Annotated[int, Field(ge=1, le=100_000)] = 200
+    """Time steps over which contacts and films are counted."""
     warmup_steps: Annotated[int, Field(ge=0, le=100_000)] | None = None
+    """Steps before counting (default: until the slower rough surface has crossed the domain)."""
     dt: Quantity("time", gt=0) | None = None
+    """Time step (default the seed's dx / (2 u_max))."""
     snapshots: Annotated[int, Field(ge=1, le=50)] = 4
+    """Centre-line snapshots spread over the counting period."""
 
 
 class TransientSolverSpec(CaseModel):
@@ -132,28 +148,47 @@ class TransientSolverSpec(CaseModel):
     the checkpoint interval."""
 
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-4
+    """Relative convergence tolerance per time step."""
     max_sweeps: Annotated[int, Field(ge=1, le=100_000)] = 400
+    """Sweep limit per time step."""
     refresh: Annotated[int, Field(ge=1, le=1000)] = 3
+    """Sweeps between refreshes of the far-field deflection."""
     acceleration: Annotated[int, Field(ge=0, le=20)] | None = None
+    """Memory of the Anderson acceleration of the refresh cycles (0: off; default 3 with line
+    relaxation)."""
     method: Literal["line", "point"] | None = None
+    """Relaxation: "line" or "point" (default by contact type)."""
     theta: Annotated[float, Field(ge=0.5, le=1.0)] = 0.5
+    """Weight of the time scheme (0.5 Crank-Nicolson, 1 implicit Euler)."""
     damping: Annotated[float, Field(gt=0, le=1.0)] = 0.7
+    """Oscillation damping of the nodal update."""
     contact_film: Quantity("length", ge=0) | None = None
+    """Film below which a node counts as in contact (default the tolerance times the central film).
+    """
     checkpoint_every: Annotated[int, Field(ge=1, le=100_000)] = 50
+    """Steps between checkpoints (a stopped run resumes with --resume)."""
 
 
 class EHLTransientCase(EHLCaseBase):
     """``analysis = "ehl-transient"``: rough surfaces through a point or line contact."""
 
     analysis: Literal["ehl-transient"]
+    """Selects the transient mixed-EHL analysis."""
     title: str = "Transient mixed EHL"
     long_running: bool = False
+    """Marks a case that runs for many minutes (listed as such by asperity examples)."""
     grid: EHLGridSpec = EHLGridSpec()
+    """Mesh and domain (in Hertz semi-axes)."""
     surface1: MovingSurfaceSpec = MovingSurfaceSpec()
+    """Roughness of surface 1."""
     surface2: MovingSurfaceSpec = MovingSurfaceSpec()
+    """Roughness of surface 2."""
     time: TimeSpec = TimeSpec()
+    """Time stepping and counting."""
     solver: TransientSolverSpec = TransientSolverSpec()
+    """Solver options per time step."""
     paper_contact_time_percent: Annotated[float, Field(ge=0, le=100)] | None = None
+    """Published percentage of time with contact, compared in the report."""
 
     @model_validator(mode="after")
     def _consistent(self):

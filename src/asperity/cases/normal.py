@@ -21,8 +21,12 @@ class GeometrySpec(CaseModel):
     """
 
     shape: Literal["sphere", "ellipsoid", "flat"] = "sphere"
+    """"sphere" (rx only), "ellipsoid" (rx and ry) or "flat" (a nominally flat contact; use with
+    roughness and a periodic grid)."""
     rx: Quantity("length", gt=0) | None = None
+    """Radius of relative curvature along x, 1/rx = 1/rx1 + 1/rx2."""
     ry: Quantity("length", gt=0) | None = None
+    """Radius of relative curvature along y (an ellipsoid)."""
 
     @model_validator(mode="after")
     def _radii(self):
@@ -46,7 +50,9 @@ class NormalLoading(CaseModel):
     """Exactly one of ``load`` (N) or ``approach`` (m)."""
 
     load: Quantity("force", gt=0) | None = None
+    """Normal load (give this or approach)."""
     approach: Quantity("length", gt=0) | None = None
+    """Rigid-body approach of the two bodies (give this or load)."""
 
     @model_validator(mode="after")
     def _one(self):
@@ -59,11 +65,19 @@ class NormalCase(CaseHeader):
     """``analysis = "normal"``: frictionless contact of two elastic bodies."""
 
     analysis: Literal["normal"]
+    """Selects the dry normal-contact analysis."""
     title: str = "Dry normal contact"
     body1: MaterialSpec
+    """First elastic body."""
     body2: MaterialSpec
+    """Second elastic body."""
     geometry: GeometrySpec
+    """Undeformed shape of the gap."""
     loading: NormalLoading
+    """Load or approach."""
     grid: GridSpec
+    """Computational grid (cells and extents)."""
     roughness: RoughnessSpec | None = None
+    """Rough surface added to the gap (absent: smooth)."""
     tolerance: Quantity("dimensionless", gt=0, lt=1) = 1e-8
+    """Relative convergence tolerance of the conjugate-gradient solver."""

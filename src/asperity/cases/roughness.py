@@ -72,8 +72,11 @@ class WavinessSpec(CaseModel):
     """A sinusoid of ``wavelength`` and ``amplitude`` varying along ``direction``."""
 
     wavelength: Quantity("length", gt=0)
+    """Wavelength of the sinusoidal waviness."""
     amplitude: Quantity("length", ge=0)
+    """Amplitude (half the peak-to-valley) of the waviness."""
     direction: Literal["x", "y"] = "y"
+    """Direction along which the waviness varies."""
 
 
 class RoughnessSpec(MeasuredFile):
@@ -93,22 +96,42 @@ class RoughnessSpec(MeasuredFile):
     """
 
     kind: Literal["gaussian", "self-affine", "ground", "builtin", "file"]
+    """Which surface: "gaussian", "self-affine", "ground", "builtin" or "file" (each takes its own
+    keys)."""
     rms: Quantity("length", gt=0) | None = None
+    """Root-mean-square height Sq (gaussian; self-affine instead of rms_slope)."""
     rms_slope: Quantity("dimensionless", gt=0) | None = None
+    """Root-mean-square slope (self-affine, instead of rms)."""
     ra: Quantity("length", gt=0) | None = None
+    """Arithmetic mean height Ra of a ground profile."""
     correlation_length: Quantity("length", gt=0) | None = None
+    """Lag where the autocorrelation falls to 0.2 (gaussian; ground)."""
     correlation_length_y: Quantity("length", gt=0) | None = None
+    """Correlation length along y of an anisotropic gaussian surface (default: correlation_length).
+    """
     acf: Literal["gaussian", "exponential"] = "gaussian"
+    """Autocorrelation function of a gaussian surface."""
     hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
+    """Hurst exponent H of a self-affine surface (0 < H < 1)."""
     rolloff_wavelength: Quantity("length", gt=0) | None = None
+    """Wavelength above which the self-affine spectrum is flat."""
     short_cutoff: Quantity("length", gt=0) | None = None
+    """Shortest wavelength of the self-affine spectrum."""
     run_in: Annotated[float, Field(ge=0, lt=1)] = 0.0
+    """Degree of running-in of a ground profile, 0 fresh to < 1 strongly run-in (peaks truncated).
+    """
     profile: Literal["A", "B", "C"] | None = None
+    """Built-in profile "A", "B" or "C" (synthetic stand-ins of the mixed-EHL seed's Fig. 1)."""
     path: str | None = None
+    """Measured surface file (text, npy, npz or an instrument format), relative to the case file."""
     spacing: Quantity("length", gt=0) | None = None
+    """Sampling interval of a file without coordinates."""
     scale: Annotated[float, Field(ge=0, le=1e3)] = 1.0
+    """Factor on the heights."""
     seed: Annotated[int, Field(ge=0)] = 0
+    """Seed of the random generator (the same seed gives the same surface)."""
     waviness: WavinessSpec | None = None
+    """A sinusoidal waviness added to the roughness."""
 
     _path = field_validator("path")(measured_file)
 

@@ -100,32 +100,60 @@ class SurfaceSpec(MeasuredFile):
     """
 
     kind: Literal["gaussian", "self-affine", "ground", "builtin", "file", "turned"]
+    """Which surface: "gaussian", "self-affine", "ground", "builtin", "file" or "turned" (each takes
+    its own keys; others must be left out)."""
     length: Quantity("length", gt=0) | None = None
+    """Length of a generated surface along x."""
     spacing: Quantity("length", gt=0) | None = None
+    """Sampling interval of a generated surface (or of a file without coordinates)."""
     width: Quantity("length", gt=0) | None = None
+    """Width along y of a generated topography (absent: a profile)."""
     rms: Quantity("length", ge=1e-12, le=1e-2) | None = None
+    """Root-mean-square height Sq (gaussian; self-affine instead of rms_slope)."""
     rms_slope: Quantity("dimensionless", gt=0, le=100) | None = None
+    """Root-mean-square slope (self-affine, instead of rms)."""
     ra: Quantity("length", ge=1e-12, le=1e-2) | None = None
+    """Arithmetic mean height Ra of a ground profile."""
     correlation_length: Quantity("length", gt=0) | None = None
+    """Lag where the autocorrelation falls to 0.2 (gaussian; ground, default 15 um)."""
     correlation_length_y: Quantity("length", gt=0) | None = None
+    """Correlation length along y of a gaussian topography (with width)."""
     acf: Literal["gaussian", "exponential"] | None = None
+    """Autocorrelation function of a gaussian surface ("gaussian" or "exponential")."""
     hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
+    """Hurst exponent H of a self-affine surface (0 < H < 1)."""
     rolloff_wavelength: Quantity("length", gt=0) | None = None
+    """Wavelength above which the self-affine spectrum is flat."""
     short_cutoff: Quantity("length", gt=0) | None = None
+    """Shortest wavelength of the self-affine spectrum."""
     run_in: Annotated[float, Field(ge=0, lt=1)] | None = None
+    """Degree of running-in of a ground profile, 0 fresh to < 1 strongly run-in."""
     profile: Annotated[tuple[Literal["A", "B", "C"], ...], Field(min_length=1)] | None = None
+    """Built-in profile "A", "B", "C", or a list of them to compare."""
     path: str | None = None
+    """Measured surface file (text, npy, npz or an instrument format), relative to the case file."""
     feed: Quantity("length", gt=0, le=0.01) | None = None
+    """Feed per revolution of a turning tool."""
     nose_radius: Quantity("length", gt=0, le=0.1) | None = None
+    """Nose radius of the turning tool."""
     end_relief_angle: Quantity("angle", gt=0, le=math.pi / 2) | None = None
+    """End-relief angle of the tool (checks f <= 2 r sin(kappa_e), Seireg eq. 4.1)."""
     natural_frequency: Annotated[tuple[Frequency, ...],
                                  Field(min_length=1, max_length=8)] | None = None
+    """Natural frequency of the tool (one value or a list to compare); turns on the tool-vibration
+    model."""
     depth_of_cut: Quantity("length", gt=0, le=0.1) | None = None
+    """Depth of cut (tool-vibration model)."""
     cutting_speed: Quantity("speed", gt=0, le=100) | None = None
+    """Cutting speed (tool-vibration model)."""
     workpiece_diameter: Quantity("length", gt=0, le=10) | None = None
+    """Workpiece diameter (tool-vibration model)."""
     damping_ratio: Annotated[float, Field(gt=0, lt=1)] | None = None
+    """Damping ratio of the tool (tool-vibration model; default 0.05)."""
     mass: Quantity("mass", ge=1e-6, le=1e6) | None = None
+    """Effective mass of the tool (tool-vibration model)."""
     seed: Annotated[int, Field(ge=0)] | None = None
+    """Seed of the random generator (the same seed gives the same surface)."""
 
     @field_validator("profile", "natural_frequency", mode="before")
     @classmethod
@@ -272,17 +300,26 @@ class EvaluationSpec(CaseModel):
     """
 
     cutoff: Quantity("length", gt=0) | None = None
+    """Cut-off wavelength lambda_c of the ISO 16610-21 Gaussian filter; parameters are then those of
+    the roughness profile."""
     sampling_length: Quantity("length", gt=0) | None = None
+    """Sampling length: parameters computed in consecutive sampling lengths and averaged (ISO 4287).
+    """
     window: Quantity("length", gt=0) | None = None
+    """Window length of the roughness along a turned workpiece (Seireg Fig. 4.2; default about a
+    twentieth of the length)."""
 
 
 class SurfaceCase(CaseHeader):
     """``analysis = "surface"``: roughness parameters, spectrum, filtering, turning models."""
 
     analysis: Literal["surface"]
+    """Selects the surface analysis."""
     title: str = "Surface analysis"
     surface: SurfaceSpec
+    """The surface to analyse."""
     evaluation: EvaluationSpec = EvaluationSpec()
+    """How to evaluate it (filter cut-off, sampling length, window)."""
 
     @model_validator(mode="after")
     def _window_for_turning(self):

@@ -70,12 +70,19 @@ class RegionSpec(CaseModel):
     with its own ``mu`` if given."""
 
     shape: Literal["rectangle", "circle"] = "rectangle"
+    """"rectangle" (size) or "circle" (radius)."""
     center: tuple[Length, Length] | None = None
+    """Centre (x, y) of the region (omit when pressure.spacing places the regions)."""
     size: tuple[PositiveLength, PositiveLength] | None = None
+    """Side lengths (along x, along y) of a rectangle."""
     radius: PositiveLength | None = None
+    """Radius of a circle."""
     pressure: Quantity("pressure", gt=0)
+    """Uniform pressure on the region."""
     mu: Quantity("dimensionless", gt=0, le=10) | None = None
+    """Friction coefficient of this region (default the case's mu)."""
     name: str = ""
+    """Name of the region in reports."""
 
     @model_validator(mode="after")
     def _dimensions(self):
@@ -127,14 +134,25 @@ class PressureSpec(CaseModel):
     """
 
     source: Literal["hertz", "uniform", "normal"]
+    """Where the normal pressure comes from: "hertz", "uniform" (regions) or "normal" (a normal
+    solve first)."""
     load: Quantity("force", gt=0) | None = None
+    """Normal load (hertz, normal)."""
     rx: PositiveLength | None = None
+    """Radius of relative curvature along x (or the mean radius sqrt(Rx Ry) with aspect_ratio)."""
     ry: PositiveLength | None = None
+    """Radius of relative curvature along y (default rx: a sphere)."""
     aspect_ratio: Annotated[float, Field(gt=0, le=20)] | None = None
+    """Aspect ratio a/b of the contact ellipse (with rx the mean radius)."""
     regions: list[RegionSpec] | None = None
+    """Regions of uniform pressure (source = "uniform")."""
     spacing: PositiveLength | None = None
+    """Places two regions on the x axis, their centroids this far apart, symmetric about the origin.
+    """
     roughness: RoughnessSpec | None = None
+    """Rough surface of the normal solve (source = "normal")."""
     normal_tolerance: Quantity("dimensionless", gt=0, lt=1) = 1e-8
+    """Convergence tolerance of the normal solve."""
 
     @model_validator(mode="after")
     def _complete(self):
@@ -212,10 +230,15 @@ class TangentialLoading(CaseModel):
     the grid lies. The point used is in the summary (``moment_center_x_m``, ``_y_m``)."""
 
     force: Quantity("force") = 0.0
+    """Tangential force."""
     direction: Quantity("angle") = 0.0
+    """Direction of the force, angle from +x, counter-clockwise."""
     moment: Quantity("moment") = 0.0
+    """Twisting moment, counter-clockwise positive."""
     center: tuple[Length, Length] | None = None
+    """Reference point (x, y) of the moment (default the centre of the normal load)."""
     rotation: Literal["free", "fixed"] = "free"
+    """"free": body 1 may twist; "fixed": it is guided (no rotation)."""
 
     @model_validator(mode="after")
     def _some_load(self):
@@ -238,11 +261,17 @@ class TangentialGridSpec(CaseModel):
     """
 
     nx: Annotated[int, Field(ge=4, le=1024)] = 64
+    """Cells along x."""
     ny: Annotated[int, Field(ge=4, le=1024)] = 64
+    """Cells along y."""
     x_extent: PositiveLength | None = None
+    """Full length of the domain along x (default from the contact's bounding box)."""
     y_extent: PositiveLength | None = None
+    """Full length of the domain along y (default from the contact's bounding box)."""
     x_start: Length | None = None
+    """x of the domain's lower edge (default: centred on the origin)."""
     y_start: Length | None = None
+    """y of the domain's lower edge (default: centred on the origin)."""
 
     def coordinates(self, box) -> tuple[np.ndarray, np.ndarray]:
         """Cell-centre coordinates (m) over the given domain box or the explicit extents."""
@@ -264,7 +293,10 @@ class LoadPathSpec(CaseModel):
     the applied load. The path stops at gross slip."""
 
     steps: Annotated[int, Field(ge=1, le=100)] = 10
+    """Equal load increments from zero."""
     history: Literal["load", "unload", "cycle"] = "load"
+    """"load", "unload" (back to zero) or "cycle" (to the reversed load and back: a fretting cycle).
+    """
     scale: Annotated[float, Field(gt=0, le=100)] = 1.0
     """The path's peak is ``scale`` times the applied load (> 1: continue towards gross slip)."""
 
@@ -274,31 +306,52 @@ class TangentialReference(CaseModel):
     reports one body's motion). Rows without ``tolerance`` are shown, not checked."""
 
     source: str
+    """Where the published numbers come from."""
     shift_per_body: Length | None = None
+    """Published rigid shift of one body."""
     rotation_per_body: Quantity("angle") | None = None
+    """Published rotation of one body."""
     closed_form_rotation_per_body: Quantity("angle") | None = None
+    """Rotation of one body by a closed form."""
     gross_slip_moment: Quantity("moment", gt=0) | None = None
+    """Published moment at gross slip."""
     gross_slip_force: Quantity("force", gt=0) | None = None
+    """Published force at gross slip."""
     tolerance: Annotated[float, Field(gt=0, lt=1)] | None = None
+    """Relative tolerance of the comparison (absent: the rows are shown, not checked)."""
     note: str = ""
+    """Remark shown with the reference rows."""
 
 
 class TangentialCase(CaseHeader):
     """``analysis = "tangential"``: partial slip under a tangential force and a twisting moment."""
 
     analysis: Literal["tangential"]
+    """Selects the frictional (tangential) contact analysis."""
     title: str = "Frictional contact"
     long_running: bool = False
+    """Marks a case that runs for many minutes (listed as such by asperity examples)."""
     body1: MaterialSpec
+    """First elastic body."""
     body2: MaterialSpec
+    """Second elastic body."""
     mu: Quantity("dimensionless", gt=0, le=10)
+    """Coefficient of friction."""
     pressure: PressureSpec
+    """Where the normal pressure comes from."""
     loading: TangentialLoading
+    """Tangential force and twisting moment."""
     grid: TangentialGridSpec = TangentialGridSpec()
+    """Computational grid."""
     method: Literal["fft", "lp"] = "fft"
+    """Solver: "fft" (FISTA on the FFT operator) or "lp" (the seed's linear programming, small
+    grids)."""
     tolerance: Quantity("dimensionless", gt=0, lt=1) = 1e-8
+    """Relative convergence tolerance."""
     load_path: LoadPathSpec | None = None
+    """Apply the load in increments (slip progression, compliance, fretting cycle)."""
     reference: TangentialReference | None = None
+    """Published numbers to compare with."""
 
     @field_validator("grid")
     @classmethod
