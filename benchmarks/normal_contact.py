@@ -173,7 +173,7 @@ def main(argv=None):
     for name in args.cases.split(","):
         gap0, x, load, periodic = cases[name]()
         reference = solve_normal(gap0, x, x, BODY, BODY, load=load, periodic=periodic,
-                                 tol=REFERENCE_TOL, max_iterations=20000).pressure
+                                 tol=REFERENCE_TOL, max_iter=20000).pressure
         codes = {"asperity": setup_asperity(gap0, x, load, periodic),
                  "asperity tol=1e-6": setup_asperity(gap0, x, load, periodic, 1e-6)}
         for peer in filter(None, args.peers.split(",")):

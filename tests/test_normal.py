@@ -154,7 +154,7 @@ def test_no_contact_under_approach_control():
 def test_iteration_limit_reports_non_convergence(rough):
     gap0, x = rough
     res = solve_normal(gap0, x, x, BODY, BODY, load=1.2e9 * LENGTH**2, periodic=True,
-                       max_iterations=3)
+                       max_iter=3)
     assert not res.converged
     assert res.iterations == 3 and res.residual > 1e-8
 
@@ -202,8 +202,8 @@ def test_bad_input(rough):
         solve_normal(gap0, bent, x, BODY, BODY, **ok)
     with pytest.raises(InputError, match="tol"):
         solve_normal(gap0, x, x, BODY, BODY, tol=0.0, **ok)
-    with pytest.raises(InputError, match="max_iterations"):
-        solve_normal(gap0, x, x, BODY, BODY, max_iterations=0, **ok)
+    with pytest.raises(InputError, match="max_iter"):
+        solve_normal(gap0, x, x, BODY, BODY, max_iter=0, **ok)
 
 
 @pytest.mark.parametrize("bow", [0.0, 1e-15])
@@ -219,7 +219,7 @@ def test_flat_full_contact_converges_to_the_direct_solution(bow):
     x = (np.arange(n) + 0.5) * length / n - 0.5 * length
     X, Y = np.meshgrid(x, x, indexing="ij")
     gap0 = bow * (X**2 + Y**2) / length**2
-    res = solve_normal(gap0, x, x, BODY, BODY, load=load, max_iterations=500)
+    res = solve_normal(gap0, x, x, BODY, BODY, load=load, max_iter=500)
     dx = x[1] - x[0]
     xf, yf = X.ravel(), Y.ravel()
     K = normal_influence(xf[:, None] - xf[None, :], yf[:, None] - yf[None, :], dx, dx, BODY,

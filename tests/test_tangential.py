@@ -127,7 +127,7 @@ def test_combined_load_equilibrium_and_callback():
     x, y, X, Y, p = hertz_pressure(32)
     seen = []
     r = solve_tangential(p, x, y, MU, STEEL, STEEL, force=(40.0, -30.0), moment=0.02,
-                         center=(1e-5, 0.0), callback=lambda i, res: seen.append((i, res)))
+                         centre=(1e-5, 0.0), callback=lambda i, res: seen.append((i, res)))
     assert r.converged and seen and seen[-1][1] <= 1e-8
     np.testing.assert_allclose(r.force, [40.0, -30.0], rtol=1e-9)
     assert r.moment == pytest.approx(0.02, rel=1e-9)

@@ -107,9 +107,9 @@ def test_fixed_rotation_solver_matches_lp_and_reports_the_reaction():
     p += np.where(np.abs(X - 0.5 * IN) < 0.3 * IN, 10000 * PSI, 0.0)
     force = (0.0, 1000 * LBF)
     fft = solve_tangential(p, x, y, 0.12, STEEL, STEEL, force=force, rotation="fixed",
-                           center=(0.0, 0.0))
+                           centre=(0.0, 0.0))
     lp = solve_tangential(p, x, y, 0.12, STEEL, STEEL, force=force, rotation="fixed",
-                          method="lp", center=(0.0, 0.0))
+                          method="lp", centre=(0.0, 0.0))
     assert fft.converged and lp.converged and fft.rotation == 0.0 == lp.rotation
     assert lp.shift[1] == pytest.approx(fft.shift[1], rel=0.01)
     # the fixture balances the moment of the traction field about the origin (summed here)

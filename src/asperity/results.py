@@ -73,6 +73,9 @@ class Outcome:
         choice of the user (a domain too small, a mesh too coarse, an inlet too short, a value
         clipped): the quantity, its value, the limit and what to change. Written to
         ``summary.json["warnings"]``, printed by the command line, shown in the report.
+    case : pydantic model, optional
+        The validated case the outcome came from (set by :func:`asperity.runners.run_case`);
+        its title and parameters head the report.
     """
 
     dataset: xr.Dataset
@@ -82,6 +85,23 @@ class Outcome:
     converged: bool = True
     notes: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
+    case: object = None
+
+    def write(self, out_dir: str | Path, figures: bool = True) -> dict:
+        """Write what ``asperity run`` writes: result.nc, summary.json, figures, report.html.
+
+        Returns
+        -------
+        dict
+            Name -> path of every file written (``"report"``: the HTML report).
+        """
+        from .report import write_report  # the report renders Outcomes: imported on use
+
+        files = write_outcome(self, out_dir, figures=figures)
+        title = getattr(self.case, "title", None) or self.dataset.attrs.get("title", "asperity")
+        case = {} if self.case is None else self.case.model_dump(mode="json", exclude_none=True)
+        files["report"] = write_report(title, case, self, files, Path(out_dir) / "report.html")
+        return files
 
 
 def variable(dims, values, units: str, long_name: str, **attrs) -> xr.Variable:

@@ -8,6 +8,7 @@ a validated, immutable case whose quantities are SI floats; any error becomes on
 
 from __future__ import annotations
 
+import re
 import sys
 from pathlib import Path
 from typing import Any
@@ -47,7 +48,10 @@ def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:
 
 
 def load_case(source: str | Path | dict) -> Any:
-    """Validate a case given as a path to a TOML file, TOML text, or a dict.
+    """Validate a case given as a path to a TOML file, TOML text, a dict, or an example's name.
+
+    ``load_case("gear-dry-hertz")`` loads the built-in example of that name (``asperity
+    examples`` lists them).
 
     Returns
     -------
@@ -67,6 +71,10 @@ def load_case(source: str | Path | dict) -> Any:
             raise InputError("case", "an existing TOML file", str(path))
         data = parse_toml(path.read_text(encoding="utf-8"), str(path))
         base_dir = str(path.resolve().parent)
+    elif isinstance(source, str) and re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_.-]*", source.strip()):
+        from ..examples import example_text
+
+        data, base_dir = parse_toml(example_text(source.strip()), source), None
     elif isinstance(source, str):
         data, base_dir = parse_toml(source), None
     elif isinstance(source, dict):

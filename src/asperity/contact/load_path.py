@@ -15,6 +15,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..materials import Material
+from ..solution import renamed_keywords
 from .tangential import TangentialResult, solve_tangential
 
 __all__ = ["LoadPathResult", "proportional_path", "tangential_load_path"]
@@ -77,15 +78,17 @@ def proportional_path(force=(0.0, 0.0), moment=0.0, steps=10, *, cycle=False, un
     return np.concatenate(path)[:, None] * peak[None, :]
 
 
+@renamed_keywords(center="centre")
 def tangential_load_path(pressure, x, y, mu, body1: Material, body2: Material, loads, *,
-                         center=None, tol=1e-8, callback=None,
+                         centre=None, tol=1e-8, callback=None,
                          rotation="free") -> LoadPathResult:
     """Solve a sequence of tangential loads, each from the state left by the previous one.
 
     Parameters
     ----------
-    pressure, x, y, mu, body1, body2, center, tol, rotation
-        As for :func:`asperity.contact.solve_tangential` (the pressure is held fixed).
+    pressure, x, y, mu, body1, body2, centre, tol, rotation
+        As for :func:`asperity.contact.solve_tangential` (the pressure is held fixed;
+        ``center`` is accepted with a DeprecationWarning).
     loads : array_like (k, 3)
         Successive applied loads (Fx, Fy, Mz), N and N m, starting from the unloaded state;
         see :func:`proportional_path`. Any path is allowed (force first, then moment, ...).
@@ -105,7 +108,7 @@ def tangential_load_path(pressure, x, y, mu, body1: Material, body2: Material, l
     gross = -1
     for k, load in enumerate(loads):
         res = solve_tangential(pressure, x, y, mu, body1, body2, force=load[:2],
-                               moment=load[2], center=center, tol=tol, previous=previous,
+                               moment=load[2], centre=centre, tol=tol, previous=previous,
                                rotation=rotation)
         results.append(res)
         if callback is not None:

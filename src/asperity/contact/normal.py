@@ -40,13 +40,24 @@ import scipy.fft as sfft
 from ..elastic import grid_spacing, normal_influence, normal_operator
 from ..errors import InputError, check_positive
 from ..materials import Material, contact_modulus
+from ..solution import SolverResult, renamed_keywords
+from ..surfaces import Topography
+from .gap import surface_gap
 
 __all__ = ["NormalContactResult", "solve_normal"]
 
 
-@dataclass(frozen=True)
-class NormalContactResult:
-    """Result of :func:`solve_normal` (SI units, arrays indexed ``[ix, iy]``)."""
+@dataclass(frozen=True, repr=False)
+class NormalContactResult(SolverResult):
+    """Result of :func:`solve_normal` (SI units, arrays indexed ``[ix, iy]``).
+
+    The result protocol of :class:`asperity.solution.SolverResult`: ``converged``,
+    ``iterations``, ``residual``, ``message``, ``warnings``, ``to_dataset()``.
+    """
+
+    VARIABLES = {"pressure": ("Pa", "contact pressure"), "gap": ("m", "deformed gap"),
+                 "displacement": ("m", "combined normal displacement"),
+                 "contact": ("1", "contact indicator")}
 
     pressure: np.ndarray
     """Contact pressure, Pa."""
@@ -260,28 +271,33 @@ def _validate(gap0, x, y, load, approach):
     return np.ascontiguousarray(h), x, y, dx, dy, load, approach
 
 
+@renamed_keywords(max_iterations="max_iter")
 def solve_normal(
     gap0,
-    x,
-    y,
-    body1: Material,
-    body2: Material,
+    x=None,
+    y=None,
+    body1: Material | None = None,
+    body2: Material | None = None,
     *,
     load=None,
     approach=None,
-    periodic: bool = False,
+    periodic: bool | None = None,
     tol: float = 1e-8,
-    max_iterations: int = 2000,
+    max_iter: int = 2000,
     callback=None,
 ) -> NormalContactResult:
     """Frictionless normal contact by constrained conjugate gradients (Polonsky & Keer 1999).
 
     Parameters
     ----------
-    gap0 : array_like, shape (len(x), len(y))
-        Undeformed gap between the surfaces, m, indexed ``[ix, iy]``.
+    gap0 : array_like, shape (len(x), len(y)), or Topography
+        Undeformed gap between the surfaces, m, indexed ``[ix, iy]``
+        (:func:`asperity.contact.ellipsoid_gap` builds one for an ellipsoid with roughness). A
+        :class:`~asperity.surfaces.Topography` is a rough surface on a rigid flat: its gap is
+        ``max(z) - z`` on its own grid (:func:`asperity.contact.surface_gap`); call
+        ``solve_normal(topography, body1, body2, load=...)``.
     x, y : array_like
-        Uniformly spaced cell-centre coordinates, m.
+        Uniformly spaced cell-centre coordinates, m (not with a Topography).
     body1, body2 : Material
         The two elastic bodies (only E* enters).
     load : float, optional
@@ -291,13 +307,15 @@ def solve_normal(
         Exactly one of ``load`` and ``approach`` must be given. When periodic, the displacement
         has zero mean and the approach must be below ``mean(gap0)`` (the mean gap stays
         positive; full contact is reached only under load control).
-    periodic : bool
+    periodic : bool, optional
         Periodic contact (a representative patch of a rough interface, continuum kernel
         2/(E*|q|)) or an isolated contact on half-spaces (Love's cell coefficients, DC-FFT).
+        Default: the Topography's periodicity, else False.
     tol : float
         Tolerance on :attr:`NormalContactResult.residual`.
-    max_iterations : int
-        Iteration limit; the result says ``converged=False`` when it is reached.
+    max_iter : int
+        Iteration limit; the result says ``converged=False`` when it is reached (the old
+        spelling ``max_iterations`` is accepted with a DeprecationWarning).
     callback : callable, optional
         ``callback(iteration, residual)``, called once per iteration.
 
@@ -317,10 +335,22 @@ def solve_normal(
     Polonsky & Keer step 10). Pressure is zero off the contact set by construction, so (i) and
     (ii) measure the complementarity ``p >= 0, g >= 0, p g = 0``.
     """
+    if isinstance(gap0, Topography):
+        if isinstance(x, Material):  # solve_normal(topography, body1, body2, ...)
+            x, y, body1, body2 = None, None, x, y
+        if x is not None or y is not None:
+            raise InputError("x, y", "no coordinates with a Topography (it has its own)")
+        x, y = gap0.x, gap0.y
+        periodic = gap0.periodic if periodic is None else periodic
+        gap0 = surface_gap(gap0)
+    if x is None or y is None or body1 is None or body2 is None:
+        raise InputError("gap0, x, y, body1, body2", "a gap with its coordinates x, y (or a "
+                                                     "Topography) and the two bodies")
+    periodic = bool(periodic)
     h, x, y, dx, dy, load, approach = _validate(gap0, x, y, load, approach)
-    max_iterations = int(max_iterations)
-    if max_iterations < 1:
-        raise InputError("max_iterations", "an integer >= 1", max_iterations)
+    max_iter = int(max_iter)
+    if max_iter < 1:
+        raise InputError("max_iter", "an integer >= 1", max_iter)
     tol = check_positive("tol", tol)
     cell = dx * dy
     op = normal_operator(x, y, body1, body2, periodic)
@@ -383,7 +413,7 @@ def solve_normal(
             ffts += 2
             exact = True
             continue
-        if iteration >= max_iterations:
+        if iteration >= max_iter:
             break
         iteration += 1
         if callback is not None:

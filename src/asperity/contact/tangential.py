@@ -60,6 +60,7 @@ from ..elastic import (
 )
 from ..errors import InputError, check_finite
 from ..materials import Material, coupling_compliance
+from ..solution import SolverResult, renamed_keywords
 
 __all__ = [
     "RegionLoad",
@@ -169,9 +170,18 @@ class RegionLoad:
         return self.stick_fraction == 0.0
 
 
-@dataclass(frozen=True)
-class TangentialResult:
-    """Result of :func:`solve_tangential` (SI units, arrays indexed ``[ix, iy]``)."""
+@dataclass(frozen=True, repr=False)
+class TangentialResult(SolverResult):
+    """Result of :func:`solve_tangential` (SI units, arrays indexed ``[ix, iy]``).
+
+    The result protocol of :class:`asperity.solution.SolverResult`: ``converged``,
+    ``iterations``, ``residual``, ``message``, ``warnings``, ``to_dataset()``.
+    """
+
+    VARIABLES = {"traction": ("Pa", "tangential traction on body 2"),
+                 "stick": ("1", "stick indicator"),
+                 "slip": ("m", "slip of body 1 vs body 2"),
+                 "labels": ("1", "connected contact region (0 outside the contact)")}
 
     traction: np.ndarray
     """Traction q transmitted by body 1 to body 2, shape (2, nx, ny), Pa."""
@@ -213,6 +223,10 @@ class TangentialResult:
     convolutions: int
     """Number of block convolutions used."""
     method: str
+    x: np.ndarray | None = None
+    """Cell-centre coordinates along x, m."""
+    y: np.ndarray | None = None
+    """Cell-centre coordinates along y, m."""
 
 
 # --- equilibrium constraints --------------------------------------------------------------
@@ -358,13 +372,14 @@ def _capacity(g, cons: _Constraints, target, rows=FREE):
     return fun(zz)[0], yv
 
 
-def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, center=None,
+@renamed_keywords(center="centre")
+def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, centre=None,
                       rotation="free"):
     """Gross-slip limit along the direction of an applied load.
 
     With ``rotation="fixed"`` (twist prevented) only the force counts: ``mu P / |F|``. The
-    moment is about ``center``, by default the centre of the normal load (as in
-    :func:`solve_tangential`).
+    moment is about ``centre``, by default the centre of the normal load (as in
+    :func:`solve_tangential`; ``center`` is accepted with a DeprecationWarning).
 
     Returns
     -------
@@ -373,7 +388,7 @@ def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, cente
     center_of_rotation : ndarray
         Instantaneous centre (2,) of the full-slip motion (NaN for pure translation), m.
     """
-    prob = _setup(pressure, x, y, mu, force, moment, center, rotation)
+    prob = _setup(pressure, x, y, mu, force, moment, centre, rotation)
     if not np.any(prob.target[list(prob.rows)]):
         return float("inf"), np.full(2, np.nan)
     t, yv = _capacity(prob.g, prob.cons, prob.target, prob.rows)
@@ -488,7 +503,8 @@ def _result(q, stick, slip, yv, prob, *, gross, t, iterations, converged, residu
         load_capacity=float(t), excess=excess,
         force=carried[:2], moment=moment, center=prob.center, reaction_moment=float(reaction),
         labels=labels, regions=regions, iterations=int(iterations), converged=bool(converged),
-        residual=float(residual), convolutions=int(conv), method=method)
+        residual=float(residual), convolutions=int(conv), method=method,
+        x=prob.cons.X[:, 0] + prob.center[0], y=prob.cons.Y[0, :] + prob.center[1])
 
 
 def _gross_slip_result(prob: _Setup, t, yv, method):
@@ -504,8 +520,9 @@ def _gross_slip_result(prob: _Setup, t, yv, method):
 # --- the solver ------------------------------------------------------------------------------
 
 
+@renamed_keywords(center="centre")
 def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
-                     force=(0.0, 0.0), moment=0.0, center=None, method="fft", tol=1e-8,
+                     force=(0.0, 0.0), moment=0.0, centre=None, method="fft", tol=1e-8,
                      callback=None, previous: TangentialResult | None = None,
                      periodic: bool = False, max_iter: int | None = None,
                      rotation: str = "free") -> TangentialResult:
@@ -524,11 +541,12 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
     force : (float, float)
         Applied tangential force (Fx, Fy), N.
     moment : float
-        Applied twisting moment Mz about ``center``, N m (counter-clockwise positive).
-    center : (float, float), optional
+        Applied twisting moment Mz about ``centre``, N m (counter-clockwise positive).
+    centre : (float, float), optional
         Reference point of the moment, m; by default the centre of the normal load (the
         pressure centroid, :func:`load_centroid`), so that a force alone causes no twist
-        whatever the coordinates. The point used is :attr:`TangentialResult.center`.
+        whatever the coordinates. The point used is :attr:`TangentialResult.center`. The old
+        spelling ``center`` is accepted with a DeprecationWarning.
     method : {"fft", "lp"}
         ``"fft"``: accelerated projected gradient on the FFT operator (module docstring).
         ``"lp"``: Seireg's modified linear programming with predetermined traction directions
@@ -562,7 +580,7 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
         raise InputError("method", "'fft' or 'lp'", method)
     if not (np.isfinite(tol) and tol > 0):
         raise InputError("tol", "a tolerance > 0", tol)
-    prob = _setup(pressure, x, y, mu, force, moment, center, rotation)
+    prob = _setup(pressure, x, y, mu, force, moment, centre, rotation)
     op = tangential_operator(x, y, body1, body2, periodic)
     if previous is not None and previous.traction.shape != (2, *prob.g.shape):
         raise InputError("previous", "a result on the same grid", previous.traction.shape)

@@ -31,6 +31,7 @@ from ..elastic.differential import (
 )
 from ..elastic.kernels import love_integral
 from ..errors import InputError, check_int, check_positive
+from ..solution import SolverResult
 from .kernels import damp_oscillations, line_sweep, point_sweep
 from .lubricant import friction_coefficient
 from .nodal import at_centre as _at_centre
@@ -315,9 +316,13 @@ def _bilinear(xc, yc, field, x, y):
     return np.array([np.interp(y, yc, tmp[i]) for i in range(tmp.shape[0])])
 
 
-@dataclass(frozen=True)
-class SteadyResult:
+@dataclass(frozen=True, repr=False)
+class SteadyResult(SolverResult):
     """Steady EHL solution, SI units.
+
+    The result protocol of :class:`asperity.solution.SolverResult`: ``converged``,
+    ``iterations`` (the sweeps on the finest grid), ``residual``, ``message``, ``warnings``
+    (a starved inlet, no convergence), ``to_dataset()``.
 
     Attributes
     ----------
@@ -381,6 +386,23 @@ class SteadyResult:
     levels: tuple
     method: str
     inlet_pressure: float
+
+    VARIABLES = {"pressure": ("Pa", "film pressure"), "film": ("m", "film thickness")}
+
+    @property
+    def iterations(self) -> int:
+        """Relaxation sweeps on the finest grid (``sweeps``)."""
+        return self.sweeps
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """A starved inlet (``inlet_pressure`` above ``STARVED_INLET``) and no convergence."""
+        out = list(SolverResult.warnings.fget(self))
+        if self.inlet_pressure > STARVED_INLET:
+            out.append(f"the inlet lies inside the pressure build-up (pressure 0.1 a downstream "
+                       f"of it {self.inlet_pressure:.1%} of the Hertz pressure): the film is "
+                       "starved; start the domain further upstream")
+        return tuple(out)
 
     def centre_line(self):
         """(x, p, h) along y = 0 (interpolated between rows), SI."""

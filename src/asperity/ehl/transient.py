@@ -44,6 +44,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_int, check_positive
+from ..solution import SolverResult
 from ..surfaces.topography import Profile, Topography
 from .checkpoint import Checkpointer, fingerprint
 from .kernels import CAVITATED, CONTACT
@@ -115,9 +116,13 @@ class MovingSurface:
         return z
 
 
-@dataclass(frozen=True)
-class TransientResult:
+@dataclass(frozen=True, repr=False)
+class TransientResult(SolverResult):
     """Transient mixed-EHL run, SI units; steps are numbered 1..``steps`` (0: the steady start).
+
+    The result protocol of :class:`asperity.solution.SolverResult`: ``converged``,
+    ``iterations`` (sweeps over all steps), ``residual``, ``message``, ``warnings``,
+    ``to_dataset()`` (the variables ``asperity run`` writes, on x, y, step, snapshot, film_bin).
 
     Attributes
     ----------
@@ -200,6 +205,34 @@ class TransientResult:
     steady_central_film: float
     method: str
     theta: float
+
+    VARIABLES = {
+        "contact_count_rate": ("ms-1", "contact count rate Q per ms of counting time"),
+        "contact_count": ("1", "number of counting steps with contact at the node"),
+        "pressure": ("Pa", "pressure at the last step"),
+        "film": ("m", "film thickness at the last step"),
+        "surface1": ("m", "height of surface 1 at the last step"),
+        "surface2": ("m", "height of surface 2 at the last step"),
+        "flow_x": ("m2 s-1", "lubricant flow per unit width along x"),
+        "flow_y": ("m2 s-1", "lubricant flow per unit width along y"),
+        "max_pressure": ("Pa", "maximum pressure per step", ("step",)),
+        "min_film": ("m", "minimum film per step", ("step",)),
+        "sweeps": ("1", "relaxation sweeps per step", ("step",)),
+        "step_converged": ("1", "step converged (1) or not (0)", ("step",)),
+        "film_counts": ("1", "film thickness histogram over the counting period", ("film_bin",)),
+        "centre_pressure": ("Pa", "pressure on the centre line y = 0", ("snapshot", "x")),
+        "centre_film": ("m", "film on the centre line y = 0", ("snapshot", "x")),
+        "centre_surface1": ("m", "surface 1 height on the centre line", ("snapshot", "x")),
+        "centre_surface2": ("m", "surface 2 height on the centre line", ("snapshot", "x")),
+    }
+
+    def coordinates(self) -> dict:
+        """x, y, the step number, the snapshot steps and the film-histogram bin centres."""
+        return {**super().coordinates(),
+                "step": (np.arange(1, self.steps + 1), "1", "time step"),
+                "snapshot": (self.snapshot_steps, "1", "step of the snapshot"),
+                "film_bin": (0.5 * (self.film_edges[1:] + self.film_edges[:-1]), "m",
+                             "film thickness bin centre")}
 
     @property
     def times(self) -> np.ndarray:

@@ -20,7 +20,7 @@ from functools import lru_cache
 import numpy as np
 import scipy.fft as sfft
 
-from ..errors import InputError
+from ..grids import grid_spacing
 from ..materials import Material, contact_modulus
 from .kernels import TangentialInfluence, love_integral, tangential_transfer
 
@@ -32,20 +32,6 @@ __all__ = [
     "periodic_halfspace_spectrum",
     "periodic_tangential_spectra",
 ]
-
-
-def grid_spacing(coord, name: str) -> float:
-    """Uniform spacing of a cell-centre coordinate array; raise InputError otherwise."""
-    c = np.asarray(coord, dtype=float)
-    if c.ndim != 1 or c.size < 2:
-        raise InputError(name, "a 1-D array of at least 2 cell-centre coordinates")
-    if not np.all(np.isfinite(c)):
-        raise InputError(name, "finite coordinates")
-    d = np.diff(c)
-    h = d.mean()
-    if h <= 0 or np.max(np.abs(d - h)) > 1e-6 * abs(h):
-        raise InputError(name, "uniformly spaced, increasing coordinates")
-    return float(h)
 
 
 def padded_shape(shape) -> tuple[int, int]:

@@ -57,4 +57,5 @@ def run_case(case, progress=None, *, workdir=None, resume=False):
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
         elif message not in outcome.warnings:
             outcome.warnings.append(message)
+    outcome.case = case
     return outcome

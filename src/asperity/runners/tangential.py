@@ -256,7 +256,7 @@ def run(case, progress=None) -> Outcome:
         def callback(iteration, residual):
             progress(iteration, None, f"iteration {iteration}, residual {residual:.1e}")
     res = solve_tangential(fld.pressure, fld.x, fld.y, fld.mu, body1, body2, force=(fx, fy),
-                           moment=applied[2], center=case.loading.center, method=case.method,
+                           moment=applied[2], centre=case.loading.center, method=case.method,
                            tol=case.tolerance, callback=callback,
                            rotation=case.loading.rotation)
     path = None
@@ -270,7 +270,7 @@ def run(case, progress=None) -> Outcome:
             def step_cb(k, _res):
                 progress(k + 1, len(loads), f"load step {k + 1} of {len(loads)}")
         path = tangential_load_path(fld.pressure, fld.x, fld.y, fld.mu, body1, body2, loads,
-                                    center=case.loading.center, tol=case.tolerance,
+                                    centre=case.loading.center, tol=case.tolerance,
                                     callback=step_cb, rotation=case.loading.rotation)
     summary = _summary(case, fld, res, applied, identical)
     if path is not None:

@@ -16,8 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.fft
 
-from ..elastic.convolution import grid_spacing
 from ..errors import InputError
+from ..grids import grid_spacing
 from .topography import Profile, Topography
 
 __all__ = [

@@ -18,8 +18,8 @@ from functools import cached_property
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from ..elastic.convolution import grid_spacing
 from ..errors import InputError
+from ..grids import grid_spacing
 
 __all__ = ["Profile", "Topography", "cell_centres"]
 
