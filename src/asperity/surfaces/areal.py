@@ -1,0 +1,210 @@
+"""Areal surface texture (ISO 25178-2/-3): the S-F or S-L surface, its parameters, Str and Std.
+
+The *scale-limited surface* of ISO 25178-3: form removed by least squares (the F-operator,
+:func:`~asperity.surfaces.form.remove_form`), wavelengths shorter than the S-filter's nesting
+index removed, and, when an L-filter nesting index is given, the wavelengths longer than it
+removed too (both the areal Gaussian filter of ISO 16610-61,
+:func:`~asperity.surfaces.filters.areal_gaussian_filter`). With an L-filter the result is the
+S-L surface, without one the S-F surface; the output says which.
+
+Spatial parameters (ISO 25178-2 clause 4.3) from the autocorrelation function (ACF) of the
+scale-limited surface, zero-padded so that lags wrap nowhere:
+
+- Sal: the shortest lag at which the ACF falls to s = 0.2;
+- Str (texture aspect ratio): Sal divided by the longest such lag over all directions, from 0
+  for a strong lay to 1 for an isotropic texture. Along each direction (1 degree steps) the ACF
+  is interpolated (``scipy.ndimage.map_coordinates``) out to half the field; a direction that
+  does not decay within it counts with that length, so Str is then an upper bound (noted).
+
+Std (texture direction, clause 4.3.3): the angular power spectrum -- the power of the
+Hann-windowed surface summed over wavevectors in 0.5 degree sectors -- has its maximum at the
+direction across the lay; Std is reported as the direction *of the lay* (the grooves),
+counter-clockwise from the x axis, in [0, 180) degrees, refined as the direction of the
+power-weighted centroid of the wavevectors within 10 degrees of the maximum (the window's
+leakage around a wavevector is symmetric, so the centroid does not snap to the grid).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.fft
+from scipy.ndimage import map_coordinates
+
+from ..errors import InputError
+from .cutoffs import LAMBDA_S
+from .filters import areal_gaussian_filter
+from .form import remove_form
+from .material_ratio import rk_parameters, section_height_difference, volume_parameters
+from .parameters import autocorrelation_length, roughness_parameters
+from .topography import Topography
+
+__all__ = ["AreaFamilies", "areal_families", "areal_parameters", "texture_aspect_ratio",
+           "texture_direction"]
+
+#: ACF threshold s of Sal and Str (ISO 25178-2 default).
+ACF_THRESHOLD = 0.2
+
+
+@dataclass(frozen=True)
+class AreaFamilies:
+    """The scale-limited surfaces of a measured topography.
+
+    Attributes
+    ----------
+    primary : Topography
+        Form removed (the F-operator) and S-filtered: the S-F surface.
+    scale_limited : Topography
+        The S-L surface when an L-filter is given, otherwise the S-F surface.
+    s_filter, l_filter : float or None
+        Nesting indices applied (m).
+    notes : tuple of str
+    """
+
+    primary: Topography
+    scale_limited: Topography
+    s_filter: float | None
+    l_filter: float | None
+    notes: tuple[str, ...] = ()
+
+    @property
+    def label(self) -> str:
+        """``"S-L"`` or ``"S-F"`` (the surface the parameters are of)."""
+        return "S-L" if self.l_filter is not None else "S-F"
+
+
+def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
+                   s_filter="iso") -> AreaFamilies:
+    """Form removal, S-filter and L-filter of a topography (module docstring).
+
+    Parameters
+    ----------
+    topography : Topography
+    form_degree : int
+        Degree of the least-squares polynomial form removed (1: a plane).
+    l_filter : float, optional
+        L-filter nesting index (m); none by default (the S-F surface).
+    s_filter : "iso", None or float
+        S-filter nesting index (m): ``"iso"`` takes the one ISO 25178-3 pairs with the L-filter
+        (2.5 um for 0.8 mm, as ISO 3274) where the spacing allows; None for none.
+    """
+    if not isinstance(topography, Topography):
+        raise InputError("surface", "a Topography", type(topography).__name__)
+    notes = []
+    surface = remove_form(topography, form_degree)
+    notes.append("form removed: " + ("mean (periodic surface)" if topography.periodic else
+                                     f"least-squares polynomial of degree {form_degree}"))
+    spacing = max(topography.spacing)
+    if s_filter == "iso":
+        s_filter = None
+        match = next((k for k in LAMBDA_S if l_filter is not None and math.isclose(k, l_filter)),
+                     None)
+        if match is not None and spacing <= LAMBDA_S[match][1] * (1 + 1e-9):
+            s_filter = LAMBDA_S[match][0]
+    x, y, periodic = topography.x, topography.y, topography.periodic
+    if s_filter is not None:
+        surface = surface.with_heights(areal_gaussian_filter(surface.z, x, y, s_filter,
+                                                             periodic=periodic))
+        notes.append(f"S-filter {s_filter * 1e6:.4g} um (areal Gaussian, ISO 16610-61)")
+    else:
+        notes.append("no S-filter: the spacing bounds the short wavelengths")
+    limited = surface
+    if l_filter is not None:
+        extent = min(topography.x.size * topography.spacing[0],
+                     topography.y.size * topography.spacing[1])
+        if l_filter > extent:
+            raise InputError("cutoff", f"an L-filter nesting index within the field "
+                             f"({extent:.4g} m)", l_filter)
+        long = areal_gaussian_filter(surface.z, x, y, l_filter, periodic=periodic)
+        limited = surface.with_heights(surface.z - long)
+        notes.append(f"L-filter {l_filter * 1e3:.4g} mm (areal Gaussian, first-moment end "
+                     "correction at the borders): parameters of the S-L surface")
+    else:
+        notes.append("no L-filter (give --cutoff): parameters of the S-F surface")
+    return AreaFamilies(surface, limited, s_filter, l_filter, tuple(notes))
+
+
+def _acf(z: np.ndarray) -> np.ndarray:
+    """Normalised, zero-padded autocorrelation with lag (0, 0) at the centre."""
+    shape = tuple(2 * n for n in z.shape)
+    f = scipy.fft.rfftn(z - z.mean(), s=shape, workers=-1)
+    acf = scipy.fft.irfftn(np.abs(f) ** 2, s=shape, workers=-1)
+    return scipy.fft.fftshift(acf / acf.flat[0])
+
+
+def texture_aspect_ratio(topography: Topography, threshold=ACF_THRESHOLD) -> tuple[float, bool]:
+    """Str (module docstring) and whether it is exact (False: an upper bound)."""
+    z = topography.z
+    acf = _acf(z)
+    (nx, ny), (hx, hy) = z.shape, topography.spacing
+    reach = 0.5 * min(nx * hx, ny * hy)
+    step = min(hx, hy) / 2
+    r = np.arange(0.0, reach, step)
+    lengths = []
+    decayed_everywhere = True
+    for angle in np.radians(np.arange(0.0, 180.0, 1.0)):
+        ix = nx + r * math.cos(angle) / hx
+        iy = ny + r * math.sin(angle) / hy
+        ray = map_coordinates(acf, [ix, iy], order=1)
+        below = np.flatnonzero(ray <= threshold)
+        if below.size == 0:
+            lengths.append(reach)
+            decayed_everywhere = False
+            continue
+        k = below[0]
+        frac = (ray[k - 1] - threshold) / (ray[k - 1] - ray[k]) if k else 0.0
+        lengths.append((k - 1 + frac) * step if k else 0.0)
+    lengths = np.array(lengths)
+    return float(lengths.min() / lengths.max()), decayed_everywhere
+
+
+def texture_direction(topography: Topography) -> float:
+    """Std (module docstring): the lay direction in degrees, [0, 180)."""
+    z = topography.z - topography.z.mean()
+    (nx, ny), (hx, hy) = z.shape, topography.spacing
+    window = np.outer(np.hanning(nx), np.hanning(ny))
+    power = np.abs(scipy.fft.rfftn(z * window, workers=-1)) ** 2
+    qx = scipy.fft.fftfreq(nx, hx)[:, None]
+    qy = scipy.fft.rfftfreq(ny, hy)[None, :]
+    angle = np.degrees(np.arctan2(np.broadcast_to(qy, power.shape),
+                                  np.broadcast_to(qx, power.shape))) % 180.0
+    ring = np.hypot(qx / qx.max(), qy / qy.max())
+    keep = ring > 2.0 / min(nx, ny)  # leave out the mean and the window's own leakage
+    bins = np.arange(0.0, 180.5, 0.5)
+    spectrum, _ = np.histogram(angle[keep], bins=bins, weights=power[keep])
+    peak = 0.5 * (bins[np.argmax(spectrum)] + bins[np.argmax(spectrum) + 1])
+    offset = (angle[keep] - peak + 90.0) % 180.0 - 90.0
+    near = np.abs(offset) <= 10.0
+    # the power-weighted centroid of the wavevectors there, each turned to the peak's side
+    vx = np.broadcast_to(qx, power.shape)[keep][near]
+    vy = np.broadcast_to(qy, power.shape)[keep][near]
+    side = np.sign(vx * math.cos(math.radians(peak)) + vy * math.sin(math.radians(peak)))
+    weights = power[keep][near] * side
+    refined = math.degrees(math.atan2(np.sum(weights * vy), np.sum(weights * vx)))
+    return float((refined + 90.0) % 180.0)
+
+
+def areal_parameters(families: AreaFamilies) -> dict[str, dict[str, float]]:
+    """ISO 25178-2 parameters of the scale-limited surface, grouped as the standard groups them.
+
+    Returns
+    -------
+    dict
+        ``height``: Sa Sq Ssk Sku Sp Sv Sz; ``hybrid``: Sdq Sdr; ``spatial``: Sal Str Std
+        (degrees); ``functional``: Sk Spk Svk Smr1 Smr2 Sdc (C(20 %) - C(80 %));
+        ``volume``: Vmp Vmc Vvc Vvv (m^3/m^2).
+    """
+    surface = families.scale_limited
+    params = roughness_parameters(surface)
+    str_value, _ = texture_aspect_ratio(surface)
+    z = surface.z
+    return {
+        "height": {k: params[k] for k in ("Sa", "Sq", "Ssk", "Sku", "Sp", "Sv", "Sz")},
+        "hybrid": {"Sdq": params["Sdq"], "Sdr": params["Sdr"]},
+        "spatial": {"Sal": autocorrelation_length(surface, threshold=ACF_THRESHOLD),
+                    "Str": str_value, "Std": texture_direction(surface)},
+        "functional": {**rk_parameters(z, "S"), "Sdc": section_height_difference(z)},
+        "volume": volume_parameters(z),
+    }

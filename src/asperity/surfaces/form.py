@@ -1,0 +1,59 @@
+"""Form removal: the least-squares polynomial of a profile or surface (ISO 25178-2's F-operator).
+
+The nominal form (a tilt, a cylinder's curvature) is the least-squares polynomial of a chosen
+degree in the coordinates -- a line or a plane for degree 1, in x and y of total degree at most
+``degree`` for a surface -- fitted to all points and subtracted. Coordinates are scaled to
+[-1, 1] before the fit so that high degrees stay well conditioned. A periodic surface has no
+form: only its mean is removed.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.polynomial import polynomial
+
+from ..errors import InputError, check_int
+from .topography import Profile, Topography
+
+__all__ = ["remove_form"]
+
+
+def _scaled(coord: np.ndarray) -> np.ndarray:
+    span = coord[-1] - coord[0]
+    return 2 * (coord - coord[0]) / span - 1 if span else np.zeros_like(coord)
+
+
+def remove_form(surface, degree: int = 1):
+    """The surface minus its least-squares polynomial form of ``degree`` (0: the mean).
+
+    Parameters
+    ----------
+    surface : Profile or Topography
+    degree : int
+        0 mean, 1 line/plane, 2 parabola/quadric, ... (total degree in x and y for a surface).
+
+    Returns
+    -------
+    Profile or Topography
+        Same grid, heights from the fitted form.
+    """
+    degree = check_int("form_degree", degree, 0)
+    if not isinstance(surface, Profile | Topography):
+        raise InputError("surface", "a Profile or a Topography", type(surface).__name__)
+    z = surface.z
+    if surface.periodic or degree == 0:
+        return surface.with_heights(z - z.mean())
+    if isinstance(surface, Profile):
+        if degree >= z.size:
+            raise InputError("form_degree", f"a degree below the {z.size} points", degree)
+        fit = np.polynomial.Polynomial.fit(surface.x, z, degree)
+        return surface.with_heights(z - fit(surface.x))
+    X, Y = np.meshgrid(_scaled(surface.x), _scaled(surface.y), indexing="ij")
+    vander = polynomial.polyvander2d(X.ravel(), Y.ravel(), [degree, degree])
+    i, j = np.meshgrid(np.arange(degree + 1), np.arange(degree + 1), indexing="ij")
+    terms = vander[:, (i + j).ravel() <= degree]
+    if terms.shape[1] >= z.size:
+        raise InputError("form_degree", f"a degree with fewer terms than the {z.size} points",
+                         degree)
+    coef = np.linalg.lstsq(terms, z.ravel(), rcond=None)[0]
+    return surface.with_heights(z - (terms @ coef).reshape(z.shape))

@@ -1,0 +1,85 @@
+"""Form removal, the areal S-/L-filters (ISO 16610-61) and the spatial parameters Str, Std.
+
+References: a polynomial form is removed exactly by a least-squares polynomial of its degree;
+the areal Gaussian filter transmits 50 % at its nesting index (its weighting function is the
+product of two ISO 16610-21 profile ones); grooves z = sin(2 pi (-x sin b + y cos b) / lam)
+run along direction b (Std = b), and their ACF does not decay along the grooves (Str near 0);
+an isotropic Gaussian surface has Str near 1.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from asperity.errors import InputError
+from asperity.surfaces import Topography, gaussian_topography
+from asperity.surfaces.areal import (
+    areal_families,
+    areal_parameters,
+    texture_aspect_ratio,
+    texture_direction,
+)
+from asperity.surfaces.form import remove_form
+
+H = 1e-6
+X1 = (np.arange(200) + 0.5) * H
+Y1 = (np.arange(160) + 0.5) * H
+X, Y = np.meshgrid(X1, Y1, indexing="ij")
+
+
+def grooves(angle_deg, wavelength=17e-6, noise=0.02e-6):
+    b = math.radians(angle_deg)
+    z = 0.5e-6 * np.sin(2 * np.pi * (-X * math.sin(b) + Y * math.cos(b)) / wavelength)
+    return Topography(X1, Y1, z + noise * np.random.default_rng(1).standard_normal(X.shape))
+
+
+def test_polynomial_form_is_removed_exactly():
+    ripple = 0.1e-6 * np.sin(2 * np.pi * X / 20e-6) * np.sin(2 * np.pi * Y / 16e-6)
+    quadric = 1e-3 * X + 2e-3 * Y + 50 * X * X - 30 * X * Y + 20 * Y * Y + 1e-6
+    flat = remove_form(Topography(X1, Y1, quadric + ripple), 2)
+    # the quadric goes entirely: what remains is what the ripple alone leaves
+    alone = remove_form(Topography(X1, Y1, ripple), 2)
+    assert np.abs(flat.z - alone.z).max() < 1e-9 * 0.1e-6
+    assert np.std(flat.z) == pytest.approx(np.std(ripple), rel=0.05)
+    tilted = remove_form(Topography(X1, Y1, 1e-3 * X - 2e-3 * Y + 5e-6), 1)
+    assert np.abs(tilted.z).max() < 1e-15
+    with pytest.raises(InputError, match="form_degree"):
+        remove_form(tilted, -1)
+
+
+@pytest.mark.parametrize("angle", [0.0, 30.0, 75.0, 91.0, 120.0, 165.0])
+def test_std_is_the_lay_direction(angle):
+    std = texture_direction(grooves(angle))
+    assert abs((std - angle + 90) % 180 - 90) < 0.5
+
+
+def test_str_separates_lay_from_isotropy():
+    ratio, exact = texture_aspect_ratio(grooves(30.0))
+    assert ratio < 0.1 and not exact  # along the grooves the ACF never decays
+    iso = gaussian_topography((200e-6, 160e-6), H, 0.3e-6, 10e-6, seed=3)
+    ratio, exact = texture_aspect_ratio(iso)
+    assert ratio > 0.7 and exact
+
+
+def test_l_filter_transmits_half_at_its_nesting_index():
+    cut = 40e-6
+    wave = Topography(X1, Y1, 1e-6 * np.sin(2 * np.pi * X / cut))
+    fam = areal_families(wave, form_degree=0, l_filter=cut, s_filter=None)
+    inner = fam.scale_limited.z[60:140, 40:120]
+    basis = np.column_stack([np.sin(2 * np.pi * X[60:140, 40:120].ravel() / cut),
+                             np.cos(2 * np.pi * X[60:140, 40:120].ravel() / cut),
+                             np.ones(inner.size)])
+    coef = np.linalg.lstsq(basis, inner.ravel(), rcond=None)[0]
+    assert math.hypot(*coef[:2]) / 1e-6 == pytest.approx(0.5, abs=3e-3)
+    assert fam.label == "S-L" and any("L-filter" in n for n in fam.notes)
+
+
+def test_areal_parameters_are_grouped_and_of_the_scale_limited_surface():
+    t = gaussian_topography((200e-6, 160e-6), H, 0.3e-6, 10e-6, seed=3)
+    fam = areal_families(t)
+    groups = areal_parameters(fam)
+    assert list(groups) == ["height", "hybrid", "spatial", "functional", "volume"]
+    assert fam.label == "S-F"
+    assert groups["height"]["Sq"] == pytest.approx(np.std(t.z), rel=1e-6)  # periodic: mean only
+    assert 0 < groups["functional"]["Smr1"] < groups["functional"]["Smr2"] < 1
