@@ -39,12 +39,13 @@ from __future__ import annotations
 import math
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import BeforeValidator, Field, field_validator, model_validator
 
 from ..ehl.lubricant import DH_GAMMA, DH_LAMBDA, ROELANDS_CHI, ROELANDS_KAPPA, Lubricant
 from ..ehl.problem import LineContact, PointContact
 from ..errors import InputError
 from ..materials import Material
+from ..units import to_si
 from .bodies import MaterialSpec
 from .fields import CaseHeader, CaseModel, Quantity
 
@@ -249,11 +250,42 @@ class EHLCaseBase(CaseHeader):
         return PointContact(c.rx, c.ry, c.load, u1, u2, body1, body2, lub)
 
 
+def _domain_bound(lo: float, hi: float):
+    """Validator of a domain bound: a number in Hertz semi-axes within [lo, hi] (strictly
+    outside the contact), or a length (``"-1.2 mm"``) kept as written and converted by
+    :meth:`EHLGridSpec.domain` once the semi-axes are known."""
+
+    def check(value):
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            if not isinstance(value, str):
+                raise ValueError("expected a number (Hertz semi-axes) or a length") from None
+            try:
+                to_si(value, "length", "")
+            except InputError as exc:
+                raise ValueError(f"expected a number (Hertz semi-axes) or {exc.expected}") from None
+            return value
+        if isinstance(value, bool) or not (lo <= number <= hi and abs(number) > 1.0):
+            raise ValueError(f"expected a number from {lo:g} to {hi:g} (Hertz semi-axes, outside "
+                             "the contact) or a length")
+        return number
+
+    return Annotated[float | str, BeforeValidator(check),
+                     Field(json_schema_extra={"dimension": "length",
+                                              "type": "number or quantity"})]
+
+
+LowerBound = _domain_bound(-100.0, -1.0)
+UpperBound = _domain_bound(1.0, 100.0)
+
+
 class EHLGridSpec(CaseModel):
     """``[grid]``: nodes and domain of an EHL solve, in units of the Hertz semi-axes.
 
     The domain is ``x_min a < x < x_max a``, ``y_min b < y < y_max b`` (default the seed's
-    -2.5a..1.5a, -2b..2b; y is unused for a line contact) and must hold the Hertz contact.
+    -2.5a..1.5a, -2b..2b; y is unused for a line contact) and must hold the Hertz contact. A
+    bound may also be a length (``x_min = "-1.2 mm"``), taken as it is.
     The mesh is ``nx`` x ``ny`` nodes with end nodes on the bounds, or a spacing
     ``cells_per_a`` (dx = a/cells_per_a) and ``cells_per_b``; the seed's mesh a/200 x b/50 is
     ``nx = 801``, ``ny = 201``. A line contact has ``ny = 1``.
@@ -263,13 +295,13 @@ class EHLGridSpec(CaseModel):
     """Nodes along x (or cells_per_a: nodes per Hertz semi-axis a)."""
     ny: Annotated[int, Field(ge=1, le=4097)] = 65
     """Nodes along y; 1 for a line contact (or cells_per_b)."""
-    x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
+    x_min: LowerBound = -2.5
     """Inlet end of the domain in Hertz semi-axes a (a number) or as a length (e.g. "-1.2 mm")."""
-    x_max: Annotated[float, Field(gt=1.0, le=100.0)] = 1.5
+    x_max: UpperBound = 1.5
     """Outlet end of the domain in Hertz semi-axes a (a number) or as a length."""
-    y_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.0
+    y_min: LowerBound = -2.0
     """Lower side of the domain in Hertz semi-axes b (a number) or as a length."""
-    y_max: Annotated[float, Field(gt=1.0, le=100.0)] = 2.0
+    y_max: UpperBound = 2.0
     """Upper side of the domain in Hertz semi-axes b (a number) or as a length."""
 
     @model_validator(mode="before")
@@ -305,10 +337,26 @@ class EHLGridSpec(CaseModel):
         return self.nx, 1 if line else self.ny
 
     def domain(self, a: float, b: float | None):
-        """((x0, x1), (y0, y1)) in m for Hertz semi-axes a, b (b None: line contact)."""
+        """((x0, x1), (y0, y1)) in m for Hertz semi-axes a, b (b None: line contact).
+
+        A bound given as a length is taken as it is; it must lie outside the Hertz contact.
+        """
+        x = (self._bound("x_min", a), self._bound("x_max", a))
         if b is None:
-            return (self.x_min * a, self.x_max * a), (0.0, 0.0)
-        return (self.x_min * a, self.x_max * a), (self.y_min * b, self.y_max * b)
+            return x, (0.0, 0.0)
+        return x, (self._bound("y_min", b), self._bound("y_max", b))
+
+    def _bound(self, key: str, semi_axis: float) -> float:
+        value = getattr(self, key)
+        if not isinstance(value, str):
+            return value * semi_axis
+        metres = to_si(value, "length", f"grid.{key}")
+        lower = key.endswith("_min")
+        if not abs(metres) > semi_axis or (metres < 0) != lower:
+            edge = -semi_axis if lower else semi_axis
+            raise InputError(f"grid.{key}", f"a bound outside the Hertz contact, "
+                             f"{'below' if lower else 'above'} {edge:.4g} m", value)
+        return metres
 
 
 class SolverSpec(CaseModel):

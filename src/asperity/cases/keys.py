@@ -61,16 +61,20 @@ def _strip_optional(annotation):
     return annotation
 
 
-def _dimension(annotation, info: FieldInfo | None = None) -> str | None:
-    """The Quantity dimension of a (possibly Annotated) float annotation."""
+def _extra(annotation, info: FieldInfo | None = None) -> dict:
+    """The JSON-schema extra of a field or of its Annotated metadata (``dimension``, and a
+    ``type`` text where the value is more than a quantity)."""
     extras = [info.json_schema_extra] if info is not None else []
     if typing.get_origin(annotation) is typing.Annotated:
         extras += [m.json_schema_extra for m in typing.get_args(annotation)[1:]
                    if isinstance(m, FieldInfo)]
-    for extra in extras:
-        if isinstance(extra, dict) and "dimension" in extra:
-            return str(extra["dimension"])
-    return None
+    return next((e for e in extras if isinstance(e, dict) and "dimension" in e), {})
+
+
+def _dimension(annotation, info: FieldInfo | None = None) -> str | None:
+    """The Quantity dimension of a (possibly Annotated) float annotation."""
+    dimension = _extra(annotation, info).get("dimension")
+    return None if dimension is None else str(dimension)
 
 
 def _models(annotation) -> list[type[BaseModel]]:
@@ -86,7 +90,7 @@ def _describe_type(annotation, info: FieldInfo | None) -> tuple[str, str]:
     dimension = _dimension(annotation, info)
     if dimension is not None:
         unit = DIMENSIONS[dimension]
-        return ("quantity" if unit else "number"), unit
+        return _extra(annotation, info).get("type", "quantity" if unit else "number"), unit
     origin, args = typing.get_origin(annotation), typing.get_args(annotation)
     if origin is typing.Annotated:
         return _describe_type(args[0], None)
