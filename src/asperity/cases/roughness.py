@@ -55,10 +55,16 @@ class MeasuredFile(CaseModel):
     """
 
     unit: str | None = None
+    """Length unit of the file's coordinates and heights when the file does not say (e.g. "um";
+    replaces what it says)."""
     x_unit: str | None = None
+    """Length unit of the file's coordinates only."""
     z_unit: str | None = None
+    """Length unit of the file's heights only."""
     missing: Literal["refuse", "fill"] | None = None
+    """Missing points: "refuse" (default, an error) or "fill" them."""
     resample: bool | None = None
+    """Resample non-uniformly spaced x by cubic spline."""
 
     _units = field_validator("unit", "x_unit", "z_unit")(length_unit)
 
