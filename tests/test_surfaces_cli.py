@@ -1,6 +1,7 @@
 """``asperity surface`` commands through typer's CliRunner, on a throwaway app."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -23,17 +24,22 @@ def runner():
 def test_generate_then_stats(runner, tmp_path):
     out = tmp_path / "c.txt"
     res = runner.invoke(app, ["surface", "generate", "builtin", "--name", "C", "--length",
-                              "1 mm", "--spacing", "0.5 um", "--out", str(out)])
+                              "2 mm", "--spacing", "0.5 um", "--out", str(out)])
     assert res.exit_code == 0, res.output
-    assert "Rdq" in res.stdout
+    assert "Rdq" in res.stdout and "unfiltered" in res.stdout
     res = runner.invoke(app, ["surface", "stats", str(out), "--json"])
     assert res.exit_code == 0, res.output
     stats = json.loads(res.stdout)
-    assert stats["kind"] == "profile" and stats["points"] == [2000]
-    assert stats["Ra_m"] == pytest.approx(0.31e-6, rel=1e-9)
-    assert stats["Rdq"] == pytest.approx(roughness_parameters(read_surface(out))["Rdq"])
+    assert stats["kind"] == "profile" and stats["points"] == [4000]
+    assert list(stats["parameters"]) == ["P", "W", "R", "Rk"]
+    # a periodic profile: lambda_c by ISO 4288 (Ra ~ 0.3 um -> 0.8 mm), 2 sampling lengths
+    assert stats["filters"]["cutoff_m"] == pytest.approx(0.8e-3)
+    assert stats["filters"]["sampling_lengths"] == 2
+    assert "Ra_m" in stats["parameters"]["R"] and "Pa_m" in stats["parameters"]["P"]
+    assert "Mr1" in stats["parameters"]["Rk"]
     table = runner.invoke(app, ["surface", "stats", str(out)])
-    assert table.exit_code == 0 and "Ra" in table.stdout and "0.31" in table.stdout
+    assert table.exit_code == 0 and "Roughness profile R" in table.stdout
+    assert "lambda_c = 0.8 mm" in table.stdout and "Rk" in table.stdout
 
 
 def test_stats_of_heights_with_a_spacing(runner, tmp_path):
@@ -43,8 +49,27 @@ def test_stats_of_heights_with_a_spacing(runner, tmp_path):
                               "--spacing", "1 um"])
     assert res.exit_code == 0, res.output
     stats = json.loads(res.stdout)
-    assert stats["Sq_m"] == pytest.approx(roughness_parameters(t.z, t.x, t.y)["Sq"])
+    # a .npy forgets periodicity: the plane is removed, as roughness_parameters does
+    assert stats["parameters"]["height"]["Sq_m"] == pytest.approx(
+        roughness_parameters(t.z, t.x, t.y)["Sq"])
     assert stats["spacing_m"] == pytest.approx([1e-6, 1e-6])
+    assert stats["filters"]["surface"] == "S-F"
+
+
+def test_stats_units_and_warnings(runner):
+    data = Path(__file__).parent / "data" / "text"
+    res = runner.invoke(app, ["surface", "stats", str(data / "unlabelled_nm.txt"),
+                              "--spacing", "0.5 um", "--cutoff", "8 um"])
+    assert res.exit_code == 0, res.output
+    assert res.stderr.startswith("warning: heights: peak-to-valley")
+    res = runner.invoke(app, ["surface", "stats", str(data / "unlabelled_nm.txt"), "--json",
+                              "--spacing", "0.5 um", "--z-unit", "nm", "--cutoff", "8 um"])
+    assert res.exit_code == 0 and "heights" not in res.stderr and "sampling lengths" in res.stderr
+    assert json.loads(res.stdout)["parameters"]["P"]["Pt_m"] < 2e-6
+    res = runner.invoke(app, ["surface", "stats", str(data / "tab_angstrom_missing.txt"),
+                              "--missing", "fill", "--cutoff", "8 um", "--json"])
+    stats = json.loads(res.stdout)
+    assert stats["filled_points"] == 3 and any("filled 3 of 64" in n for n in stats["notes"])
 
 
 @pytest.mark.parametrize("args", [

@@ -13,6 +13,7 @@ from functools import wraps
 from pathlib import Path
 from typing import Annotated
 
+import numpy as np
 import typer
 from rich.console import Console
 from rich.table import Table
@@ -110,26 +111,116 @@ def _table(stats: dict, title: str) -> Table:
     return table
 
 
+#: SI unit -> (display unit, factor) in the stats tables.
+_DISPLAY = {"m": ("um", 1e6), "m3/m2": ("ml/m2", 1e6), "deg": ("deg", 1.0), "1": ("", 1.0)}
+_PERCENT = {"Mr1", "Mr2", "Smr1", "Smr2", "Sdr", "Str"}
+
+
+def _read(file: Path, spacing, spacing_y, unit, x_unit, z_unit, missing, resample):
+    from ..surfaces.io import read_measured
+
+    return read_measured(file, _spacing(spacing, spacing_y), unit=unit, x_unit=x_unit,
+                         z_unit=z_unit, missing=missing, resample=resample)
+
+
+def _texture_json(file: Path, reading, texture) -> dict:
+    from ..surfaces.texture import unit_of
+
+    surface = reading.surface
+    spacing = ([surface.spacing] if surface.z.ndim == 1 else list(surface.spacing))
+    fam = texture.families
+    filters = ({"cutoff_m": fam.cutoff, "lambda_s_m": fam.lambda_s,
+                "sampling_lengths": fam.sampling_lengths,
+                "evaluation_length_m": fam.evaluation_length} if surface.z.ndim == 1 else
+               {"surface": fam.label, "l_filter_m": fam.l_filter, "s_filter_m": fam.s_filter})
+    groups = {}
+    for key, values in texture.groups.items():
+        groups[key] = {"title": texture.titles[key]}
+        for name, value in values.items():
+            suffix = {"m": "_m", "m3/m2": "_m3_per_m2", "deg": "_deg"}.get(unit_of(name), "")
+            groups[key][name + suffix] = value
+    return {"file": str(file), "format": reading.style,
+            "kind": "profile" if surface.z.ndim == 1 else "topography",
+            "points": list(surface.z.shape), "spacing_m": spacing, "periodic": surface.periodic,
+            "filled_points": reading.filled, "filters": filters, "parameters": groups,
+            "notes": [*reading.notes, *texture.notes],
+            "warnings": [*reading.warnings, *texture.warnings]}
+
+
+def _texture_tables(file: Path, reading, texture) -> list[Table]:
+    from ..surfaces.texture import unit_of
+
+    tables = []
+    for key, values in texture.groups.items():
+        table = Table(title=texture.titles[key], title_justify="left")
+        table.add_column("parameter")
+        table.add_column("value", justify="right")
+        table.add_column("unit")
+        for name, value in values.items():
+            shown, factor = ("%", 100.0) if name in _PERCENT else _DISPLAY[unit_of(name)]
+            table.add_row(name, f"{value * factor:.4g}", shown)
+        tables.append(table)
+    return tables
+
+
+def _describe(file: Path, reading) -> str:
+    surface = reading.surface
+    points = " x ".join(str(n) for n in surface.z.shape)
+    spacing = " x ".join(f"{h * 1e6:.4g}" for h in np.atleast_1d(surface.spacing))
+    return (f"{file.name}: {reading.style}; {points} points, spacing {spacing} um"
+            + ("; periodic" if surface.periodic else ""))
+
+
+Spacing = Annotated[str | None, typer.Option(help="Grid spacing, e.g. '0.5 um' (files "
+                                                  "without x).")]
+SpacingY = Annotated[str | None, typer.Option(help="Grid spacing along y, if different.")]
+Unit = Annotated[str | None, typer.Option(help="Length unit of the file's numbers (um, nm, ...) "
+                                               "when it does not say; replaces what it says.")]
+XUnit = Annotated[str | None, typer.Option(help="Unit of the coordinates only.")]
+ZUnit = Annotated[str | None, typer.Option(help="Unit of the heights only.")]
+Missing = Annotated[str, typer.Option(help="Missing points: 'refuse' or 'fill' (linear along a "
+                                           "profile, harmonic over an area).")]
+Resample = Annotated[bool, typer.Option("--resample", help="Resample non-uniform x onto a "
+                                                           "uniform grid by cubic spline.")]
+Cutoff = Annotated[str | None, typer.Option(help="lambda_c of a profile (default: ISO 4288's "
+                                                 "choice) or L-filter of an area.")]
+FormDegree = Annotated[int, typer.Option(help="Degree of the least-squares form removed.")]
+
+
 @surface_app.command()
 @_one_line_errors
 def stats(
     file: Annotated[Path, typer.Argument(
-        help="Profile or topography file (text, .npy, .npz, ...).")],
+        help="Profile or topography file (text/CSV export, .npy, .npz, instrument format).")],
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON (SI units) instead.")] = False,
-    spacing: Annotated[str | None, typer.Option(
-        help="Grid spacing, e.g. '0.5 um' (files without x).")] = None,
-    spacing_y: Annotated[str | None, typer.Option(
-        help="Grid spacing along y, if different.")] = None,
+    spacing: Spacing = None,
+    spacing_y: SpacingY = None,
+    unit: Unit = None,
+    x_unit: XUnit = None,
+    z_unit: ZUnit = None,
+    missing: Missing = "refuse",
+    resample: Resample = False,
+    cutoff: Cutoff = None,
+    form_degree: FormDegree = 1,
 ):
-    """Roughness parameters (ISO 4287 / 25178) of a measured profile or topography."""
-    from ..surfaces import read_surface
+    """Surface texture parameters, grouped as ISO 4287 / 13565-2 / 25178-2 group them."""
+    from ..surfaces.texture import evaluate_texture
 
-    surface = read_surface(file, _spacing(spacing, spacing_y))
-    result = _statistics(surface)
+    reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
+    texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
+                               form_degree=form_degree)
+    result = _texture_json(file, reading, texture)
     if as_json:
-        typer.echo(json.dumps({"file": str(file), **result}, indent=2))
+        typer.echo(json.dumps(result, indent=2))
     else:
-        Console().print(_table(result, f"Roughness of {file.name}"))
+        console = Console()
+        console.print(_describe(file, reading), markup=False, highlight=False, soft_wrap=True)
+        for table in _texture_tables(file, reading, texture):
+            console.print(table)
+        for note in result["notes"]:
+            console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
+    for line in result["warnings"]:
+        typer.echo(f"warning: {line}", err=True)
 
 
 def _require(value, option: str, kind: str):
@@ -249,7 +340,9 @@ def generate(
                                  _length(waviness_amplitude, "--waviness-amplitude"),
                                  direction=waviness_direction)
     s.write_surface(surface, out)
-    Console().print(_table(_statistics(surface), f"Generated {kind} surface -> {out}"))
+    Console().print(_table(_statistics(surface), f"Generated {kind} surface -> {out} "
+                                                 "(unfiltered: heights from the least-squares "
+                                                 "line/plane)"))
 
 
 @surface_app.command()
@@ -257,23 +350,36 @@ def generate(
 def plot(
     file: Annotated[Path, typer.Argument(help="Profile or topography file.")],
     out: Annotated[Path, typer.Option("--out", help="Figure file (.png, .pdf, .svg).")],
-    spacing: Annotated[str | None, typer.Option(help="Grid spacing (files without x).")] = None,
-    spacing_y: Annotated[str | None, typer.Option(
-        help="Grid spacing along y, if different.")] = None,
-    spectrum: Annotated[bool, typer.Option("--spectrum", help="Plot the PSD instead.")] = False,
+    spacing: Spacing = None,
+    spacing_y: SpacingY = None,
+    unit: Unit = None,
+    x_unit: XUnit = None,
+    z_unit: ZUnit = None,
+    missing: Missing = "refuse",
+    resample: Resample = False,
+    cutoff: Cutoff = None,
+    form_degree: FormDegree = 1,
+    spectrum: Annotated[bool, typer.Option("--spectrum", help="Plot only the PSD.")] = False,
 ):
-    """Plot a profile trace or a height map (or its power spectrum)."""
+    """Plot the surface (or P/W/R profiles), its PSD and its material ratio curve."""
     import matplotlib.pyplot as plt
 
-    from ..plotting.surfaces import plot_spectrum, plot_surface
-    from ..surfaces import read_surface
+    from ..plotting.surfaces import plot_spectrum, plot_texture
+    from ..surfaces.texture import evaluate_texture
 
-    surface = read_surface(file, _spacing(spacing, spacing_y))
-    fig = plot_spectrum(surface) if spectrum else plot_surface(surface, title=file.name)
+    reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
+    if spectrum:
+        fig = plot_spectrum(reading.surface, title=f"Power spectral density: {file.name}")
+    else:
+        texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
+                                   form_degree=form_degree)
+        fig = plot_texture(texture, title=file.name)
     try:
         fig.savefig(out, dpi=150)
     except (ValueError, OSError) as err:
         raise InputError("--out", "a writable figure file (.png, .pdf, .svg)", str(err)) from err
     finally:
         plt.close(fig)
+    for line in reading.warnings:
+        typer.echo(f"warning: {line}", err=True)
     typer.echo(f"wrote {out}")

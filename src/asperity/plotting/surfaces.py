@@ -1,4 +1,5 @@
-"""Figures of rough surfaces: profiles (seed Fig. 1 style), height maps, spectra, Fig. 4.2."""
+"""Figures of rough surfaces: profiles (seed Fig. 1 style), height maps, spectra, Fig. 4.2,
+the P/W/R profile families and the material ratio curve with its equivalent straight line."""
 
 from __future__ import annotations
 
@@ -6,12 +7,13 @@ import numpy as np
 
 from ..errors import InputError
 from ..surfaces.machining import TurnedSurface, roughness_along
+from ..surfaces.material_ratio import equivalent_line, material_ratio_curve, rk_parameters
 from ..surfaces.parameters import power_spectrum
 from ..surfaces.topography import Profile, Topography
-from .style import new_figure
+from .style import new_figure, plt
 
-__all__ = ["plot_profiles", "plot_spectrum", "plot_surface", "plot_topography",
-           "plot_turning_roughness"]
+__all__ = ["plot_families", "plot_material_ratio", "plot_profiles", "plot_spectrum",
+           "plot_surface", "plot_texture", "plot_topography", "plot_turning_roughness"]
 
 
 def plot_profiles(profiles, offset=None, title="Surface profiles"):
@@ -96,4 +98,102 @@ def plot_turning_roughness(results, window, labels=None, parameter="Rt",
     ax.set(xlabel="distance along workpiece (mm)", ylabel=f"{parameter} (um)", title=title)
     if any(labels) or parameter == "Rt":
         ax.legend(fontsize=8)
+    return fig
+
+
+def plot_material_ratio(heights, prefix="R", ax=None, title="Material ratio curve"):
+    """The Abbott-Firestone curve with the ISO 13565-2 equivalent straight line.
+
+    Draws the curve (heights in um against material ratio in %), the 40 % window the line was
+    fitted in, the line from 0 to 100 %, the core limits at Mr1/Mr2 (Smr1/Smr2) and the
+    triangles of the reduced peak and valley heights.
+
+    Parameters
+    ----------
+    heights : array_like
+        Roughness profile over the evaluation length, or the scale-limited surface (m).
+    prefix : "R" or "S"
+    ax : matplotlib Axes, optional
+        Draw into it instead of a new figure.
+    """
+    fig = None
+    if ax is None:
+        fig, ax = new_figure(5.0, 4.2)
+    mr, c = material_ratio_curve(heights)
+    line = equivalent_line(heights)
+    rk = rk_parameters(heights, prefix)
+    names = ("Sk", "Spk", "Svk", "Smr1", "Smr2") if prefix == "S" else (
+        "Rk", "Rpk", "Rvk", "Mr1", "Mr2")
+    k, pk, vk, m1, m2 = (rk[n] for n in names)
+    top, bottom = line(0.0), line(1.0)
+    ax.plot(mr * 100, c * 1e6, "k-", lw=1.0, label="material ratio curve")
+    ax.plot([0, 100], [top * 1e6, bottom * 1e6], "C0--", lw=1.0, label="equivalent line")
+    lo, hi = line.window
+    ax.axvspan(lo * 100, hi * 100, color="C0", alpha=0.08, lw=0, label="40 % window")
+    ax.hlines([top * 1e6, bottom * 1e6], 0, 100, colors="0.5", lw=0.6)
+    ax.fill([0, 0, m1 * 100], [top * 1e6, (top + pk) * 1e6, top * 1e6], color="C3", alpha=0.3,
+            lw=0, label=f"{names[1]} = {pk * 1e6:.3g} um")
+    ax.fill([100, 100, m2 * 100], [bottom * 1e6, (bottom - vk) * 1e6, bottom * 1e6], color="C2",
+            alpha=0.3, lw=0, label=f"{names[2]} = {vk * 1e6:.3g} um")
+    ax.set(xlabel="material ratio (%)", ylabel="height (um)", xlim=(0, 100),
+           title=f"{title}: {names[0]} = {k * 1e6:.3g} um, {names[3]} = {m1 * 100:.3g} %, "
+                 f"{names[4]} = {m2 * 100:.3g} %")
+    ax.title.set_fontsize(9)
+    ax.legend(fontsize=7, loc="upper right")
+    return fig if fig is not None else ax.figure
+
+
+def plot_families(families, title="Profiles", axes=None):
+    """P with its W mean line, and R with the evaluation length marked (two stacked axes)."""
+    fig = None
+    if axes is None:
+        fig, axes = new_figure(7.0, 4.5, nrows=2, sharex=True)
+    p, w, r = families.primary, families.waviness, families.roughness
+    ev = families.evaluation
+    axes[0].plot(p.x * 1e3, p.z * 1e6, "k-", lw=0.5, label="primary P")
+    axes[0].plot(w.x * 1e3, w.z * 1e6, "C3-", lw=1.2,
+                 label=f"waviness W (lambda_c = {families.cutoff * 1e3:.3g} mm)")
+    axes[1].plot(r.x * 1e3, r.z * 1e6, "k-", lw=0.5, label="roughness R")
+    for edge in (r.x[ev.start], r.x[ev.stop - 1]):
+        axes[1].axvline(edge * 1e3, color="C0", lw=0.8, ls="--")
+    for k in range(1, families.sampling_lengths):
+        axes[1].axvline(r.x[ev.start] * 1e3 + k * families.cutoff * 1e3, color="0.7", lw=0.5)
+    axes[0].set(ylabel="height (um)", title=title)
+    axes[1].set(xlabel="x (mm)", ylabel="height (um)")
+    for ax in axes:
+        ax.legend(fontsize=7, loc="upper right")
+    return fig if fig is not None else axes[0].figure
+
+
+def plot_texture(texture, title="Surface texture"):
+    """One figure of a :class:`~asperity.surfaces.texture.TextureEvaluation`: the P/W/R
+    profiles (or the scale-limited height map), the PSD and the material ratio curve."""
+    from ..surfaces.areal import AreaFamilies
+
+    fam = texture.families
+    fig = plt.figure(figsize=(9.5, 7.5), layout="constrained")
+    grid = fig.add_gridspec(2, 2)
+    if isinstance(fam, AreaFamilies):
+        ax = fig.add_subplot(grid[0, :])
+        surface = fam.scale_limited
+        mesh = ax.pcolormesh(surface.x * 1e3, surface.y * 1e3, surface.z.T * 1e6,
+                             shading="auto", cmap="viridis")
+        fig.colorbar(mesh, ax=ax, label="height (um)")
+        ax.set(xlabel="x (mm)", ylabel="y (mm)", aspect="equal",
+               title=f"{title}: {fam.label} surface")
+        heights, prefix = surface.z, "S"
+    else:
+        top = grid[0, :].subgridspec(2, 1, hspace=0.05)
+        axes = [fig.add_subplot(top[0])]
+        axes.append(fig.add_subplot(top[1], sharex=axes[0]))
+        plot_families(fam, title=f"{title}: P, W and R profiles", axes=axes)
+        heights, prefix = fam.evaluated("R"), "R"
+    ax = fig.add_subplot(grid[1, 0])
+    spec = power_spectrum(texture.surface, window=None if texture.surface.periodic else "hann")
+    ax.loglog(spec.q, spec.psd, "k-", lw=0.8)
+    ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({'m^3' if spec.dim == 1 else 'm^4'})",
+           title="Power spectral density (as measured)")
+    ax.title.set_fontsize(9)
+    plot_material_ratio(heights, prefix, ax=fig.add_subplot(grid[1, 1]),
+                        title=f"{'R' if prefix == 'R' else fam.label}")
     return fig

@@ -195,7 +195,8 @@ def read_table(path: Path) -> TextTable:
     header_lines = lines[:start]
     names = None
     plain = [line for line in header_lines if line.strip() and not _COMMENT.match(line)]
-    candidates = plain[-1:] or [_COMMENT.sub("", line) for line in header_lines[-1:]]
+    candidates = plain[-1:] or [_COMMENT.sub("", line) for line in header_lines[-1:]
+                                if not _KEY_VALUE.match(_COMMENT.sub("", line).strip())]
     for line in candidates:
         fields = _split(line) if width > 1 else [line.strip()]
         if len(fields) == width and all(_value(f, False) is None for f in fields):

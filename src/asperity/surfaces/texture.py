@@ -1,0 +1,109 @@
+"""Surface texture of a measured profile or topography, as the standards group the parameters.
+
+:func:`evaluate_texture` runs the whole chain for ``asperity surface stats`` and a surface
+case's report: for a profile the P, W and R profiles (:mod:`.profiles`) with their ISO 4287
+parameters and the material-ratio parameters of R (:mod:`.material_ratio`); for a topography
+the scale-limited surface (:mod:`.areal`) with the ISO 25178-2 groups. Every parameter has its
+SI unit in :data:`UNITS`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..errors import InputError
+from .areal import AreaFamilies, areal_families, areal_parameters
+from .material_ratio import rk_parameters, section_height_difference
+from .profiles import ProfileFamilies, profile_families, profile_parameters
+from .topography import Profile, Topography
+
+__all__ = ["TextureEvaluation", "UNITS", "evaluate_texture", "unit_of"]
+
+_LENGTH_SUFFIXES = ("a", "q", "p", "v", "z", "t", "k", "pk", "vk", "dc", "al")
+#: Parameters that are not lengths: their SI unit ("1" for ratios and moments).
+UNITS = {"Mr1": "1", "Mr2": "1", "Smr1": "1", "Smr2": "1", "Sdr": "1", "Str": "1",
+         "Std": "deg", "Vmp": "m3/m2", "Vmc": "m3/m2", "Vvc": "m3/m2", "Vvv": "m3/m2"}
+
+
+def unit_of(name: str) -> str:
+    """SI unit of a parameter: ``"m"``, ``"1"``, ``"deg"`` or ``"m3/m2"``."""
+    if name in UNITS:
+        return UNITS[name]
+    return "m" if name[1:] in _LENGTH_SUFFIXES else "1"
+
+
+@dataclass(frozen=True)
+class TextureEvaluation:
+    """Parameters of a surface in the standards' groups, with the filters that made them.
+
+    Attributes
+    ----------
+    surface : Profile or Topography
+        As measured (read).
+    families : ProfileFamilies or AreaFamilies
+        The filtered profiles or scale-limited surfaces.
+    groups : dict of str to dict of str to float
+        Group key -> parameter name -> value in SI (:func:`unit_of`).
+    titles : dict of str to str
+        Group key -> heading naming the standard and the filters.
+    notes, warnings : tuple of str
+    """
+
+    surface: Profile | Topography
+    families: ProfileFamilies | AreaFamilies
+    groups: dict
+    titles: dict
+    notes: tuple[str, ...]
+    warnings: tuple[str, ...]
+
+
+def _profile(profile: Profile, cutoff, form_degree) -> TextureEvaluation:
+    fam = profile_families(profile, cutoff, form_degree=form_degree)
+    params = profile_parameters(fam)
+    r = fam.evaluated("R")
+    params["Rk"] = {"Rdc": section_height_difference(r), **rk_parameters(r, "R")}
+    lc = f"lambda_c = {fam.cutoff * 1e3:.4g} mm"
+    ls = "no lambda_s" if fam.lambda_s is None else f"lambda_s = {fam.lambda_s * 1e6:.4g} um"
+    ln = f"ln = {fam.evaluation_length * 1e3:.4g} mm"
+    titles = {
+        "P": f"Primary profile P (ISO 4287; form removed, {ls}; over {ln})",
+        "W": f"Waviness profile W (ISO 4287; Gaussian mean line, {lc}; over {ln})",
+        "R": f"Roughness profile R (ISO 4287; {lc}, {ls}; mean of {fam.sampling_lengths} "
+             f"sampling lengths, Rt over {ln})",
+        "Rk": "Material ratio of R (ISO 4287 Rdc = C(20 %) - C(80 %); ISO 13565-2 Rk family)",
+    }
+    return TextureEvaluation(profile, fam, params, titles, fam.notes, fam.warnings)
+
+
+def _area(topography: Topography, cutoff, form_degree) -> TextureEvaluation:
+    fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
+    params = areal_parameters(fam)
+    what = f"{fam.label} surface"
+    titles = {
+        "height": f"Height (ISO 25178-2), {what}",
+        "hybrid": f"Hybrid (ISO 25178-2), {what}",
+        "spatial": f"Spatial (ISO 25178-2; Sal, Str at s = 0.2; Std = lay direction), {what}",
+        "functional": f"Functional, material ratio (ISO 25178-2 Sk family; Sdc = C(20 %) - "
+                      f"C(80 %)), {what}",
+        "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
+    }
+    return TextureEvaluation(topography, fam, params, titles, fam.notes, ())
+
+
+def evaluate_texture(surface, cutoff=None, *, form_degree=1) -> TextureEvaluation:
+    """Filter a profile or topography as ISO does and compute its grouped parameters.
+
+    Parameters
+    ----------
+    surface : Profile or Topography
+    cutoff : float, optional
+        lambda_c of a profile (default: ISO 4288's choice) or the L-filter nesting index of a
+        topography (default: none, the S-F surface).
+    form_degree : int
+        Degree of the least-squares form removed (1: line or plane).
+    """
+    if isinstance(surface, Profile):
+        return _profile(surface, cutoff, form_degree)
+    if isinstance(surface, Topography):
+        return _area(surface, cutoff, form_degree)
+    raise InputError("surface", "a Profile or a Topography", type(surface).__name__)
