@@ -6,6 +6,8 @@ of docs/references.md evaluated here by quadrature.
 """
 
 import math
+import re
+from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
@@ -231,3 +233,26 @@ def test_newtonian_barus_line_contact_checks_moes_only():
     assert rows[2].reference == pytest.approx(math.sqrt(527e3 * e_prime / (2 * math.pi * radius)),
                                               rel=1e-9)
     assert all("docs/references.md#" in r.source for r in rows)
+
+
+def _slug(heading):
+    """GitHub's anchor of a Markdown heading: lower case, punctuation dropped, spaces -> '-'."""
+    text = re.sub(r"[^\w\- ]", "", heading.strip().lower())
+    return text.replace(" ", "-")
+
+
+def test_every_cited_anchor_is_a_section_of_docs_references():
+    root = Path(__file__).resolve().parents[1]
+    docs = (root / "docs" / "references.md").read_text(encoding="utf-8")
+    anchors = {_slug(line.lstrip("#")) for line in docs.splitlines() if line.startswith("#")}
+    cited = set()
+    for path in (root / "src" / "asperity").rglob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        cited |= set(re.findall(r"docs/references\.md#([a-z0-9-]+)", text))
+        cited |= set(re.findall(r"cite\(\s*\"[^\"]*\",\s*\"([a-z0-9-]+)\"\)", text))
+    assert len(cited) >= 10
+    assert cited <= anchors, sorted(cited - anchors)
+    from asperity.validation import CHECKS
+
+    assert all("docs/references.md#" in c.source for c in CHECKS), [
+        c.name for c in CHECKS if "docs/references.md#" not in c.source]

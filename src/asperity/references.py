@@ -25,14 +25,14 @@ from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
 
-__all__ = ["DOCS", "ehl_steady_comparisons", "film_formulas", "lubricant_laws",
+__all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formulas", "lubricant_laws",
            "tangential_comparisons"]
 
 DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
 
 
-def _cite(text: str, anchor: str) -> str:
+def cite(text: str, anchor: str) -> str:
     """``"<text>; docs/references.md#<anchor>"``: the source and where the project states it."""
     return f"{text}; {DOCS}#{anchor}"
 
@@ -77,30 +77,30 @@ def _hertz_rows(mu, h, res, body1, body2, applied, free, identical, dx, cell_are
     if force == 0.0 and free:
         gs = ref.gross_slip_moment_ellipse(mu, h.p_max, h.a, h.b)
         rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
-                               _cite("(pi/4) mu p0 a^2 b E(1 - b^2/a^2), 3 pi mu P a / 16 for a "
+                               cite("(pi/4) mu p0 a^2 b E(1 - b^2/a^2), 3 pi mu P a / 16 for a "
                                      "circle", "gross-slip-loads"),
                                "N m", max(0.005, 0.5 * (dx / size) ** 2)))
     if circular and force == 0.0 and free and not res.gross_slip:
         c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
         twist = ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
         tol = max(0.01, 2.0 * (dx / h.a) ** 2)
-        src = _cite("Lubkin (1951), Johnson eq. 7.50", "lubkin-torsion")
+        src = cite("Lubkin (1951), Johnson eq. 7.50", "lubkin-torsion")
         rows.append(Comparison("rotation (relative)", abs(res.rotation), twist, src, "rad", tol))
         if identical:
             rows.append(Comparison("rotation per body", 0.5 * abs(res.rotation),
                                    ref.lubkin_twist(c, h.a, mu, h.p_max, body1),
-                                   _cite("Lubkin (1951), one body vs the interface",
+                                   cite("Lubkin (1951), one body vs the interface",
                                          "lubkin-torsion"), "rad", tol))
         rows.append(Comparison("stick radius", stick, c, src, "m", max(0.01, 1.5 * dx / c)))
     if circular and moment == 0.0 and force > 0.0 and not res.gross_slip:
         cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
         tol = max(0.01, 2.0 * (dx / h.a) ** 2)
-        src = _cite("Cattaneo-Mindlin, Johnson eq. 7.42", "cattaneo-mindlin")
+        src = cite("Cattaneo-Mindlin, Johnson eq. 7.42", "cattaneo-mindlin")
         rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift), cm.shift, src,
                                "m", tol))
         if identical:
             rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift),
-                                   0.5 * cm.shift, _cite("Cattaneo-Mindlin, one of two identical "
+                                   0.5 * cm.shift, cite("Cattaneo-Mindlin, one of two identical "
                                                          "bodies vs the interface",
                                                          "cattaneo-mindlin"), "m", tol))
         if cm.stick_radius > 2 * dx:
@@ -111,13 +111,13 @@ def _hertz_rows(mu, h, res, body1, body2, applied, free, identical, dx, cell_are
         if force < mu * h.load:
             cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
             rows.append(Comparison("rigid shift (relative)", math.hypot(*res.shift), cm.shift,
-                                   _cite("Cattaneo-Mindlin, force alone", "cattaneo-mindlin"),
+                                   cite("Cattaneo-Mindlin, force alone", "cattaneo-mindlin"),
                                    "m", None, note))
         if abs(moment) < ref.gross_slip_moment_hertz(mu, h.load, h.a):
             c = ref.lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
             rows.append(Comparison("rotation (relative)", abs(res.rotation),
                                    ref.lubkin_twist(c, h.a, mu, h.p_max, body1, body2),
-                                   _cite("Lubkin, moment alone", "lubkin-torsion"), "rad", None,
+                                   cite("Lubkin, moment alone", "lubkin-torsion"), "rad", None,
                                    note))
     return rows
 
@@ -133,24 +133,24 @@ def _uniform_rows(spec, mu, res, body1, body2, applied, free, dx):
                                        else math.pi * r.radius**2) for r in regions)
         exact = all(r.shape == "rectangle" for r in regions)
         rows.append(Comparison("gross-slip force (rotation fixed)", res.load_capacity * force,
-                               total, _cite("mu sum p_i A_i", "gross-slip-loads"), "N",
+                               total, cite("mu sum p_i A_i", "gross-slip-loads"), "N",
                                1e-9 if exact else max(0.01, 4 * dx / regions[0].radius)))
     if force == 0.0 and free and all(r.shape == "rectangle" for r in regions):
         gs, _ = ref.gross_slip_moment_rectangles(*_rectangles(spec, mu))
         rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
-                               _cite("min over c of sum mu p_i int |r - c| dA (exact "
+                               cite("min over c of sum mu p_i int |r - c| dA (exact "
                                      "rectangles)", "gross-slip-loads"), "N m", 0.01))
     if force == 0.0 and free and len(regions) == 1 and regions[0].shape == "circle":
         r0, a = regions[0], regions[0].radius
         rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment),
                                ref.gross_slip_moment_uniform(mu, r0.pressure, a),
-                               _cite("(2 pi / 3) mu p a^3", "uniform-pressure-torsion"), "N m",
+                               cite("(2 pi / 3) mu p a^3", "uniform-pressure-torsion"), "N m",
                                max(0.01, 2 * dx / a)))
         if not res.gross_slip:
             c = ref.uniform_torsion_stick_radius(abs(moment), a, mu, r0.pressure)
             rows.append(Comparison("rotation (relative)", abs(res.rotation),
                                    ref.uniform_torsion_twist(c, a, mu, r0.pressure, body1, body2),
-                                   _cite("uniform-pressure torsion, Johnson sec. 7.3",
+                                   cite("uniform-pressure torsion, Johnson sec. 7.3",
                                          "uniform-pressure-torsion"), "rad",
                                    max(0.02, 3 * dx / a)))
     return rows
@@ -338,10 +338,10 @@ def ehl_steady_comparisons(problem, result, reference=None) -> list[Comparison]:
         quantity, attribute, source, anchor = _FILM_ROWS[key]
         checked = own_model and key in _CHECKED_FITS
         rows.append(Comparison(quantity, getattr(result, attribute), film,
-                               _cite(source, anchor), "m", 0.05 if checked else None,
+                               cite(source, anchor), "m", 0.05 if checked else None,
                                own_note if own_model else other_note))
     rows.append(Comparison(
         "maximum pressure", result.max_pressure, problem.hertz.p_max,
-        _cite("dry Hertz", "hertz"), "Pa",
+        cite("dry Hertz", "hertz"), "Pa",
         note="EHL pressure (inlet build-up, exit spike or shoulder) vs the dry contact"))
     return rows

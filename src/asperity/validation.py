@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .references import cite
 from .results import Comparison
 
 __all__ = ["CHECKS", "Check", "check", "run_checks"]
@@ -59,41 +60,43 @@ def run_checks(select: str | None = None, slow: bool = False) -> list[tuple[str,
 
 
 # ---------------------------------------------------------------------------- elastic kernels
-@check("kernel-square-centre", "REFERENCE.md, Elastic half-space")
+@check("kernel-square-centre", cite("Love's rectangle, 4 ln(1 + sqrt 2)", "elastic-half-space"))
 def _kernel_square():
     from .elastic import love_integral
 
     s = 1.0e-3
     return [Comparison("I(0,0) of a square / side", float(love_integral(0.0, 0.0, s, s)) / s,
-                       4.0 * np.log(1.0 + np.sqrt(2.0)), "4 ln(1 + sqrt 2)", "1", 1e-6)]
+                       4.0 * np.log(1.0 + np.sqrt(2.0)),
+                       cite("4 ln(1 + sqrt 2)", "elastic-half-space"), "1", 1e-6)]
 
 
 # ------------------------------------------------------------------------------------ Hertz
-@check("hertz-spheres-1in", "REFERENCE.md, Hertz (Seireg ch. 3 example 1)")
+@check("hertz-spheres-1in", cite("Hertz, Seireg ch. 3 example 1", "hertz"))
 def _hertz_spheres():
     from .contact import hertz_point
     from .materials import Material
 
     steel = Material(30e6 * PSI, 0.3, "steel")
     h = hertz_point(2160 * LBF, 0.5 * IN, 0.5 * IN, steel, steel)
-    return [Comparison("contact radius a", h.a / IN, 0.036628, "REFERENCE.md", "in", 2e-5)]
+    return [Comparison("contact radius a", h.a / IN, 0.036628, cite("Seireg ch. 3", "hertz"), "in",
+                       2e-5)]
 
 
-@check("hertz-gear-ellipse", "REFERENCE.md, Hertz (mixed-EHL seed Table 1)")
+@check("hertz-gear-ellipse", cite("Hertz, Holmes et al. (2005) Table 1 gear case", "hertz"))
 def _hertz_gear():
     from .contact import hertz_point
     from .materials import Material
 
     m = Material(227e9, 0.0, "E'=227 GPa")  # nu = 0 and E = E' gives E* = E'/2
     h = hertz_point(962.0, 0.0191, 0.151, m, m)
-    src = "REFERENCE.md"
+    src = cite("exact elliptical Hertz", "hertz")
     return [Comparison("semi-axis a", h.a * 1e3, 0.3364, src, "mm", 2e-4),
             Comparison("semi-axis b", h.b * 1e3, 1.3045, src, "mm", 1e-4),
             Comparison("maximum pressure", h.p_max / 1e9, 1.0466, src, "GPa", 1e-4)]
 
 
 # ------------------------------------------------------------------------- normal contact
-@check("normal-hertz-ellipse", "numerical vs exact Hertz (gear-case ellipse, ~50 cells on 2a)")
+@check("normal-hertz-ellipse", cite("numerical vs exact Hertz, gear-case ellipse", "hertz"))
 def _normal_hertz_ellipse():
     from .contact import hertz_point, solve_normal
     from .materials import Material
@@ -105,14 +108,14 @@ def _normal_hertz_ellipse():
     y = (np.arange(ny) + 0.5 - ny / 2) * (3.0 * h.b / ny)
     X, Y = np.meshgrid(x, y, indexing="ij")
     res = solve_normal(X**2 / 0.0382 + Y**2 / 0.302, x, y, m, m, load=962.0)
-    src = "Hertz (exact elliptical)"
+    src = cite("Hertz (exact elliptical)", "hertz")
     return [Comparison("maximum pressure", res.pressure.max(), h.p_max, src, "Pa", 0.01),
             Comparison("approach", res.approach, h.approach, src, "m", 0.01),
             Comparison("contact area", res.contact_area, h.area, src, "m^2", 0.02)]
 
 
 # ------------------------------------------------------------------------ rough surfaces
-@check("surface-sine-parameters", "REFERENCE.md, Roughness (sine: Ra 2A/pi, Rq A/sqrt 2, Rku 1.5)")
+@check("surface-sine-parameters", cite("sine: Ra 2A/pi, Rq A/sqrt 2", "profile-parameters"))
 def _sine_parameters():
     from .surfaces import Profile, cell_centres, roughness_parameters
 
@@ -122,7 +125,7 @@ def _sine_parameters():
     # Two harmonics z = A cos t + B cos 2t: <z^3> = 3 A^2 B / 4, <z^2> = (A^2 + B^2) / 2.
     t = 2 * np.pi * x / wavelength
     two = roughness_parameters(Profile(x, np.cos(t) + 0.5 * np.cos(2 * t), True))
-    src = "closed form"
+    src = cite("closed form", "profile-parameters")
     return [Comparison("Ra of a sine / A", sine["Ra"] / amplitude, 2 / np.pi, src, "1", 1e-4),
             Comparison("Rq of a sine / A", sine["Rq"] / amplitude, 1 / np.sqrt(2), src, "1",
                        1e-9),
@@ -131,27 +134,28 @@ def _sine_parameters():
                        1e-9)]
 
 
-@check("turning-kinematic", "Seireg eq. (4.1); parabolic feed marks (Rsk 2 sqrt 5 / 7, Rku 15/7)")
+@check("turning-kinematic", cite("Seireg eq. (4.1), parabolic feed marks", "turning"))
 def _turning_kinematic():
     from .surfaces import roughness_parameters, turned_profile
 
     feed, radius = 0.02e-3, 0.8e-3  # f/r small: circle and parabola differ by ~(f/r)^2
     p = roughness_parameters(turned_profile(feed, radius, 20 * feed, feed / 1001))
     book = roughness_parameters(turned_profile(0.127e-3, 0.794e-3, 2.54e-3, 0.127e-3 / 201))
-    src = "parabolic feed marks"
+    src = cite("parabolic feed marks", "turning")
     return [Comparison("Rt / (f^2 / 8 r)", p["Rt"] / (feed**2 / (8 * radius)), 1.0,
-                       "Seireg eq. (4.1)", "1", 1e-3),
+                       cite("Seireg eq. (4.1)", "turning"), "1", 1e-3),
             Comparison("Ra / (f^2 / (18 sqrt 3 r))", p["Ra"] / (feed**2 / (18 * np.sqrt(3)
                                                                           * radius)), 1.0, src,
                        "1", 1e-3),
             Comparison("Rsk", p["Rsk"], 2 * np.sqrt(5) / 7, src, "1", 1e-3),
             Comparison("Rku", p["Rku"], 15 / 7, src, "1", 1e-3),
             Comparison("Rt, f = 0.127 mm, r = 0.794 mm", book["Rt"] * 1e6,
-                       0.127e-3**2 / (8 * 0.794e-3) * 1e6, "Seireg eq. (4.1), Fig. 4.2 tool",
+                       0.127e-3**2 / (8 * 0.794e-3) * 1e6,
+                       cite("Seireg eq. (4.1), Fig. 4.2 tool", "turning"),
                        "um", 0.01)]
 
 
-@check("gaussian-filter-50pct", "ISO 16610-21: 50 % transmission at the cut-off")
+@check("gaussian-filter-50pct", cite("ISO 16610-21, 50 % at the cut-off", "gaussian-filter"))
 def _gaussian_filter_half():
     from .surfaces import gaussian_filter, gaussian_transmission
 
@@ -160,7 +164,8 @@ def _gaussian_filter_half():
     z = np.sin(2 * np.pi * x / cutoff)
     rows = [Comparison("transmission formula at lambda_c", float(gaussian_transmission(cutoff,
                                                                                        cutoff)),
-                       0.5, "exp(-pi alpha^2) = 1/2", "1", 1e-12)]
+                       0.5, cite("exp(-pi alpha^2) = 1/2", "gaussian-filter"),
+                       "1", 1e-12)]
     for periodic in (True, False):
         mean_line = gaussian_filter(z, x, cutoff, periodic=periodic)
         # Amplitude of the mean line away from the ends (one cut-off each side), by least squares.
@@ -169,12 +174,13 @@ def _gaussian_filter_half():
         coef = np.linalg.lstsq(basis[inner], mean_line[inner], rcond=None)[0]
         rows.append(Comparison(f"mean-line amplitude of a lambda_c sine, "
                                f"{'periodic' if periodic else 'end-corrected'}",
-                               float(np.hypot(*coef)), 0.5, "ISO 16610-21", "1",
+                               float(np.hypot(*coef)), 0.5, cite("ISO 16610-21", "gaussian-filter"),
+                               "1",
                                1e-9 if periodic else 1e-6))
     return rows
 
 
-@check("ground-profile-gaussian", "Gaussian heights: Rq/Ra = sqrt(pi/2), Rku = 3")
+@check("ground-profile-gaussian", cite("Gaussian heights: Rq/Ra, Rku", "profile-parameters"))
 def _ground_profile_gaussian():
     from .surfaces import roughness_parameters, transverse_ground_profile
 
@@ -182,14 +188,14 @@ def _ground_profile_gaussian():
     # the checks are the scale-free ratios, averaged over eight seeds
     params = [roughness_parameters(transverse_ground_profile(5e-3, 0.5e-6, 0.3e-6, seed=s))
               for s in range(8)]
-    src = "Gaussian height distribution"
+    src = cite("Gaussian height distribution", "profile-parameters")
     return [Comparison("Rq / Ra", float(np.mean([d["Rq"] / d["Ra"] for d in params])),
                        float(np.sqrt(np.pi / 2)), src, "1", 0.01),
             Comparison("Rku", float(np.mean([d["Rku"] for d in params])), 3.0, src, "1", 0.05)]
 
 
 # ------------------------------------------------------------------------------ steady EHL
-@check("ehl-moes-line", "Moes (1992) central film, Newtonian Barus line contact, M = 10, L = 10")
+@check("ehl-moes-line", cite("Moes (1992) central film, M = 10, L = 10", "moes-line"))
 def _ehl_moes_line():
     from .ehl import LineContact, Lubricant, moes_line, solve_steady
     from .materials import Material
@@ -205,12 +211,13 @@ def _ehl_moes_line():
                        domain=((-4.0 * prob.a, 1.5 * prob.a), (0.0, 0.0)))
     ref = moes_line(load, radius, u, eta0, alpha, e_prime).central
     return [Comparison("central film (257 nodes)", res.central_film, ref,
-                       "Moes (1992) via Venner & Lubrecht (2000)", "m", 0.05),
+                       cite("Moes (1992) via Venner & Lubrecht (2000)", "moes-line"), "m",
+                       0.05),
             Comparison("solver converged (1 = yes)", float(res.converged), 1.0,
                        "a film from a converged solve only", "", 0.0)]
 
 
-@check("ehl-holmes-smooth-point", "Holmes, Evans & Snidle (2005) Fig. 2, smooth gear-disk contact",
+@check("ehl-holmes-smooth-point", cite("Holmes et al. (2005) Fig. 2", "holmes-gear-case"),
        slow=True)
 def _ehl_holmes_point():
     from .cases import load_case
@@ -236,7 +243,7 @@ def _tangential_hertz(n):
     return steel, h, x, p * h.load / (p.sum() * (x[1] - x[0]) ** 2)
 
 
-@check("tangential-cattaneo-mindlin", "REFERENCE.md, Cattaneo-Mindlin (Q = mu P / 2, 64 x 64)")
+@check("tangential-cattaneo-mindlin", cite("Cattaneo-Mindlin, Q = mu P / 2", "cattaneo-mindlin"))
 def _tangential_cattaneo():
     from .contact import reference as ref
     from .contact import solve_tangential
@@ -246,12 +253,12 @@ def _tangential_cattaneo():
     res = solve_tangential(p, x, x, mu, steel, steel, force=(force, 0.0))
     cm = ref.cattaneo_mindlin(h.load, force, mu, h.a, steel, steel)
     stick = np.sqrt(res.stick.sum() * (x[1] - x[0]) ** 2 / np.pi)
-    src = "Cattaneo (1938), Mindlin (1949)"
+    src = cite("Cattaneo (1938), Mindlin (1949)", "cattaneo-mindlin")
     return [Comparison("relative shift", res.shift[0], cm.shift, src, "m", 0.01),
             Comparison("stick radius", stick, cm.stick_radius, src, "m", 0.03)]
 
 
-@check("tangential-lubkin", "REFERENCE.md, Lubkin torsion (Seireg Ex. 3.4.4-1, 64 x 64)")
+@check("tangential-lubkin", cite("Lubkin torsion, Seireg Ex. 3.4.4-1", "lubkin-torsion"))
 def _tangential_lubkin():
     from .contact import reference as ref
     from .contact import solve_tangential
@@ -260,15 +267,17 @@ def _tangential_lubkin():
     mu, moment = 0.1, 2.45 * IN * LBF
     res = solve_tangential(p, x, x, mu, steel, steel, moment=moment)
     c = ref.lubkin_stick_radius(moment, h.a, mu, h.p_max)
-    src = "Lubkin (1951), Johnson eq. 7.50"
+    src = cite("Lubkin (1951), Johnson eq. 7.50", "lubkin-torsion")
     return [Comparison("twist per body", 0.5 * res.rotation,
                        ref.lubkin_twist(c, h.a, mu, h.p_max, steel), src, "rad", 0.01),
             Comparison("gross-slip moment", res.load_capacity * moment,
-                       ref.gross_slip_moment_hertz(mu, h.load, h.a), "3 pi mu P a / 16",
+                       ref.gross_slip_moment_hertz(mu, h.load, h.a),
+                       cite("3 pi mu P a / 16", "lubkin-torsion"),
                        "N m", 0.005)]
 
 
-@check("tangential-uniform-torsion", "REFERENCE.md, uniform-pressure torsion (M = 0.6 M_gs)")
+@check("tangential-uniform-torsion", cite("uniform pressure, M = 0.6 M_gs",
+                                          "uniform-pressure-torsion"))
 def _tangential_uniform_torsion():
     from .contact import reference as ref
     from .contact import solve_tangential
@@ -284,16 +293,17 @@ def _tangential_uniform_torsion():
     moment = 0.6 * ref.gross_slip_moment_uniform(mu, p0, a_eq)
     res = solve_tangential(p, x, x, mu, steel, steel, moment=moment)
     c = ref.uniform_torsion_stick_radius(moment, a_eq, mu, p0)
-    src = "Johnson sec. 7.3 (uniform pressure)"
+    src = cite("Johnson sec. 7.3 (uniform pressure)", "uniform-pressure-torsion")
     return [Comparison("relative twist", res.rotation,
                        ref.uniform_torsion_twist(c, a_eq, mu, p0, steel, steel), src, "rad",
                        0.03),
             Comparison("gross-slip moment", res.load_capacity * moment,
-                       ref.gross_slip_moment_uniform(mu, p0, a_eq), "(2 pi / 3) mu p a^3",
+                       ref.gross_slip_moment_uniform(mu, p0, a_eq),
+                       cite("(2 pi / 3) mu p a^3", "uniform-pressure-torsion"),
                        "N m", 0.01)]
 
 
-@check("tangential-lp-vs-fft", "Seireg's modified LP vs Lubkin and the FFT solver, 20 x 20")
+@check("tangential-lp-vs-fft", cite("Seireg's LP vs Lubkin and the FFT solver", "lubkin-torsion"))
 def _tangential_lp_vs_fft():
     from .contact import reference as ref
     from .contact import solve_tangential
@@ -306,7 +316,7 @@ def _tangential_lp_vs_fft():
     lubkin = ref.lubkin_twist(c, h.a, 0.1, h.p_max, steel)
     src = "FFT solver, same grid"
     return [Comparison("twist per body (LP, 20 x 20 cells)", 0.5 * lp.rotation, lubkin,
-                       "Lubkin (1951), Johnson eq. 7.50", "rad", 0.02),
+                       cite("Lubkin (1951), Johnson eq. 7.50", "lubkin-torsion"), "rad", 0.02),
             Comparison("rotation (LP)", lp.rotation, fft.rotation, src, "rad", 0.01),
             Comparison("stuck cells (LP)", float(lp.stick.sum()), float(fft.stick.sum()), src,
                        "1", 0.05)]
