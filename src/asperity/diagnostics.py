@@ -268,10 +268,11 @@ def above_hardness(pressure, materials: Iterable) -> list[str]:
         if hardness is None or p_max <= hardness:
             continue
         share = np.count_nonzero(p > hardness) / in_contact
-        lines.append(f"pressure: the maximum {p_max / 1e9:.4g} GPa exceeds the hardness "
-                     f"{hardness / 1e9:.4g} GPa of {label} ({material.name}) on {_pct(share)} "
-                     "of the contact area; the elastic answer is not physical there (the body "
-                     "yields): lower the load, or treat the result as an elastic bound")
+        lines.append(f"pressure: the maximum {p_max / 1e9:.4g} GPa exceeds the hardness of "
+                     f"{label} ({material.name}) on {_pct(share)} of the contact area (limit: "
+                     f"the hardness, {hardness / 1e9:.4g} GPa); the elastic answer is not "
+                     "physical there (the body yields): lower the load, or treat the result as "
+                     "an elastic bound")
     return lines
 
 

@@ -36,6 +36,8 @@ EXIT_BAD_INPUT = 2
 EXIT_NOT_CONVERGED = 3
 #: ``run --strict`` with warnings exits with this code too (the answer is not to be trusted).
 EXIT_WARNINGS = 3
+#: An unexpected exception (a bug): one line instead of a traceback.
+EXIT_INTERNAL = 1
 
 
 def fail(message: str, code: int = EXIT_BAD_INPUT):
@@ -46,7 +48,8 @@ def fail(message: str, code: int = EXIT_BAD_INPUT):
 
 def guarded(fn):
     """Run ``fn``; turn bad input, an unreadable or unwritable file, or exhausted memory into
-    one line and exit code 2."""
+    one line and exit code 2, and any other exception (a bug) into one line and exit code 1
+    (the traceback with ``ASPERITY_DEBUG=1``)."""
     import functools
 
     @functools.wraps(fn)
@@ -60,6 +63,14 @@ def guarded(fn):
             fail(f"{name}: {exc.strerror or exc}")
         except MemoryError:
             fail("memory: the case needs more memory than this machine has; use fewer cells")
+        except (typer.Exit, typer.Abort):
+            raise
+        except Exception as exc:  # a bug: still one line, unless asked for the traceback
+            if os.environ.get("ASPERITY_DEBUG"):
+                raise
+            detail = " ".join(str(exc).split())
+            fail(f"internal: {type(exc).__name__}: {detail} (a bug in asperity: please report "
+                 "it with the case file; ASPERITY_DEBUG=1 shows the traceback)", EXIT_INTERNAL)
 
     return wrapper
 
@@ -139,7 +150,9 @@ def run(
     handlers = {sig: signal.signal(sig, _raise_interrupted)
                 for sig in (signal.SIGINT, signal.SIGTERM)}
     try:
-        with progress_bar(console, disable=quiet) as progress:
+        with progress_bar(console, disable=quiet) as progress, warnings.catch_warnings():
+            warnings.showwarning = _warning_line  # numpy's, also when not started by main()
+
             def tracked(done, total=None, description=None):
                 where["description"] = description or f"step {done}"
                 progress(done, total, description)
