@@ -279,7 +279,8 @@ def test_cli_run_writes_the_report(tmp_path):
     result = CliRunner().invoke(app, ["run", "holmes-profiles", "--out", str(out), "--quiet"])
     assert result.exit_code == 0, result.output
     html = (out / "report.html").read_text()
-    assert html.count("data:image/png;base64,") == 4  # profiles + three spectra
+    # profiles, three spectra, and the ISO texture figure of the first profile
+    assert html.count("data:image/png;base64,") == 5
     assert "Ra of profile C" in html and "class=pass" in html
     summary = json.loads((out / "summary.json").read_text())
     assert summary["ra_c_m"] == pytest.approx(0.31e-6)
@@ -312,3 +313,13 @@ def test_unknown_builtin_data_and_bad_unit_are_named():
         load_case(text.replace("builtin:ground-profile.csv", "builtin:nope.csv"))
     with pytest.raises(InputError, match="surface.unit: expected a length unit"):
         load_case(text.replace('path = "builtin', 'unit = "parsec per fortnight"\npath = "builtin'))
+
+
+def test_surface_case_reports_the_iso_texture(outcomes):
+    out = outcomes["measured-profile"]
+    sm = out.summary
+    assert sm["iso_cutoff_m"] == pytest.approx(0.8e-3) and sm["iso_sampling_lengths"] == 5
+    assert 0 < sm["iso_mr1"] < sm["iso_mr2"] < 1 and sm["iso_rk_m"] > 0
+    assert sm["iso_rz_m"] <= sm["iso_rt_m"]
+    assert "texture" in out.figures
+    assert any(note.startswith("File read as text") for note in out.notes)

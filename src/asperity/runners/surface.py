@@ -21,6 +21,7 @@ from .. import surfaces as s
 from ..cases.surface import MAX_POINTS, SurfaceSpec
 from ..errors import InputError
 from ..results import Comparison, Outcome, variable
+from ..surfaces.io import read_measured
 from ..surfaces.machining import MICROINCH
 
 __all__ = ["run"]
@@ -80,8 +81,9 @@ def _prefixed(exc: InputError) -> InputError:
     return exc
 
 
-def _generated(spec) -> s.Profile | s.Topography:
-    """The gaussian, self-affine, ground, built-in or file surface of ``spec``."""
+def _generated(spec):
+    """The gaussian, self-affine, ground or built-in surface of ``spec``, or the
+    :class:`~asperity.surfaces.io.Reading` of its file."""
     length, h = spec.profile_length(), spec.profile_spacing()
     seed = spec.seed or 0
     if spec.kind == "gaussian":
@@ -102,14 +104,15 @@ def _generated(spec) -> s.Profile | s.Topography:
         ell = 15e-6 if spec.correlation_length is None else spec.correlation_length
         return s.transverse_ground_profile(length, h, spec.ra, ell, run_in=spec.run_in or 0.0,
                                            seed=seed)
-    surface = s.read_surface(spec.path, spec.spacing)
+    reading = read_measured(spec.path, spec.spacing, **spec.read_options())
+    surface = reading.surface
     if surface.z.size > MAX_POINTS:
         raise InputError("surface.path", f"a surface of at most {MAX_POINTS} points",
                          surface.z.shape)
     if np.abs(surface.z).max() > 1.0:
-        raise InputError("surface.path", "heights in metres (|z| <= 1 m)",
-                         float(np.abs(surface.z).max()))
-    return surface
+        raise InputError("surface.path", "heights in metres (|z| <= 1 m); give the file's unit "
+                         "(unit, z_unit)", float(np.abs(surface.z).max()))
+    return reading
 
 
 def _surfaces(spec, progress) -> tuple[dict, list]:
@@ -143,6 +146,37 @@ def _surfaces(spec, progress) -> tuple[dict, list]:
     except InputError as exc:
         raise _prefixed(exc) from None
     return made, turned
+
+
+def _texture(case, surface, summary, notes, warnings, figures):
+    """The ISO texture evaluation of ``surface`` as ``asperity surface stats`` shows it:
+    summary keys ``iso_<name>`` (unit-suffixed), its notes, and the ``texture`` figure."""
+    from ..plotting.surfaces import plot_texture
+    from ..surfaces.texture import evaluate_texture, unit_of
+
+    try:
+        texture = evaluate_texture(surface, case.evaluation.cutoff)
+    except InputError as exc:
+        warnings.append(f"ISO texture parameters: not evaluated ({exc}); give "
+                        "evaluation.cutoff that the surface holds")
+        return
+    fam = texture.families
+    if isinstance(surface, s.Profile):
+        summary.update(iso_cutoff_m=fam.cutoff, iso_sampling_lengths=fam.sampling_lengths)
+        if fam.lambda_s is not None:
+            summary["iso_lambda_s_m"] = fam.lambda_s
+    else:
+        summary["iso_surface"] = fam.label
+    for values in texture.groups.values():
+        for name, value in values.items():
+            suffix = {"m": "_m", "m3/m2": "_m3_per_m2", "deg": "_deg"}.get(unit_of(name), "")
+            summary[f"iso_{name.lower()}{suffix}"] = value
+    notes.extend(f"ISO texture: {note}" for note in texture.notes)
+    warnings.extend(texture.warnings)
+    figures["texture"] = (lambda: plot_texture(texture, title=case.title),
+                          "; ".join(texture.titles.values()) + ". Top: the profiles (or the "
+                          "scale-limited surface); bottom: the spectrum as measured and the "
+                          "material ratio curve with the ISO 13565-2 equivalent straight line.")
 
 
 def _trimmed(profile: s.Profile, margin: float) -> s.Profile:
@@ -425,6 +459,10 @@ def run(case, progress=None) -> Outcome:
     """Characterise the case's surfaces; compare with the closed forms that apply."""
     spec = case.surface
     surfaces, turned = _surfaces(spec, progress)
+    reading = None
+    if spec.kind == "file":
+        reading = surfaces[spec.labels()[0]]
+        surfaces[spec.labels()[0]] = reading.surface
     evaluated = {label: _evaluate(surf, case.evaluation) for label, surf in surfaces.items()}
     summary = _summary(spec, surfaces, evaluated)
     comparisons = _reference_ra(spec, surfaces, evaluated)
@@ -447,4 +485,10 @@ def run(case, progress=None) -> Outcome:
                      "wa/wq/wt of the waviness.")
     dataset = _dataset(case, surfaces, evaluated, along)
     figures = _figures(case, surfaces, evaluated, turned, window)
-    return Outcome(dataset, summary, figures, comparisons, notes=notes)
+    warnings = []
+    if reading is not None:
+        notes.append(f"File read as {reading.style}.")
+        notes.extend(f"Reading: {note}." for note in reading.notes)
+        warnings.extend(reading.warnings)
+    _texture(case, next(iter(surfaces.values())), summary, notes, warnings, figures)
+    return Outcome(dataset, summary, figures, comparisons, notes=notes, warnings=warnings)
