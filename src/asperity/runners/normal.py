@@ -8,6 +8,7 @@ import xarray as xr
 from .. import diagnostics
 from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal
+from ..references import cite
 from ..results import Comparison, Outcome, variable
 
 __all__ = ["run"]
@@ -65,7 +66,7 @@ def run(case, progress=None) -> Outcome:
         a_num = 0.5 * dx * res.contact[:, j].sum()
         b_num = 0.5 * dy * res.contact[i, :].sum()
         reference_line = h.pressure(x, y[j])
-        src = "Hertz (exact elliptical)"
+        src = cite("Hertz (exact elliptical)", "hertz")
         comparisons += [
             Comparison("maximum pressure", summary["max_pressure_pa"], h.p_max, src, "Pa", 0.01),
             Comparison("semi-axis a (x)", a_num, h.a, src, "m", max(0.01, dx / h.a)),
@@ -77,7 +78,7 @@ def run(case, progress=None) -> Outcome:
                        hertz_approach_m=h.approach)
     elif np.isfinite(rx):  # rough: show how far roughness takes the contact from smooth Hertz
         h = hertz_point(res.load, rx, ry, body1, body2)
-        src, note = "smooth Hertz", "rough vs smooth, not a check"
+        src, note = cite("smooth Hertz", "hertz"), "rough vs smooth, not a check"
         comparisons += [
             Comparison("maximum pressure", summary["max_pressure_pa"], h.p_max, src, "Pa",
                        note=note),
