@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from .style import hertz_outline, new_figure
 
@@ -13,17 +14,19 @@ __all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
 def plot_contact_rate(result, problem):
     """Contours of the contact count rate Q/ms over x/a, y/a with the Hertz ellipse heavy
     (Figs. 4-8)."""
-    fig, ax = new_figure()
-    X, Y = np.meshgrid(result.x / problem.a, result.y / problem.a, indexing="ij")
+    xa, ya = result.x / problem.a, result.y / problem.a
+    fig, ax = _map_figure(xa, ya)
+    X, Y = np.meshgrid(xa, ya, indexing="ij")
     q = result.contact_count_rate
-    levels = np.linspace(0.0, max(q.max(), 1e-9), 11)
+    levels = MaxNLocator(10).tick_values(0.0, max(q.max(), 1e-9))
     cs = ax.contourf(X, Y, q, levels=levels, cmap="Greys")
-    fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)")
+    fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)", shrink=0.9)
     hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a, label="Hertz contact")
     ax.set_xlabel("x / a  (entrainment ->)")
     ax.set_ylabel("y / a")
     ax.set_aspect("equal")
-    ax.legend(loc="upper left", fontsize=8, framealpha=0.8)
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
+               frameon=False)
     return fig
 
 
@@ -53,9 +56,9 @@ def plot_centre_line(result, problem, index=-1, offset=None):
                    offset)
     band = ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
     film_line, surface_line = ax2.get_lines()[:2]
-    ax.legend([ax.get_lines()[0], film_line, surface_line, band],
-              ["pressure p", "film h", "surfaces (offset)", "Hertz width"], loc="upper left",
-              fontsize=8, framealpha=0.8)
+    fig.legend([ax.get_lines()[0], film_line, surface_line, band],
+               ["pressure p", "film h", "surfaces (offset)", "Hertz width"],
+               loc="outside lower center", ncols=4, fontsize=8, frameon=False)
     ax.set_title(f"step {int(result.snapshot_steps[index])}")
     return fig
 
@@ -84,37 +87,68 @@ def plot_film_histogram(result):
     fig, ax = new_figure()
     edges = result.film_edges * 1e6
     share = result.film_counts / max(result.film_counts.sum(), 1)
-    ax.stairs(share[:-1], edges[:-1], fill=True, color="tab:gray", label="film in the bin")
+    ax.stairs(share[:-1], edges[:-1], fill=True, color="tab:gray", label="film thickness")
     ax.stairs(share[-1:], edges[-2:], fill=True, color="tab:orange",
               label=f"overflow: h >= {edges[-2]:.3g} um")
-    ax.annotate(f">= {edges[-2]:.3g} um", (0.5 * (edges[-2] + edges[-1]), share[-1]),
-                xytext=(0, 4), textcoords="offset points", ha="right", fontsize=8)
     ax.set_xlabel("film thickness h (um)")
     ax.set_ylabel("fraction of node-steps in the Hertz contact")
-    ax.legend(loc="upper right", fontsize=8)
+    ax.set_ylim(0.0, 1.15 * max(float(share.max()), 1e-12))
+    ax.legend(loc="upper left", fontsize=8)
     return fig
 
 
-def plot_flow_vectors(result, problem, stride=(4, 4)):
-    """Film contours and lubricant flow vectors at the last step, Hertz ellipse heavy
-    (Fig. 14)."""
-    fig, ax = new_figure()
-    X, Y = np.meshgrid(result.x / problem.a, result.y / problem.a, indexing="ij")
-    cs = ax.contourf(X, Y, result.film * 1e6, levels=20, cmap="viridis")
-    fig.colorbar(cs, ax=ax, label="film thickness h (um)")
-    sx, sy = stride
-    qx, qy = result.flow_x[::sx, ::sy] * 1e6, result.flow_y[::sx, ::sy] * 1e6  # mm^2/s
-    arrows = ax.quiver(X[::sx, ::sy], Y[::sx, ::sy], qx, qy, color="white")
-    reference = _round_125(float(np.max(np.hypot(qx, qy))))
+def plot_flow_vectors(result, problem, arrows=(14, 12)):
+    """Film contours and lubricant flow vectors at the last step on equal axes, the Hertz
+    ellipse heavy and an arrow scale (Fig. 14). Arrows are drawn on and around the contact
+    (within 1.3 times the ellipse), scaled so that the key's flow, about the 90th percentile
+    there, spans 0.9 arrow spacings.
+
+    Parameters
+    ----------
+    result : TransientResult
+    problem : PointContact
+    arrows : (int, int)
+        About how many arrows along x and along y.
+    """
+    xa, ya = result.x / problem.a, result.y / problem.a
+    fig, ax = _map_figure(xa, ya)
+    X, Y = np.meshgrid(xa, ya, indexing="ij")
+    h_um = result.film * 1e6
+    b_a = getattr(problem, "b", problem.a) / problem.a
+    inside = X**2 + (Y / b_a) ** 2 <= 1.0
+    top = 3.0 * float(np.median(h_um[inside])) if inside.any() else float(h_um.max())
+    levels = MaxNLocator(12).tick_values(0.0, max(top, 1e-6))
+    cs = ax.contourf(X, Y, np.clip(h_um, None, levels[-1]), levels=levels, cmap="viridis")
+    fig.colorbar(cs, ax=ax, label="film thickness h (um)", shrink=0.9)
+    sx = max(len(xa) // arrows[0], 1)
+    sy = max(len(ya) // arrows[1], 1)
+    sub = (slice(sx // 2, None, sx), slice(sy // 2, None, sy))
+    qx, qy = result.flow_x[sub] * 1e6, result.flow_y[sub] * 1e6  # mm^2/s
+    near = X[sub] ** 2 + (Y[sub] / b_a) ** 2 <= 1.3**2  # arrows on and around the contact
+    magnitude = np.hypot(qx, qy)[near]
+    reference = _round_125(float(np.percentile(magnitude, 90))) if magnitude.size else 0.0
     if reference > 0:
-        ax.quiverkey(arrows, 0.80, 1.03, reference, f"flow {reference:g} mm²/s per unit width",
-                     labelpos="W", coordinates="axes", color="k", fontproperties={"size": 8})
-    hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a, label="Hertz contact")
+        spacing = min(sx * (xa[1] - xa[0]), sy * (ya[1] - ya[0]) if len(ya) > 1 else 1.0)
+        drawn = ax.quiver(X[sub][near], Y[sub][near], qx[near], qy[near], color="white",
+                          angles="xy", scale_units="xy", scale=reference / (0.9 * spacing),
+                          width=0.006, edgecolor="k", linewidth=0.3)
+        ax.quiverkey(drawn, 0.06, 0.96, reference, f"{reference:g} mm²/s per unit width",
+                     labelpos="E", coordinates="axes", color="k", fontproperties={"size": 8})
+    hertz_outline(ax, b_a, label="Hertz contact")
     ax.set_xlabel("x / a  (entrainment ->)")
     ax.set_ylabel("y / a")
     ax.set_aspect("equal")
-    ax.legend(loc="lower left", fontsize=8, framealpha=0.8)
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
+               frameon=False)
     return fig
+
+
+def _map_figure(xa, ya):
+    """A figure for a map over x/a, y/a on equal axes, sized to the domain's shape."""
+    tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
+    height = float(np.clip(3.6 * tall, 2.4, 7.0))
+    width = float(np.clip(height / tall, 2.2, 6.0))
+    return new_figure(width + 1.8, height + 1.1)
 
 
 def _round_125(value: float) -> float:

@@ -62,8 +62,8 @@ def traction_map(result, x, y, title="Tangential traction", arrows=16):
     if np.all(np.isfinite(result.center_of_rotation)):
         ax.plot(*(result.center_of_rotation * MM), "r+", ms=10, mew=2,
                 label="centre of rotation")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncols=4, fontsize=8,
-              frameon=False)
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=4,
+               fontsize=8, frameon=False)
     ax.set(xlabel="x (mm)", ylabel="y (mm)", aspect="equal")
     ax.set_title(title, fontsize=10)
     return fig
@@ -81,8 +81,8 @@ def slip_progression(path, x, y, title="Progression of slip"):
     fig.colorbar(sm, ax=ax, label="load step")
     ax.plot([], [], "k-", lw=1.5, label="contact outline")
     ax.plot([], [], "--", color=colors[-1], lw=1.0, label="stick border at a load step")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncols=2, fontsize=8,
-              frameon=False)
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=2,
+               fontsize=8, frameon=False)
     ax.set(xlabel="x (mm)", ylabel="y (mm)", title=title, aspect="equal")
     return fig
 
