@@ -66,7 +66,18 @@ _SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps",
                 "path_iterations", "path_converged", "path_gross_slip_step")
 
 
+def _unique(rows: list[SummaryRow]) -> list[SummaryRow]:
+    """The rows without repeats of the same quantity and value (a fraction and its percent)."""
+    seen, kept = set(), []
+    for r in rows:
+        if (r.label, r.text) not in seen:
+            seen.add((r.label, r.text))
+            kept.append(r)
+    return kept
+
+
 def _headline(rows: list[SummaryRow]) -> str:
+    rows = _unique(rows)
     by_key = {r.key: r for r in rows}
     chosen = [by_key[k] for k in HEADLINE_KEYS if k in by_key][:4]
     if not chosen:
@@ -77,6 +88,7 @@ def _headline(rows: list[SummaryRow]) -> str:
 
 
 def _summary_table(rows: list[SummaryRow]) -> str:
+    rows = _unique(rows)
     physics = [r for r in rows if r.key not in _SOLVER_KEYS]
     solver = [r for r in rows if r.key in _SOLVER_KEYS]
 
