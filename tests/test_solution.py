@@ -71,7 +71,8 @@ def test_tangential_result_protocol():
     p = p0 * np.sqrt(np.clip(1 - (X**2 + Y**2) / a**2, 0, None))
     res = solve_tangential(p, x, x, 0.3, STEEL, STEEL, force=(10.0, 0.0))
     _protocol(res, "iterations")
-    ds = _dataset(res, ["traction_x", "traction_y", "stick", "slip_x", "labels"])
+    ds = _dataset(res, ["traction_x", "traction_y", "stick", "slip_x", "region"])
+    np.testing.assert_array_equal(ds["region"], res.labels)
     # the traction carries the applied force
     cell = (x[1] - x[0]) ** 2
     assert float(ds["traction_x"].sum()) * cell == pytest.approx(10.0, rel=1e-6)

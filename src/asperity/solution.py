@@ -11,10 +11,11 @@ Every solver returns a frozen dataclass that mixes in :class:`SolverResult`:
   ``result.nc``;
 - a compact ``repr``: the class, the grid, the scalars and the convergence, not whole arrays.
 
-A result class names its variables in ``VARIABLES``, and may add coordinates other than ``x``
-and ``y`` by extending :meth:`SolverResult.coordinates` (field name -> ``(units, long_name)`` or
-``(units, long_name, dims)``; dims default to ``("x", "y")``; a field of shape ``(2, nx, ny)`` is
-split into ``<name>_x`` and ``<name>_y``).
+A result class names its variables in ``VARIABLES``: variable name -> ``(units, long_name)``,
+``(units, long_name, dims)`` or ``(units, long_name, dims, field)`` when the field has another
+name; dims default to ``("x", "y")``, and a field of shape ``(2, nx, ny)`` is split into
+``<name>_x`` and ``<name>_y``. Coordinates other than ``x`` and ``y`` come from extending
+:meth:`SolverResult.coordinates`.
 
 :func:`renamed_keywords` accepts a keyword's old spelling with a :class:`DeprecationWarning`
 (``max_iterations`` -> ``max_iter``, ``center`` -> ``centre``).
@@ -70,8 +71,9 @@ class SolverResult:
                   for name, (value, units, long_name) in self.coordinates().items()}
         data = {}
         for name, spec in self.VARIABLES.items():
-            units, long_name, dims = (*spec, ("x", "y")) if len(spec) == 2 else spec
-            value = np.asarray(getattr(self, name))
+            units, long_name, dims, attribute = (*spec, ("x", "y"), name, name)[:4] \
+                if len(spec) == 2 else (*spec, name)[:4]
+            value = np.asarray(getattr(self, attribute))
             if value.dtype == bool:
                 value = value.astype("i1")
             if value.ndim == len(dims) + 1 and value.shape[0] == 2:

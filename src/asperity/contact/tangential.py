@@ -181,7 +181,8 @@ class TangentialResult(SolverResult):
     VARIABLES = {"traction": ("Pa", "tangential traction on body 2"),
                  "stick": ("1", "stick indicator"),
                  "slip": ("m", "slip of body 1 vs body 2"),
-                 "labels": ("1", "connected contact region (0 outside the contact)")}
+                 "region": ("1", "connected contact region (0 outside the contact)", ("x", "y"),
+                            "labels")}
 
     traction: np.ndarray
     """Traction q transmitted by body 1 to body 2, shape (2, nx, ny), Pa."""
