@@ -116,4 +116,9 @@ def test_starved_inlet_is_one_warning_line(tmp_path):
                           timeout=300)
     assert proc.returncode == 0, proc.stderr
     lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
-    assert len(lines) == 1 and lines[0].startswith("warning: domain: the inlet"), proc.stderr
+    assert len(lines) == 1 and lines[0].startswith(
+        "warning: inlet: x_min = -1.1 a leaves pressure"), proc.stderr
+    assert lines[0].endswith("use x_min <= -2.5 a")
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["warnings"] == [lines[0].removeprefix("warning: ")]
+    assert "Converged." not in proc.stdout
