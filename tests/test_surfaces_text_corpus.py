@@ -38,6 +38,7 @@ PROFILES = {
     "tab_angstrom_missing.txt": (0.5e-6, 1e-12),
     "inch_microinch.csv": (0.5e-6, 2.54e-12),
     "plain_metres.txt": (0.5e-6, 1e-12),
+    "nodata_value.txt": (0.5e-6, 1e-12),
 }
 #: file -> height tolerance (m)
 TOPOGRAPHIES = {
@@ -68,6 +69,10 @@ def test_profile_styles_read_to_si(name):
     if name.startswith("tab_angstrom"):  # three points are missing markers, filled linearly
         assert reading.filled == 3
         measured = ~np.isin(i, [10, 11, 40])
+    if name.startswith("nodata"):  # two points hold the header's no-data value
+        assert reading.filled == 2
+        measured = ~np.isin(i, [5, 33])
+        np.testing.assert_allclose(p.z[5], 0.5 * (p.z[4] + p.z[6]), rtol=1e-12)
     np.testing.assert_allclose(p.z[measured], f(i * spacing)[measured], rtol=0, atol=tol)
     assert not reading.warnings
 

@@ -13,7 +13,8 @@ Rules, in order (documented for users in docs/surfaces.md):
 - Units: the unit in a column's name (``x_um``, ``Height [nm]``) or the header's ``x-unit``,
   ``z-unit``, ``Lateral units``, ``Value units``, ``Unit`` keys; a height scale factor
   (``Z scale``, ``Height scale``, ``Bit2nm``, ``height conversion factor (-> um)``) multiplies
-  the stored values. Spacing from ``spacing``/``pixel size``/``resolution``/``Scale X`` keys or
+  the stored values; a ``No data value`` (``Invalid value``, ...) marks missing points. Spacing
+  from ``spacing``/``pixel size``/``resolution``/``Scale X`` keys or
   from the physical size (``Width``, ``x-length``) divided by the number of points.
 """
 
@@ -206,6 +207,9 @@ def interpret(table: TextTable, where: str) -> Layout:
         z = data.T if instrument else data
         style = ("height matrix, one line per y (instrument header)" if instrument
                  else "height matrix, one line per x")
+    sentinel = _quantity(_first(h, _MISSING_KEYS))
+    if sentinel is not None:
+        z = np.where(z == sentinel[0][0], np.nan, z)
     scale, z_factor = _scale(h, z_unit)
     spacing = _spacing(h, z)
     periodic = str(h.get("periodic", "false")).lower() == "true"
