@@ -1,8 +1,8 @@
 """Case files: one TOML schema for every analysis, validated with pydantic.
 
 ``analysis`` selects the table layout (``"normal"``, ``"tangential"``, ``"ehl-steady"``,
-``"ehl-transient"``, ``"surface"``). :func:`load_case` turns a file, a TOML string or a dict into
-a validated, immutable case whose quantities are SI floats; any error becomes one
+``"ehl-transient"``, ``"surface"``, ``"gear"``). :func:`load_case` turns a file, a TOML string
+or a dict into a validated, immutable case whose quantities are SI floats; any error becomes one
 :class:`asperity.InputError` line naming the key path.
 """
 
@@ -19,6 +19,7 @@ from ..errors import InputError
 from .ehl import EHLSteadyCase
 from .ehl_transient import EHLTransientCase
 from .fields import first_error
+from .gear import GearCase
 from .normal import NormalCase
 from .surface import SurfaceCase
 from .tangential import TangentialCase
@@ -37,6 +38,7 @@ ANALYSES = {
     "ehl-steady": EHLSteadyCase,
     "ehl-transient": EHLTransientCase,
     "tangential": TangentialCase,
+    "gear": GearCase,
 }
 
 def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:

@@ -361,6 +361,9 @@ def _mount_sub_apps() -> None:
     app.add_typer(surface_app, name="surface",
                   help="Roughness of measured or generated surfaces: stats, generate, plot.")
     app.command()(guarded(schema))
+    from .gear import gear
+
+    app.command(name="gear")(guarded(gear))
 
 
 _mount_sub_apps()

@@ -19,6 +19,7 @@ RUNNERS = {
     "ehl-steady": "ehl_steady",
     "ehl-transient": "ehl_transient",
     "tangential": "tangential",
+    "gear": "gear",
 }
 
 

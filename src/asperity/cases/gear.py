@@ -1,0 +1,248 @@
+"""Case file of a gear pair: film, lambda, friction and flash temperature along the path of contact.
+
+::
+
+    analysis = "gear"
+    [gear]
+    teeth = [16, 24]
+    normal_module = "4.5 mm"
+    pressure_angle = "20 deg"
+    helix_angle = "0 deg"
+    profile_shift = [0.1817, 0.1715]
+    face_width = "14 mm"
+    centre_distance = "91.5 mm"          # optional: default from the shifts
+    tip_diameter = ["82.46 mm", "118.36 mm"]   # optional: default ISO 21771 with tip alteration
+    tip_relief = ["0 um", "0 um"]        # optional
+    crowning = ["0 um", "0 um"]          # optional crowning heights: elliptical contact
+    [operation]
+    torque = "302 N m"                   # pinion torque
+    speed = "2170 rpm"                   # pinion speed ("rpm" or "1/min"; or rad/s as "227 1/s")
+    bulk_temperature = 90                # deg C (viscosity eta0 is taken at this temperature)
+    [body1] / [body2]                    # E, nu (optional: steel)
+    [lubricant]                          # eta0, alpha, ... tau0 (as for ehl-steady)
+    [surface1] / [surface2]              # roughness of pinion and wheel flank (ground, builtin,
+                                         # gaussian, file): lambda and the transient hand-off
+    [roughness]
+    parameter = "ra"                     # or "rq"
+    combination = "rss"                  # or "mean" (ISO/TR 15144-1)
+    [friction]
+    boundary = 0.1                       # boundary friction coefficient
+    boundary_lambda = 1.0                # all load on asperities below this lambda
+    full_film_lambda = 3.0               # none above this
+    [thermal]                            # k, rho, c of pinion and wheel (steel defaults)
+    [ehl]                                # points along A-E and the steady mesh
+    points = 25
+    [handoff]                            # the point `asperity gear --emit-transient` writes
+    at = "min-lambda"                    # "pitch", "min-lambda", "max-flash" or a roll angle
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Annotated, Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from ..errors import InputError
+from ..gears.geometry import GearPair
+from ..gears.path import EHLMesh, Thermal
+from ..materials import Material
+from ..units import to_si
+from .bodies import MaterialSpec
+from .ehl import LubricantSpec
+from .ehl_transient import MovingSurfaceSpec, TimeSpec
+from .fields import CaseHeader, CaseModel, Quantity
+
+__all__ = ["GearCase", "GearSpec", "HandoffSpec", "OperationSpec"]
+
+Angle = Quantity("angle")
+Length = Quantity("length", ge=0)
+
+
+class GearSpec(CaseModel):
+    """``[gear]``: the involute pair (ISO 21771); lists are ``[pinion, wheel]``."""
+
+    teeth: tuple[Annotated[int, Field(ge=5, le=1000)], Annotated[int, Field(ge=5, le=1000)]]
+    normal_module: Quantity("length", gt=0)
+    pressure_angle: Quantity("angle", gt=0) = math.radians(20.0)
+    helix_angle: Angle = 0.0
+    profile_shift: tuple[float, float] = (0.0, 0.0)
+    face_width: Quantity("length", gt=0)
+    centre_distance: Quantity("length", gt=0) | None = None
+    tip_diameter: tuple[Quantity("length", gt=0), Quantity("length", gt=0)] | None = None
+    tip_relief: tuple[Length, Length] = (0.0, 0.0)
+    crowning: tuple[Length, Length] = (0.0, 0.0)
+
+    @model_validator(mode="after")
+    def _valid(self):
+        try:
+            self.pair()
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
+        return self
+
+    def pair(self) -> GearPair:
+        """The :class:`~asperity.gears.GearPair` (raises InputError for invalid gear data)."""
+        return GearPair(self.teeth, self.normal_module, self.pressure_angle, self.helix_angle,
+                        self.profile_shift, self.face_width, self.centre_distance,
+                        self.tip_diameter, self.tip_relief, self.crowning)
+
+
+def _rotational_speed(value):
+    """"2170 rpm" / "2170 1/min" -> rad/s; a plain number or "227 1/s" is rad/s."""
+    if isinstance(value, str):
+        match = re.fullmatch(r"\s*([-+0-9.eE]+)\s*(rpm|1/min|/min|r/min)\s*", value)
+        if match:
+            try:
+                return float(match.group(1)) * 2.0 * math.pi / 60.0
+            except ValueError:
+                raise ValueError("expected a speed like \"2170 rpm\"") from None
+    try:
+        return to_si(value, "frequency", "speed")
+    except InputError as exc:
+        raise ValueError(f"expected {exc.expected}") from None
+
+
+class OperationSpec(CaseModel):
+    """``[operation]``: pinion ``torque``, pinion ``speed`` (rpm, or rad/s), the
+    ``bulk_temperature`` of the teeth in deg C (the lubricant's eta0 is taken at it)."""
+
+    torque: Quantity("moment", gt=0)
+    speed: Annotated[float, Field(gt=0)]
+    bulk_temperature: Annotated[float, Field(gt=-100, lt=1000)] = 90.0
+
+    _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
+
+
+class RoughnessSpec(CaseModel):
+    """``[roughness]``: which parameter of the surfaces' profiles enters lambda (``ra`` or
+    ``rq``) and how the two combine (``rss`` sqrt(s1^2 + s2^2) or ``mean``)."""
+
+    parameter: Literal["ra", "rq"] = "ra"
+    combination: Literal["rss", "mean"] = "rss"
+
+
+class FrictionSpec(CaseModel):
+    """``[friction]``: boundary friction coefficient and the lambda range of mixed friction."""
+
+    boundary: Annotated[float, Field(ge=0, le=1)] = 0.1
+    boundary_lambda: Annotated[float, Field(ge=0)] = 1.0
+    full_film_lambda: Annotated[float, Field(gt=0)] = 3.0
+
+    @model_validator(mode="after")
+    def _order(self):
+        if not self.full_film_lambda > self.boundary_lambda:
+            raise ValueError("expected full_film_lambda > boundary_lambda")
+        return self
+
+
+class ThermalSpec(CaseModel):
+    """``[thermal]``: conductivity (W/(m K)), density (kg/m^3) and specific heat (J/(kg K)) of
+    pinion and wheel (default steel: 45, 7850, 460), and the heat-source ``profile``."""
+
+    conductivity: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (45, 45)
+    density: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (7850, 7850)
+    specific_heat: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (
+        460, 460)
+    profile: Literal["semi-elliptic", "uniform"] = "semi-elliptic"
+
+
+class GearEHLSpec(CaseModel):
+    """``[ehl]``: ``points`` along A-E and the steady mesh (:class:`asperity.gears.EHLMesh`)."""
+
+    points: Annotated[int, Field(ge=5, le=400)] = 25
+    nx: Annotated[int, Field(ge=17, le=4097)] = 129
+    ny: Annotated[int, Field(ge=9, le=1025)] = 33
+    levels: Annotated[int, Field(ge=1, le=5)] = 2
+    x_min: Annotated[float, Field(lt=-1.0, ge=-20.0)] = -2.5
+    x_max: Annotated[float, Field(gt=1.0, le=20.0)] = 1.5
+    tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
+    max_sweeps: Annotated[int, Field(ge=100, le=200_000)] = 20_000
+    damping: Annotated[float, Field(gt=0, le=1)] = 0.3
+
+    @model_validator(mode="after")
+    def _levels(self):
+        step = 2 ** (self.levels - 1)
+        if (self.nx - 1) % step or (self.nx - 1) // step < 8:
+            raise ValueError(f"expected nx = {step} m + 1 with m >= 8 for levels = "
+                             f"{self.levels}")
+        return self
+
+    def mesh(self, ny: int | None = None) -> EHLMesh:
+        """The :class:`~asperity.gears.path.EHLMesh`."""
+        return EHLMesh(nx=self.nx, ny=self.ny if ny is None else ny, levels=self.levels,
+                       x_min=self.x_min, x_max=self.x_max, tol=self.tolerance,
+                       max_sweeps=self.max_sweeps, damping=self.damping)
+
+
+class HandoffSpec(CaseModel):
+    """``[handoff]``: the point whose transient mixed-EHL case ``asperity gear
+    --emit-transient`` writes: ``at`` = ``"pitch"``, ``"min-lambda"``, ``"max-flash"`` or a
+    pinion roll angle (``"24 deg"``), with the transient mesh and time stepping."""
+
+    at: str = "min-lambda"
+    nx: Annotated[int, Field(ge=9, le=8193)] = 257
+    ny: Annotated[int, Field(ge=1, le=4097)] = 65
+    x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
+    x_max: Annotated[float, Field(gt=1.0, le=100.0)] = 1.5
+    time: TimeSpec = TimeSpec()
+
+    @field_validator("at")
+    @classmethod
+    def _point(cls, value):
+        if value in ("pitch", "min-lambda", "max-flash"):
+            return value
+        try:
+            to_si(value, "angle", "at")
+        except InputError:
+            raise ValueError('expected "pitch", "min-lambda", "max-flash" or a roll angle '
+                             'such as "24 deg"') from None
+        return value
+
+    def roll_angle(self) -> float | None:
+        """The roll angle (rad) when ``at`` names one, else None."""
+        if self.at in ("pitch", "min-lambda", "max-flash"):
+            return None
+        return to_si(self.at, "angle", "at")
+
+
+class GearCase(CaseHeader):
+    """``analysis = "gear"``: a gear pair along its path of contact (module notes)."""
+
+    analysis: Literal["gear"]
+    title: str = "Gear pair along the path of contact"
+    gear: GearSpec
+    operation: OperationSpec
+    body1: MaterialSpec = MaterialSpec(youngs_modulus=206e9, poisson_ratio=0.3)
+    body2: MaterialSpec = MaterialSpec(youngs_modulus=206e9, poisson_ratio=0.3)
+    lubricant: LubricantSpec
+    surface1: MovingSurfaceSpec
+    surface2: MovingSurfaceSpec
+    roughness: RoughnessSpec = RoughnessSpec()
+    friction: FrictionSpec = FrictionSpec()
+    thermal: ThermalSpec = ThermalSpec()
+    ehl: GearEHLSpec = GearEHLSpec()
+    handoff: HandoffSpec = HandoffSpec()
+
+    @model_validator(mode="after")
+    def _rough(self):
+        for k, spec in enumerate((self.surface1, self.surface2), start=1):
+            if spec.kind == "smooth" and spec.waviness is None:
+                raise ValueError(f"expected a rough surface{k} (lambda needs its roughness)")
+        return self
+
+    def pair(self) -> GearPair:
+        """The gear pair."""
+        return self.gear.pair()
+
+    def bodies(self) -> tuple[Material, Material]:
+        """Pinion and wheel."""
+        return self.body1.material(), self.body2.material()
+
+    def thermal_model(self) -> Thermal:
+        """The :class:`~asperity.gears.path.Thermal` of the case."""
+        t = self.thermal
+        return Thermal(conductivity=t.conductivity, density=t.density,
+                       specific_heat=t.specific_heat,
+                       bulk_temperature=self.operation.bulk_temperature, profile=t.profile)

@@ -1,0 +1,299 @@
+"""Involute geometry of an external spur or helical gear pair and its path of contact (ISO 21771).
+
+All lengths in m, angles in rad. Subscript 1 is the pinion (the driving gear), 2 the wheel.
+The relations (ISO 21771:2007, clauses 4 and 5; the same as in any gear textbook)::
+
+    alpha_t = atan(tan alpha_n / cos beta)              transverse pressure angle
+    m_t = m_n / cos beta,  d = z m_t,  d_b = d cos alpha_t
+    beta_b = asin(sin beta cos alpha_n)                 base helix angle
+    inv alpha_wt = inv alpha_t + 2 tan alpha_n (x1 + x2) / (z1 + z2)   (no backlash)
+    a_w = (d1 + d2) cos alpha_t / (2 cos alpha_wt)      centre distance from the shifts
+    d_a = d + 2 m_n (1 + x + k),  k = min(0, (a_w - a_0)/m_n - (x1 + x2))   tip alteration
+
+The path of contact lies on the line of action T1-T2 (length ``a_w sin alpha_wt`` between the
+points of tangency with the base circles). Positions on it are distances ``rho1`` from T1, which
+are also the transverse radii of curvature of the pinion flank (``rho2 = T1T2 - rho1``)::
+
+    A: rho1 = T1T2 - sqrt(r_a2^2 - r_b2^2)   start of contact (wheel tip)
+    E: rho1 = sqrt(r_a1^2 - r_b1^2)          end of contact (pinion tip)
+    C: rho1 = r_b1 tan alpha_wt               pitch point
+    B = E - p_bt, D = A + p_bt   lowest and highest points of single contact on the pinion
+    p_bt = pi m_t cos alpha_t = 2 pi r_b1 / z1   (transverse base pitch)
+    eps_alpha = (E - A) / p_bt,  eps_beta = b sin beta / (pi m_n)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError, check_positive
+
+__all__ = ["GearPair", "involute", "inverse_involute"]
+
+
+def involute(angle):
+    """The involute function inv(alpha) = tan(alpha) - alpha (ISO 21771, eq. 17)."""
+    return np.tan(angle) - angle
+
+
+def inverse_involute(value: float) -> float:
+    """The angle alpha in [0, pi/2) with inv(alpha) = ``value`` >= 0 (Newton's method).
+
+    Starts from the series inverse alpha ~ (3 v)^(1/3) and converges to machine precision in
+    a few steps for the pressure angles of gears.
+    """
+    value = float(value)
+    if not value >= 0.0:
+        raise InputError("involute", "a value >= 0", value)
+    if value == 0.0:
+        return 0.0
+    alpha = min((3.0 * value) ** (1.0 / 3.0), 1.5)
+    for _ in range(60):
+        step = (math.tan(alpha) - alpha - value) / math.tan(alpha) ** 2
+        alpha = min(max(alpha - step, 0.5 * alpha), 0.5 * (alpha + 0.5 * math.pi))
+        if abs(step) < 1e-15:
+            break
+    return alpha
+
+
+def _pair(name: str, values, positive: bool = False) -> tuple[float, float]:
+    try:
+        first, second = (float(v) for v in values)
+    except (TypeError, ValueError):
+        raise InputError(name, "two numbers (pinion, wheel)", values) from None
+    for v in (first, second):
+        if not math.isfinite(v) or (positive and not v > 0):
+            raise InputError(name, "finite values" + (" > 0" if positive else ""), values)
+    return first, second
+
+
+@dataclass(frozen=True)
+class GearPair:
+    """An external involute gear pair (spur for ``helix_angle = 0``).
+
+    Parameters
+    ----------
+    teeth : (int, int)
+        Numbers of teeth z1 (pinion), z2 (wheel).
+    normal_module : float
+        m_n, m.
+    pressure_angle : float
+        Normal pressure angle alpha_n of the basic rack, rad.
+    helix_angle : float
+        Reference helix angle beta, rad (0: spur).
+    profile_shift : (float, float)
+        Profile shift coefficients x1, x2.
+    face_width : float
+        Common face width b, m.
+    centre_distance : float, optional
+        Working centre distance a_w, m; default the backlash-free distance of the shifts.
+        A distance shorter than that is refused (the teeth would jam).
+    tip_diameter : (float, float), optional
+        d_a1, d_a2, m; default ISO 21771's standard tips with the tip alteration k.
+    tip_relief : (float, float)
+        Amount of tip relief C_a of pinion and wheel, m (changes the load sharing).
+    crowning : (float, float)
+        Crowning heights C_b over the face width, m; the crowning radius is b^2/(8 C_b)
+        and any crowning makes the contact elliptical (a point contact).
+
+    Raises
+    ------
+    InputError
+        Interference (the mating tip passes the point of tangency of a base circle), a
+        pointed tip, a transverse contact ratio below 1, undercut, tips below the base circle.
+    """
+
+    teeth: tuple
+    normal_module: float
+    pressure_angle: float
+    helix_angle: float
+    profile_shift: tuple
+    face_width: float
+    centre_distance: float | None = None
+    tip_diameter: tuple | None = None
+    tip_relief: tuple = (0.0, 0.0)
+    crowning: tuple = (0.0, 0.0)
+    derived: dict = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        try:
+            z1, z2 = (int(z) for z in self.teeth)
+        except (TypeError, ValueError):
+            raise InputError("teeth", "two integers (pinion, wheel)", self.teeth) from None
+        if any(isinstance(z, bool) or int(z) != z for z in self.teeth) or min(z1, z2) < 5:
+            raise InputError("teeth", "two integers >= 5 (pinion, wheel)", self.teeth)
+        mn = check_positive("normal_module", self.normal_module)
+        alpha_n = check_positive("pressure_angle", self.pressure_angle)
+        if not alpha_n < math.radians(45):
+            raise InputError("pressure_angle", "an angle below 45 deg", math.degrees(alpha_n))
+        beta = float(self.helix_angle)
+        if not (math.isfinite(beta) and abs(beta) < math.radians(60)):
+            raise InputError("helix_angle", "an angle of magnitude below 60 deg",
+                             math.degrees(beta))
+        x1, x2 = _pair("profile_shift", self.profile_shift)
+        b = check_positive("face_width", self.face_width)
+        ca = _pair("tip_relief", self.tip_relief)
+        cb = _pair("crowning", self.crowning)
+        if min(ca + cb) < 0:
+            raise InputError("tip_relief, crowning", "values >= 0", (ca, cb))
+        object.__setattr__(self, "teeth", (z1, z2))
+        object.__setattr__(self, "profile_shift", (x1, x2))
+        object.__setattr__(self, "tip_relief", ca)
+        object.__setattr__(self, "crowning", cb)
+        object.__setattr__(self, "derived", self._derive(z1, z2, mn, alpha_n, beta, x1, x2, b))
+
+    def _derive(self, z1, z2, mn, alpha_n, beta, x1, x2, b) -> dict:
+        """Every derived quantity of ISO 21771 the path of contact needs, checked."""
+        cos_b = math.cos(beta)
+        alpha_t = math.atan(math.tan(alpha_n) / cos_b)
+        mt = mn / cos_b
+        d = (z1 * mt, z2 * mt)
+        db = tuple(di * math.cos(alpha_t) for di in d)
+        beta_b = math.asin(abs(math.sin(beta)) * math.cos(alpha_n))
+        a0 = 0.5 * (d[0] + d[1])
+        inv_wt = involute(alpha_t) + 2.0 * math.tan(alpha_n) * (x1 + x2) / (z1 + z2)
+        if not inv_wt > 0:
+            raise InputError("profile_shift", "a sum x1 + x2 giving a positive working "
+                             "pressure angle", (x1, x2))
+        tight = 0.5 * (db[0] + db[1]) / math.cos(inverse_involute(inv_wt))
+        if self.centre_distance is None:
+            aw = tight
+        else:
+            aw = check_positive("centre_distance", self.centre_distance)
+            if aw < tight * (1.0 - 1e-6):
+                raise InputError("centre_distance", f">= {tight * 1e3:.4f} mm, the distance at "
+                                 "which the shifted teeth mesh without backlash (they would "
+                                 "jam)", f"{aw * 1e3:.4f} mm")
+            if not aw > 0.5 * (db[0] + db[1]):
+                raise InputError("centre_distance", "more than the sum of the base radii",
+                                 aw)
+        alpha_wt = math.acos(0.5 * (db[0] + db[1]) / aw)
+        if self.tip_diameter is None:
+            k = min(0.0, (aw - a0) / mn - (x1 + x2))
+            da = (d[0] + 2.0 * mn * (1.0 + x1 + k), d[1] + 2.0 * mn * (1.0 + x2 + k))
+        else:
+            da = _pair("tip_diameter", self.tip_diameter, positive=True)
+        for i, name in enumerate(("pinion", "wheel")):
+            if not da[i] > db[i]:
+                raise InputError(f"tip_diameter ({name})", f"more than the base diameter "
+                                 f"{db[i] * 1e3:.4f} mm", f"{da[i] * 1e3:.4f} mm")
+        rb = (0.5 * db[0], 0.5 * db[1])
+        ra = (0.5 * da[0], 0.5 * da[1])
+        t1t2 = aw * math.sin(alpha_wt)
+        rho_a = t1t2 - math.sqrt(ra[1] ** 2 - rb[1] ** 2)
+        rho_e = math.sqrt(ra[0] ** 2 - rb[0] ** 2)
+        rho_c = rb[0] * math.tan(alpha_wt)
+        pbt = math.pi * mt * math.cos(alpha_t)
+        if not rho_a > 0:
+            raise InputError("tip_diameter", (
+                f"no interference: the wheel tip reaches {-rho_a * 1e3:.3f} mm past T1, where "
+                "the line of action touches the pinion's base circle; reduce the wheel tip "
+                "diameter or raise the pinion profile shift"))
+        if not rho_e < t1t2:
+            raise InputError("tip_diameter", (
+                "no interference: the pinion tip reaches past T2, where the line of action "
+                "touches the wheel's base circle; reduce the pinion tip diameter or raise the "
+                "wheel profile shift"))
+        eps_alpha = (rho_e - rho_a) / pbt
+        if not eps_alpha >= 1.0:
+            raise InputError("centre_distance", (
+                f"a transverse contact ratio >= 1 (it is {eps_alpha:.3f}: the mesh loses "
+                "contact); raise the tip diameters or reduce the centre distance"))
+        tip_thickness = []
+        for i, (z, x, name) in enumerate(((z1, x1, "pinion"), (z2, x2, "wheel"))):
+            x_min = 1.0 - z * math.sin(alpha_t) ** 2 / (2.0 * cos_b)
+            if x < x_min - 1e-9:
+                raise InputError("profile_shift", (
+                    f"no undercut: the {name} shift x = {x:.4f} is below x_min = {x_min:.4f} = "
+                    f"1 - z sin^2(alpha_t) / (2 cos beta) for z = {z}; raise the profile shift"))
+            s_ref = mt * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
+            alpha_a = math.acos(db[i] / da[i])
+            s_tip = da[i] * (s_ref / d[i] + involute(alpha_t) - involute(alpha_a))
+            tip_thickness.append(s_tip)
+            if not s_tip > 0:
+                raise InputError("tip_diameter", (
+                    f"no pointed tip: the {name} tooth thickness at the tip is "
+                    f"{s_tip * 1e3:.4f} mm; reduce the tip diameter or the profile shift"))
+        return {
+            "alpha_t": alpha_t, "mt": mt, "d": d, "db": db, "rb": rb, "da": da, "ra": ra,
+            "beta_b": beta_b, "a0": a0, "aw": aw, "alpha_wt": alpha_wt,
+            "dw": (2.0 * aw * z1 / (z1 + z2), 2.0 * aw * z2 / (z1 + z2)),
+            "t1t2": t1t2, "pbt": pbt, "eps_alpha": eps_alpha,
+            "eps_beta": b * abs(math.sin(beta)) / (math.pi * mn),
+            "path": {"A": rho_a, "B": rho_e - pbt, "C": rho_c, "D": rho_a + pbt, "E": rho_e},
+            "tip_thickness": tuple(tip_thickness),
+        }
+
+    # --- read-only views of the derived quantities -----------------------------------------
+
+    def __getattr__(self, name):
+        derived = self.__dict__.get("derived")
+        if derived is not None and name in derived:
+            return derived[name]
+        raise AttributeError(name)
+
+    @property
+    def ratio(self) -> float:
+        """Gear ratio u = z2 / z1."""
+        return self.teeth[1] / self.teeth[0]
+
+    @property
+    def overlap_ratio(self) -> float:
+        """eps_beta = b sin|beta| / (pi m_n)."""
+        return self.derived["eps_beta"]
+
+    @property
+    def contact_ratio(self) -> float:
+        """Transverse contact ratio eps_alpha = g_alpha / p_bt."""
+        return self.derived["eps_alpha"]
+
+    @property
+    def points(self) -> dict:
+        """rho1 (m) of the points A, B, C, D, E of the path of contact."""
+        return dict(self.derived["path"])
+
+    @property
+    def crowning_radii(self) -> tuple[float, float]:
+        """Crowning radii b^2 / (8 C_b) of pinion and wheel, m (inf without crowning)."""
+        b = self.face_width
+        return tuple(b * b / (8.0 * c) if c > 0 else math.inf for c in self.crowning)
+
+    @property
+    def crowned(self) -> bool:
+        """True when either flank is crowned: the contact is then elliptical."""
+        return max(self.crowning) > 0
+
+    def rho2(self, rho1):
+        """Transverse radius of curvature of the wheel flank, T1T2 - rho1, m."""
+        return self.derived["t1t2"] - np.asarray(rho1, dtype=float)
+
+    def roll_angle(self, rho1):
+        """Pinion roll angle rho1 / r_b1, rad (the tangent of the pressure angle there)."""
+        return np.asarray(rho1, dtype=float) / self.derived["rb"][0]
+
+    def rho1_at_roll_angle(self, angle: float) -> float:
+        """rho1 (m) at a pinion roll angle (rad); it must lie on the path of contact A-E."""
+        rho = float(angle) * self.derived["rb"][0]
+        pts = self.derived["path"]
+        if not pts["A"] - 1e-12 <= rho <= pts["E"] + 1e-12:
+            lo, hi = (math.degrees(pts[k] / self.derived["rb"][0]) for k in "AE")
+            raise InputError("roll_angle", f"an angle between {lo:.3f} and {hi:.3f} deg (A to E)",
+                             f"{math.degrees(angle):.3f} deg")
+        return rho
+
+    def path(self, n: int) -> np.ndarray:
+        """``n`` positions rho1 (m) spread evenly from A to E, with B, C and D among them when
+        they fall within half a spacing of a node (the nearest node is moved onto them)."""
+        if isinstance(n, bool) or not isinstance(n, int) or n < 5:
+            raise InputError("points", "an integer >= 5", n)
+        pts = self.derived["path"]
+        rho = np.linspace(pts["A"], pts["E"], n)
+        step = rho[1] - rho[0]
+        for key in ("B", "C", "D"):
+            i = int(np.argmin(np.abs(rho - pts[key])))
+            if 0 < i < n - 1 and abs(rho[i] - pts[key]) <= 0.5 * step:
+                rho[i] = pts[key]
+        return rho

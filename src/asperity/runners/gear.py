@@ -1,0 +1,203 @@
+"""Runner of ``analysis = "gear"``: a gear pair along its path of contact.
+
+:func:`solve` builds the pair, the surfaces' composite roughness and the path, and calls
+:func:`asperity.gears.solve_path`; :func:`run` packages the result (one row per path position,
+the critical points in the summary, figures against the roll angle); :func:`handoff` gives the
+``ehl-transient`` case of a chosen position (``asperity gear --emit-transient``).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+import xarray as xr
+
+from ..gears.handoff import point_index, toml_text, transient_case
+from ..gears.mixed import composite_roughness
+from ..gears.path import GearPathResult, solve_path
+from ..results import Comparison, Outcome, variable
+from ..surfaces import Profile, roughness_parameters
+
+__all__ = ["handoff", "outcome", "roughness_values", "run", "solve"]
+
+#: Length and spacing of the profiles built from [surface1]/[surface2] to measure Ra or Rq.
+PROFILE_LENGTH = 4e-3
+PROFILE_SPACING = 0.5e-6
+
+
+def roughness_values(case) -> tuple[float, float]:
+    """Ra or Rq (``[roughness] parameter``) of the pinion and wheel surfaces, m."""
+    key = "Ra" if case.roughness.parameter == "ra" else "Rq"
+    values = []
+    for spec in (case.surface1, case.surface2):
+        surf = spec.build(PROFILE_LENGTH, PROFILE_SPACING, np.zeros(1), PROFILE_SPACING)
+        params = roughness_parameters(surf if isinstance(surf, Profile) else surf)
+        values.append(params[key])
+    return values[0], values[1]
+
+
+def solve(case, progress=None) -> tuple[GearPathResult, float]:
+    """The path result of the case and the wall time of its EHL solves (s)."""
+    pair = case.pair()
+    body1, body2 = case.bodies()
+    s1, s2 = roughness_values(case)
+    sigma = composite_roughness(s1, s2, case.roughness.combination)
+    start = time.perf_counter()
+    result = solve_path(
+        pair, pair.path(case.ehl.points), pinion_speed=case.operation.speed,
+        torque=case.operation.torque, body1=body1, body2=body2,
+        lubricant=case.lubricant.lubricant(), roughness=sigma,
+        thermal=case.thermal_model(), mesh=case.ehl.mesh(),
+        boundary_friction=case.friction.boundary,
+        boundary_lambda=case.friction.boundary_lambda,
+        full_film_lambda=case.friction.full_film_lambda, progress=progress)
+    return result, time.perf_counter() - start
+
+
+def run(case, progress=None) -> Outcome:
+    """Solve the path of contact of the case's gear pair."""
+    result, seconds = solve(case, progress)
+    return outcome(case, result, seconds)
+
+
+def _at(result, i) -> dict:
+    """Where position ``i`` lies: roll angle (deg) and distance from the pitch point (mm)."""
+    return {"roll_angle_deg": math.degrees(float(result.kin.roll_angle[i])),
+            "distance_from_pitch_mm": float(result.kin.distance[i]) * 1e3}
+
+
+def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
+    """Dataset, summary (geometry, critical points), figures and comparisons of a path."""
+    pair, kin = result.pair, result.kin
+    dims = ("point",)
+    fields = {
+        "rho1": (kin.rho1, "m", "pinion transverse radius of curvature"),
+        "rho2": (kin.rho2, "m", "wheel transverse radius of curvature"),
+        "distance": (kin.distance, "m", "distance from the pitch point on the line of action"),
+        "reduced_radius": (kin.reduced_radius, "m", "reduced radius of curvature (normal)"),
+        "u1": (kin.u1, "m/s", "pinion rolling speed"),
+        "u2": (kin.u2, "m/s", "wheel rolling speed"),
+        "sum_speed": (kin.sum_speed, "m/s", "sum velocity u1 + u2"),
+        "sliding_speed": (kin.sliding_speed, "m/s", "sliding speed u1 - u2"),
+        "slide_roll_ratio": (kin.slide_roll_ratio, "1", "slide/roll ratio (u1 - u2)/u"),
+        "load_sharing": (result.share, "1", "load sharing factor X"),
+        "load": (result.load, "N/m" if result.line else "N",
+                 "normal load per unit length of contact line" if result.line
+                 else "normal load"),
+        "hertz_pressure": (result.hertz_pressure, "Pa", "Hertz maximum pressure"),
+        "hertz_a": (result.hertz_a, "m", "Hertz semi-width along the motion"),
+        "central_film": (result.central_film, "m", "central film (steady EHL solver)"),
+        "minimum_film": (result.minimum_film, "m", "minimum film (steady EHL solver)"),
+        "max_pressure": (result.max_pressure, "Pa", "maximum EHL pressure"),
+        "formula_central_film": (result.formula_central, "m",
+                                 f"central film ({result.formula_names[0]})"),
+        "formula_minimum_film": (result.formula_minimum, "m",
+                                 f"minimum film ({result.formula_names[1]})"),
+        "specific_film": (result.specific_film, "1", "lambda = h_min / composite roughness"),
+        "ehl_friction": (result.ehl_friction, "1", "EHL traction coefficient (Eyring)"),
+        "asperity_share": (result.asperity_share, "1", "load share on asperities"),
+        "friction": (result.friction, "1", "friction coefficient"),
+        "flash_temperature": (result.flash_temperature, "K", "Blok flash temperature"),
+        "contact_temperature": (result.contact_temperature, "degC", "contact temperature"),
+        "peclet": (result.peclet, "1", "Peclet number (slower surface)"),
+        "converged": (result.converged.astype(np.int8), "1", "EHL solve converged"),
+    }
+    ds = xr.Dataset(
+        {k: variable(dims, v, u, n) for k, (v, u, n) in fields.items()},
+        coords={"roll_angle": variable(dims, np.degrees(kin.roll_angle), "degree",
+                                       "pinion roll angle")},
+        attrs={"title": case.title, "analysis": "gear", "source": "asperity",
+               "contact": "line" if result.line else "point"},
+    )
+    crit = result.critical()
+    i_lam, i_fl, i_p = (crit[k] for k in ("minimum_lambda", "maximum_flash_temperature",
+                                          "maximum_hertz_pressure"))
+    i_c = int(np.argmin(np.abs(kin.distance)))
+    rb1 = pair.rb[0]
+    summary = {
+        "transverse_contact_ratio": pair.contact_ratio,
+        "overlap_ratio": pair.overlap_ratio,
+        "centre_distance_m": pair.aw,
+        "working_pressure_angle_deg": math.degrees(pair.alpha_wt),
+        "tip_diameter_pinion_m": pair.da[0],
+        "tip_diameter_wheel_m": pair.da[1],
+        **{f"roll_angle_{k}_deg": math.degrees(v / rb1) for k, v in pair.points.items()},
+        "normal_force_n": case.operation.torque / (rb1 * math.cos(pair.beta_b)),
+        "composite_roughness_m": result.composite_roughness,
+        "minimum_lambda": float(result.specific_film[i_lam]),
+        "minimum_lambda_at": _at(result, i_lam),
+        "maximum_flash_temperature_k": float(result.flash_temperature[i_fl]),
+        "maximum_contact_temperature_c": float(result.contact_temperature[i_fl]),
+        "maximum_flash_temperature_at": _at(result, i_fl),
+        "maximum_hertz_pressure_pa": float(result.hertz_pressure[i_p]),
+        "maximum_hertz_pressure_at": _at(result, i_p),
+        "minimum_film_m": float(np.nanmin(result.minimum_film)),
+        "pitch_central_film_m": float(result.central_film[i_c]),
+        "pitch_minimum_film_m": float(result.minimum_film[i_c]),
+        "pitch_lambda": float(result.specific_film[i_c]),
+        "mean_friction_coefficient": float(np.nanmean(result.friction[result.load > 0])),
+        "points": int(kin.rho1.size),
+        "ehl_solves_converged": int(result.converged.sum()),
+        "ehl_wall_time_s": seconds,
+        "converged": bool(result.converged.all()),
+    }
+    comparisons = [
+        Comparison("central film at the pitch point", float(result.central_film[i_c]),
+                   float(result.formula_central[i_c]), result.formula_names[0], "m", None,
+                   "Newtonian isothermal formula; the solver uses the case's lubricant laws"),
+        Comparison("minimum film at the pitch point", float(result.minimum_film[i_c]),
+                   float(result.formula_minimum[i_c]), result.formula_names[1], "m", None,
+                   "Newtonian isothermal formula; the solver uses the case's lubricant laws"),
+    ]
+    notes = [
+        "Load sharing: ISO/TR 13989-1 linear form (1/3 - 2/3 - 1 for unrelieved spur gears). "
+        "Friction: (1 - f) mu_EHL + f mu_b with the asperity share f linear in lambda from 1 at "
+        f"lambda = {case.friction.boundary_lambda:g} to 0 at {case.friction.full_film_lambda:g}"
+        f" and mu_b = {case.friction.boundary:g} (an engineering assumption). Flash "
+        "temperature: Blok's formula (band source, high Peclet number, equal maximum surface "
+        "temperatures); the EHL solutions are isothermal.",
+    ]
+    title = case.title
+    from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
+
+    figures = {
+        "path_film": (lambda: film_figure(result, title),
+                      "Central and minimum film from the steady EHL solver (solid) and the "
+                      "film formulas (dashed), and lambda, against the pinion roll angle; A-E "
+                      "marked, single tooth contact B-D shaded."),
+        "path_conditions": (lambda: conditions_figure(result, title),
+                            "Load and Hertz pressure, rolling and sliding speeds and the "
+                            "reduced radius along the path of contact."),
+        "path_friction_temperature": (
+            lambda: friction_temperature_figure(result, title,
+                                                case.operation.bulk_temperature),
+            "Friction coefficient (EHL traction and with the boundary share) and Blok's flash "
+            "temperature and the contact temperature along the path."),
+    }
+    return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
+                   notes=notes, warnings=list(result.warnings))
+
+
+def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, str]:
+    """The ``ehl-transient`` case (dict and TOML text) of the position named by ``at``
+    (default the case's ``[handoff] at``)."""
+    from ..cases.gear import HandoffSpec
+
+    spec = case.handoff if at is None else case.handoff.model_copy(
+        update={"at": HandoffSpec(at=at).at})
+    index = point_index(result, spec.at, spec.roll_angle())
+    h = case.handoff
+    grid = {"nx": h.nx, "ny": h.ny, "x_min": h.x_min, "x_max": h.x_max}
+    dump = {"exclude_none": True, "by_alias": True}
+    data = transient_case(
+        result, index, title=f"{case.title}: transient mixed EHL at {spec.at}",
+        body1=case.body1.model_dump(**dump), body2=case.body2.model_dump(**dump),
+        lubricant=case.lubricant.model_dump(**dump),
+        surface1=case.surface1.model_dump(exclude_defaults=True, **dump),
+        surface2=case.surface2.model_dump(exclude_defaults=True, **dump),
+        grid=grid, time=h.time.model_dump(**dump))
+    header = (f"Written by `asperity gear` from the case \"{case.title}\" ({spec.at}).\n"
+              "Surface 1 is the pinion flank, surface 2 the wheel flank; SI units.")
+    return data, toml_text(data, header)
