@@ -24,6 +24,7 @@ from asperity.surfaces.material_ratio import (
     equivalent_line,
     material_ratio,
     material_ratio_curve,
+    relative_material_ratio,
     rk_parameters,
     section_height_difference,
     volume_parameters,
@@ -86,6 +87,10 @@ def test_curve_ratio_and_section_heights_of_a_uniform_distribution():
     assert np.all(np.diff(c) <= 0) and mr[0] > 0 and mr[-1] < 1
     assert material_ratio(z, 0.0) == pytest.approx(0.5, abs=1e-5)
     assert section_height_difference(z, 0.2, 0.8) == pytest.approx(1.2e-6, rel=1e-4)
+    # Rmr: 0.5 um below the highest peak (1 um) is a quarter of the 2 um range; 0.5 um below
+    # the level of 10 % (0.8 um) is 35 %
+    assert relative_material_ratio(z, 0.5e-6) == pytest.approx(0.25, abs=1e-4)
+    assert relative_material_ratio(z, 0.5e-6, reference=0.1) == pytest.approx(0.35, abs=1e-4)
     rk = rk_parameters(z)
     assert rk["Rk"] == pytest.approx(2e-6, rel=1e-4) and rk["Rpk"] == pytest.approx(0, abs=1e-9)
 

@@ -113,7 +113,7 @@ def _table(stats: dict, title: str) -> Table:
 
 #: SI unit -> (display unit, factor) in the stats tables.
 _DISPLAY = {"m": ("um", 1e6), "m3/m2": ("ml/m2", 1e6), "deg": ("deg", 1.0), "1": ("", 1.0)}
-_PERCENT = {"Mr1", "Mr2", "Smr1", "Smr2", "Sdr", "Str"}
+_PERCENT = {"Mr1", "Mr2", "Smr1", "Smr2", "Sdr", "Str", "Rmr", "Smr"}
 
 
 def _read(file: Path, spacing, spacing_y, unit, x_unit, z_unit, missing, resample):
@@ -202,13 +202,17 @@ def stats(
     resample: Resample = False,
     cutoff: Cutoff = None,
     form_degree: FormDegree = 1,
+    rmr_depth: Annotated[str | None, typer.Option(
+        help="Also give Rmr (Smr): the material ratio this depth below the highest peak.")
+    ] = None,
 ):
     """Surface texture parameters, grouped as ISO 4287 / 13565-2 / 25178-2 group them."""
     from ..surfaces.texture import evaluate_texture
 
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
     texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
-                               form_degree=form_degree)
+                               form_degree=form_degree,
+                               rmr_depth=_length(rmr_depth, "--rmr-depth"))
     result = _texture_json(file, reading, texture)
     if as_json:
         typer.echo(json.dumps(result, indent=2))

@@ -28,8 +28,8 @@ import numpy as np
 from ..errors import InputError
 
 __all__ = ["CORE_WINDOW", "EquivalentLine", "equivalent_line", "material_ratio",
-           "material_ratio_curve", "rk_parameters", "section_height", "section_height_difference",
-           "volume_parameters"]
+           "material_ratio_curve", "relative_material_ratio", "rk_parameters", "section_height",
+           "section_height_difference", "volume_parameters"]
 
 #: Width of the central region of ISO 13565-2 (a fraction of the material ratio).
 CORE_WINDOW = 0.4
@@ -53,6 +53,17 @@ def material_ratio_curve(z) -> tuple[np.ndarray, np.ndarray]:
 def material_ratio(z, level) -> float:
     """Rmr(c) / Smr(c): the fraction of points at or above ``level`` (m, from the mean line)."""
     return float(np.mean(_heights(z) >= level))
+
+
+def relative_material_ratio(z, depth, reference=0.0) -> float:
+    """Rmr (ISO 4287 clause 4.5.2): the material ratio ``depth`` (m) below the reference level.
+
+    The reference level is C(``reference``), the height at material ratio ``reference``
+    (Rmr0; 0 = the highest peak); Rmr = Rmr(C(Rmr0) - depth).
+    """
+    if depth < 0:
+        raise InputError("depth", "a depth >= 0 below the reference level", depth)
+    return material_ratio(z, section_height(z, reference) - depth)
 
 
 def section_height(z, ratio) -> float:

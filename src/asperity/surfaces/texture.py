@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from ..errors import InputError
 from .areal import AreaFamilies, areal_families, areal_parameters
-from .material_ratio import rk_parameters, section_height_difference
+from .material_ratio import relative_material_ratio, rk_parameters, section_height_difference
 from .profiles import ProfileFamilies, profile_families, profile_parameters
 from .topography import Profile, Topography
 
@@ -22,6 +22,7 @@ __all__ = ["TextureEvaluation", "UNITS", "evaluate_texture", "unit_of"]
 _LENGTH_SUFFIXES = ("a", "q", "p", "v", "z", "t", "k", "pk", "vk", "dc", "al")
 #: Parameters that are not lengths: their SI unit ("1" for ratios and moments).
 UNITS = {"Mr1": "1", "Mr2": "1", "Smr1": "1", "Smr2": "1", "Sdr": "1", "Str": "1",
+         "Rmr": "1", "Smr": "1",
          "Std": "deg", "Vmp": "m3/m2", "Vmc": "m3/m2", "Vvc": "m3/m2", "Vvv": "m3/m2"}
 
 
@@ -57,11 +58,13 @@ class TextureEvaluation:
     warnings: tuple[str, ...]
 
 
-def _profile(profile: Profile, cutoff, form_degree) -> TextureEvaluation:
+def _profile(profile: Profile, cutoff, form_degree, rmr_depth) -> TextureEvaluation:
     fam = profile_families(profile, cutoff, form_degree=form_degree)
     params = profile_parameters(fam)
     r = fam.evaluated("R")
     params["Rk"] = {"Rdc": section_height_difference(r), **rk_parameters(r, "R")}
+    if rmr_depth is not None:
+        params["Rk"]["Rmr"] = relative_material_ratio(r, rmr_depth)
     lc = f"lambda_c = {fam.cutoff * 1e3:.4g} mm"
     ls = "no lambda_s" if fam.lambda_s is None else f"lambda_s = {fam.lambda_s * 1e6:.4g} um"
     ln = f"ln = {fam.evaluation_length * 1e3:.4g} mm"
@@ -70,27 +73,34 @@ def _profile(profile: Profile, cutoff, form_degree) -> TextureEvaluation:
         "W": f"Waviness profile W (ISO 4287; Gaussian mean line, {lc}; over {ln})",
         "R": f"Roughness profile R (ISO 4287; {lc}, {ls}; mean of {fam.sampling_lengths} "
              f"sampling lengths, Rt over {ln})",
-        "Rk": "Material ratio of R (ISO 4287 Rdc = C(20 %) - C(80 %); ISO 13565-2 Rk family)",
+        "Rk": "Material ratio of R (ISO 4287 Rdc = C(20 %) - C(80 %)"
+              + ("" if rmr_depth is None else
+                 f", Rmr {rmr_depth * 1e6:.4g} um below the highest peak")
+              + "; ISO 13565-2 Rk family)",
     }
     return TextureEvaluation(profile, fam, params, titles, fam.notes, fam.warnings)
 
 
-def _area(topography: Topography, cutoff, form_degree) -> TextureEvaluation:
+def _area(topography: Topography, cutoff, form_degree, rmr_depth) -> TextureEvaluation:
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
     params = areal_parameters(fam)
+    if rmr_depth is not None:
+        params["functional"]["Smr"] = relative_material_ratio(fam.scale_limited.z, rmr_depth)
     what = f"{fam.label} surface"
     titles = {
         "height": f"Height (ISO 25178-2), {what}",
         "hybrid": f"Hybrid (ISO 25178-2), {what}",
         "spatial": f"Spatial (ISO 25178-2; Sal, Str at s = 0.2; Std = lay direction), {what}",
-        "functional": f"Functional, material ratio (ISO 25178-2 Sk family; Sdc = C(20 %) - "
-                      f"C(80 %)), {what}",
+        "functional": "Functional, material ratio (ISO 25178-2 Sk family; Sdc = C(20 %) - "
+                      "C(80 %)" + ("" if rmr_depth is None else
+                                   f"; Smr {rmr_depth * 1e6:.4g} um below the highest peak")
+                      + f"), {what}",
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
     return TextureEvaluation(topography, fam, params, titles, fam.notes, ())
 
 
-def evaluate_texture(surface, cutoff=None, *, form_degree=1) -> TextureEvaluation:
+def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None) -> TextureEvaluation:
     """Filter a profile or topography as ISO does and compute its grouped parameters.
 
     Parameters
@@ -101,9 +111,11 @@ def evaluate_texture(surface, cutoff=None, *, form_degree=1) -> TextureEvaluatio
         topography (default: none, the S-F surface).
     form_degree : int
         Degree of the least-squares form removed (1: line or plane).
+    rmr_depth : float, optional
+        Also report Rmr (Smr): the material ratio this depth (m) below the highest peak.
     """
     if isinstance(surface, Profile):
-        return _profile(surface, cutoff, form_degree)
+        return _profile(surface, cutoff, form_degree, rmr_depth)
     if isinstance(surface, Topography):
-        return _area(surface, cutoff, form_degree)
+        return _area(surface, cutoff, form_degree, rmr_depth)
     raise InputError("surface", "a Profile or a Topography", type(surface).__name__)
