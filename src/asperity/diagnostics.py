@@ -24,6 +24,7 @@ __all__ = [
     "MIN_CELLS_PER_SEMI_AXIS",
     "BOUNDARY_PRESSURE",
     "BOUNDARY_BAND",
+    "STARVED_FILM_LOSS",
     "UNRESOLVED_WAVELENGTH_CELLS",
     "UNRESOLVED_RMS_SHARE",
     "LOWPASS_RMS_SHARE",
@@ -31,6 +32,7 @@ __all__ = [
     "contact_at_grid_edge",
     "contact_resolution",
     "ehl_inlet",
+    "ehl_inlet_length",
     "ehl_mesh",
     "ehl_sides",
     "lowpass_removed",
@@ -50,6 +52,9 @@ MIN_CELLS_PER_SEMI_AXIS = 10
 BOUNDARY_PRESSURE = 0.01
 #: Width of the band next to an EHL boundary, in semi-axes, where that pressure is measured.
 BOUNDARY_BAND = 0.1
+#: Loss of central film a short inlet may cause (Hamrock & Dowson's starvation fit) before it is
+#: reported.
+STARVED_FILM_LOSS = 0.02
 #: Roughness at wavelengths shorter than this many mesh spacings is not resolved by the mesh.
 UNRESOLVED_WAVELENGTH_CELLS = 4.0
 #: Share of the rms height at unresolved wavelengths above which the mesh is reported coarse.
@@ -306,6 +311,47 @@ def ehl_inlet(pressure, x, a: float, p_hertz: float) -> list[str]:
     return [f"inlet: x_min = {x_min:.3g} a leaves pressure {_pct(level)} of p_h within "
             f"{BOUNDARY_BAND:g} a of the inlet boundary (limit {_pct(BOUNDARY_PRESSURE)}); the "
             f"inlet is too short, the film starved and too thin; use x_min <= {use:g} a"]
+
+
+def ehl_inlet_length(x_min: float, a: float, rx: float, central_film: float) -> list[str]:
+    """An inlet shorter than the fully flooded inlet distance of a point contact.
+
+    Hamrock & Dowson (1977, starvation) put the boundary between fully flooded and starved
+    conditions at the dimensionless inlet distance ``m* = 1 + 3.06 ((Rx/a)^2 hc/Rx)^0.58``
+    (distances from the contact centre in semi-axes along the entrainment direction), and the
+    starved central film at ``hc ((m - 1)/(m* - 1))^0.29`` for an inlet at ``m < m*``. The
+    p = 0 boundary at ``x_min`` is such a meniscus.
+
+    Parameters
+    ----------
+    x_min : float
+        Inlet boundary, m (negative: upstream of the contact centre).
+    a : float
+        Hertz semi-axis along the entrainment direction, m.
+    rx : float
+        Reduced radius along the entrainment direction, m.
+    central_film : float
+        Computed central film, m.
+
+    Returns
+    -------
+    list of str
+        At most one line, when the fit's film loss exceeds :data:`STARVED_FILM_LOSS`.
+    """
+    m = -x_min / a
+    if not (central_film > 0 and m > 1):
+        return []
+    m_star = 1.0 + 3.06 * ((rx / a) ** 2 * central_film / rx) ** 0.58
+    if m >= m_star:
+        return []
+    loss = 1.0 - ((m - 1.0) / (m_star - 1.0)) ** 0.29
+    if loss <= STARVED_FILM_LOSS:
+        return []
+    use = max(2.5, math.ceil(2.0 * m_star) / 2.0)
+    return [f"inlet: x_min = {-m:.3g} a is inside the fully flooded inlet distance m* = "
+            f"{m_star:.3g} a (Hamrock & Dowson 1977, m* = 1 + 3.06 ((Rx/a)^2 hc/Rx)^0.58); "
+            f"their starvation fit puts the central film {_pct(loss)} below the flooded one "
+            f"(limit {_pct(STARVED_FILM_LOSS)}); use x_min <= -{use:g} a"]
 
 
 def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:

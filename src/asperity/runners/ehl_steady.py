@@ -87,11 +87,12 @@ def run(case, progress=None) -> Outcome:
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
                      f"(residual {res.residual:.2e}); the numbers above are not trustworthy.")
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=ehl_warnings(case, problem, res.pressure, res.x, res.y))
+                   warnings=ehl_warnings(case, problem, res.pressure, res.x, res.y,
+                                         res.central_film))
 
 
-def ehl_warnings(case, problem, pressure, x, y) -> list[str]:
-    """Trust checks of an EHL pressure field: inlet, sides, mesh, hardness.
+def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
+    """Trust checks of an EHL solution: inlet, sides, mesh, hardness.
 
     Shared by the steady and transient runners (:mod:`asperity.diagnostics`).
     """
@@ -99,6 +100,8 @@ def ehl_warnings(case, problem, pressure, x, y) -> list[str]:
     b = None if isinstance(problem, LineContact) else hz.b
     lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max)
     if b is not None:
+        if not lines:  # the pressure is back to ambient: is the inlet still starving the film?
+            lines += diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film)
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
     lines += diagnostics.ehl_mesh(x, y, hz.a, b)
     if getattr(case, "body1", None) is not None:

@@ -185,7 +185,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     if not line:
         figures["flow_vectors"] = (lambda: plots.plot_flow_vectors(res, problem),
                                    "Film contours and lubricant flow vectors (Fig. 14).")
-    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y)
+    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, res.steady_central_film)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps)
     trust += _roughness_warnings(case, problem, x, y, total, dt, (rough1, rough2))
