@@ -173,7 +173,7 @@ def _convert(value: float, si_unit: str, choices) -> tuple[float, str]:
     choice's smallest magnitude; zero in the SI unit itself where it is a choice."""
     base = registry().Quantity(value, "percent" if si_unit == "%" else si_unit)
     if value == 0:
-        choices = [c for c in choices if c[0] == si_unit] or choices[-1:]
+        choices = [c for c in choices if c[0] == si_unit] or choices[:1]
     for pint_unit, label, *smallest in choices:
         converted = float(base.to(pint_unit).magnitude)
         if abs(converted) >= (smallest[0] if smallest else 1.0):

@@ -164,10 +164,10 @@ def run(
         for sig, handler in handlers.items():
             signal.signal(sig, handler)
     files = write_outcome(outcome, out)
+    imperial = _in_imperial(case, is_file)
     files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
-                                   outcome, files, Path(out) / "report.html",
-                                   imperial=_in_imperial(case, is_file))
-    _print_summary(outcome.summary)
+                                   outcome, files, Path(out) / "report.html", imperial=imperial)
+    _print_summary(outcome.summary, imperial)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
         err_console.print(f"warning: {line}", markup=False, highlight=False, soft_wrap=True)
@@ -205,13 +205,16 @@ def _stopped(exc: Interrupted, where: str, case: str, out: Path, quiet: bool):
     raise typer.Exit(128 + exc.signum)
 
 
-def _print_summary(summary: dict) -> None:
+def _print_summary(summary: dict, imperial: bool = False) -> None:
+    """The key results as in the report: in words, readable units (imperial beside SI)."""
+    from ..formatting import summary_rows
+
     table = Table(show_header=False, box=None)
-    for key, value in summary.items():
-        if isinstance(value, float):
-            value = f"{value:.6g}"
-        table.add_row(key, str(value))
-    console.print(table)
+    table.add_column(overflow="fold")
+    table.add_column(justify="right", overflow="fold")
+    for row in summary_rows(summary, imperial=imperial):
+        table.add_row(row.label, row.text)
+    console.print(table, highlight=False)
 
 
 @app.command()
