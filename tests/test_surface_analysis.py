@@ -3,6 +3,7 @@ bad [surface] tables give one line naming the key."""
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -323,3 +324,42 @@ def test_surface_case_reports_the_iso_texture(outcomes):
     assert sm["iso_rz_m"] <= sm["iso_rt_m"]
     assert "texture" in out.figures
     assert any(note.startswith("File read as text") for note in out.notes)
+
+
+def test_case_file_units_and_missing_points(tmp_path):
+    # the corpus profile f(x) (tests/test_surfaces_text_corpus.py) given in nm without a unit,
+    # and in angstrom with three missing points
+    data = Path(__file__).parent / "data" / "text"
+    x = np.arange(64) * 0.5e-6
+    f = 0.5e-6 * np.sin(2 * np.pi * x / 40e-6) + 0.2e-6 * np.cos(2 * np.pi * x / 13e-6)
+    case = tmp_path / "case.toml"
+    case.write_text(f'analysis = "surface"\n[surface]\nkind = "file"\npath = '
+                    f'"{data / "unlabelled_nm.txt"}"\nspacing = "0.5 um"\nz_unit = "nm"\n'
+                    '[evaluation]\ncutoff = "8 um"\n')
+    out = run_case(load_case(case))
+    np.testing.assert_allclose(out.dataset["height"].values[0], f, atol=1e-12)
+    assert not any("peak-to-valley" in w for w in out.warnings)
+    case.write_text(case.read_text().replace('z_unit = "nm"\n', ""))
+    with pytest.raises(InputError, match=r"surface.path: expected heights in metres.*z_unit"):
+        run_case(load_case(case))  # 663 "m": refused, not only warned
+    case.write_text(f'analysis = "surface"\n[surface]\nkind = "file"\npath = '
+                    f'"{data / "tab_angstrom_missing.txt"}"\nmissing = "fill"\n')
+    out = run_case(load_case(case))
+    assert any("filled 3 of 64 points" in n for n in out.notes)
+    with pytest.raises(InputError, match="surface.path: .*3 of 64 points"):
+        run_case(load_case(case.read_text().replace('missing = "fill"\n', "")))
+
+
+def test_roughness_table_reads_units_too():
+    from asperity.cases.roughness import RoughnessSpec, surface_heights
+
+    data = Path(__file__).parent / "data" / "text"
+    spec = RoughnessSpec(kind="file", path=str(data / "unlabelled_nm.txt"), spacing=0.5e-6,
+                         z_unit="nm")
+    x = (np.arange(64) + 0.5) * 0.5e-6
+    z = surface_heights(spec, x, x[:4])
+    f = 0.5e-6 * np.sin(2 * np.pi * (x - x[0]) / 40e-6) + 0.2e-6 * np.cos(
+        2 * np.pi * (x - x[0]) / 13e-6)
+    np.testing.assert_allclose(z[:, 0], f, atol=1e-12)
+    with pytest.raises(ValueError, match="for a measured file"):
+        RoughnessSpec(kind="gaussian", rms=1e-6, correlation_length=1e-5, unit="um")

@@ -104,7 +104,14 @@ def _generated(spec):
         ell = 15e-6 if spec.correlation_length is None else spec.correlation_length
         return s.transverse_ground_profile(length, h, spec.ra, ell, run_in=spec.run_in or 0.0,
                                            seed=seed)
-    reading = read_measured(spec.path, spec.spacing, **spec.read_options())
+    try:
+        reading = read_measured(spec.path, spec.spacing, **spec.read_options())
+    except InputError as exc:
+        if not exc.field.startswith(str(spec.path)):
+            raise
+        where = exc.field.removeprefix(str(spec.path)).lstrip(":").strip()
+        raise InputError("surface.path", exc.expected + (f" (at {where})" if where else ""),
+                         exc.got) from None
     surface = reading.surface
     if surface.z.size > MAX_POINTS:
         raise InputError("surface.path", f"a surface of at most {MAX_POINTS} points",

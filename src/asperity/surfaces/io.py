@@ -246,14 +246,17 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
     except Exception as err:  # any failure of the third-party reader
         raise InputError(str(path), "a file SurfaceTopography can read", str(err)) from err
     if getattr(topo, "unit", None) is None:
-        if units.x is None:
+        if units.x is None and units.z is None:
             raise InputError(str(path), "a unit: the file gives none (--unit um; case file: "
                                         "unit = \"um\")")
-        factor = units.x
+        factor = units.x if units.x is not None else units.z
+        height_factor = units.z if units.z is not None else factor
     else:
-        factor = SurfaceTopography.Support.UnitConversion.get_unit_conversion_factor(
-            topo.unit, "m")
-    heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * factor
+        factor = height_factor = (
+            SurfaceTopography.Support.UnitConversion.get_unit_conversion_factor(topo.unit, "m"))
+        if units.x is not None or units.z is not None:
+            notes.append(f"the file's unit ({topo.unit}) is used; the unit given is ignored")
+    heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * height_factor
     heights, filled = _missing(heights, missing, str(path), notes)
     if not topo.is_uniform:
         x = np.asarray(topo.positions(), float) * factor
