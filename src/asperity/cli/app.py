@@ -65,6 +65,10 @@ def guarded(fn):
             fail("memory: the case needs more memory than this machine has; use fewer cells")
         except (typer.Exit, typer.Abort):
             raise
+        except KeyboardInterrupt:
+            err_console.print("stopped: SIGINT; run the same command again (a sweep resumes "
+                              "from its records)", markup=False, highlight=False)
+            raise typer.Exit(128 + signal.SIGINT) from None
         except Exception as exc:  # a bug: still one line, unless asked for the traceback
             if os.environ.get("ASPERITY_DEBUG"):
                 raise
@@ -158,15 +162,18 @@ def run(
                 progress(done, total, description)
 
             outcome = run_case(model, progress=tracked, workdir=out, resume=resume)
+        where["description"] = "writing the results"
+        files = write_outcome(outcome, out)
+        imperial = _in_imperial(case, is_file)
+        files["report"] = write_report(model.title,
+                                       model.model_dump(mode="json", exclude_none=True),
+                                       outcome, files, Path(out) / "report.html",
+                                       imperial=imperial)
     except Interrupted as exc:
         _stopped(exc, where["description"], case, out, quiet)
     finally:
         for sig, handler in handlers.items():
             signal.signal(sig, handler)
-    files = write_outcome(outcome, out)
-    imperial = _in_imperial(case, is_file)
-    files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
-                                   outcome, files, Path(out) / "report.html", imperial=imperial)
     _print_summary(outcome.summary, imperial)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
