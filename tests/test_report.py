@@ -1,5 +1,6 @@
 """The HTML report: self-contained, with a reference table; renders in headless Chromium."""
 
+import math
 import re
 import shutil
 import subprocess
@@ -77,3 +78,88 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
                     "--window-size=1200,1600", report.as_uri()],
                    capture_output=True, timeout=120, check=False)
     assert png.is_file() and png.stat().st_size > 20_000  # a rendered page, not a blank one
+
+
+# --- figures: legends, equal aspect on maps, overflow bin, arrow scale ---------------------
+
+def _ellipse_fields(a=1e-4, b=4e-4):
+    import numpy as np
+
+    x = np.linspace(-2.5 * a, 1.5 * a, 41)
+    y = np.linspace(-2.0 * b, 2.0 * b, 33)
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    inside = (X / a) ** 2 + (Y / b) ** 2 < 1
+    pressure = np.where(inside, 1e9 * np.sqrt(np.clip(1 - (X / a) ** 2 - (Y / b) ** 2, 0, 1)),
+                        0.0)
+    film = 0.5e-6 + 1e-3 * (X**2 + Y**2) * ~inside
+    return x, y, pressure, film, a, b
+
+
+def _displayed_aspect(ax, line):
+    """Height / width of a drawn line on the screen (pixels)."""
+    import numpy as np
+
+    ax.figure.canvas.draw()
+    xy = ax.transData.transform(np.column_stack(line.get_data()))
+    return np.ptp(xy[:, 1]) / np.ptp(xy[:, 0])
+
+
+def test_ehl_contour_maps_show_the_hertz_ellipse_as_an_ellipse():
+    from asperity.plotting.ehl import contour_maps
+
+    x, y, p, h, a, b = _ellipse_fields()
+    fig = contour_maps(x, y, p, h, a, b, 0.5e-6)
+    for ax in fig.axes[:2]:
+        ellipse = next(ln for ln in ax.get_lines() if ln.get_label() == "Hertz contact")
+        assert _displayed_aspect(ax, ellipse) == pytest.approx(b / a, rel=0.02)
+    assert fig.legends and "Hertz contact" in [t.get_text() for t in fig.legends[0].texts]
+
+
+def test_normal_pressure_map_has_equal_axes_and_a_legend():
+    from asperity.plotting.normal import pressure_map
+
+    x, y, p, _, _, _ = _ellipse_fields()
+    fig = pressure_map(x, y, p, contact=p > 0)
+    ax = fig.axes[0]
+    assert ax.get_aspect() == 1.0
+    assert [t.get_text() for t in ax.get_legend().texts] == ["contact boundary"]
+
+
+def _transient_result():
+    import types
+
+    import numpy as np
+
+    x, y, _, film, a, b = _ellipse_fields()
+    X, _ = np.meshgrid(x, y, indexing="ij")
+    edges = np.linspace(0.0, 1e-6, 11)
+    counts = np.arange(10)[::-1] + 1
+    result = types.SimpleNamespace(
+        x=x, y=y, film=film, flow_x=25.0 * film + 0 * X, flow_y=0.1 * 25.0 * film,
+        contact_count_rate=np.zeros_like(film), film_edges=edges, film_counts=counts)
+    return result, types.SimpleNamespace(a=a, b=b)
+
+
+def test_film_histogram_labels_its_overflow_bin():
+    from asperity.plotting.ehl_transient import plot_film_histogram
+
+    result, _ = _transient_result()
+    fig = plot_film_histogram(result)
+    labels = [t.get_text() for t in fig.axes[0].get_legend().texts]
+    assert any(label.startswith("overflow: h >= 0.9 um") for label in labels)
+
+
+def test_flow_vectors_have_an_arrow_scale_and_equal_axes():
+    from matplotlib.quiver import QuiverKey
+
+    from asperity.plotting.ehl_transient import plot_flow_vectors
+
+    result, problem = _transient_result()
+    fig = plot_flow_vectors(result, problem)
+    ax = fig.axes[0]
+    keys = [c for c in ax.get_children() if isinstance(c, QuiverKey)]
+    assert len(keys) == 1 and "mm²/s" in keys[0].text.get_text()
+    # the key's flow is a round 1, 2 or 5 times a power of ten
+    mantissa = keys[0].U / 10 ** math.floor(math.log10(keys[0].U))
+    assert mantissa in (1.0, 2.0, 5.0)
+    assert ax.get_aspect() == 1.0
