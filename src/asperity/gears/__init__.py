@@ -1,0 +1,24 @@
+"""Gear pairs: involute geometry (ISO 21771), kinematics and load sharing along the path of
+contact, Blok's flash temperature, and the steady EHL film, lambda and friction at every
+position (:func:`solve_path`)."""
+
+from .geometry import GearPair, inverse_involute, involute
+from .handoff import point_index, toml_text, transient_case
+from .kinematics import Kinematics, kinematics
+from .loading import hertz_along_path, load_per_length, load_sharing, normal_force
+from .mixed import asperity_share, composite_roughness, mixed_friction
+from .path import EHLMesh, GearPathResult, Thermal, contact_problem, solve_path
+from .thermal import (
+    FLASH_CONSTANTS,
+    flash_temperature,
+    peclet_number,
+    thermal_contact_coefficient,
+)
+
+__all__ = [
+    "FLASH_CONSTANTS", "EHLMesh", "GearPair", "GearPathResult", "Kinematics", "Thermal",
+    "asperity_share", "composite_roughness", "contact_problem", "flash_temperature",
+    "hertz_along_path", "involute", "inverse_involute", "kinematics", "load_per_length",
+    "load_sharing", "mixed_friction", "normal_force", "peclet_number", "point_index",
+    "solve_path", "thermal_contact_coefficient", "toml_text", "transient_case",
+]

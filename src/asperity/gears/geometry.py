@@ -187,21 +187,6 @@ class GearPair:
         rho_e = math.sqrt(ra[0] ** 2 - rb[0] ** 2)
         rho_c = rb[0] * math.tan(alpha_wt)
         pbt = math.pi * mt * math.cos(alpha_t)
-        if not rho_a > 0:
-            raise InputError("tip_diameter", (
-                f"no interference: the wheel tip reaches {-rho_a * 1e3:.3f} mm past T1, where "
-                "the line of action touches the pinion's base circle; reduce the wheel tip "
-                "diameter or raise the pinion profile shift"))
-        if not rho_e < t1t2:
-            raise InputError("tip_diameter", (
-                "no interference: the pinion tip reaches past T2, where the line of action "
-                "touches the wheel's base circle; reduce the pinion tip diameter or raise the "
-                "wheel profile shift"))
-        eps_alpha = (rho_e - rho_a) / pbt
-        if not eps_alpha >= 1.0:
-            raise InputError("centre_distance", (
-                f"a transverse contact ratio >= 1 (it is {eps_alpha:.3f}: the mesh loses "
-                "contact); raise the tip diameters or reduce the centre distance"))
         tip_thickness = []
         for i, (z, x, name) in enumerate(((z1, x1, "pinion"), (z2, x2, "wheel"))):
             x_min = 1.0 - z * math.sin(alpha_t) ** 2 / (2.0 * cos_b)
@@ -217,6 +202,21 @@ class GearPair:
                 raise InputError("tip_diameter", (
                     f"no pointed tip: the {name} tooth thickness at the tip is "
                     f"{s_tip * 1e3:.4f} mm; reduce the tip diameter or the profile shift"))
+        if not rho_a > 0:
+            raise InputError("tip_diameter", (
+                f"no interference: the wheel tip reaches {-rho_a * 1e3:.3f} mm past T1, where "
+                "the line of action touches the pinion's base circle; reduce the wheel tip "
+                "diameter or raise the pinion profile shift"))
+        if not rho_e < t1t2:
+            raise InputError("tip_diameter", (
+                "no interference: the pinion tip reaches past T2, where the line of action "
+                "touches the wheel's base circle; reduce the pinion tip diameter or raise the "
+                "wheel profile shift"))
+        eps_alpha = (rho_e - rho_a) / pbt
+        if not eps_alpha >= 1.0:
+            raise InputError("centre_distance", (
+                f"a transverse contact ratio >= 1 (it is {eps_alpha:.3f}: the mesh loses "
+                "contact); raise the tip diameters or reduce the centre distance"))
         return {
             "alpha_t": alpha_t, "mt": mt, "d": d, "db": db, "rb": rb, "da": da, "ra": ra,
             "beta_b": beta_b, "a0": a0, "aw": aw, "alpha_wt": alpha_wt,

@@ -1,0 +1,232 @@
+"""Gear geometry, kinematics, load sharing and flash temperature against independent references.
+
+Sources and numbers are stated in docs/gears.md.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate, special
+
+from asperity.errors import InputError
+from asperity.gears import (
+    FLASH_CONSTANTS,
+    GearPair,
+    flash_temperature,
+    involute,
+    inverse_involute,
+    kinematics,
+    load_per_length,
+    load_sharing,
+    normal_force,
+)
+
+DEG = math.pi / 180.0
+
+
+def khk_pair():
+    """KHK Gear Technical Reference, calculation example of profile-shifted spur gears."""
+    return GearPair((12, 24), 3e-3, 20 * DEG, 0.0, (0.6, 0.36), 20e-3)
+
+
+def fzg_c():
+    return GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
+                    centre_distance=91.5e-3)
+
+
+def helical():
+    return GearPair((23, 67), 3e-3, 20 * DEG, 15 * DEG, (0.3, 0.1), 40e-3)
+
+
+PAIRS = [khk_pair, fzg_c, helical,
+         lambda: GearPair((20, 20), 5e-3, 25 * DEG, 0.0, (0.0, 0.0), 30e-3,
+                          tip_relief=(10e-6, 0.0))]
+
+
+def test_khk_worked_example():
+    """KHK: inv alpha_w = 0.034316, alpha_w = 26.0886 deg, a = 56.4999 mm, d_b 33.8289 /
+    67.6579, d_w 37.667 / 75.333, d_a 44.840 / 79.400 mm (constant clearance = ISO tip
+    alteration), contact ratio 1.202."""
+    g = khk_pair()
+    assert involute(g.alpha_wt) == pytest.approx(0.034316, abs=1e-6)
+    assert g.alpha_wt / DEG == pytest.approx(26.0886, abs=5e-4)
+    assert g.aw * 1e3 == pytest.approx(56.4999, abs=1e-4)
+    assert np.array(g.db) * 1e3 == pytest.approx([33.8289, 67.6579], abs=1e-4)
+    assert np.array(g.dw) * 1e3 == pytest.approx([37.667, 75.333], abs=1e-3)
+    assert np.array(g.da) * 1e3 == pytest.approx([44.840, 79.400], abs=1e-3)
+    assert g.contact_ratio == pytest.approx(1.202, abs=1e-3)
+
+
+def test_fzg_type_c_tips_and_contact_ratio():
+    """The C-type gear's tabulated tip diameters 82.46 / 118.36 mm follow from ISO 21771's tip
+    alteration at a = 91.5 mm; its contact ratio is quoted as 1.44."""
+    g = fzg_c()
+    assert np.array(g.da) * 1e3 == pytest.approx([82.46, 118.36], abs=0.01)
+    assert g.contact_ratio == pytest.approx(1.44, abs=0.005)
+    assert g.overlap_ratio == 0.0
+
+
+def test_inverse_involute_round_trip():
+    angles = np.radians([5.0, 14.5, 20.0, 26.0886, 35.0, 50.0])
+    for a in angles:
+        assert inverse_involute(involute(a)) == pytest.approx(a, rel=1e-13)
+
+
+@pytest.mark.parametrize("make", PAIRS)
+def test_contact_ratio_two_routes(make):
+    """Path length over the base pitch against ISO 21771's sum of tangents
+    eps = [z1 (tan a_a1 - tan a_wt) + z2 (tan a_a2 - tan a_wt)] / (2 pi); base pitch
+    pi m_t cos a_t against 2 pi r_b1 / z1."""
+    g = make()
+    z1, z2 = g.teeth
+    tan_a = [math.tan(math.acos(db / da)) for db, da in zip(g.db, g.da, strict=True)]
+    iso = (z1 * (tan_a[0] - math.tan(g.alpha_wt)) + z2 * (tan_a[1] - math.tan(g.alpha_wt))) \
+        / (2 * math.pi)
+    assert g.contact_ratio == pytest.approx(iso, rel=1e-12)
+    assert g.pbt == pytest.approx(2 * math.pi * g.rb[0] / z1, rel=1e-13)
+    pts = g.points
+    assert pts["B"] - pts["A"] == pytest.approx(pts["E"] - pts["D"], rel=1e-12)
+
+
+@pytest.mark.parametrize("make", PAIRS)
+def test_radii_sum_to_line_of_action(make):
+    """rho1 + rho2 = T1T2 = sqrt(a_w^2 - (r_b1 + r_b2)^2) (Pythagoras on the centre line)."""
+    g = make()
+    rho1 = g.path(25)
+    kin = kinematics(g, rho1, 100.0)
+    t1t2 = math.sqrt(g.aw**2 - (g.rb[0] + g.rb[1]) ** 2)
+    assert kin.rho1 + kin.rho2 == pytest.approx(np.full(25, t1t2), rel=1e-12)
+    # the tips: rho1 at E and rho2 at A are the involute radii sqrt(r_a^2 - r_b^2)
+    assert kin.rho1[-1] == pytest.approx(math.sqrt(g.ra[0] ** 2 - g.rb[0] ** 2), rel=1e-12)
+    assert kin.rho2[0] == pytest.approx(math.sqrt(g.ra[1] ** 2 - g.rb[1] ** 2), rel=1e-12)
+
+
+@pytest.mark.parametrize("make", PAIRS)
+def test_sliding_speed_from_pitch_distance(make):
+    """u1 - u2 = (omega1 + omega2) s, s the distance from the pitch point; pure rolling at C."""
+    g = make()
+    omega1 = 2170 * 2 * math.pi / 60
+    kin = kinematics(g, g.path(25), omega1)
+    s = kin.rho1 - g.rb[0] * math.tan(g.alpha_wt)
+    expected = (omega1 + omega1 * g.teeth[0] / g.teeth[1]) * s
+    assert kin.sliding_speed == pytest.approx(expected, rel=1e-10, abs=1e-12)
+    i_c = int(np.argmin(np.abs(s)))
+    assert abs(s[i_c]) < 1e-15
+    assert kin.slide_roll_ratio[i_c] == pytest.approx(0.0, abs=1e-12)
+    # pitch-line speed omega1 r_w1 is the rolling speed of both flanks at C (transverse)
+    v_t = omega1 * 0.5 * g.dw[0] * math.sin(g.alpha_wt) * math.cos(g.beta_b)
+    assert kin.u1[i_c] == pytest.approx(v_t, rel=1e-12)
+    assert kin.u2[i_c] == pytest.approx(v_t, rel=1e-12)
+
+
+@pytest.mark.parametrize("relief", [(0.0, 0.0), (10e-6, 0.0), (0.0, 8e-6), (5e-6, 5e-6)])
+def test_load_sharing_sums_to_total(relief):
+    """The two pairs in contact, a base pitch apart, carry the whole normal force."""
+    g = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
+                 centre_distance=91.5e-3, tip_relief=relief)
+    pts = g.points
+    rho = np.linspace(pts["A"], pts["B"], 41)
+    total = load_sharing(g, rho) + load_sharing(g, rho + g.pbt)
+    assert total == pytest.approx(np.ones(41), abs=1e-12)
+    single = np.linspace(pts["B"], pts["D"], 11)[1:-1]  # X jumps from 2/3 to 1 at B and D
+    assert load_sharing(g, single) == pytest.approx(np.ones(9))
+    # force balance: both pairs' loads per length times the face width give F_bn = T / r_b1
+    w = load_per_length(g, rho, 302.0) + load_per_length(g, rho + g.pbt, 302.0)
+    assert w * g.face_width == pytest.approx(np.full(41, 302.0 / g.rb[0]), rel=1e-12)
+
+
+def test_helical_sharing_is_uniform_for_full_overlap():
+    g = GearPair((23, 67), 3e-3, 20 * DEG, 15 * DEG, (0.3, 0.1), 40e-3)
+    assert g.overlap_ratio > 1
+    x = load_sharing(g, g.path(9))
+    assert x == pytest.approx(np.full(9, 1 / g.contact_ratio))
+    # w' times the mean total contact-line length eps_alpha b / cos(beta_b) is F_bn
+    length = g.contact_ratio * g.face_width / math.cos(g.beta_b)
+    assert load_per_length(g, g.path(9), 400.0) * length == pytest.approx(
+        np.full(9, normal_force(g, 400.0)))
+
+
+@pytest.mark.parametrize("kwargs, word", [
+    ({"teeth": (10, 40), "profile_shift": (0.0, 0.0)}, "undercut"),
+    ({"teeth": (16, 24), "profile_shift": (0.1817, 0.1715),
+      "tip_diameter": (95e-3, 118.36e-3)}, "pointed tip"),
+    ({"teeth": (16, 24), "profile_shift": (0.1817, 0.1715),
+      "tip_diameter": (76e-3, 112e-3)}, "contact ratio"),
+    ({"teeth": (16, 60), "profile_shift": (0.1, 0.0),
+      "tip_diameter": (82e-3, 285e-3)}, "interference"),
+    ({"teeth": (16, 24), "profile_shift": (0.5, 0.5), "centre_distance": 90e-3}, "jam"),
+])
+def test_invalid_gears_refused(kwargs, word):
+    base = {"normal_module": 4.5e-3, "pressure_angle": 20 * DEG, "helix_angle": 0.0,
+            "face_width": 14e-3}
+    with pytest.raises(InputError, match=word) as info:
+        GearPair(**base, **kwargs)
+    assert "\n" not in str(info.value)
+
+
+# --- flash temperature --------------------------------------------------------------------
+
+
+def _one_dimensional(profile, x):
+    """theta B sqrt(pi V) / q_mean at x (half-width 1) by the high-Peclet integral."""
+    if profile == "uniform":
+        def q(s):
+            return 1.0
+    else:
+        def q(s):
+            return 4.0 / math.pi * math.sqrt(max(0.0, 1.0 - s * s))
+    return integrate.quad(lambda s: q(s) / math.sqrt(x - s), -1.0, min(x, 1.0),
+                          limit=200)[0]
+
+
+@pytest.mark.parametrize("profile", ["uniform", "semi-elliptic"])
+def test_flash_constant_by_quadrature(profile):
+    """The closed-form constants against the maximum of the moving-source integral."""
+    res = __import__("scipy.optimize", fromlist=["x"]).minimize_scalar(
+        lambda x: -_one_dimensional(profile, x), bounds=(0.2, 1.0), method="bounded",
+        options={"xatol": 1e-7})
+    peak = -res.fun / math.sqrt(math.pi) / math.sqrt(2.0)
+    assert FLASH_CONSTANTS[profile] == pytest.approx(peak, rel=2e-5)
+
+
+@pytest.mark.parametrize("profile, tol", [("uniform", 0.01), ("semi-elliptic", 0.002)])
+def test_flash_temperature_against_jaeger_band_source(profile, tol):
+    """Jaeger's exact moving band source (Carslaw & Jaeger sec. 10.7, with the K0 kernel)
+    integrated numerically at Pe = V a / (2 kappa) = 100, heat into one body (V2 = 0)."""
+    k, rho, c = 45.0, 7850.0, 460.0
+    kappa = k / (rho * c)
+    a = 1e-4
+    speed = 100 * 2 * kappa / a
+    q_mean = 5e8
+
+    def flux(s):
+        if profile == "uniform":
+            return q_mean
+        return q_mean * 4 / math.pi * math.sqrt(max(0.0, 1 - (s / a) ** 2))
+
+    def kernel(u):
+        if u == 0:
+            return 0.0
+        return special.k0e(u) * math.exp(-2 * u) if u > 0 else special.k0e(-u)
+
+    def theta(x):
+        def g(s):
+            return flux(s) * kernel(speed * (x - s) / (2 * kappa))
+        return (integrate.quad(g, -a, x, limit=400)[0]
+                + integrate.quad(g, x, a, limit=400)[0]) / (math.pi * k)
+
+    xs = (np.linspace(-1.0, 0.0, 201) + 1e-9) * a
+    exact = max(theta(x) for x in xs)
+    b = math.sqrt(k * rho * c)
+    blok = flash_temperature(q_mean, a, speed, 0.0, b, b, profile)
+    assert float(blok) == pytest.approx(exact, rel=tol)
+
+
+def test_blok_partition_of_equal_surfaces():
+    """Equal bodies at equal speeds share the heat half and half: theta is that of one body
+    with q/2."""
+    b, v, a, q = 12_700.0, 5.0, 2e-4, 1e9
+    both = flash_temperature(q, a, v, v, b, b)
+    single = FLASH_CONSTANTS["semi-elliptic"] * 0.5 * q * math.sqrt(2 * a / v) / b
+    assert float(both) == pytest.approx(single, rel=1e-12)
