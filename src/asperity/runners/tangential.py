@@ -138,9 +138,9 @@ def _summary(case, fld, res, applied, identical):
     s.update(regions=len(res.regions), iterations=int(res.iterations),
              residual=float(res.residual), convolutions=int(res.convolutions),
              converged=bool(res.converged))
-    return s
     # the reference point of the moment (loading.center, or the centre of the normal load)
     s.update(moment_center_x_m=float(res.center[0]), moment_center_y_m=float(res.center[1]))
+    return s
 
 
 def _dataset(case, fld, res, path):
