@@ -77,6 +77,7 @@ _SUFFIXES = (("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "m/s"), ("_pa_s", 
 #: Words of summary keys written out (whole words only).
 _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "nijenbanning": "Nijenbanning", "dowson": "Dowson", "higginson": "Higginson",
+          "hamrock": "Hamrock", "roelands": "Roelands", "eyring": "Eyring", "iso": "ISO",
           "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
           "b": "b", "x": "x", "y": "y"}
 
