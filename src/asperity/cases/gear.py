@@ -64,15 +64,25 @@ class GearSpec(CaseModel):
     """``[gear]``: the involute pair (ISO 21771); lists are ``[pinion, wheel]``."""
 
     teeth: tuple[Annotated[int, Field(ge=5, le=1000)], Annotated[int, Field(ge=5, le=1000)]]
+    """Numbers of teeth [pinion, wheel]."""
     normal_module: Quantity("length", gt=0)
+    """Normal module m_n."""
     pressure_angle: Quantity("angle", gt=0) = math.radians(20.0)
+    """Normal pressure angle (e.g. "20 deg")."""
     helix_angle: Angle = 0.0
+    """Helix angle at the reference circle (0: spur gears)."""
     profile_shift: tuple[float, float] = (0.0, 0.0)
+    """Profile shift coefficients [pinion, wheel]."""
     face_width: Quantity("length", gt=0)
+    """Face width."""
     centre_distance: Quantity("length", gt=0) | None = None
+    """Centre distance (default from the profile shifts)."""
     tip_diameter: tuple[Quantity("length", gt=0), Quantity("length", gt=0)] | None = None
+    """Tip diameters [pinion, wheel] (default ISO 21771 with tip alteration)."""
     tip_relief: tuple[Length, Length] = (0.0, 0.0)
+    """Tip relief [pinion, wheel]."""
     crowning: tuple[Length, Length] = (0.0, 0.0)
+    """Crowning heights [pinion, wheel] (nonzero: an elliptical contact)."""
 
     @model_validator(mode="after")
     def _valid(self):
@@ -109,8 +119,11 @@ class OperationSpec(CaseModel):
     ``bulk_temperature`` of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     torque: Quantity("moment", gt=0)
+    """Pinion torque."""
     speed: Annotated[float, Field(gt=0)]
+    """Pinion speed: "2170 rpm" or "2170 1/min"; a plain number or "227 1/s" is rad/s."""
     bulk_temperature: Annotated[float, Field(gt=-100, lt=1000)] = 90.0
+    """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
 
@@ -120,15 +133,20 @@ class RoughnessSpec(CaseModel):
     ``rq``) and how the two combine (``rss`` sqrt(s1^2 + s2^2) or ``mean``)."""
 
     parameter: Literal["ra", "rq"] = "ra"
+    """Profile parameter of the flanks that enters lambda: "ra" or "rq"."""
     combination: Literal["rss", "mean"] = "rss"
+    """How the two flanks' roughness combine: "rss" sqrt(s1^2 + s2^2) or "mean" (ISO/TR 15144-1)."""
 
 
 class FrictionSpec(CaseModel):
     """``[friction]``: boundary friction coefficient and the lambda range of mixed friction."""
 
     boundary: Annotated[float, Field(ge=0, le=1)] = 0.1
+    """Boundary friction coefficient."""
     boundary_lambda: Annotated[float, Field(ge=0)] = 1.0
+    """Lambda below which the asperities carry all the load."""
     full_film_lambda: Annotated[float, Field(gt=0)] = 3.0
+    """Lambda above which the film carries all the load."""
 
     @model_validator(mode="after")
     def _order(self):
@@ -142,24 +160,37 @@ class ThermalSpec(CaseModel):
     pinion and wheel (default steel: 45, 7850, 460), and the heat-source ``profile``."""
 
     conductivity: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (45, 45)
+    """Thermal conductivity [pinion, wheel] in W/(m K)."""
     density: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (7850, 7850)
+    """Density [pinion, wheel] in kg/m^3."""
     specific_heat: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (
         460, 460)
+    """Specific heat [pinion, wheel] in J/(kg K)."""
     profile: Literal["semi-elliptic", "uniform"] = "semi-elliptic"
+    """Heat-source profile of the flash temperature: "semi-elliptic" or "uniform"."""
 
 
 class GearEHLSpec(CaseModel):
     """``[ehl]``: ``points`` along A-E and the steady mesh (:class:`asperity.gears.EHLMesh`)."""
 
     points: Annotated[int, Field(ge=5, le=400)] = 25
+    """Points along the path of contact A-E."""
     nx: Annotated[int, Field(ge=17, le=4097)] = 129
+    """Nodes along x of each steady EHL solve."""
     ny: Annotated[int, Field(ge=9, le=1025)] = 33
+    """Nodes along y of each steady EHL solve."""
     levels: Annotated[int, Field(ge=1, le=5)] = 2
+    """Grids in the multilevel sequence."""
     x_min: Annotated[float, Field(lt=-1.0, ge=-20.0)] = -2.5
+    """Inlet end of the domain in Hertz semi-axes a."""
     x_max: Annotated[float, Field(gt=1.0, le=20.0)] = 1.5
+    """Outlet end of the domain in Hertz semi-axes a."""
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
+    """Relative convergence tolerance of each steady solve."""
     max_sweeps: Annotated[int, Field(ge=100, le=200_000)] = 20_000
+    """Sweep limit of each steady solve."""
     damping: Annotated[float, Field(gt=0, le=1)] = 0.3
+    """Relaxation damping of the steady solves."""
 
     @model_validator(mode="after")
     def _levels(self):
@@ -182,11 +213,18 @@ class HandoffSpec(CaseModel):
     pinion roll angle (``"24 deg"``), with the transient mesh and time stepping."""
 
     at: str = "min-lambda"
+    """Point of the transient hand-off: "pitch", "min-lambda", "max-flash" or a pinion roll angle
+    ("24 deg")."""
     nx: Annotated[int, Field(ge=9, le=8193)] = 257
+    """Nodes along x of the transient case."""
     ny: Annotated[int, Field(ge=1, le=4097)] = 65
+    """Nodes along y of the transient case."""
     x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
+    """Inlet end of the transient domain in Hertz semi-axes a."""
     x_max: Annotated[float, Field(gt=1.0, le=100.0)] = 1.5
+    """Outlet end of the transient domain in Hertz semi-axes a."""
     time: TimeSpec = TimeSpec()
+    """Time stepping of the transient case."""
 
     @field_validator("at")
     @classmethod
@@ -211,19 +249,32 @@ class GearCase(CaseHeader):
     """``analysis = "gear"``: a gear pair along its path of contact (module notes)."""
 
     analysis: Literal["gear"]
+    """Selects the gear-pair analysis."""
     title: str = "Gear pair along the path of contact"
     gear: GearSpec
+    """The involute gear pair."""
     operation: OperationSpec
+    """Torque, speed and temperature."""
     body1: MaterialSpec = MaterialSpec(youngs_modulus=206e9, poisson_ratio=0.3)
+    """Pinion material (default steel)."""
     body2: MaterialSpec = MaterialSpec(youngs_modulus=206e9, poisson_ratio=0.3)
+    """Wheel material (default steel)."""
     lubricant: LubricantSpec
+    """Lubricant properties (as for ehl-steady)."""
     surface1: MovingSurfaceSpec
+    """Roughness of the pinion flank."""
     surface2: MovingSurfaceSpec
+    """Roughness of the wheel flank."""
     roughness: RoughnessSpec = RoughnessSpec()
+    """How the flank roughness enters lambda."""
     friction: FrictionSpec = FrictionSpec()
+    """Mixed-friction model."""
     thermal: ThermalSpec = ThermalSpec()
+    """Thermal properties for the flash temperature."""
     ehl: GearEHLSpec = GearEHLSpec()
+    """Points along A-E and the steady EHL mesh."""
     handoff: HandoffSpec = HandoffSpec()
+    """The transient mixed-EHL case written by asperity gear --emit-transient."""
 
     @model_validator(mode="after")
     def _rough(self):
