@@ -109,9 +109,12 @@ class SolverResult:
         x, y = getattr(self, "x", None), getattr(self, "y", None)
         if x is not None and y is not None:
             parts.append(f"grid {np.size(x)} x {np.size(y)}")
-        parts += [f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v!r}"
-                  for k, v in self._scalars().items() if k not in ("converged", "iterations",
-                                                                   "residual")]
+        for key in self._scalars():
+            if key in ("converged", "iterations", "residual"):
+                continue
+            value = getattr(self, key)
+            parts.append(f"{key}={value:.4g}" if isinstance(value, float | np.floating)
+                         and not isinstance(value, bool) else f"{key}={value!r}")
         parts.append(self.message.split(": ", 1)[1])
         return f"<{type(self).__name__} " + ", ".join(parts) + ">"
 
