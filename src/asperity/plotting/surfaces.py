@@ -189,10 +189,12 @@ def plot_texture(texture, title="Surface texture"):
         plot_families(fam, title=f"{title}: P, W and R profiles", axes=axes)
         heights, prefix = fam.evaluated("R"), "R"
     ax = fig.add_subplot(grid[1, 0])
-    spec = power_spectrum(texture.surface, window=None if texture.surface.periodic else "hann")
+    primary = fam.primary
+    spec = power_spectrum(primary, window=None if primary.periodic else "hann")
     ax.loglog(spec.q, spec.psd, "k-", lw=0.8)
     ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({'m^3' if spec.dim == 1 else 'm^4'})",
-           title="Power spectral density (as measured)")
+           title="Power spectral density (form removed" + (
+               "" if texture.surface.periodic else ", Hann window") + ")")
     ax.title.set_fontsize(9)
     plot_material_ratio(heights, prefix, ax=fig.add_subplot(grid[1, 1]),
                         title=f"{'R' if prefix == 'R' else fam.label}")
