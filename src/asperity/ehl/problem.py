@@ -31,9 +31,25 @@ import numpy as np
 from ..contact.hertz import hertz_line, hertz_point
 from ..errors import InputError, check_int, check_positive
 from ..materials import Material, contact_modulus
+from . import formulas
 from .lubricant import Lubricant
 
 __all__ = ["LineContact", "PointContact"]
+
+#: Outlet of the default domain, in Hertz semi-axes a: the film exit and its cavitation
+#: boundary lie within about 1.1 a.
+OUTLET = 1.5
+
+#: Inlet of the default domain at least this many a upstream of the centre (the seed's).
+MIN_INLET = 2.5
+
+#: Relative error of the central film, times ``H_c / dX^2``, of the discretisation on the
+#: default mesh: 17 % at M = 1000, L = 10 (circular, H_c = 0.031) with dX = 1/32, 4 % with
+#: 1/64 (second order); the default mesh keeps it near 2 % (docs/ehl-robustness.md).
+FILM_ERROR = 5.0
+
+#: Target relative discretisation error of the central film on the default mesh.
+MESH_TARGET = 0.02
 
 
 def _check_common(u1, u2, body1, body2, lubricant):
@@ -141,6 +157,31 @@ class _Contact:
         """Moes material parameter L = G (2U)^(1/4)."""
         return self.G * (2.0 * self.U) ** 0.25
 
+    def inlet_extent(self) -> float:
+        """Distance of the default inlet upstream of the centre, in a.
+
+        The fully flooded inlet distance of Hamrock & Dowson (1977, part IV),
+        ``m* = 1 + 3.06 [(Rx/a)^2 hc/Rx]^0.58 = 1 + 3.06 H^0.58`` with ``H = hc Rx/a^2`` the
+        estimated central film in Hertzian units, with its inlet length ``m* - 1`` counted
+        1.8 times: ``1 + 1.8 (m* - 1)``, and at least the seed's 2.5 a (which the gear case
+        keeps). An inlet at ``m*`` starved the central film by 1.3 % (circular, M = 10,
+        L = 10), one at ``1 + 1.5 (m* - 1)`` by 0.2 % (docs/ehl-robustness.md).
+        """
+        film = self.film_estimate() / self.film_scale
+        return max(MIN_INLET, 1.0 + 1.8 * 3.06 * film**0.58)
+
+    def cells_per_a(self) -> int:
+        """Default mesh spacing along x: dX = 1/n with n a power of two from 32 to 1024.
+
+        The discretisation error of the central film grows like ``FILM_ERROR dX^2 / H_c``
+        (second order, relative to the Hertzian-unit film ``H_c``, which shrinks with the load
+        parameter M); ``n`` is the smallest power of two that keeps it below
+        ``MESH_TARGET``.
+        """
+        film = self.film_estimate() / self.film_scale
+        need = np.sqrt(FILM_ERROR / (MESH_TARGET * film))
+        return int(2 ** np.clip(np.ceil(np.log2(need)), 5, 10))
+
 
 @dataclass(frozen=True)
 class PointContact(_Contact):
@@ -207,9 +248,40 @@ class PointContact(_Contact):
         """Moes load parameter M = W (2U)^(-3/4)."""
         return self.W * (2.0 * self.U) ** -0.75
 
+    def film_estimate(self) -> float:
+        """Central film from Nijenbanning, Venner & Moes (1994), m (``ry >= rx``; for
+        ``ry < rx`` evaluated at ``ry = rx``: an estimate for the domain and the mesh)."""
+        lub = self.lubricant
+        return formulas.nijenbanning_point(
+            self.load, self.rx, max(self.ry, self.rx), self.mean_speed, lub.viscosity,
+            lub.pressure_viscosity, self.reduced_modulus).central
+
     def default_domain(self):
-        """The seed's domain -2.5a < x < 1.5a, -2b < y < 2b (m)."""
-        return (-2.5 * self.a, 1.5 * self.a), (-2.0 * self.b, 2.0 * self.b)
+        """-m a < x < 1.5 a, -w < y < w (m) with ``m`` = :meth:`inlet_extent` and
+        ``w = max(2 b, a)``.
+
+        The seed's domain (-2.5a..1.5a, -2b..2b) for the gear case and any other contact
+        whose fully flooded inlet lies within 2.5 a; the transverse half-width keeps at least
+        one a for ellipses entrained along their major axis (b < a).
+        """
+        half_y = max(2.0 * self.b, self.a)
+        return (-self.inlet_extent() * self.a, OUTLET * self.a), (-half_y, half_y)
+
+    def default_nodes(self, domain=None) -> tuple[int, int]:
+        """Default mesh (nx, ny) on ``domain`` (default :meth:`default_domain`).
+
+        Along x ``dX = 1/``:meth:`cells_per_a`; across, 32 cells (``dY = b/8`` on the
+        default domain of an ellipse with ``b >= a/2``) or fewer (16 at least) to keep
+        ``dY >= 4 dX``: with cells nearly square the lagged y-couplings of an Eyring
+        lubricant's Poiseuille flow made the x-line relaxation diverge
+        (docs/ehl-robustness.md). ``nx - 1`` and ``ny - 1`` are multiples of 8.
+        """
+        (x0, x1), (y0, y1) = _check_domain(
+            self.default_domain() if domain is None else domain, self.a, self.b)
+        dx = self.a / self.cells_per_a()
+        nx = 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1
+        ny = 8 * int(np.clip((y1 - y0) / (32 * dx), 2, 4)) + 1
+        return nx, ny
 
     def grid(self, nx: int, ny: int, domain=None):
         """Node (cell-centre) coordinates ``x``, ``y`` in m on ``domain`` (default: the seed's).
@@ -285,9 +357,25 @@ class LineContact(_Contact):
         """Moes load parameter M = W' (2U)^(-1/2)."""
         return self.W * (2.0 * self.U) ** -0.5
 
+    def film_estimate(self) -> float:
+        """Central film from Moes (1992), m (for the domain and the mesh)."""
+        lub = self.lubricant
+        return formulas.moes_line(self.load_per_length, self.radius, self.mean_speed,
+                                  lub.viscosity, lub.pressure_viscosity,
+                                  self.reduced_modulus).central
+
     def default_domain(self):
-        """The seed's -2.5a < x < 1.5a (the y bounds are unused), m."""
-        return (-2.5 * self.a, 1.5 * self.a), (0.0, 0.0)
+        """-m a < x < 1.5 a with ``m`` = :meth:`inlet_extent` (the y bounds are unused), m;
+        the seed's -2.5a..1.5a when the fully flooded inlet lies within 2.5 a."""
+        return (-self.inlet_extent() * self.a, OUTLET * self.a), (0.0, 0.0)
+
+    def default_nodes(self, domain=None) -> tuple[int, int]:
+        """Default mesh (nx, 1) on ``domain``: ``dX = 1/``:meth:`cells_per_a`, ``nx - 1`` a
+        multiple of 8."""
+        (x0, x1), _ = _check_domain(
+            self.default_domain() if domain is None else domain, self.a, None)
+        dx = self.a / self.cells_per_a()
+        return 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1, 1
 
     def grid(self, nx: int, ny: int = 1, domain=None):
         """Node coordinates ``x`` (m) on the x-range of ``domain``; ``y = [0.]``."""

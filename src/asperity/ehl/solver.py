@@ -453,11 +453,11 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
 def solve_steady(
     problem,
     *,
-    nx: int = 129,
-    ny: int = 65,
+    nx: int | None = None,
+    ny: int | None = None,
     domain=None,
     method: str | None = None,
-    levels: int = 1,
+    levels: int | None = None,
     near: int = 4,
     tol: float = 1e-5,
     max_sweeps: int = 5000,
@@ -474,19 +474,24 @@ def solve_steady(
     ----------
     problem : PointContact or LineContact
         The contact (SI).
-    nx, ny : int
+    nx, ny : int, optional
         Nodes along x and y on the finest grid (``ny`` is ignored for a line contact); the
-        seed's mesh is 801 x 201 on its domain.
+        seed's mesh is 801 x 201 on its domain. Default ``problem.default_nodes(domain)``:
+        dX from the estimated film (a discretisation error of the central film near 2 %),
+        ``dY >= 4 dX`` (docs/ehl-robustness.md).
     domain : ((x0, x1), (y0, y1)), optional
-        In m; default ``problem.default_domain()`` (-2.5a..1.5a, -2b..2b). Must hold the
-        Hertz contact.
+        In m; default ``problem.default_domain()``: the seed's -2.5a..1.5a, -2b..2b, with the
+        inlet moved upstream where Hamrock & Dowson's fully flooded inlet distance asks for
+        it (thick films, low M). Must hold the Hertz contact.
     method : {"line", "point"}, optional
         x-line relaxation or the seed's point update (Eq. 7). Default: ``"line"`` for a point
         contact, ``"point"`` for a line contact (x-line relaxation of the single row of a line
         contact diverges: every off-centre pressure coefficient is then lagged at once).
-    levels : int
+    levels : int, optional
         Grid sequencing: solve first on ``levels - 1`` grids coarsened by 2 in each direction
         (node counts ``(n - 1)/2 + 1``) and interpolate each solution as the next start.
+        Default: :func:`sequencing_levels` of the default mesh when ``nx`` is not given,
+        else 1.
     near : int
         Number of x-neighbour pressure coefficients kept implicit by the line relaxation.
     tol : float
@@ -521,6 +526,11 @@ def solve_steady(
     tol = check_positive("tol", tol)
     load_gain = check_positive("load_gain", load_gain)
     damping = check_damping(damping)
+    default_nx, default_ny = problem.default_nodes(domain)
+    if levels is None:
+        levels = sequencing_levels(default_nx, default_ny) if nx is None else 1
+    nx = default_nx if nx is None else nx
+    ny = default_ny if ny is None else ny
     levels = check_int("levels", levels, 1)
     max_sweeps = check_int("max_sweeps", max_sweeps, 1)
     refresh = check_int("refresh", refresh, 1)
@@ -564,6 +574,21 @@ def solve_steady(
             "the Hertz pressure), so the p = 0 inlet starves the film; expected x_min further "
             "upstream (the seed: -2.5 a)", RuntimeWarning, stacklevel=2)
     return result
+
+
+def sequencing_levels(nx: int, ny: int) -> int:
+    """Grid-sequencing levels of a default mesh: halve (at most 3 times) while the coarsest
+    grid keeps at least 33 nodes along x and 17 across (``ny = 1``: a line contact); on
+    9 nodes across (dY = b/2) the gear case's coarsest grid did not converge."""
+    levels = 1
+    while levels < 4:
+        f = 2**levels
+        if (nx - 1) % f or (nx - 1) // f + 1 < 33:
+            break
+        if ny > 1 and ((ny - 1) % f or (ny - 1) // f + 1 < 17):
+            break
+        levels += 1
+    return levels
 
 
 def check_contact_and_method(problem, method):

@@ -1,0 +1,191 @@
+"""Robust defaults of the steady EHL solver across lubricated contacts (issue 17).
+
+Every case is solved with ``solve_steady(problem)`` alone: the domain, the mesh and the
+grid sequencing come from the problem (``default_domain``, ``default_nodes``: inlet from
+Hamrock & Dowson's fully flooded distance, mesh from the estimated film), no solver setting is
+tuned. Each row prints the sweeps (finest grid / all grids) and the central and minimum films
+against the film formulas (run with ``-s`` to see the table; docs/ehl-robustness.md holds it
+with the sources and the accuracy each formula claims).
+
+Tolerances (central film):
+
+- Newtonian, Barus, incompressible (the formulas' own model): 6 % against Nijenbanning et al.
+  (point, ``ry >= rx``) and Moes (line), whose fits follow their numerical solutions within a
+  few per cent; the default mesh adds about 2 %.
+- Against Hamrock-Dowson (point, k >= 1): 25 %; it is a
+  regression of older, coarser solutions that differ from converged solutions by up to
+  about 20 % at high load. Chittenden et al. (k < 1, entrainment along the major axis): only
+  -20 %/+50 %, since the film there still depends on the transverse extent of the domain
+  (an open point, docs/ehl-robustness.md).
+- Roelands viscosity, Dowson-Higginson density and Eyring shear: 30 % below to 5 % above
+  Hamrock-Dowson; compressibility and the Roelands law (lower viscosity at high pressure than
+  Barus with the same alpha) thin the film by 10-20 %, the Eyring linearisation leaves the
+  central film unchanged (it acts on the Poiseuille flow where the film is set, in the inlet,
+  only weakly).
+"""
+
+import numpy as np
+import pytest
+
+from asperity.contact.hertz import radius_ratio
+from asperity.ehl import LineContact, Lubricant, PointContact, solve_steady
+from asperity.ehl.formulas import (
+    chittenden_point,
+    dowson_higginson_line,
+    hamrock_dowson_point,
+    moes_line,
+    nijenbanning_point,
+)
+from asperity.materials import Material
+
+STEEL = Material(210e9, 0.3)
+GLASS = Material(75e9, 0.22)
+BODY = Material(2e11, 0.3)
+E_PRIME = 2e11 / (1 - 0.3**2)
+GEAR = Material(227e9 * (1 - 0.3**2), 0.3)
+
+
+def _barus():
+    return Lubricant(0.04, 2e-8, viscosity_model="barus", compressible=False)
+
+
+def _point(M, L, k=1.0):
+    """Newtonian Barus incompressible point contact with Moes groups M, L and k = b/a."""
+    alpha, eta0, rx = 2e-8, 0.04, 0.01
+    two_u = (L / (alpha * E_PRIME)) ** 4
+    u = 0.5 * two_u * E_PRIME * rx / eta0
+    load = M * two_u**0.75 * E_PRIME * rx**2
+    ry = rx / radius_ratio(1.0 / k)
+    return PointContact(rx, ry, load, u, u, BODY, BODY, _barus())
+
+
+def _line(M, L):
+    """Newtonian Barus incompressible line contact with Moes groups M, L."""
+    alpha, eta0, r = 2e-8, 0.04, 0.01
+    two_u = (L / (alpha * E_PRIME)) ** 4
+    u = 0.5 * two_u * E_PRIME * r / eta0
+    return LineContact(r, M * two_u**0.5 * E_PRIME * r, u, u, BODY, BODY, _barus())
+
+
+def _ball(load, disc, tau0=None, xi=0.0):
+    """12.5 mm radius steel ball on a flat disc, 0.25 Pa s Roelands + Dowson-Higginson oil at
+    0.1 m/s: the slow, viscous ball-on-disc rig of the issue."""
+    lub = Lubricant(0.25, 2e-8, eyring_stress=tau0)
+    u = 0.1
+    return PointContact(0.0125, 0.0125, load, u * (1 + xi / 2), u * (1 - xi / 2), STEEL, disc,
+                        lub)
+
+
+def _gear():
+    """The seed's gear case (Holmes et al. 2005, Table 1): Roelands, DH, Eyring 10 MPa."""
+    u, xi = 25.0, 0.25
+    return PointContact(0.0191, 0.151, 962.0, u * (1 + xi / 2), u * (1 - xi / 2), GEAR, GEAR,
+                        Lubricant(0.005, 11.1e-9, eyring_stress=10e6))
+
+
+# name, problem factory, formula model ("exact": Newtonian Barus incompressible)
+CASES = [
+    ("circle M=10 L=10", lambda: _point(10, 10), "exact"),
+    ("circle M=100 L=10", lambda: _point(100, 10), "exact"),
+    ("circle M=1000 L=10", lambda: _point(1000, 10), "exact"),
+    ("circle M=50 L=2", lambda: _point(50, 2), "exact"),
+    ("circle M=50 L=20", lambda: _point(50, 20), "exact"),
+    ("ellipse k=2 M=100 L=10", lambda: _point(100, 10, 2.0), "exact"),
+    ("ellipse k=4 M=100 L=10", lambda: _point(100, 10, 4.0), "exact"),
+    ("ellipse k=8 M=100 L=10", lambda: _point(100, 10, 8.0), "exact"),
+    ("ellipse k=0.5 M=100 L=10", lambda: _point(100, 10, 0.5), "exact"),
+    ("ellipse k=0.25 M=100 L=10", lambda: _point(100, 10, 0.25), "exact"),
+    ("line M=10 L=10", lambda: _line(10, 10), "exact"),
+    ("line M=100 L=10", lambda: _line(100, 10), "exact"),
+    ("line M=1000 L=10", lambda: _line(1000, 10), "exact"),
+    ("line M=50 L=20", lambda: _line(50, 20), "exact"),
+    ("ball steel 15 N Roelands", lambda: _ball(15.0, STEEL), "roelands"),
+    ("ball steel 15 N Eyring 5 MPa xi=0.5", lambda: _ball(15.0, STEEL, 5e6, 0.5), "roelands"),
+    ("ball glass 30 N Eyring 5 MPa xi=0.5", lambda: _ball(30.0, GLASS, 5e6, 0.5), "roelands"),
+    ("gear 25 m/s Eyring 10 MPa xi=0.25", _gear, "roelands"),
+]
+
+
+def _formulas(prob):
+    """(name, central, minimum) rows of the formulas that apply to the problem, m."""
+    lub = prob.lubricant
+    args = (prob.mean_speed, lub.viscosity, lub.pressure_viscosity, prob.reduced_modulus)
+    if isinstance(prob, LineContact):
+        moes = moes_line(prob.load_per_length, prob.radius, *args)
+        dh = dowson_higginson_line(prob.load_per_length, prob.radius, *args)
+        return [("Moes", moes.central, None), ("Dowson-Higginson", None, dh.minimum)]
+    rows = []
+    if prob.ry >= prob.rx:
+        rows.append(("Nijenbanning", nijenbanning_point(prob.load, prob.rx, prob.ry,
+                                                        *args).central, None))
+        hd = hamrock_dowson_point(prob.load, prob.rx, prob.ry, *args)
+        rows.append(("Hamrock-Dowson", hd.central, hd.minimum))
+    else:
+        ch = chittenden_point(prob.load, prob.rx, prob.ry, *args)
+        rows.append(("Chittenden", ch.central, ch.minimum))
+    return rows
+
+
+@pytest.mark.parametrize("name, factory, model", CASES, ids=[c[0] for c in CASES])
+def test_default_settings_converge_and_match_the_film_formulas(name, factory, model):
+    """Default settings converge; the central film agrees with the formulas (module doc)."""
+    prob = factory()
+    res = solve_steady(prob)
+    rows = _formulas(prob)
+    ratios = "  ".join(
+        f"{f}: hc {res.central_film / hc:.3f}" if hc else f"{f}: hmin {res.minimum_film / hm:.3f}"
+        for f, hc, hm in rows)
+    hd_min = [res.minimum_film / hm for f, hc, hm in rows if hc and hm]
+    nx, ny = res.levels[-1]
+    print(f"\n| {name} | M {prob.M:.0f} | L {prob.L:.1f} | k "
+          f"{'line' if ny == 1 else f'{prob.b / prob.a:.2f}'} | {nx}x{ny}, {len(res.levels)} "
+          f"levels | sweeps {res.sweeps}/{res.total_sweeps} | hc {res.central_film * 1e9:.1f} nm"
+          f" | hmin {res.minimum_film * 1e9:.1f} nm | {ratios}"
+          + (f"  hmin/HD {hd_min[0]:.3f}" if hd_min else "") + " |")
+    assert res.converged and abs(res.load_error) < 1e-4
+    assert res.inlet_pressure < 0.01
+    for formula, hc, _ in rows:
+        if hc is None:
+            continue
+        ratio = res.central_film / hc
+        if model == "exact" and formula in ("Nijenbanning", "Moes"):
+            assert ratio == pytest.approx(1.0, abs=0.06), formula
+        elif formula == "Chittenden":
+            # k < 1: the film still depends on the transverse extent of the domain (+39 % on
+            # +-a, +18 % on +-3a at k = 0.5), see docs/ehl-robustness.md
+            assert 0.8 < ratio < 1.5, formula
+        elif model == "exact":
+            assert ratio == pytest.approx(1.0, abs=0.25), formula
+        else:
+            assert 0.7 < ratio < 1.05, formula
+    assert 0 < res.minimum_film < res.central_film
+
+
+def test_high_viscosity_ball_diverged_on_square_cells():
+    """The issue's failure, reproduced: the slow viscous ball with an Eyring oil at xi = 0.5
+    on the former default mesh (129 x 65 on -2.5a..1.5a, cells nearly square) does not
+    converge in 1000 sweeps (the residual stays of order 1); the default mesh (dY >= 4 dX)
+    converges in a few hundred sweeps."""
+    prob = _ball(15.0, STEEL, 5e6, 0.5)
+    old = solve_steady(prob, nx=129, ny=65, max_sweeps=1000,
+                       domain=((-2.5 * prob.a, 1.5 * prob.a), (-2 * prob.b, 2 * prob.b)))
+    assert not old.converged and old.residual > 1e-2
+    new = solve_steady(prob)
+    assert new.converged and new.sweeps < 1000
+    ny = new.y.size
+    assert (new.y[1] - new.y[0]) >= 4 * (new.x[1] - new.x[0]) and ny == 33
+
+
+def test_default_domain_and_mesh_follow_the_regime():
+    """The seed's domain for the gear case; a longer inlet for a thick film (low M), finer
+    cells for a thin one (high M)."""
+    gear = _gear()
+    (x0, x1), (y0, y1) = gear.default_domain()
+    assert x0 == pytest.approx(-2.5 * gear.a) and x1 == pytest.approx(1.5 * gear.a)
+    assert y1 == pytest.approx(2 * gear.b)
+    thick, thin = _point(10, 10), _point(1000, 10)
+    assert thick.default_domain()[0][0] < -5 * thick.a
+    assert thin.cells_per_a() >= 4 * thick.cells_per_a()
+    nx, ny = thin.default_nodes()
+    assert (nx - 1) % 8 == 0 and ny == 33
+    assert np.isclose(thin.default_domain()[0][0], -2.5 * thin.a)
