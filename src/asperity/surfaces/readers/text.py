@@ -27,7 +27,7 @@ import numpy as np
 
 from ...errors import InputError
 
-__all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "read_table"]
+__all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "read_table"]
 
 #: Field values that instruments write for a point they could not measure (lower case).
 MISSING_TOKENS = frozenset({"", "nan", "-nan", "+nan", "bad", "nd", "n/a", "na", "***", "*",
@@ -55,8 +55,6 @@ class TextTable:
         of integers, taken as exact.
     first_line : int
         Line number (1-based) of the first data row.
-    comments : list of str
-        Header lines that are not key-value pairs.
     """
 
     data: np.ndarray
@@ -64,7 +62,6 @@ class TextTable:
     header: dict[str, str]
     resolution: np.ndarray
     first_line: int
-    comments: list[str]
 
 
 def normalise_key(key: str) -> str:
@@ -102,13 +99,13 @@ def _resolution(token: str) -> float:
     return 10.0 ** (int(exponent or 0) - decimals)
 
 
-def header_pairs(lines: list[str]) -> tuple[dict[str, str], list[str]]:
+def header_pairs(lines: list[str]) -> dict[str, str]:
     """``key: value``, ``key = value`` or ``key,value[,unit]`` header lines as a dict.
 
-    Returns the pairs (keys normalised, values with the fields joined by spaces) and the lines
-    that are not pairs.
+    Keys are normalised (:func:`normalise_key`), values are the fields joined by spaces; the
+    first occurrence of a key wins; other lines are ignored.
     """
-    pairs, other = {}, []
+    pairs = {}
     for line in lines:
         text = _COMMENT.sub("", line).strip()
         match = _KEY_VALUE.match(text)
@@ -118,9 +115,7 @@ def header_pairs(lines: list[str]) -> tuple[dict[str, str], list[str]]:
         fields = _split(text)
         if len(fields) >= 2 and not _NUMBER.match(fields[0]) and fields[1]:
             pairs.setdefault(normalise_key(fields[0]), " ".join(fields[1:]))
-        elif text:
-            other.append(text)
-    return pairs, other
+    return pairs
 
 
 def _lines(path: Path) -> list[str]:
@@ -202,5 +197,5 @@ def read_table(path: Path) -> TextTable:
         if len(fields) == width and all(_value(f, False) is None for f in fields):
             names = fields
             header_lines = [h for h in header_lines if h is not line]
-    pairs, other = header_pairs([line for line in header_lines if line.strip()])
-    return TextTable(data, names, pairs, resolution, start + 1, other)
+    pairs = header_pairs([line for line in header_lines if line.strip()])
+    return TextTable(data, names, pairs, resolution, start + 1)
