@@ -7,15 +7,15 @@ import math
 
 import numpy as np
 import pytest
-from scipy import integrate, special
+from scipy import integrate, optimize, special
 
 from asperity.errors import InputError
 from asperity.gears import (
     FLASH_CONSTANTS,
     GearPair,
     flash_temperature,
-    involute,
     inverse_involute,
+    involute,
     kinematics,
     load_per_length,
     load_sharing,
@@ -183,7 +183,7 @@ def _one_dimensional(profile, x):
 @pytest.mark.parametrize("profile", ["uniform", "semi-elliptic"])
 def test_flash_constant_by_quadrature(profile):
     """The closed-form constants against the maximum of the moving-source integral."""
-    res = __import__("scipy.optimize", fromlist=["x"]).minimize_scalar(
+    res = optimize.minimize_scalar(
         lambda x: -_one_dimensional(profile, x), bounds=(0.2, 1.0), method="bounded",
         options={"xatol": 1e-7})
     peak = -res.fun / math.sqrt(math.pi) / math.sqrt(2.0)

@@ -1,0 +1,180 @@
+"""Film, lambda and the transient hand-off along the path of contact (coarse meshes; the
+25-point check on the example's mesh is marked slow). References in docs/gears.md."""
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from asperity.cases import load_case
+from asperity.ehl import LineContact, Lubricant, solve_steady
+from asperity.examples import example_text
+from asperity.gears import EHLMesh, GearPair, load_sharing, solve_path, transient_case
+from asperity.materials import Material
+
+DEG = math.pi / 180.0
+STEEL = Material(206e9, 0.3)
+#: Newtonian, Barus, incompressible: the assumptions of the film formulas
+NEWTONIAN = Lubricant(viscosity=0.0166, pressure_viscosity=1.7e-8, viscosity_model="barus",
+                      compressible=False)
+FZG = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
+               centre_distance=91.5e-3)
+OMEGA = 2170 * 2 * math.pi / 60
+COARSE = EHLMesh(nx=97, levels=1)
+
+
+def test_pitch_point_equals_direct_solver_call():
+    """The path's film at C is the steady solver's film for R, w', u1, u2 of the pitch point
+    computed here from the geometry by hand (r_w sin alpha_w radii, pitch-line speed)."""
+    rho1 = np.array([FZG.points["C"]])
+    mesh = EHLMesh(nx=97, levels=1, damping=0.3)
+    res = solve_path(FZG, rho1, pinion_speed=OMEGA, torque=302.0, body1=STEEL, body2=STEEL,
+                     lubricant=NEWTONIAN, roughness=0.42e-6, mesh=mesh)
+    r1 = 0.5 * FZG.dw[0] * math.sin(FZG.alpha_wt)
+    r2 = 0.5 * FZG.dw[1] * math.sin(FZG.alpha_wt)
+    v = OMEGA * 0.5 * FZG.dw[0] * math.sin(FZG.alpha_wt)
+    w = 302.0 / FZG.rb[0] / FZG.face_width       # single tooth contact at C
+    assert load_sharing(FZG, rho1)[0] == 1.0
+    problem = LineContact(r1 * r2 / (r1 + r2), w, v, v, STEEL, STEEL, NEWTONIAN)
+    a = problem.a
+    direct = solve_steady(problem, nx=97, domain=((-2.5 * a, 1.5 * a), (0.0, 0.0)),
+                          tol=mesh.tol, max_sweeps=mesh.max_sweeps, damping=0.3)
+    assert direct.converged and res.converged[0]
+    assert res.central_film[0] == pytest.approx(direct.central_film, rel=1e-9)
+    assert res.minimum_film[0] == pytest.approx(direct.minimum_film, rel=1e-9)
+    assert res.specific_film[0] == pytest.approx(direct.minimum_film / 0.42e-6, rel=1e-9)
+
+
+def test_films_along_the_path_within_formula_accuracy():
+    """Newtonian isothermal solutions against Moes' central film (fit to numerical solutions
+    within a few per cent) and Dowson-Higginson's minimum film (about +-20 %), at 7 positions
+    A-E on a coarse mesh (97 nodes: films about 3-7 % below the 129-node ones)."""
+    res = solve_path(FZG, FZG.path(7), pinion_speed=OMEGA, torque=302.0, body1=STEEL,
+                     body2=STEEL, lubricant=NEWTONIAN, roughness=0.42e-6, mesh=COARSE)
+    assert res.converged.all()
+    assert res.formula_names == ("Moes", "Dowson-Higginson")
+    assert res.central_film == pytest.approx(res.formula_central, rel=0.15)
+    assert res.minimum_film == pytest.approx(res.formula_minimum, rel=0.25)
+    crit = res.critical()
+    assert res.specific_film[crit["minimum_lambda"]] == res.specific_film.min()
+    assert crit["maximum_hertz_pressure"] in np.flatnonzero(res.share == 1.0)
+
+
+def test_disc_rig_point_of_a_gear():
+    """The seed's gear-simulation disc contact (Holmes et al. 2005, Table 1: Rx 19.1 mm,
+    Ry 151 mm, 962 N, u 25 m/s, xi 0.25, E' 227 GPa) as one point of a crowned 50:50 pair:
+    pitch radius of curvature R with R (1 - 1/64)/2 = 19.1 mm, the point R/8 beyond the pitch
+    point (xi = 2 s / R = 0.25), crowning radius 302 mm on both gears (Ry = 151 mm), the
+    torque scaled so that the pair there carries 962 N."""
+    rho_c = 2 * 19.1e-3 / (1 - 1 / 64)            # pitch radius of curvature R
+    module = 2 * rho_c / (50 * math.sin(20 * DEG))
+    width = 20e-3
+    crown = width**2 / (8 * 0.302)
+    pair = GearPair((50, 50), module, 20 * DEG, 0.0, (0.0, 0.0), width,
+                    crowning=(crown, crown))
+    target = pair.points["C"] + rho_c / 8
+    share = load_sharing(pair, np.array([target]))[0]
+    torque = 962.0 * pair.rb[0] / share
+    omega = 25.0 / rho_c
+    body = Material(206.57e9, 0.3)
+    seed = load_case(example_text("holmes-rough-CC"))
+    res = solve_path(pair, np.array([target]), pinion_speed=omega, torque=torque, body1=body,
+                     body2=body, lubricant=seed.lubricant.lubricant(), roughness=0.44e-6,
+                     mesh=EHLMesh(nx=65, ny=17, levels=1))
+    dump = {"exclude_none": True, "by_alias": True}
+    case = transient_case(
+        res, 0, title="disc rig point", body1={"youngs_modulus": 206.57e9},
+        body2={"youngs_modulus": 206.57e9}, lubricant=seed.lubricant.model_dump(**dump),
+        surface1=seed.surface1.model_dump(**dump), surface2=seed.surface2.model_dump(**dump),
+        grid=seed.grid.model_dump(**dump), time=seed.time.model_dump(**dump))
+    emitted = load_case(case).problem()
+    reference = seed.problem()
+    for key in ("rx", "ry", "load", "u1", "u2", "slide_roll_ratio", "reduced_modulus"):
+        assert getattr(emitted, key) == pytest.approx(getattr(reference, key), rel=2e-4), key
+    assert emitted.hertz.p_max == pytest.approx(1.0466e9, rel=1e-3)   # REFERENCE.md
+
+
+GEAR_CASE = """
+analysis = "gear"
+title = "small"
+[gear]
+teeth = [16, 24]
+normal_module = "4.5 mm"
+profile_shift = [0.1817, 0.1715]
+face_width = "14 mm"
+centre_distance = "91.5 mm"
+[operation]
+torque = "302 N m"
+speed = "2170 rpm"
+[lubricant]
+eta0 = "0.0166 Pa s"
+alpha = "17 1/GPa"
+tau0 = "5 MPa"
+[surface1]
+kind = "ground"
+ra = "0.3 um"
+[surface2]
+kind = "ground"
+ra = "0.3 um"
+[ehl]
+points = 5
+nx = 97
+levels = 1
+[handoff]
+at = "pitch"
+nx = 129
+"""
+
+
+def test_cli_gear_emits_a_runnable_transient_case(tmp_path):
+    case = tmp_path / "gear.toml"
+    case.write_text(GEAR_CASE)
+    out = subprocess.run([sys.executable, "-m", "asperity.cli", "gear", str(case), "--out",
+                          str(tmp_path / "out"), "--emit-transient", str(tmp_path / "tr"),
+                          "-q"], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    emitted = load_case(tmp_path / "tr" / "transient.toml")
+    assert emitted.analysis == "ehl-transient"
+    assert emitted.contact.line
+    assert emitted.speeds.u1 == pytest.approx(emitted.speeds.u2, rel=1e-9)  # pitch: rolling
+    for name in ("summary.json", "path_film.png", "report.html"):
+        assert (tmp_path / "out" / name).is_file()
+
+
+def test_cli_refuses_invalid_gear_in_one_line(tmp_path):
+    case = tmp_path / "bad.toml"
+    case.write_text(GEAR_CASE.replace("[16, 24]", "[10, 24]").replace(
+        "[0.1817, 0.1715]", "[0.0, 0.0]"))
+    out = subprocess.run([sys.executable, "-m", "asperity.cli", "gear", str(case), "-q"],
+                         capture_output=True, text=True, cwd=tmp_path)
+    assert out.returncode == 2
+    lines = out.stderr.strip().splitlines()
+    assert len(lines) == 1 and "undercut" in lines[0]
+
+
+@pytest.mark.parametrize("name", ["gear-fzg-c", "gear-helical-industrial"])
+def test_examples_validate(name):
+    case = load_case(example_text(name))
+    assert case.analysis == "gear"
+    assert case.pair().contact_ratio > 1
+
+
+@pytest.mark.slow
+def test_fzg_example_path_and_mesh_accuracy():
+    """The example's 25 positions on its mesh (129 nodes, 2 levels) converge; a finer mesh
+    (193 nodes) at the pitch point moves the films by less than 5 %."""
+    case = load_case(example_text("gear-fzg-c"))
+    from asperity.runners.gear import solve
+
+    result, _ = solve(case)
+    assert result.converged.all()
+    c = int(np.argmin(np.abs(result.kin.distance)))
+    fine = solve_path(FZG, FZG.points["C"] * np.ones(1), pinion_speed=OMEGA, torque=302.0,
+                      body1=STEEL, body2=STEEL, lubricant=case.lubricant.lubricant(),
+                      roughness=result.composite_roughness,
+                      mesh=EHLMesh(nx=193, levels=2, damping=0.3))
+    assert fine.converged[0]
+    assert result.central_film[c] == pytest.approx(fine.central_film[0], rel=0.05)
+    assert result.minimum_film[c] == pytest.approx(fine.minimum_film[0], rel=0.05)
