@@ -27,3 +27,26 @@ def test_turning_roughness_figure():
     line = fig.axes[0].get_lines()[0]
     np.testing.assert_allclose(line.get_ydata(), rt * 1e6)
     np.testing.assert_allclose(line.get_xdata(), centres * 1e3)
+
+
+def test_material_ratio_figure_draws_the_curve_and_the_line():
+    from asperity.plotting.surfaces import plot_material_ratio
+
+    z = np.random.default_rng(0).permutation(np.linspace(1e-6, -1e-6, 1000))  # C = 1 - 2 mr
+    ax = plot_material_ratio(z).axes[0]
+    curve, line = ax.get_lines()[:2]
+    np.testing.assert_allclose(curve.get_xdata(), (np.arange(1000) + 0.5) / 10)
+    np.testing.assert_allclose(curve.get_ydata(), np.linspace(1, -1, 1000))
+    # the equivalent line of a straight curve is the curve: 1 um at 0 %, -1 um at 100 %
+    np.testing.assert_allclose(line.get_ydata(), [1.0, -1.0], atol=2e-3)
+
+
+def test_texture_figure_of_a_profile_has_its_families():
+    from asperity.plotting.surfaces import plot_texture
+    from asperity.surfaces import evaluate_texture, gaussian_profile
+
+    texture = evaluate_texture(gaussian_profile(4e-3, 1e-6, 0.4e-6, 10e-6, seed=1), 0.8e-3)
+    fig = plot_texture(texture, title="t")
+    assert len(fig.axes) == 4  # P with W, R, spectrum, material ratio
+    np.testing.assert_allclose(fig.axes[1].get_lines()[0].get_ydata(),
+                               texture.families.roughness.z * 1e6)
