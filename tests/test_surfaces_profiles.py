@@ -119,3 +119,13 @@ def test_short_profiles_warn_or_refuse():
     assert fam.sampling_lengths == 2 and "2 of the 5" in fam.warnings[0]
     with pytest.raises(InputError, match="cutoff"):
         profile_families(trace(1e-3, lambda x: np.sin(x)), 0.8e-3)
+
+
+@pytest.mark.parametrize("wavelength", [37e-6, 50e-6, 123e-6])
+def test_rsm_of_a_sine_is_its_wavelength(wavelength):
+    # a 3 um ripple of 5 % amplitude adds mean-line crossings that the 10 % Rz height
+    # discrimination of ISO 4287 must discard
+    fam = profile_families(trace(4.8e-3, lambda x: 1e-6 * np.sin(2 * np.pi * x / wavelength)
+                                 + 0.05e-6 * np.sin(2 * np.pi * x / 3e-6)), 0.8e-3,
+                           lambda_s=None)
+    assert profile_parameters(fam)["R"]["RSm"] == pytest.approx(wavelength, abs=H)

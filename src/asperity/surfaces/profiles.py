@@ -19,7 +19,7 @@ traversing length = evaluation length + lambda_c), so the evaluation length is t
 the profile, up to five sampling lengths lr = lambda_c long (ISO 4288 clause 4.4).
 
 Parameters (:func:`profile_parameters`): R parameters defined on a sampling length (Ra, Rq,
-Rsk, Rku, Rp, Rv, Rz, Rdq) are the means of their values in each sampling length (ISO 4288
+Rsk, Rku, Rp, Rv, Rz, Rdq, RSm) are the means of their values in each sampling length (ISO 4288
 clause 5); Rt is over the evaluation length. P and W parameters are over the evaluation length
 (ISO 4287 clause 3.1.9: for P the sampling length is the evaluation length). Heights are
 measured from each profile's mean line, i.e. as the families give them, not re-levelled.
@@ -36,7 +36,7 @@ from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for
 from .filters import gaussian_filter
 from .topography import Profile
 
-__all__ = ["ProfileFamilies", "amplitude_parameters", "profile_families",
+__all__ = ["ProfileFamilies", "amplitude_parameters", "mean_element_width", "profile_families",
            "profile_parameters"]
 
 #: Sampling lengths in the ISO 4288 default evaluation length.
@@ -230,6 +230,39 @@ def amplitude_parameters(z: np.ndarray, spacing: float, prefix: str) -> dict:
     return out
 
 
+def mean_element_width(z: np.ndarray, spacing: float, sampling_length: float) -> float:
+    """RSm (ISO 4287 clause 4.3.1): mean width of the profile elements in one sampling length.
+
+    A profile element is a peak (the profile above the mean line between two crossings)
+    and the valley next to it. Parts of the profile whose extreme height is below 10 % of Rz
+    (Rp + Rv of this sampling length) or whose width is below 1 % of the sampling length do
+    not count (ISO 4287 3.1.9, the default height and width discrimination): they are merged
+    into the parts around them. Incomplete elements at the ends are left out. NaN when no
+    complete element remains.
+    """
+    above = z > 0
+    cuts = np.flatnonzero(np.diff(above)) + 1
+    starts = np.concatenate([[0], cuts])
+    ends = np.concatenate([cuts, [z.size]])
+    height = 0.1 * (z.max() - z.min())
+    width = 0.01 * sampling_length / spacing
+    parts = []  # [start, end, sign] of the significant parts, same signs merged
+    for a, b in zip(starts, ends, strict=True):
+        sign = bool(above[a])
+        extreme = np.abs(z[a:b]).max()
+        if extreme < height or b - a < width:
+            if parts:
+                parts[-1][1] = b  # an insignificant part joins the one before it
+            continue
+        if parts and parts[-1][2] == sign:
+            parts[-1][1] = b
+        else:
+            parts.append([a, b, sign])
+    inner = parts[1:-1] if len(parts) > 2 else []  # parts touching the ends are incomplete
+    widths = [(inner[k + 1][1] - inner[k][0]) * spacing for k in range(0, len(inner) - 1, 2)]
+    return float(np.mean(widths)) if widths else float("nan")
+
+
 def profile_parameters(families: ProfileFamilies) -> dict[str, dict[str, float]]:
     """P, W and R parameters grouped as ISO 4287 groups them (module docstring).
 
@@ -238,7 +271,8 @@ def profile_parameters(families: ProfileFamilies) -> dict[str, dict[str, float]]
     dict
         ``{"P": {...}, "W": {...}, "R": {...}}``; lengths in m, slopes and moments
         dimensionless. P and W have ``a q sk ku p v t dq`` (Pt = Pz over the evaluation
-        length); R has the sampling-length means ``Ra Rq Rsk Rku Rp Rv Rz Rdq`` and ``Rt``.
+        length); R has the sampling-length means ``Ra Rq Rsk Rku Rp Rv Rz Rdq RSm``
+        (:func:`mean_element_width`) and ``Rt``.
     """
     h = families.primary.spacing
     out = {}
@@ -247,8 +281,10 @@ def profile_parameters(families: ProfileFamilies) -> dict[str, dict[str, float]]
         values[f"{name}t"] = values.pop(f"{name}z")
         out[name] = values
     r = families.evaluated("R")
-    parts = [amplitude_parameters(part, h, "R")
-             for part in r.reshape(families.sampling_lengths, -1)]
+    sampling = r.reshape(families.sampling_lengths, -1)
+    parts = [amplitude_parameters(part, h, "R") for part in sampling]
     out["R"] = {key: float(np.mean([part[key] for part in parts])) for key in parts[0]}
     out["R"]["Rt"] = float(r.max() - r.min())
+    widths = [mean_element_width(part, h, families.cutoff) for part in sampling]
+    out["R"]["RSm"] = float(np.nanmean(widths)) if np.isfinite(widths).any() else float("nan")
     return out

@@ -19,7 +19,7 @@ from .topography import Profile, Topography
 
 __all__ = ["TextureEvaluation", "UNITS", "evaluate_texture", "unit_of"]
 
-_LENGTH_SUFFIXES = ("a", "q", "p", "v", "z", "t", "k", "pk", "vk", "dc", "al")
+_LENGTH_SUFFIXES = ("a", "q", "p", "v", "z", "t", "k", "pk", "vk", "dc", "al", "Sm")
 #: Parameters that are not lengths: their SI unit ("1" for ratios and moments).
 UNITS = {"Mr1": "1", "Mr2": "1", "Smr1": "1", "Smr2": "1", "Sdr": "1", "Str": "1",
          "Rmr": "1", "Smr": "1",
