@@ -1,7 +1,11 @@
-"""One self-contained HTML report per run: parameters, results, figures, references.
+"""One self-contained HTML report per run, and one per parameter study.
 
-Figures are embedded as base64 PNG, so the file can be mailed or archived alone. The report
-only formats what the runner computed; it never computes physics.
+A run's report puts the headline results first, then the key results in words with readable
+units (:mod:`asperity.formatting`; imperial beside SI for a case written in imperial units),
+the comparison with references, the figures and the case's parameters. A study's report plots
+the swept results against the axes and lists the cases. Figures are embedded as base64 PNG, so
+a file can be mailed or archived alone. The reports only format what the runners computed; they
+never compute physics.
 """
 
 from __future__ import annotations
@@ -41,7 +45,6 @@ border-radius:4px} .bad{background:#ffebe9;border-color:#cf222e}
 .ok{background:#dafbe1;border-color:#1a7f37}
 .warn{background:#fff1e5;border:2px solid #bc4c00;color:#762c00;padding:.5rem .8rem;
 border-radius:4px} .warn ul{margin:.3rem 0 0 0}
-pre{background:#f6f8fa;padding:.6rem;overflow:auto;font-size:.85rem}
 td{white-space:nowrap} td.l{white-space:normal}
 h3{font-size:1rem;margin:1rem 0 .2rem;color:#57606a}
 .headline{display:flex;flex-wrap:wrap;gap:.8rem;margin:1rem 0}
