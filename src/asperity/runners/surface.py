@@ -486,6 +486,11 @@ def run(case, progress=None) -> Outcome:
             notes.append(_DYNAMIC)
     if spec.kind == "builtin":
         notes.append(_SYNTHETIC)
+    if case.evaluation.cutoff is None and spec.kind not in ("builtin", "turned"):
+        notes.append("Without evaluation.cutoff the ra_m, rq_m, ... (sa_m, ...) keys are of the "
+                     "unfiltered surface (heights from the least-squares line/plane); the iso_* "
+                     "keys are of the ISO roughness profile (cut-off by ISO 4288) or of the "
+                     "S-F surface.")
     if case.evaluation.cutoff is not None:
         notes.append("Parameters are those of the roughness profile (Gaussian filter, cut-off "
                      f"{case.evaluation.cutoff:.4g} m); pa/pq/pt are of the primary profile and "
