@@ -8,7 +8,8 @@ lines, a line of column names) followed by a block of numbers. The reader
    field (``0.1,0.2,``);
 2. takes as the data block the last run of lines whose fields are all numbers or missing-value
    markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, ...); every
-   line before it is header, every non-comment line after it is an error naming the line;
+   line before it is header; after it only lines of words (a footer) may follow -- a line
+   mixing numbers and words is an error naming the line;
 3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
    the last header line with one name per column.
 
@@ -169,8 +170,10 @@ def read_table(path: Path) -> TextTable:
     for i in range(start, len(lines)):
         if parsed[i] is None:
             text = lines[i].strip()
-            if not text or _COMMENT.match(lines[i]):
-                continue
+            fields = _split(text)
+            if not text or _COMMENT.match(lines[i]) or (
+                    i > last and not any(_NUMBER.match(f) for f in fields)):
+                continue  # blank, comment, or a footer of words after the data block
             bad = next((f for f in _split(text) if _value(f, False) is None), text)
             raise InputError(f"{path}:{i + 1}", "numbers only", bad)
         values, fields = parsed[i]
