@@ -87,6 +87,10 @@ def test_no_imperial_for_units_without_one():
     ("load_n", "load", "N"),
     ("iterations", "iterations", ""),
     ("timestep_s", "timestep", "s"),
+    ("max_flash_temperature_k", "maximum flash temperature", "K"),     # a rise, in kelvin
+    ("max_contact_temperature_c", "maximum contact temperature", "°C"),
+    ("working_pressure_angle_deg", "working pressure angle", "deg"),
+    ("moes_k", "Moes k", ""),                                          # _k only after temperature
 ])
 def test_summary_keys_in_words(key, label, unit):
     assert describe_key(key) == (label, unit)

@@ -70,7 +70,8 @@ _ALIASES = {"m2": "m^2", "m^2": "m^2", "N m": "N*m", "N*m": "N*m", "ms-1": "1/ms
             "percent": "%", "%": "%"}
 
 #: Unit suffixes of summary keys, longest first.
-_SUFFIXES = (("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "m/s"), ("_pa_s", "Pa*s"),
+_SUFFIXES = (("_deg", "deg"), ("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "m/s"),
+             ("_pa_s", "Pa*s"), ("_k", "K"), ("_c", "°C"),
              ("_m2", "m^2"), ("_nm", "N*m"), ("_pa", "Pa"), ("_rad", "rad"), ("_hz", "Hz"),
              ("_j", "J"), ("_n", "N"), ("_m", "m"), ("_s", "s"))
 
@@ -257,7 +258,8 @@ def describe_key(key: str) -> tuple[str, str]:
     ----------
     key : str
         A key of ``summary.json`` (its unit, if any, is the suffix: ``_pa``, ``_m``, ``_m2``,
-        ``_n``, ``_nm`` (N m), ``_m_s``, ``_s``, ``_rad``, ``_j``, ``_percent``, ``_per_ms``).
+        ``_n``, ``_nm`` (N m), ``_m_s``, ``_s``, ``_rad``, ``_deg``, ``_j``, ``_percent``,
+        ``_per_ms``; ``_k`` and ``_c`` after ``temperature``: kelvin and degrees Celsius).
 
     Returns
     -------
@@ -269,6 +271,8 @@ def describe_key(key: str) -> tuple[str, str]:
         if key.endswith(suffix) and len(key) > len(suffix):
             stem, unit = key[: -len(suffix)], si
             break
+    if unit in ("K", "°C") and not stem.endswith("temperature"):
+        stem, unit = key, ""  # _k and _c are temperatures only
     if not unit and stem.endswith("fraction"):
         unit = "%"
     label = _LABELS.get(stem) or " ".join(_WORDS.get(w, w) for w in stem.split("_"))
