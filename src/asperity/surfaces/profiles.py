@@ -126,8 +126,10 @@ def _iso4288_cutoff(p: np.ndarray, profile: Profile, notes: list, warnings: list
     """ISO 4288 clause 7: the cut-off whose Ra range holds the Ra measured with it."""
     fitting = [cut for _, cut in CUTOFFS if _fits(cut, profile)]
     if not fitting:
-        raise InputError("profile", "a profile at least two ISO 4288 cut-offs long "
-                         "(0.16 mm for 0.08 mm) and sampled finer than 0.04 mm",
+        need = "one ISO 4288 cut-off (0.08 mm)" if profile.periodic else (
+            "two ISO 4288 cut-offs (0.16 mm for 0.08 mm)")
+        raise InputError("profile", f"a profile at least {need} long, sampled finer than "
+                         "0.04 mm, or a shorter cut-off given (--cutoff; evaluation.cutoff)",
                          f"{profile.length:.4g} m")
     cutoff = 0.8e-3 if 0.8e-3 in fitting else fitting[-1]
     tried = []
