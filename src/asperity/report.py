@@ -60,13 +60,15 @@ HEADLINE_KEYS = (
     "minimum_film_thickness_m", "max_pressure_pa", "contact_area_m2", "approach_m",
     "max_contact_count_rate_per_ms", "gross_slip", "stick_fraction", "shift_m", "rotation_rad",
     "friction_capacity_n", "mean_contact_pressure_pa", "friction_coefficient", "pa_m", "pq_m",
-    "kinematic_rt_m",
+    "kinematic_rt_m", "minimum_lambda", "minimum_film_m", "maximum_flash_temperature_k",
+    "maximum_hertz_pressure_pa",
 )
 
 #: Bookkeeping of the solver, listed after the physical results.
 _SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps", "steps",
                 "mean_sweeps_per_step", "steps_converged_fraction", "load_error", "path_steps",
-                "path_iterations", "path_converged", "path_gross_slip_step")
+                "path_iterations", "path_converged", "path_gross_slip_step", "points",
+                "ehl_solves_converged", "ehl_wall_time_s", "status")
 
 
 def _unique(rows: list[SummaryRow]) -> list[SummaryRow]:
