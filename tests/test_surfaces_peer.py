@@ -1,8 +1,8 @@
 """asperity's readers and parameters against SurfaceTopography on small instrument files.
 
 The files are written here by SurfaceTopography's own writers (x3p, Gwyddion .gwy, NetCDF, its
-text matrix) from a Gaussian surface with 15 of 3072 pixels (0.5 %) undefined, then read by
-both packages. Missing pixels: both fill them by the same harmonic interpolation (Laplace's
+text matrix) from a Gaussian surface with 18 of 3072 pixels (0.6 %) undefined, and a NetCDF
+line scan with 7 of 200 points undefined, then read by both packages. Missing pixels: both fill them by the same harmonic interpolation (Laplace's
 equation with the measured pixels as boundary values), so the filled heights must agree to
 solver precision; parameters are compared on the filled, plane-levelled surface.
 Skipped when SurfaceTopography is not installed.
@@ -69,3 +69,26 @@ def test_parameters_of_the_filled_surface_agree(holed):
     params = roughness_parameters(mine)
     assert params["Sq"] == pytest.approx(sq, rel=1e-9)
     assert params["Sdq"] == pytest.approx(sdq, rel=1e-9)
+
+
+def test_profile_with_missing_points(tmp_path):
+    # In 1-D the harmonic fill is linear interpolation (constant past the ends): asperity's
+    # linear fill must equal SurfaceTopography's, and Rq, Rdq of the levelled profiles agree.
+    x = np.arange(200)
+    mask = np.zeros(200, bool)
+    mask[[0, 1, 50, 51, 52, 120, 199]] = True
+    heights = np.ma.masked_array(1e-6 * np.sin(x / 7.0) + 0.2e-6 * np.cos(x / 2.3), mask=mask)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st.UniformLineScan(heights, 200e-6, unit="m", periodic=False).to_netcdf(
+            str(tmp_path / "line.nc"))
+        theirs = st.read_topography(str(tmp_path / "line.nc")).interpolate_undefined_data()
+        reference = np.asarray(theirs.heights())
+        levelled = theirs.detrend("height")
+        rq, rdq = levelled.rms_height_from_profile(), levelled.rms_slope_from_profile()
+    reading = read_measured(tmp_path / "line.nc", missing="fill")
+    assert reading.filled == 7
+    np.testing.assert_allclose(reading.surface.z, reference, rtol=0, atol=1e-15)
+    params = roughness_parameters(reading.surface)
+    assert params["Rq"] == pytest.approx(rq, rel=1e-9)
+    assert params["Rdq"] == pytest.approx(rdq, rel=1e-9)
