@@ -174,5 +174,9 @@ values = [16, 24]
     ds = run_study(study, tmp_path / "out")
     assert list(ds["shape"].values) == ["small", "large"]
     np.testing.assert_allclose(ds["load_n"].sel(shape="large").values, [20.0, 20.0])
+    # the labelled axis is the x axis of the study figure, its labels in the table of cases
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert html.count("<td>small</td>") == 2 and html.count("<td>large</td>") == 2
+    assert (tmp_path / "out" / "study.png").is_file()
     with pytest.raises(InputError, match="axis\\[0\\].values"):
         _study(tmp_path, '[[axis]]\nkeys = ["a.b", "c.d"]\nvalues = [[1]]\n')

@@ -22,7 +22,9 @@ def _axis_values(ds, name):
 
 
 def plot_study(ds, variables, columns: int = 3):
-    """One panel per variable against the study's first axis.
+    """One panel per variable against the study's first axis: one line per combination of
+    the other axes (``mode = "cross"``, at most 10), or one line with each point labelled with
+    the other axes' values (``mode = "zip"``).
 
     Parameters
     ----------
@@ -53,6 +55,8 @@ def plot_study(ds, variables, columns: int = 3):
                              layout="constrained")
     others = axes_names[1:] if mode == "cross" else []
     combos = list(itertools.product(*(range(ds.sizes[o]) for o in others)))[:10]
+    paired = ([", ".join(_axis_values(ds, o)[1][i] for o in axes_names[1:])
+               for i in range(ds.sizes["case"])] if mode == "zip" and axes_names[1:] else [])
     for ax, key in zip(axes.flat, variables, strict=False):
         label, unit = describe_key(key)
         if unit == "%" and key.endswith("fraction"):
@@ -66,6 +70,9 @@ def plot_study(ds, variables, columns: int = 3):
                              f"{_axis_values(ds, o)[1][i]}" for o, i in sel.items())
             xs = x if x is not None else np.arange(len(labels))
             ax.plot(xs, y, "o-", ms=4, lw=1.2, label=text or None)
+        for i, tag in enumerate(paired):  # zip mode: each point's values of the other axes
+            ax.annotate(tag, (xs[i], y[i]), xytext=(4, 4), textcoords="offset points",
+                        fontsize=7, color="0.3")
         if x is None:
             ax.set_xticks(np.arange(len(labels)), labels, rotation=30, ha="right")
         elif len(x) > 2 and np.all(x > 0) and x.max() / x.min() > 50:
