@@ -60,10 +60,10 @@ def test_text_variants(tmp_path):
     two = tmp_path / "xz.csv"
     two.write_text("x;z\n0;1e-6\n1e-6;2e-6\n2e-6;0\n")
     assert read_surface(two).spacing == pytest.approx(1e-6)
-    matrix = tmp_path / "m.asc"
+    matrix = tmp_path / "m.asc"  # one line per y, as instruments write images
     matrix.write_text("1 2 3\n4 5 6\n7 8 9\n10 11 12\n")
     t = read_surface(matrix, spacing=(1e-6, 3e-6))
-    assert isinstance(t, Topography) and t.shape == (4, 3) and t.z[1, 2] == 6
+    assert isinstance(t, Topography) and t.shape == (3, 4) and t.z[2, 1] == 6
 
 
 def test_text_errors_name_the_file_and_line(tmp_path):

@@ -2,9 +2,11 @@
 
 The files are written here by SurfaceTopography's own writers (x3p, Gwyddion .gwy, NetCDF, its
 text matrix) from a Gaussian surface with 18 of 3072 pixels (0.6 %) undefined, and a NetCDF
-line scan with 7 of 200 points undefined, then read by both packages. Missing pixels: both fill them by the same harmonic interpolation (Laplace's
-equation with the measured pixels as boundary values), so the filled heights must agree to
-solver precision; parameters are compared on the filled, plane-levelled surface.
+line scan with 7 of 200 points undefined, then read by both packages. Missing pixels: both
+fill them by the same harmonic interpolation (Laplace's equation with the measured pixels as
+boundary values), so the filled heights must agree to solver precision; parameters are
+compared on the filled, plane-levelled surface. A headerless height matrix is read in the
+same orientation (one line per y).
 Skipped when SurfaceTopography is not installed.
 """
 
@@ -92,3 +94,13 @@ def test_profile_with_missing_points(tmp_path):
     params = roughness_parameters(reading.surface)
     assert params["Rq"] == pytest.approx(rq, rel=1e-9)
     assert params["Rdq"] == pytest.approx(rdq, rel=1e-9)
+
+
+def test_headerless_matrix_has_the_orientation_surface_topography_gives_it(tmp_path):
+    matrix = tmp_path / "m.asc"
+    matrix.write_text("1 2 3 13\n4 5 6 14\n7 8 9 15\n")
+    mine = read_measured(matrix, spacing=1e-6, z_unit="um").surface
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        theirs = st.read_topography(str(matrix), physical_sizes=(4.0, 3.0), unit="um")
+    np.testing.assert_array_equal(mine.z, 1e-6 * np.asarray(theirs.heights()))

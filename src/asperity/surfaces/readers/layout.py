@@ -7,9 +7,9 @@ Rules, in order (documented for users in docs/surfaces.md):
   like a height (``z``, ``height``, ``raw``, ``profile``, ``data``, ``value``, ``depth``, ...)
   is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export).
 - Unnamed columns: one = heights, two = x and z, three or more = a height matrix.
-- A height matrix with an instrument header (Gwyddion/MountainsMap ``Width``/``Height``,
-  ``x-pixels``, ``NX``, ``x-length``, ``Value units``) has one line per y, values along x (how
-  instruments write images); without one, one line per x (how :func:`write_surface` writes).
+- A height matrix has one line per y, values along x (how instruments, Gwyddion and
+  SurfaceTopography write images), except one written by asperity's ``write_surface`` (its
+  first comment says ``asperity topography ... rows along x``), which has one line per x.
 - Units: the unit in a column's name (``x_um``, ``Height [nm]``) or the header's ``x-unit``,
   ``z-unit``, ``Lateral units``, ``Value units``, ``Unit`` keys; a height scale factor
   (``Z scale``, ``Height scale``, ``Bit2nm``, ``height conversion factor (-> um)``) multiplies
@@ -52,8 +52,6 @@ _WIDTH_KEYS = ("width", "x length", "x size", "image width", "x range")
 _HEIGHT_KEYS = ("y length", "y size", "image height", "y range")
 _MISSING_KEYS = ("no data value", "nodata", "no data", "invalid value", "undefined value",
                  "missing value", "bad value", "void value", "nodata value")
-_INSTRUMENT_KEYS = ("width", "x pixels", "y pixels", "nx", "ny", "x length", "value units",
-                    "value unit", "channel")
 _QUANTITY = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
@@ -202,11 +200,12 @@ def interpret(table: TextTable, where: str) -> Layout:
     elif ncol == 3 and ("lateral units" in h or "lateral unit" in h):
         x, y, z = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where)
         style = "x, y, z points (Gwyddion XYZ export)"
+    elif "asperity topography" in h:
+        z = data
+        style = "height matrix, one line per x (written by asperity)"
     else:
-        instrument = any(k in h for k in _INSTRUMENT_KEYS)
-        z = data.T if instrument else data
-        style = ("height matrix, one line per y (instrument header)" if instrument
-                 else "height matrix, one line per x")
+        z = data.T
+        style = "height matrix, one line per y"
     sentinel = _quantity(_first(h, _MISSING_KEYS))
     if sentinel is not None:
         z = np.where(z == sentinel[0][0], np.nan, z)
