@@ -91,6 +91,10 @@ def test_no_imperial_for_units_without_one():
     ("max_contact_temperature_c", "maximum contact temperature", "°C"),
     ("working_pressure_angle_deg", "working pressure angle", "deg"),
     ("moes_k", "Moes k", ""),                                          # _k only after temperature
+    ("ra_m", "Ra", "m"),                                               # ISO 4287 spellings
+    ("rsk_b", "Rsk (B)", ""),                                          # profile B's skewness
+    ("iso_wdq", "ISO Wdq", ""),
+    ("iso_mr1", "ISO Mr1", ""),
 ])
 def test_summary_keys_in_words(key, label, unit):
     assert describe_key(key) == (label, unit)

@@ -82,6 +82,9 @@ _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
           "b": "b", "x": "x", "y": "y"}
 
+#: ISO 4287 / 13565 / 25178 parameter names as they appear (lower case) in summary keys.
+_ISO_PARAMETER = re.compile(r"[prws](a|q|sk|ku|p|v|t|z|dq|sm|dc|k|pk|vk|dr)|mr[12]")
+
 #: Labels of summary keys that words alone would not make clear (key without its suffix).
 _LABELS = {
     "hertz_a": "Hertz semi-axis a (along x)",
@@ -275,8 +278,21 @@ def describe_key(key: str) -> tuple[str, str]:
         stem, unit = key, ""  # _k and _c are temperatures only
     if not unit and stem.endswith("fraction"):
         unit = "%"
-    label = _LABELS.get(stem) or " ".join(_WORDS.get(w, w) for w in stem.split("_"))
-    return label, unit
+    return _LABELS.get(stem) or _words(stem.split("_")), unit
+
+
+def _words(words: list[str]) -> str:
+    """Key words as text: abbreviations written out, ISO roughness parameters as ISO spells
+    them (``ra`` -> ``Ra``), a profile's letter after its parameter in parentheses."""
+    out = []
+    for i, word in enumerate(words):
+        if _ISO_PARAMETER.fullmatch(word):
+            out.append(word[0].upper() + word[1:])
+        elif i and len(word) == 1 and _ISO_PARAMETER.fullmatch(words[i - 1]):
+            out.append(f"({word.upper()})")
+        else:
+            out.append(_WORDS.get(word, word))
+    return " ".join(out)
 
 
 @dataclass(frozen=True)
