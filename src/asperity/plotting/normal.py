@@ -35,6 +35,6 @@ def centre_line(x, pressure_line, gap_line, reference=None, title="Centre line y
     ax2.plot(xm, gap_line * 1e6, "b-", lw=1.0, label="gap")
     ax2.set_ylabel("gap (um)", color="b")
     lines = ax.get_lines() + ax2.get_lines()
-    ax.legend(lines, [ln.get_label() for ln in lines], loc="upper center", fontsize=8,
-              framealpha=0.9)
+    fig.legend(lines, [ln.get_label() for ln in lines], loc="outside lower center", ncols=3,
+               fontsize=8, frameon=False)
     return fig
