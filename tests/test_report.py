@@ -122,7 +122,7 @@ def test_normal_pressure_map_has_equal_axes_and_a_legend():
     fig = pressure_map(x, y, p, contact=p > 0)
     ax = fig.axes[0]
     assert ax.get_aspect() == 1.0
-    assert [t.get_text() for t in ax.get_legend().texts] == ["contact boundary"]
+    assert [t.get_text() for t in fig.legends[0].texts] == ["contact boundary"]
 
 
 def _transient_result():

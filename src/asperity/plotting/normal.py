@@ -10,14 +10,18 @@ __all__ = ["pressure_map", "centre_line"]
 
 
 def pressure_map(x, y, pressure, contact=None, title="Contact pressure"):
-    """Filled contours of pressure (GPa) over x, y (mm), with the contact boundary."""
-    fig, ax = new_figure(5.8, 4.8)
+    """Pressure (GPa) over x, y (mm) on equal axes, with the contact boundary; the figure is
+    sized to the domain's shape."""
+    tall = float(np.ptp(y) / max(np.ptp(x), 1e-300)) if len(y) > 1 else 1.0
+    height = float(np.clip(3.8 * tall, 2.4, 6.0))
+    fig, ax = new_figure(float(np.clip(height / tall, 2.4, 6.0)) + 1.8, height + 1.0)
     X, Y = np.meshgrid(np.asarray(x) * 1e3, np.asarray(y) * 1e3, indexing="ij")
     m = ax.pcolormesh(X, Y, pressure / 1e9, shading="auto", cmap="magma")
     if contact is not None and contact.any() and not contact.all():
         ax.contour(X, Y, contact.astype(float), levels=[0.5], colors="cyan", linewidths=0.8)
         ax.plot([], [], color="cyan", lw=0.8, label="contact boundary")
-        ax.legend(loc="upper right", fontsize=8, framealpha=0.8)
+        fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
+                   frameon=False)
     fig.colorbar(m, ax=ax, label="pressure (GPa)")
     ax.set(xlabel="x (mm)", ylabel="y (mm)", title=title, aspect="equal")
     return fig
