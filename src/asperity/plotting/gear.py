@@ -1,7 +1,7 @@
 """Figures of a gear pair along its path of contact, against the pinion roll angle.
 
 Each panel marks the points A-E of the path (dotted verticals); the single-tooth contact zone
-B-D is shaded.
+B-D is shaded unless the overlap ratio reaches 1 (the load is then shared uniformly).
 """
 
 from __future__ import annotations
@@ -16,11 +16,12 @@ __all__ = ["conditions_figure", "film_figure", "friction_temperature_figure"]
 
 
 def _mark_points(ax, result):
-    """Dotted verticals and labels at A-E; shade B-D (single tooth contact)."""
+    """Dotted verticals and labels at A-E; shade B-D (single tooth contact) where it matters."""
     rb1 = result.pair.rb[0]
     pts = {k: math.degrees(v / rb1) for k, v in result.pair.points.items()}
-    lo, hi = sorted((pts["B"], pts["D"]))
-    ax.axvspan(lo, hi, color="0.92", zorder=0)
+    if result.pair.overlap_ratio < 1.0:  # helical pairs with full overlap share uniformly
+        lo, hi = sorted((pts["B"], pts["D"]))
+        ax.axvspan(lo, hi, color="0.92", zorder=0)
     for name, angle in pts.items():
         ax.axvline(angle, color="0.5", ls=":", lw=0.8)
         ax.annotate(name, (angle, 1.0), xycoords=("data", "axes fraction"), ha="center",

@@ -62,10 +62,10 @@ def run(case, progress=None) -> Outcome:
     return outcome(case, result, seconds)
 
 
-def _at(result, i) -> dict:
-    """Where position ``i`` lies: roll angle (deg) and distance from the pitch point (mm)."""
-    return {"roll_angle_deg": math.degrees(float(result.kin.roll_angle[i])),
-            "distance_from_pitch_mm": float(result.kin.distance[i]) * 1e3}
+def _at(result, i, name: str) -> dict:
+    """Where position ``i`` lies: roll angle (deg) and distance from the pitch point (m)."""
+    return {f"{name}_roll_angle_deg": math.degrees(float(result.kin.roll_angle[i])),
+            f"{name}_distance_from_pitch_m": float(result.kin.distance[i])}
 
 
 def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
@@ -127,12 +127,12 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "normal_force_n": case.operation.torque / (rb1 * math.cos(pair.beta_b)),
         "composite_roughness_m": result.composite_roughness,
         "minimum_lambda": float(result.specific_film[i_lam]),
-        "minimum_lambda_at": _at(result, i_lam),
+        **_at(result, i_lam, "minimum_lambda"),
         "maximum_flash_temperature_k": float(result.flash_temperature[i_fl]),
         "maximum_contact_temperature_c": float(result.contact_temperature[i_fl]),
-        "maximum_flash_temperature_at": _at(result, i_fl),
+        **_at(result, i_fl, "maximum_flash_temperature"),
         "maximum_hertz_pressure_pa": float(result.hertz_pressure[i_p]),
-        "maximum_hertz_pressure_at": _at(result, i_p),
+        **_at(result, i_p, "maximum_hertz_pressure"),
         "minimum_film_m": float(np.nanmin(result.minimum_film)),
         "pitch_central_film_m": float(result.central_film[i_c]),
         "pitch_minimum_film_m": float(result.minimum_film[i_c]),
