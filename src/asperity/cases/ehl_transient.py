@@ -44,15 +44,19 @@ class MovingSurfaceSpec(CaseModel):
     ``kind``: ``smooth``; ``builtin`` (``profile`` "A", "B" or "C": the synthetic stand-ins of
     the seed's transverse-ground profiles); ``ground`` (``ra``, ``correlation_length``,
     ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``seed``); ``file``
-    (a measured profile: ``path``, ``spacing`` when the file has no x column). Profiles vary
+    (a measured profile: ``path``, ``spacing`` when the file has no x column); ``feature``
+    (one ``feature`` "dent", "bump" or "ridge" of ``amplitude`` and ``half_width`` on a smooth
+    surface, its centre ``lead`` upstream of the inlet at the start: the probes of Venner &
+    Lubrecht, Kaneta, Ai & Cheng; :mod:`asperity.surfaces.features`). Profiles vary
     along x (the rolling direction) and are extruded across y. ``scale`` multiplies the
     heights (the seed's sqrt(2) x C); ``lowpass`` removes wavelengths shorter than that many
     mesh spacings (ISO Gaussian filter) when the mesh cannot resolve them; ``waviness`` adds a
     sinusoid along y (transverse waviness) or x.
     """
 
-    kind: Literal["smooth", "builtin", "ground", "gaussian", "file"] = "smooth"
-    """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian" or "file"."""
+    kind: Literal["smooth", "builtin", "ground", "gaussian", "file", "feature"] = "smooth"
+    """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian", "file" or
+    "feature" (a single dent, bump or ridge)."""
     profile: Literal["A", "B", "C"] | None = None
     """Built-in profile "A", "B" or "C" (stand-ins of the seed's transverse-ground profiles)."""
     ra: Quantity("length", gt=0) | None = None
@@ -75,13 +79,24 @@ class MovingSurfaceSpec(CaseModel):
     """Remove wavelengths shorter than this many mesh spacings (ISO Gaussian filter; 0: off)."""
     waviness: WavinessSpec | None = None
     """A sinusoidal waviness along y (transverse) or x."""
+    feature: Literal["dent", "bump", "ridge"] | None = None
+    """Single feature (kind = "feature"): a circular "dent" or "bump" centred on y = 0, or a
+    straight "ridge" across the rolling direction."""
+    amplitude: Quantity("length", gt=0) | None = None
+    """Depth of the dent or height of the bump or ridge (kind = "feature")."""
+    half_width: Quantity("length", gt=0) | None = None
+    """Radius of the dent or bump, half-width along x of the ridge (kind = "feature")."""
+    lead: Quantity("length", ge=0) | None = None
+    """Distance of the feature's centre upstream of the inlet at the start (default: its
+    half-width, so that it enters at once)."""
 
     _path = field_validator("path")(existing_file)
 
     @model_validator(mode="after")
     def _required(self):
         need = {"smooth": (), "builtin": ("profile",), "ground": ("ra",),
-                "gaussian": ("rms", "correlation_length"), "file": ("path",)}[self.kind]
+                "gaussian": ("rms", "correlation_length"), "file": ("path",),
+                "feature": ("feature", "amplitude", "half_width")}[self.kind]
         for key in need:
             if getattr(self, key) is None:
                 raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
@@ -105,6 +120,15 @@ class MovingSurfaceSpec(CaseModel):
                                       seed=self.seed)
         elif self.kind == "file":
             surf = s.read_surface(self.path, self.spacing)
+        elif self.kind == "feature":
+            from ..surfaces.features import feature_surface
+
+            # the surface enters the inlet end first: its last cell centre arrives at t = 0
+            end = (np.ceil(length / spacing) - 0.5) * spacing
+            lead = self.half_width if self.lead is None else self.lead
+            surf = feature_surface(self.feature, length, spacing, amplitude=self.amplitude,
+                                   half_width=self.half_width, position=max(end - lead, 0.0),
+                                   y=y)
         else:
             surf = s.Profile(s.cell_centres(int(np.ceil(length / spacing)), spacing),
                              np.zeros(int(np.ceil(length / spacing))), periodic=True)
@@ -204,6 +228,9 @@ class EHLTransientCase(EHLCaseBase):
             if rough and not u > 0:
                 raise ValueError(f"expected a positive speed of surface {k} (set by speeds.u "
                                  "and speeds.xi) to carry its roughness in from the inlet")
+            if line and spec.kind == "feature" and spec.feature != "ridge":
+                raise ValueError(f"expected feature = \"ridge\" on surface{k} of a line "
+                                 "contact (a dent or a bump needs a point contact)")
             if line and spec.waviness is not None and spec.waviness.direction == "y":
                 raise ValueError(f"expected no transverse waviness on surface{k} of a line "
                                  "contact")
