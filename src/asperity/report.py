@@ -51,6 +51,7 @@ h3{font-size:1rem;margin:1rem 0 .2rem;color:#57606a}
 .card{border:1px solid #d0d7de;border-radius:6px;padding:.6rem 1rem;min-width:11rem;
 background:#f6f8fa} .cv{font-size:1.45rem;font-weight:600} .cl{color:#57606a;font-size:.9rem}
 code{font-size:.85rem}
+figure.wide img{max-width:min(100%,1000px)} figure.wide figcaption{max-width:1000px}
 """
 
 
@@ -189,8 +190,12 @@ def _figures(outcome: Outcome, files: dict) -> str:
         path = files.get(stem)
         if path is None or not Path(path).is_file():
             continue
-        data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
-        parts.append(f'<figure><img alt="{html.escape(stem)}" src="data:image/png;base64,{data}">'
+        png = Path(path).read_bytes()
+        data = base64.b64encode(png).decode("ascii")
+        width, height = int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+        wide = " class=wide" if height and width > 1.7 * height else ""  # PNG IHDR size
+        parts.append(f'<figure{wide}><img alt="{html.escape(stem)}" '
+                     f'src="data:image/png;base64,{data}">'
                      f"<figcaption>{html.escape(caption)}</figcaption></figure>")
     return "".join(parts) or "<p class=info>No figures.</p>"
 
