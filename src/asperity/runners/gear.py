@@ -83,9 +83,9 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "sliding_speed": (kin.sliding_speed, "m/s", "sliding speed u1 - u2"),
         "slide_roll_ratio": (kin.slide_roll_ratio, "1", "slide/roll ratio (u1 - u2)/u"),
         "load_sharing": (result.share, "1", "load sharing factor X"),
-        "load": (result.load, "N/m" if result.line else "N",
-                 "normal load per unit length of contact line" if result.line
-                 else "normal load"),
+        "normal_load": (result.load, "N/m" if result.line else "N",
+                        "normal load per unit length of contact line" if result.line
+                        else "normal load"),
         "hertz_pressure": (result.hertz_pressure, "Pa", "Hertz maximum pressure"),
         "hertz_a": (result.hertz_a, "m", "Hertz semi-width along the motion"),
         "central_film": (result.central_film, "m", "central film (steady EHL solver)"),
