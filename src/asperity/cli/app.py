@@ -338,7 +338,8 @@ def sweep(
                       ] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
 ):
-    """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc."""
+    """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc and
+    OUT/report.html."""
     import logging
 
     from ..sweep import load_study, run_study
@@ -361,7 +362,8 @@ def sweep(
                                   dashboard_address=None) as cluster, Client(cluster) as client:
                     ds = run_study(spec, out, client=client, progress=progress)
     failed = int((ds["state"] == "failed").sum())
-    console.print(f"wrote {out / 'study.nc'}: {len(spec.cases) - failed} done, {failed} failed")
+    console.print(f"wrote {out / 'study.nc'}: {len(spec.cases) - failed} done, {failed} failed "
+                  f"(report: {out / 'report.html'})")
 
 
 def _mount_sub_apps() -> None:
