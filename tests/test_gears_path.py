@@ -2,13 +2,13 @@
 25-point check on the example's mesh is marked slow). References in docs/gears.md."""
 
 import math
-import subprocess
-import sys
 
 import numpy as np
 import pytest
+from typer.testing import CliRunner
 
 from asperity.cases import load_case
+from asperity.cli import app
 from asperity.ehl import LineContact, Lubricant, solve_steady
 from asperity.examples import example_text
 from asperity.gears import EHLMesh, GearPair, load_sharing, solve_path, transient_case
@@ -131,10 +131,9 @@ nx = 129
 def test_cli_gear_emits_a_runnable_transient_case(tmp_path):
     case = tmp_path / "gear.toml"
     case.write_text(GEAR_CASE)
-    out = subprocess.run([sys.executable, "-m", "asperity.cli", "gear", str(case), "--out",
-                          str(tmp_path / "out"), "--emit-transient", str(tmp_path / "tr"),
-                          "-q"], capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
+    out = CliRunner().invoke(app, ["gear", str(case), "--out", str(tmp_path / "out"),
+                                   "--emit-transient", str(tmp_path / "tr"), "-q"])
+    assert out.exit_code == 0, out.output
     emitted = load_case(tmp_path / "tr" / "transient.toml")
     assert emitted.analysis == "ehl-transient"
     assert emitted.contact.line
@@ -147,11 +146,10 @@ def test_cli_refuses_invalid_gear_in_one_line(tmp_path):
     case = tmp_path / "bad.toml"
     case.write_text(GEAR_CASE.replace("[16, 24]", "[10, 24]").replace(
         "[0.1817, 0.1715]", "[0.0, 0.0]"))
-    out = subprocess.run([sys.executable, "-m", "asperity.cli", "gear", str(case), "-q"],
-                         capture_output=True, text=True, cwd=tmp_path)
-    assert out.returncode == 2
-    lines = out.stderr.strip().splitlines()
-    assert len(lines) == 1 and "undercut" in lines[0]
+    out = CliRunner().invoke(app, ["gear", str(case), "--out", str(tmp_path / "o"), "-q"])
+    assert out.exit_code == 2
+    lines = out.output.strip().splitlines()
+    assert len(lines) == 1 and "undercut" in lines[0], out.output
 
 
 @pytest.mark.parametrize("name", ["gear-fzg-c", "gear-helical-industrial"])
