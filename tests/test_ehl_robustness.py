@@ -189,3 +189,22 @@ def test_default_domain_and_mesh_follow_the_regime():
     nx, ny = thin.default_nodes()
     assert (nx - 1) % 8 == 0 and ny == 33
     assert np.isclose(thin.default_domain()[0][0], -2.5 * thin.a)
+
+
+def test_case_file_without_grid_uses_the_regime_defaults():
+    """The slow ball example has no [grid] table: it runs on the regime's mesh and converges;
+    the same case on the former default grid table (129 x 65) is what failed."""
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    case = load_case(example_text("ball-on-disc-slow"))
+    prob = case.problem()
+    assert case.regime_mesh
+    assert case.solve_options(prob) == {"nx": None, "ny": None, "domain": None,
+                                         "levels": None}
+    out = run_case(case)
+    assert out.converged
+    assert out.summary["central_film_thickness_m"] == pytest.approx(192.5e-9, rel=0.02)
+    hd = out.summary["hamrock_dowson_central_film_m"]
+    assert 0.7 < out.summary["central_film_thickness_m"] / hd < 1.05

@@ -410,11 +410,31 @@ class EHLSteadyCase(EHLCaseBase):
     """Selects the steady smooth EHL analysis."""
     title: str = "Steady EHL contact"
     grid: EHLGridSpec = EHLGridSpec()
-    """Mesh and domain (in Hertz semi-axes)."""
+    """Mesh and domain (in Hertz semi-axes). Without a [grid] table both follow the contact:
+    inlet from Hamrock-Dowson's fully flooded distance, spacing from the estimated film,
+    grid sequencing (docs/ehl-robustness.md)."""
     solver: SolverSpec = SolverSpec()
     """Solver options."""
     reference: ReferenceSpec | None = None
     """Published numbers to compare with."""
+
+    @property
+    def regime_mesh(self) -> bool:
+        """True when the case has no [grid] table: domain, mesh and (unless ``solver.levels``
+        is given) grid sequencing are the problem's defaults
+        (:meth:`asperity.ehl.PointContact.default_nodes`)."""
+        return "grid" not in self.model_fields_set
+
+    def solve_options(self, problem) -> dict:
+        """``nx``, ``ny``, ``domain`` and ``levels`` for :func:`asperity.ehl.solve_steady`
+        (None where the solver chooses from the regime, see :attr:`regime_mesh`)."""
+        line = self.contact.line
+        if self.regime_mesh:
+            levels = self.solver.levels if "levels" in self.solver.model_fields_set else None
+            return {"nx": None, "ny": None, "domain": None, "levels": levels}
+        nx, ny = self.grid.nodes(line)
+        return {"nx": nx, "ny": ny, "levels": self.solver.levels,
+                "domain": self.grid.domain(problem.a, None if line else problem.b)}
 
     @model_validator(mode="after")
     def _mesh(self):
@@ -422,7 +442,9 @@ class EHLSteadyCase(EHLCaseBase):
         if line and "ny" in self.grid.model_fields_set and self.grid.ny != 1:
             raise ValueError("expected grid.ny = 1 (or no ny) for a line contact")
         step = 2 ** (self.solver.levels - 1)
-        for key, n in zip(("nx", "ny"), self.grid.nodes(line), strict=True):
+        given = [] if self.regime_mesh else zip(("nx", "ny"), self.grid.nodes(line),
+                                                strict=True)
+        for key, n in given:
             if key == "ny" and line:
                 continue
             if (n - 1) % step or (n - 1) // step + 1 < 9:

@@ -24,8 +24,6 @@ def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
     problem = case.problem()
     line = isinstance(problem, LineContact)
-    nx, ny = case.grid.nodes(line)
-    domain = case.grid.domain(problem.a, None if line else problem.b)
     callback = None
     if progress is not None:
         def callback(sweep, residual):
@@ -33,8 +31,8 @@ def run(case, progress=None) -> Outcome:
 
     with warnings.catch_warnings():  # the solver's starved-inlet warning: see ehl_warnings
         warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
-        res = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=case.solver.method,
-                           levels=case.solver.levels, tol=case.solver.tolerance,
+        res = solve_steady(problem, **case.solve_options(problem), method=case.solver.method,
+                           tol=case.solver.tolerance,
                            max_sweeps=case.solver.sweep_limit(line),
                            boundary_friction=case.solver.boundary_friction, callback=callback)
     lub = problem.lubricant
