@@ -180,3 +180,13 @@ values = [16, 24]
     assert (tmp_path / "out" / "study.png").is_file()
     with pytest.raises(InputError, match="axis\\[0\\].values"):
         _study(tmp_path, '[[axis]]\nkeys = ["a.b", "c.d"]\nvalues = [[1]]\n')
+
+
+def test_axis_in_imperial_units_is_stored_in_si_with_its_unit(tmp_path):
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["2 lbf", "4 lbf"]\n')
+    ds = combine(study, tmp_path / "none")      # nothing run: the coordinates alone
+    np.testing.assert_allclose(ds["loading__load"].values, [8.8964432, 17.7928864], rtol=1e-7)
+    assert ds["loading__load"].attrs["units"] == "N"
+    assert (ds["state"] == "missing").all()

@@ -237,6 +237,9 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
     return ds
 
 
+_ANGLES = {"radian", "degree", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
+
+
 def _coordinate(values: list):
     """Axis values as numbers in the SI unit of their dimension (and that unit, CF-style), or
     as strings."""
@@ -249,9 +252,14 @@ def _coordinate(values: list):
     try:
         ureg = registry()
         qs = [ureg.Quantity(v) for v in values]
-        si = next(u for u in DIMENSIONS.values()
-                  if u and ureg.Quantity(1, u).dimensionality == qs[0].dimensionality)
-        return np.array([q.to(si).magnitude for q in qs], dtype=float), cf_units(si)
+        if qs[0].dimensionless:  # pint counts angles as pure numbers: radians, or a ratio
+            angle = {name for name, _ in qs[0].unit_items()} & _ANGLES
+            si = "rad" if angle else "dimensionless"
+        else:
+            si = next(u for u in DIMENSIONS.values()
+                      if u and ureg.Quantity(1, u).dimensionality == qs[0].dimensionality)
+        values = np.array([q.to(si).magnitude for q in qs], dtype=float)
+        return values, "1" if si == "dimensionless" else cf_units(si)
     except Exception:  # labels that are not quantities stay strings
         return np.array([str(v) for v in values]), "1"
 
