@@ -52,7 +52,7 @@ def markdown() -> str:
 
 def schema(
     analysis: Annotated[str | None, typer.Argument(
-        help="Analysis (normal, surface, ehl-steady, ehl-transient, tangential, ...); all when "
+        help="Analysis (normal, surface, ehl-steady, ehl-transient, tangential, gear); all when "
              "omitted.")] = None,
     as_markdown: Annotated[bool, typer.Option(
         "--markdown", help="Print Markdown (the text of docs/cases.md).")] = False,
