@@ -248,6 +248,10 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         notes.append(f"EHL solve: {bad.size} of {n} path points did not converge (roll angles "
                      + ", ".join(f"{math.degrees(kin.roll_angle[i]):.2f}" for i in bad)
                      + " deg); refine [ehl] nx/levels or raise max_sweeps")
+    if pair.crowned and np.nanmax(b) * 2.0 > pair.face_width:
+        notes.append(f"Hertz ellipse: length 2b up to {np.nanmax(b) * 2e3:.3g} mm exceeds the "
+                     f"face width {pair.face_width * 1e3:.3g} mm, so the contact is cut by the "
+                     "tooth ends (edge loading); increase the crowning")
     low_pe = (load > 0) & (heat > 0) & (pe < 5.0)
     if np.any(low_pe):
         notes.append(f"flash temperature: Peclet number down to {pe[low_pe].min():.2g} < 5 at "
