@@ -83,3 +83,28 @@ def test_areal_parameters_are_grouped_and_of_the_scale_limited_surface():
     assert fam.label == "S-F"
     assert groups["height"]["Sq"] == pytest.approx(np.std(t.z), rel=1e-6)  # periodic: mean only
     assert 0 < groups["functional"]["Smr1"] < groups["functional"]["Smr2"] < 1
+
+
+def test_masked_points_are_left_out_of_the_height_parameters(tmp_path):
+    # A step: +1 um for x < 20 columns, -1 um after, with the 4 columns around the step
+    # missing. Harmonic filling ramps them linearly (0.6, 0.2, -0.2, -0.6 um), symmetric, so
+    # the mean stays 0; masked, only the measured +-1 um remain: Sa = Sq = Sp = Sv = 1 um,
+    # Ssk = 0, Sku = 1. Filled, Sa is lower by (2 (1 - 0.6) + 2 (1 - 0.2)) / 40 um.
+    from asperity.surfaces.io import read_measured
+    from asperity.surfaces.texture import evaluate_texture
+
+    z = np.where(np.arange(40)[:, None] < 20, 1e-6, -1e-6) * np.ones((40, 20))
+    z[18:22, :] = np.nan
+    np.savez(tmp_path / "step.npz", x=(np.arange(40) + 0.5) * H, y=(np.arange(20) + 0.5) * H,
+             z=z)
+    masked = read_measured(tmp_path / "step.npz", missing="mask")
+    assert masked.filled == 80 and any(n.startswith("masked 80 of 800") for n in masked.notes)
+    height = evaluate_texture(masked.surface, form_degree=0,
+                              exclude=masked.excluded).groups["height"]
+    for key, value in (("Sa", 1e-6), ("Sq", 1e-6), ("Sp", 1e-6), ("Sv", 1e-6), ("Ssk", 0.0),
+                       ("Sku", 1.0)):
+        assert height[key] == pytest.approx(value, abs=1e-12 if key != "Sku" else 1e-9), key
+    filled = read_measured(tmp_path / "step.npz", missing="fill")
+    assert filled.excluded is None
+    sa = evaluate_texture(filled.surface, form_degree=0).groups["height"]["Sa"]
+    assert sa == pytest.approx(1e-6 - (2 * 0.4 + 2 * 0.8) / 40 * 1e-6, rel=1e-9)

@@ -135,3 +135,11 @@ def test_non_uniform_x_resampled_on_request():
 def test_bad_unit_names_the_field():
     with pytest.raises(InputError, match="z_unit: expected a length unit"):
         read_measured(DATA / "plain_metres.txt", z_unit="furlongs per fortnight")
+
+
+def test_decreasing_x_is_turned_round_with_its_heights(tmp_path):
+    lines = (DATA / "x_um_z_um.csv").read_text().splitlines()
+    (tmp_path / "reversed.csv").write_text("\n".join([lines[0], *lines[:0:-1]]) + "\n")
+    p = read_measured(tmp_path / "reversed.csv").surface
+    np.testing.assert_allclose(p.z, f(np.arange(64) * 0.5e-6), atol=1e-11)
+    assert p.x[0] == pytest.approx(0.0, abs=1e-12)

@@ -51,7 +51,9 @@ class MeasuredFile(CaseModel):
 
     ``unit`` (of both coordinates and heights), ``x_unit``, ``z_unit``: length units of the
     file's numbers when it does not say (they replace what it says); ``missing``: ``"refuse"``
-    (default) or ``"fill"`` missing points; ``resample``: resample non-uniform x by cubic spline.
+    (default), ``"fill"`` missing points, or ``"mask"`` them (filled for the filters, left out
+    of the surface analysis' height parameters; a contact sees them filled); ``resample``:
+    resample non-uniform x by cubic spline.
     """
 
     unit: str | None = None
@@ -61,7 +63,7 @@ class MeasuredFile(CaseModel):
     """Length unit of the file's coordinates only."""
     z_unit: str | None = None
     """Length unit of the file's heights only."""
-    missing: Literal["refuse", "fill"] | None = None
+    missing: Literal["refuse", "fill", "mask"] | None = None
     """Missing points: "refuse" (default, an error) or "fill" them."""
     resample: bool | None = None
     """Resample non-uniformly spaced x by cubic spline."""

@@ -178,8 +178,9 @@ Unit = Annotated[str | None, typer.Option(help="Length unit of the file's number
                                                "when it does not say; replaces what it says.")]
 XUnit = Annotated[str | None, typer.Option(help="Unit of the coordinates only.")]
 ZUnit = Annotated[str | None, typer.Option(help="Unit of the heights only.")]
-Missing = Annotated[str, typer.Option(help="Missing points: 'refuse' or 'fill' (linear along a "
-                                           "profile, harmonic over an area).")]
+Missing = Annotated[str, typer.Option(help="Missing points: 'refuse', 'fill' (linear along a "
+                                           "profile, harmonic over an area) or 'mask' (filled "
+                                           "for the filters, left out of the parameters).")]
 Resample = Annotated[bool, typer.Option("--resample", help="Resample non-uniform x onto a "
                                                            "uniform grid by cubic spline.")]
 Cutoff = Annotated[str | None, typer.Option(help="lambda_c of a profile (default: ISO 4288's "
@@ -212,7 +213,8 @@ def stats(
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
     texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
                                form_degree=form_degree,
-                               rmr_depth=_length(rmr_depth, "--rmr-depth"))
+                               rmr_depth=_length(rmr_depth, "--rmr-depth"),
+                               exclude=reading.excluded)
     result = _texture_json(file, reading, texture)
     if as_json:
         typer.echo(json.dumps(result, indent=2))
@@ -376,7 +378,7 @@ def plot(
         fig = plot_spectrum(reading.surface, title=f"Power spectral density: {file.name}")
     else:
         texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
-                                   form_degree=form_degree)
+                                   form_degree=form_degree, exclude=reading.excluded)
         fig = plot_texture(texture, title=file.name)
     try:
         fig.savefig(out, dpi=150)

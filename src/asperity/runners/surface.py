@@ -155,14 +155,14 @@ def _surfaces(spec, progress) -> tuple[dict, list]:
     return made, turned
 
 
-def _texture(case, surface, summary, notes, warnings, figures):
+def _texture(case, surface, summary, notes, warnings, figures, exclude=None):
     """The ISO texture evaluation of ``surface`` as ``asperity surface stats`` shows it:
     summary keys ``iso_<name>`` (unit-suffixed), its notes, and the ``texture`` figure."""
     from ..plotting.surfaces import plot_texture
     from ..surfaces.texture import evaluate_texture, unit_of
 
     try:
-        texture = evaluate_texture(surface, case.evaluation.cutoff)
+        texture = evaluate_texture(surface, case.evaluation.cutoff, exclude=exclude)
     except InputError as exc:
         warnings.append(f"ISO texture parameters: not evaluated ({exc}); give "
                         "evaluation.cutoff that the surface holds")
@@ -502,5 +502,6 @@ def run(case, progress=None) -> Outcome:
         notes.append(f"File read as {reading.style}.")
         notes.extend(f"Reading: {note}." for note in reading.notes)
         warnings.extend(reading.warnings)
-    _texture(case, next(iter(surfaces.values())), summary, notes, warnings, figures)
+    _texture(case, next(iter(surfaces.values())), summary, notes, warnings, figures,
+             None if reading is None else reading.excluded)
     return Outcome(dataset, summary, figures, comparisons, notes=notes, warnings=warnings)

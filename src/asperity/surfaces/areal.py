@@ -39,6 +39,7 @@ from .filters import areal_gaussian_filter
 from .form import remove_form
 from .material_ratio import rk_parameters, section_height_difference, volume_parameters
 from .parameters import autocorrelation_length, roughness_parameters
+from .profiles import height_moments
 from .topography import Topography
 
 __all__ = ["AreaFamilies", "areal_families", "areal_parameters", "texture_aspect_ratio",
@@ -186,23 +187,30 @@ def texture_direction(topography: Topography) -> float:
     return float((refined + 90.0) % 180.0)
 
 
-def areal_parameters(families: AreaFamilies) -> dict[str, dict[str, float]]:
+def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str, float]]:
     """ISO 25178-2 parameters of the scale-limited surface, grouped as the standard groups them.
+
+    Parameters
+    ----------
+    families : AreaFamilies
+    exclude : ndarray of bool, optional
+        Points to leave out of the height, functional and volume parameters (masked missing
+        points); the hybrid and spatial ones use every point.
 
     Returns
     -------
     dict
-        ``height``: Sa Sq Ssk Sku Sp Sv Sz; ``hybrid``: Sdq Sdr; ``spatial``: Sal Str Std
-        (degrees); ``functional``: Sk Spk Svk Smr1 Smr2 Sdc (C(20 %) - C(80 %));
-        ``volume``: Vmp Vmc Vvc Vvv (m^3/m^2).
+        ``height``: Sa Sq Ssk Sku Sp Sv Sz (from the mean plane of the scale-limited surface);
+        ``hybrid``: Sdq Sdr; ``spatial``: Sal Str Std (degrees); ``functional``: Sk Spk Svk
+        Smr1 Smr2 Sdc (C(20 %) - C(80 %)); ``volume``: Vmp Vmc Vvc Vvv (m^3/m^2).
     """
     surface = families.scale_limited
-    params = roughness_parameters(surface)
+    slopes = roughness_parameters(surface)
     str_value, _ = texture_aspect_ratio(surface)
-    z = surface.z
+    z = surface.z if exclude is None else surface.z[~np.asarray(exclude, bool)]
     return {
-        "height": {k: params[k] for k in ("Sa", "Sq", "Ssk", "Sku", "Sp", "Sv", "Sz")},
-        "hybrid": {"Sdq": params["Sdq"], "Sdr": params["Sdr"]},
+        "height": height_moments(z, "S"),
+        "hybrid": {"Sdq": slopes["Sdq"], "Sdr": slopes["Sdr"]},
         "spatial": {"Sal": autocorrelation_length(surface, threshold=ACF_THRESHOLD),
                     "Str": str_value, "Std": texture_direction(surface)},
         "functional": {**rk_parameters(z, "S"), "Sdc": section_height_difference(z)},

@@ -87,7 +87,11 @@ class Reading:
     warnings : tuple of str
         Reasons to doubt the result (heights implausible in metres without a unit).
     filled : int
-        Number of missing points filled.
+        Number of missing points filled (or masked).
+    missing_points : ndarray of bool or None
+        Where they were, on the grid of ``surface``; None when none were missing.
+    masked : bool
+        True when they are to be left out of the parameters (``missing="mask"``).
     """
 
     surface: Profile | Topography
@@ -95,6 +99,13 @@ class Reading:
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
     filled: int = 0
+    missing_points: np.ndarray | None = None
+    masked: bool = False
+
+    @property
+    def excluded(self) -> np.ndarray | None:
+        """The points to leave out of the parameters: the missing ones when masked."""
+        return self.missing_points if self.masked else None
 
 
 @dataclass
@@ -111,20 +122,27 @@ class _Units:
                    both if z_unit is None else parse_length(z_unit, "z_unit"))
 
 
-def _missing(z: np.ndarray, missing: str, where: str, notes: list) -> tuple[np.ndarray, int]:
-    count = int(np.size(z) - np.isfinite(z).sum())
+def _missing(z: np.ndarray, missing: str, where: str, notes: list):
+    """Heights with missing points filled, their number, and where they were (or None)."""
+    lost = ~np.isfinite(z)
+    count = int(lost.sum())
     if count == 0:
-        return z, 0
+        return z, 0, None
     share = f"{count} of {z.size} points ({100 * count / z.size:.3g} %)"
-    if missing != "fill":
-        raise InputError(where, "no missing points, or missing points filled on request "
-                                "(--missing fill; case file: missing = \"fill\")",
+    if missing == "refuse":
+        raise InputError(where, "no missing points, or missing points filled or masked on "
+                                "request (--missing fill|mask; case file: missing = \"fill\")",
                          f"{share} missing")
     z, count = fill_missing(z)
     method = "linear interpolation" if z.ndim == 1 else "harmonic interpolation"
-    notes.append(f"filled {share} that the file marks as missing, by {method} from the "
-                 "measured neighbours")
-    return z, count
+    if missing == "fill":
+        notes.append(f"filled {share} that the file marks as missing, by {method} from the "
+                     "measured neighbours")
+    else:
+        notes.append(f"masked {share} that the file marks as missing: left out of the height, "
+                     f"material-ratio and volume parameters; filled by {method} only for the "
+                     "filters, slopes and spectra")
+    return z, count, lost
 
 
 def _uniform_x(x: np.ndarray, resolution: float, resample: bool, where: str, notes: list,
@@ -132,8 +150,6 @@ def _uniform_x(x: np.ndarray, resolution: float, resample: bool, where: str, not
     """Uniform positions for ``x`` (file units): the fitted grid, or a request to resample."""
     if not np.all(np.isfinite(x)):
         raise InputError(where, "a position on every line (an x value is missing)")
-    if x.size > 1 and x[-1] < x[0]:
-        x = x[::-1]
     steps = np.diff(x)
     if np.any(steps <= 0):
         raise InputError(where, "strictly increasing x positions")
@@ -154,6 +170,13 @@ def _uniform_x(x: np.ndarray, resolution: float, resample: bool, where: str, not
                          "printed precision); resample on request: --resample (case file: "
                          "resample = true)")
     return x, True
+
+
+def _mask_on(lost: np.ndarray, x: np.ndarray, grid: np.ndarray) -> np.ndarray:
+    """A mask of missing points carried to a resampled grid: the nearest original point's."""
+    nearest = np.clip(np.searchsorted(x, grid), 1, x.size - 1)
+    nearest -= (grid - x[nearest - 1]) < (x[nearest] - grid)
+    return lost[nearest]
 
 
 def _resampled(x, z, notes) -> tuple[np.ndarray, np.ndarray]:
@@ -187,13 +210,18 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
         if given is not None and found is not None and not np.isclose(given, found):
             notes.append(f"{name} unit given ({given:g} m) replaces the file's ({found:g} m)")
     z = lay.z * (1.0 if zf is None else zf)
-    z, filled = _missing(z, missing, str(path), notes)
+    z, filled, lost = _missing(z, missing, str(path), notes)
     if lay.x is not None and lay.y is None:
         unit = 1.0 if xf is None else xf
-        x, uneven = _uniform_x(lay.x, lay.resolution, resample, f"{path}: x", notes, unit)
+        order = slice(None, None, -1) if lay.x[-1] < lay.x[0] else slice(None)
+        z = z[order]
+        lost = None if lost is None else lost[order]
+        x, uneven = _uniform_x(lay.x[order], lay.resolution, resample, f"{path}: x", notes,
+                               unit)
         x = x * unit
         if uneven:
-            x, z = _resampled(lay.x * unit, z, notes)
+            x, z = _resampled(lay.x[order] * unit, z, notes)
+            lost = None if lost is None else _mask_on(lost, lay.x[order] * unit, x)
         surface = Profile(x, z, lay.periodic)
     elif lay.x is not None:
         unit = 1.0 if xf is None else xf
@@ -210,7 +238,8 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
     if zf is not None and units.z is None:
         notes.append(f"heights in units of {zf:g} m, as the file says")
     _plausible(surface, known, warnings)
-    return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled)
+    return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled, lost,
+                   missing == "mask")
 
 
 def _read_npz(path: Path, spacing, missing: str) -> Reading:
@@ -220,7 +249,7 @@ def _read_npz(path: Path, spacing, missing: str) -> Reading:
         raise InputError(str(path), "an array named 'z' (and optionally 'x', 'y')",
                          sorted(arrays))
     notes: list[str] = []
-    z, filled = _missing(np.asarray(arrays["z"], float), missing, str(path), notes)
+    z, filled, lost = _missing(np.asarray(arrays["z"], float), missing, str(path), notes)
     periodic = bool(arrays.get("periodic", False))
     if "x" not in arrays:
         surface = _from_heights(z, spacing, str(path), periodic=periodic)
@@ -230,7 +259,8 @@ def _read_npz(path: Path, spacing, missing: str) -> Reading:
         raise InputError(str(path), "an array 'y' with the 2-D heights 'z'")
     else:
         surface = Topography(arrays["x"], arrays["y"], z, periodic)
-    return Reading(surface, "numpy .npz (metres)", tuple(notes), (), filled)
+    return Reading(surface, "numpy .npz (metres)", tuple(notes), (), filled, lost,
+                   missing == "mask")
 
 
 def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) -> Reading:
@@ -257,18 +287,20 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
         if units.x is not None or units.z is not None:
             notes.append(f"the file's unit ({topo.unit}) is used; the unit given is ignored")
     heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * height_factor
-    heights, filled = _missing(heights, missing, str(path), notes)
+    heights, filled, lost = _missing(heights, missing, str(path), notes)
     if not topo.is_uniform:
         x = np.asarray(topo.positions(), float) * factor
         if not resample:
             raise InputError(str(path), "uniformly sampled data; resample on request: "
                                         "--resample (case file: resample = true)")
-        x, heights = _resampled(x, heights, notes)
-        surface = Profile(x, heights)
+        grid, heights = _resampled(x, heights, notes)
+        lost = None if lost is None else _mask_on(lost, x, grid)
+        surface = Profile(grid, heights)
     else:
         h = tuple(np.atleast_1d(topo.pixel_size) * factor)
         surface = _from_heights(heights, h, str(path), periodic=bool(topo.is_periodic))
-    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes), (), filled)
+    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes), (), filled,
+                   lost, missing == "mask")
 
 
 def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
@@ -283,10 +315,12 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     unit, x_unit, z_unit : str, optional
         Length unit of the file's numbers (``"um"``): of both, of the coordinates, of the
         heights. They replace units found in the file (with a note).
-    missing : {"refuse", "fill"}
-        What to do with missing points: refuse the file (naming how many), or fill them by
+    missing : {"refuse", "fill", "mask"}
+        What to do with missing points: refuse the file (naming how many); fill them by
         linear (profile) or harmonic (topography) interpolation
-        (:func:`asperity.surfaces.missing.fill_missing`).
+        (:func:`asperity.surfaces.missing.fill_missing`); or mask them: filled the same way for
+        filters and slopes, but left out of the height and material-ratio parameters
+        (:attr:`Reading.excluded`, used by :func:`~asperity.surfaces.texture.evaluate_texture`).
     resample : bool
         Resample non-uniform x onto a uniform grid by a cubic spline instead of refusing.
 
@@ -300,8 +334,8 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         Missing file, unknown format, ragged or non-numeric text (naming file and line),
         missing spacing or points, non-uniform x, a format that needs an extra.
     """
-    if missing not in ("refuse", "fill"):
-        raise InputError("missing", '"refuse" or "fill"', missing)
+    if missing not in ("refuse", "fill", "mask"):
+        raise InputError("missing", '"refuse", "fill" or "mask"', missing)
     units = _Units.of(unit, x_unit, z_unit)
     path = Path(path)
     if not path.is_file():
@@ -318,11 +352,12 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
             raise InputError(str(path), "a numeric .npy array", str(err)) from err
         notes: list[str] = []
         z = z * (1.0 if units.z is None else units.z)
-        z, filled = _missing(z, missing, str(path), notes)
+        z, filled, lost = _missing(z, missing, str(path), notes)
         surface = _from_heights(z, spacing, str(path))
         warnings: list[str] = []
         _plausible(surface, (True, units.z is not None), warnings)
-        return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled)
+        return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled,
+                       lost, missing == "mask")
     return _read_instrument(path, units, missing, resample)
 
 

@@ -36,8 +36,8 @@ from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for
 from .filters import gaussian_filter
 from .topography import Profile
 
-__all__ = ["ProfileFamilies", "amplitude_parameters", "mean_element_width", "profile_families",
-           "profile_parameters"]
+__all__ = ["ProfileFamilies", "amplitude_parameters", "height_moments", "mean_element_width",
+           "profile_families", "profile_parameters"]
 
 #: Sampling lengths in the ISO 4288 default evaluation length.
 SAMPLING_LENGTHS = 5
@@ -215,19 +215,27 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
                            count, tuple(notes), tuple(warnings))
 
 
-def amplitude_parameters(z: np.ndarray, spacing: float, prefix: str) -> dict:
-    """ISO 4287 amplitude and slope parameters of heights measured from their mean line.
+def height_moments(z: np.ndarray, prefix: str) -> dict:
+    """Amplitude parameters of heights measured from their mean line (plane), any shape.
 
     ``a`` mean |z|, ``q`` rms, ``sk`` skewness, ``ku`` kurtosis, ``p`` highest peak, ``v``
-    deepest valley (positive), ``z`` = p + v, ``dq`` rms of the forward-difference slopes.
+    deepest valley (positive), ``z`` = p + v (ISO 4287 clause 4.1-4.2, ISO 25178-2 4.1).
     """
+    z = np.asarray(z, dtype=float).ravel()
     rq = float(np.sqrt(np.mean(z**2)))
     if rq == 0:
-        raise InputError("heights", "a profile that is not flat (Rq > 0)")
+        raise InputError("heights", "a surface that is not flat (Rq > 0)")
     out = {f"{prefix}a": float(np.mean(np.abs(z))), f"{prefix}q": rq,
            f"{prefix}sk": float(np.mean(z**3) / rq**3), f"{prefix}ku": float(np.mean(z**4) / rq**4),
            f"{prefix}p": float(z.max()), f"{prefix}v": float(-z.min())}
     out[f"{prefix}z"] = out[f"{prefix}p"] + out[f"{prefix}v"]
+    return out
+
+
+def amplitude_parameters(z: np.ndarray, spacing: float, prefix: str, keep=None) -> dict:
+    """:func:`height_moments` of a profile (over the points ``keep``, default all) and ``dq``,
+    the rms of the forward-difference slopes (over all points)."""
+    out = height_moments(z if keep is None else z[keep], prefix)
     out[f"{prefix}dq"] = float(np.sqrt(np.mean((np.diff(z) / spacing) ** 2)))
     return out
 
@@ -265,8 +273,15 @@ def mean_element_width(z: np.ndarray, spacing: float, sampling_length: float) ->
     return float(np.mean(widths)) if widths else float("nan")
 
 
-def profile_parameters(families: ProfileFamilies) -> dict[str, dict[str, float]]:
+def profile_parameters(families: ProfileFamilies, exclude=None) -> dict[str, dict[str, float]]:
     """P, W and R parameters grouped as ISO 4287 groups them (module docstring).
+
+    Parameters
+    ----------
+    families : ProfileFamilies
+    exclude : ndarray of bool, optional
+        Points (of the whole profile) to leave out of the height parameters: masked missing
+        points. Slopes and RSm use every point.
 
     Returns
     -------
@@ -277,16 +292,20 @@ def profile_parameters(families: ProfileFamilies) -> dict[str, dict[str, float]]
         (:func:`mean_element_width`) and ``Rt``.
     """
     h = families.primary.spacing
+    keep = (np.ones(families.evaluated("R").size, bool) if exclude is None
+            else ~np.asarray(exclude, bool)[families.evaluation])
     out = {}
     for name in ("P", "W"):
-        values = amplitude_parameters(families.evaluated(name), h, name)
+        values = amplitude_parameters(families.evaluated(name), h, name, keep)
         values[f"{name}t"] = values.pop(f"{name}z")
         out[name] = values
     r = families.evaluated("R")
     sampling = r.reshape(families.sampling_lengths, -1)
-    parts = [amplitude_parameters(part, h, "R") for part in sampling]
+    kept = keep.reshape(families.sampling_lengths, -1)
+    parts = [amplitude_parameters(part, h, "R", k) for part, k in zip(sampling, kept,
+                                                                       strict=True)]
     out["R"] = {key: float(np.mean([part[key] for part in parts])) for key in parts[0]}
-    out["R"]["Rt"] = float(r.max() - r.min())
+    out["R"]["Rt"] = float(r[keep].max() - r[keep].min())
     widths = [mean_element_width(part, h, families.cutoff) for part in sampling]
     out["R"]["RSm"] = float(np.nanmean(widths)) if np.isfinite(widths).any() else float("nan")
     return out

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import InputError
 from .areal import AreaFamilies, areal_families, areal_parameters
 from .material_ratio import relative_material_ratio, rk_parameters, section_height_difference
@@ -58,10 +60,12 @@ class TextureEvaluation:
     warnings: tuple[str, ...]
 
 
-def _profile(profile: Profile, cutoff, form_degree, rmr_depth) -> TextureEvaluation:
+def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = profile_families(profile, cutoff, form_degree=form_degree)
-    params = profile_parameters(fam)
+    params = profile_parameters(fam, exclude)
     r = fam.evaluated("R")
+    if exclude is not None:
+        r = r[~np.asarray(exclude, bool)[fam.evaluation]]
     params["Rk"] = {"Rdc": section_height_difference(r), **rk_parameters(r, "R")}
     if rmr_depth is not None:
         params["Rk"]["Rmr"] = relative_material_ratio(r, rmr_depth)
@@ -81,11 +85,13 @@ def _profile(profile: Profile, cutoff, form_degree, rmr_depth) -> TextureEvaluat
     return TextureEvaluation(profile, fam, params, titles, fam.notes, fam.warnings)
 
 
-def _area(topography: Topography, cutoff, form_degree, rmr_depth) -> TextureEvaluation:
+def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
-    params = areal_parameters(fam)
+    params = areal_parameters(fam, exclude)
     if rmr_depth is not None:
-        params["functional"]["Smr"] = relative_material_ratio(fam.scale_limited.z, rmr_depth)
+        z = fam.scale_limited.z
+        z = z if exclude is None else z[~np.asarray(exclude, bool)]
+        params["functional"]["Smr"] = relative_material_ratio(z, rmr_depth)
     what = f"{fam.label} surface"
     titles = {
         "height": f"Height (ISO 25178-2), {what}",
@@ -100,7 +106,8 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth) -> TextureEval
     return TextureEvaluation(topography, fam, params, titles, fam.notes, ())
 
 
-def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None) -> TextureEvaluation:
+def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None,
+                     exclude=None) -> TextureEvaluation:
     """Filter a profile or topography as ISO does and compute its grouped parameters.
 
     Parameters
@@ -113,9 +120,15 @@ def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None) -> 
         Degree of the least-squares form removed (1: line or plane).
     rmr_depth : float, optional
         Also report Rmr (Smr): the material ratio this depth (m) below the highest peak.
+    exclude : ndarray of bool, optional
+        Points left out of the height and material-ratio parameters (masked missing points,
+        :attr:`asperity.surfaces.io.Reading.excluded`); filters and slopes use them filled.
     """
+    if exclude is not None and np.shape(exclude) != surface.z.shape:
+        raise InputError("exclude", f"a mask of the surface's shape {surface.z.shape}",
+                         np.shape(exclude))
     if isinstance(surface, Profile):
-        return _profile(surface, cutoff, form_degree, rmr_depth)
+        return _profile(surface, cutoff, form_degree, rmr_depth, exclude)
     if isinstance(surface, Topography):
-        return _area(surface, cutoff, form_degree, rmr_depth)
+        return _area(surface, cutoff, form_degree, rmr_depth, exclude)
     raise InputError("surface", "a Profile or a Topography", type(surface).__name__)
