@@ -164,8 +164,10 @@ def test_examples_validate(name):
 
 @pytest.mark.slow
 def test_fzg_example_path_and_mesh_accuracy():
-    """The example's 25 positions on its mesh (129 nodes, 2 levels) converge; a finer mesh
-    (193 nodes) at the pitch point moves the films by less than 5 %."""
+    """The example's 25 positions on its mesh (129 nodes, 2 levels) converge; at the pitch
+    point the films approach those of finer meshes from below (measured: central 0.2202,
+    0.2313, 0.2352 um and minimum 0.1953, 0.2055, 0.2103 um on 129, 193 and 257 nodes), so
+    the example's films and lambda are about 7 % low (on the safe side)."""
     case = load_case(example_text("gear-fzg-c"))
     from asperity.runners.gear import solve
 
@@ -175,7 +177,8 @@ def test_fzg_example_path_and_mesh_accuracy():
     fine = solve_path(FZG, FZG.points["C"] * np.ones(1), pinion_speed=OMEGA, torque=302.0,
                       body1=STEEL, body2=STEEL, lubricant=case.lubricant.lubricant(),
                       roughness=result.composite_roughness,
-                      mesh=EHLMesh(nx=193, levels=2, damping=0.3))
+                      mesh=EHLMesh(nx=257, levels=3, damping=0.3))
     assert fine.converged[0]
-    assert result.central_film[c] == pytest.approx(fine.central_film[0], rel=0.05)
-    assert result.minimum_film[c] == pytest.approx(fine.minimum_film[0], rel=0.05)
+    for coarse, finer in ((result.central_film[c], fine.central_film[0]),
+                          (result.minimum_film[c], fine.minimum_film[0])):
+        assert 0.9 * finer < coarse < finer
