@@ -64,7 +64,8 @@ class MeasuredFile(CaseModel):
     z_unit: str | None = None
     """Length unit of the file's heights only."""
     missing: Literal["refuse", "fill", "mask"] | None = None
-    """Missing points: "refuse" (default, an error) or "fill" them."""
+    """Missing points: "refuse" (default, an error), "fill" them, or "mask" them (filled, but
+    left out of a surface analysis' height parameters)."""
     resample: bool | None = None
     """Resample non-uniformly spaced x by cubic spline."""
 
