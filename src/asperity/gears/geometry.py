@@ -70,6 +70,11 @@ def _pair(name: str, values, positive: bool = False) -> tuple[float, float]:
     return first, second
 
 
+def _derived(name: str, doc: str) -> property:
+    """A read-only property returning ``self.derived[name]``."""
+    return property(lambda self: self.derived[name], doc=doc)
+
+
 @dataclass(frozen=True)
 class GearPair:
     """An external involute gear pair (spur for ``helix_angle = 0``).
@@ -229,11 +234,21 @@ class GearPair:
 
     # --- read-only views of the derived quantities -----------------------------------------
 
-    def __getattr__(self, name):
-        derived = self.__dict__.get("derived")
-        if derived is not None and name in derived:
-            return derived[name]
-        raise AttributeError(name)
+    alpha_t = _derived("alpha_t", "Transverse pressure angle, rad.")
+    mt = _derived("mt", "Transverse module m_n / cos beta, m.")
+    d = _derived("d", "Reference diameters (pinion, wheel), m.")
+    db = _derived("db", "Base diameters, m.")
+    rb = _derived("rb", "Base radii, m.")
+    da = _derived("da", "Tip diameters (given or ISO 21771 standard), m.")
+    ra = _derived("ra", "Tip radii, m.")
+    dw = _derived("dw", "Working pitch diameters 2 a_w z / (z1 + z2), m.")
+    beta_b = _derived("beta_b", "Base helix angle, rad.")
+    a0 = _derived("a0", "Reference centre distance (d1 + d2)/2, m.")
+    aw = _derived("aw", "Working centre distance, m.")
+    alpha_wt = _derived("alpha_wt", "Working transverse pressure angle, rad.")
+    t1t2 = _derived("t1t2", "Length T1T2 = a_w sin alpha_wt of the line of action, m.")
+    pbt = _derived("pbt", "Transverse base pitch pi m_t cos alpha_t, m.")
+    tip_thickness = _derived("tip_thickness", "Transverse tooth thickness at the tips, m.")
 
     @property
     def ratio(self) -> float:
