@@ -182,3 +182,23 @@ def test_fzg_example_path_and_mesh_accuracy():
     for coarse, finer in ((result.central_film[c], fine.central_film[0]),
                           (result.minimum_film[c], fine.minimum_film[0])):
         assert 0.9 * finer < coarse < finer
+
+
+@pytest.mark.parametrize("parameter, factor", [("ra", 2 / math.pi), ("rq", 1 / math.sqrt(2))])
+def test_roughness_from_a_measured_profile(tmp_path, parameter, factor):
+    """A measured profile (text file) of a sine of amplitude A over whole periods:
+    Ra = 2A/pi, Rq = A/sqrt(2); the composite is the root sum of squares with the other
+    surface's value."""
+    from asperity.runners.gear import roughness_values
+
+    x = np.arange(4000) * 0.5e-6
+    amplitude = 0.3e-6
+    np.savetxt(tmp_path / "flank.txt", np.c_[x, amplitude * np.sin(2 * np.pi * x / 50e-6)])
+    case = load_case(GEAR_CASE.replace('[surface1]\nkind = "ground"\nra = "0.3 um"',
+                                       f'[surface1]\nkind = "file"\npath = '
+                                       f'"{tmp_path / "flank.txt"}"')
+                     + f'[roughness]\nparameter = "{parameter}"\n')
+    s1, s2 = roughness_values(case)
+    assert s1 == pytest.approx(factor * amplitude, rel=2e-3)
+    if parameter == "ra":
+        assert s2 == pytest.approx(0.3e-6, rel=1e-9)   # a ground profile meets its Ra exactly
