@@ -121,3 +121,12 @@ def test_ragged_file_error_names_the_line(runner, tmp_path):
     bad.write_text("0 1\n1 2 3\n")
     res = runner.invoke(app, ["surface", "stats", str(bad)])
     assert res.exit_code == 2 and "bad.txt:2: expected 2 columns" in res.stderr
+
+
+def test_plot_of_a_stylus_export(runner, tmp_path):
+    data = Path(__file__).parent / "data" / "text" / "dektak_meta_block.csv"
+    png = tmp_path / "p.png"
+    res = runner.invoke(app, ["surface", "plot", str(data), "--cutoff", "8 um", "--out",
+                              str(png)])
+    assert res.exit_code == 0, res.output
+    assert png.read_bytes()[:4] == b"\x89PNG"
