@@ -57,6 +57,12 @@ def test_imperial_case_reports_imperial_beside_si():
     assert "Case parameters (SI and imperial)" in html
 
 
+def test_case_angles_in_degrees():
+    case = {"analysis": "tangential", "loading": {"direction": math.pi / 2, "force": 10.0}}
+    html = render_report("t", case, _outcome(), {})
+    assert "<code>loading.direction</code></td><td class=l>90 deg</td>" in html
+
+
 def test_zero_and_differences_without_noise():
     html = render_report("t", {"analysis": "normal"},
                          _outcome(force_x_n=0.0, load_n=962.0, approach_m=8.6e-6), {})
@@ -163,3 +169,32 @@ def test_flow_vectors_have_an_arrow_scale_and_equal_axes():
     mantissa = keys[0].U / 10 ** math.floor(math.log10(keys[0].U))
     assert mantissa in (1.0, 2.0, 5.0)
     assert ax.get_aspect() == 1.0
+
+
+def test_case_file_in_imperial_units_reports_imperial_beside_si(tmp_path):
+    case = tmp_path / "imperial.toml"
+    case.write_text('''analysis = "normal"
+title = "Ball in inches"
+[body1]
+youngs_modulus = "30e6 psi"
+[body2]
+youngs_modulus = "30e6 psi"
+[geometry]
+shape = "sphere"
+rx = "0.5 in"
+[loading]
+load = "100 lbf"
+[grid]
+nx = 32
+ny = 32
+x_extent = "0.04 in"
+y_extent = "0.04 in"
+''')
+    result = CliRunner().invoke(app, ["run", str(case), "--out", str(tmp_path / "out"),
+                                      "--quiet"])
+    assert result.exit_code == 0, result.output
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert "444.8 N (100 lbf)" in html                      # 100 lbf = 444.82 N
+    assert "12.7 mm (0.5 in)" in html                       # the radius among the parameters
+    assert re.search(r"maximum pressure</td><td>\d+(\.\d+)? GPa \(\d+ psi\)", html)
+    assert "100 lbf" in result.output                       # the terminal summary too

@@ -168,12 +168,17 @@ def _parameters_table(case: dict, imperial: bool = False) -> str:
         if key in ("title", "description", "source"):
             continue
         unit = units.get(re.sub(r"\[\d+\]", "[]", key), "")
+
+        def shown(v, unit=unit):
+            if unit == "rad":  # case angles (pressure angle, force direction) in degrees
+                return f"{format_number(math.degrees(v))} deg"
+            return format_quantity(v, unit, imperial=imperial)
+
         if isinstance(value, list | tuple):
-            text = ", ".join(format_quantity(v, unit, imperial=imperial)
-                             if isinstance(v, int | float) and not isinstance(v, bool)
+            text = ", ".join(shown(v) if isinstance(v, int | float) and not isinstance(v, bool)
                              else str(v) for v in value)
         elif isinstance(value, float) or (isinstance(value, int) and unit):
-            text = format_quantity(value, unit, imperial=imperial)
+            text = shown(value)
         elif isinstance(value, bool):
             text = "true" if value else "false"
         else:
