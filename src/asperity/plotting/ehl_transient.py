@@ -146,7 +146,7 @@ def plot_flow_vectors(result, problem, arrows=(14, 12)):
 def _map_figure(xa, ya):
     """A figure for a map over x/a, y/a on equal axes, sized to the domain's shape."""
     tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
-    height = float(np.clip(3.6 * tall, 2.4, 7.0))
+    height = float(np.clip(3.6 * tall, 2.4, 5.5))
     width = float(np.clip(height / tall, 2.2, 6.0))
     return new_figure(width + 1.8, height + 1.1)
 
