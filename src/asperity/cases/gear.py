@@ -215,8 +215,9 @@ class HandoffSpec(CaseModel):
     at: str = "min-lambda"
     """Point of the transient hand-off: "pitch", "min-lambda", "max-flash" or a pinion roll angle
     ("24 deg")."""
-    nx: Annotated[int, Field(ge=9, le=8193)] = 257
-    """Nodes along x of the transient case."""
+    nx: Annotated[int, Field(ge=9, le=8193)] = 129
+    """Nodes along x of the transient case (default 129, dx = a/32: at the FZG example's
+    start of contact the steady line-contact start does not converge on finer meshes)."""
     ny: Annotated[int, Field(ge=1, le=4097)] = 65
     """Nodes along y of the transient case."""
     x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
