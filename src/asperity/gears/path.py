@@ -242,7 +242,8 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         strict=True)))
     notes = []
     if caught_lines:
-        notes.append(f"EHL solver at {len(caught_lines)} path point(s): {caught_lines[0]}")
+        notes.append(f"EHL solver ({len(caught_lines)} warning(s) along the path), first: "
+                     f"{caught_lines[0]}")
     bad = np.flatnonzero(~converged)
     if bad.size:
         notes.append(f"EHL solve: {bad.size} of {n} path points did not converge (roll angles "

@@ -158,6 +158,10 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         f" and mu_b = {case.friction.boundary:g} (an engineering assumption). Flash "
         "temperature: Blok's formula (band source, high Peclet number, equal maximum surface "
         "temperatures); the EHL solutions are isothermal.",
+        f"Mesh: {case.ehl.nx} nodes on {case.ehl.levels} grid(s) over "
+        f"{case.ehl.x_min:g}a..{case.ehl.x_max:g}a; at the FZG example's pitch point the films "
+        "of 129 nodes lie about 7 % below those of 257 nodes (docs/gears.md), so lambda errs "
+        "on the safe side.",
     ]
     title = case.title
     from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
