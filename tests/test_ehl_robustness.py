@@ -15,8 +15,8 @@ Tolerances (central film):
 - Against Hamrock-Dowson (point, k >= 1): 25 %; it is a
   regression of older, coarser solutions that differ from converged solutions by up to
   about 20 % at high load. Chittenden et al. (k < 1, entrainment along the major axis): only
-  -20 %/+50 %, since the film there still depends on the transverse extent of the domain
-  (an open point, docs/ehl-robustness.md).
+  -20 %/+50 %: our films, converged in domain and mesh, lie 39-42 % above this transcription
+  of it, which could not be checked against the paper (docs/ehl-robustness.md).
 - Roelands viscosity, Dowson-Higginson density and Eyring shear: 30 % below to 5 % above
   Hamrock-Dowson; compressibility and the Roelands law (lower viscosity at high pressure than
   Barus with the same alpha) thin the film by 10-20 %, the Eyring linearisation leaves the
@@ -151,8 +151,8 @@ def test_default_settings_converge_and_match_the_film_formulas(name, factory, mo
         if model == "exact" and formula in ("Nijenbanning", "Moes"):
             assert ratio == pytest.approx(1.0, abs=0.06), formula
         elif formula == "Chittenden":
-            # k < 1: the film still depends on the transverse extent of the domain (+39 % on
-            # +-a, +18 % on +-3a at k = 0.5), see docs/ehl-robustness.md
+            # k < 1: +39 % at k = 0.5 although converged in domain and mesh (within 1 %):
+            # the formula's transcription is unchecked, see docs/ehl-robustness.md
             assert 0.8 < ratio < 1.5, formula
         elif model == "exact":
             assert ratio == pytest.approx(1.0, abs=0.25), formula
@@ -208,3 +208,21 @@ def test_case_file_without_grid_uses_the_regime_defaults():
     assert out.summary["central_film_thickness_m"] == pytest.approx(192.5e-9, rel=0.02)
     hd = out.summary["hamrock_dowson_central_film_m"]
     assert 0.7 < out.summary["central_film_thickness_m"] / hd < 1.05
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["circle M=1000 L=10", "line M=100 L=10",
+                                  "ball steel 15 N Eyring 5 MPa xi=0.5"])
+def test_default_mesh_error_is_near_two_percent(name):
+    """Halving the default dX (same domain and dY) changes the central film by < 2.5 %: the
+    default mesh's discretisation error is near its 2 % target."""
+    factory = dict((c[0], c[1]) for c in CASES)[name]
+    prob = factory()
+    coarse = solve_steady(prob)
+    nx, ny = coarse.levels[-1]
+    domain = ((coarse.x[0], coarse.x[-1]), (coarse.y[0], coarse.y[-1]))
+    fine = solve_steady(prob, nx=2 * (nx - 1) + 1, ny=ny, domain=domain,
+                        levels=len(coarse.levels), max_sweeps=40000)
+    print(f"\n{name}: hc {coarse.central_film * 1e9:.1f} -> {fine.central_film * 1e9:.1f} nm")
+    assert coarse.converged and fine.converged
+    assert fine.central_film == pytest.approx(coarse.central_film, rel=0.025)
