@@ -55,3 +55,28 @@ def test_lp_agrees_with_fft_under_force():
     # the LP fixes every traction along x; the FFT solution has small y components (nu != 0)
     assert np.linalg.norm(lp.traction[0] - fft.traction[0]) < 0.04 * np.linalg.norm(
         fft.traction[0])
+
+
+@pytest.mark.slow
+def test_lp_says_why_it_cannot_balance_the_books_combined_case_2():
+    """Seireg Ex. 3.5.2-2 Case 2 on the book's 72 elements (centroids 1.4 in apart, T at 214
+    deg, M about the midpoint): no trial rigid motion balances the load with predetermined
+    directions (the carried load jumps as elements switch between stick and slip). The result
+    says so, keeps the best trial (6 % of the load unbalanced), and is not a silent failure;
+    the FFT method converges. About 15 s: most trials need a MILP to prove them infeasible."""
+    inch, lbf, psi = 0.0254, 4.4482216152605, 6894.757293168361
+    steel = Material(30e6 * psi, 0.3, "steel")
+    x = (np.arange(20) + 0.5) * 0.1 * inch - 1.0 * inch
+    y = (np.arange(6) + 0.5) * 0.1 * inch - 0.3 * inch
+    X, _ = np.meshgrid(x, y, indexing="ij")
+    p = np.where(np.abs(X + 0.7 * inch) < 0.3 * inch, 10e3 * psi, 0.0)
+    p += np.where(np.abs(X - 0.7 * inch) < 0.3 * inch, 20e3 * psi, 0.0)
+    angle = np.radians(214.0)
+    load = dict(force=(600 * lbf * np.cos(angle), 600 * lbf * np.sin(angle)),
+                moment=400 * lbf * inch, centre=(0.0, 0.0))
+    lp = solve_tangential(p, x, y, 0.12, steel, steel, method="lp", **load)
+    assert not lp.converged and np.isfinite(lp.residual) and lp.residual < 0.2
+    assert "predetermined" in lp.reason and "method = 'fft'" in lp.reason
+    assert lp.warnings == (lp.reason,)
+    fft = solve_tangential(p, x, y, 0.12, steel, steel, **load)
+    assert fft.converged and not fft.reason

@@ -228,6 +228,16 @@ class TangentialResult(SolverResult):
     """Cell-centre coordinates along x, m."""
     y: np.ndarray | None = None
     """Cell-centre coordinates along y, m."""
+    reason: str = ""
+    """Why the solve did not converge, in words, when the method can tell (``"lp"``: no trial
+    motion balances the load with predetermined directions); empty otherwise."""
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """The solver's own reason for not converging when it gives one, else the generic line."""
+        if self.reason and not self.converged:
+            return (self.reason,)
+        return SolverResult.warnings.fget(self)
 
 
 # --- equilibrium constraints --------------------------------------------------------------

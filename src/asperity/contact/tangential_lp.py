@@ -24,6 +24,8 @@ translation); elsewhere it is the book's approximation, which the FFT solver doe
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 from scipy.optimize import Bounds, LinearConstraint, linprog, milp
 from scipy.sparse import csr_matrix, eye, hstack, vstack
@@ -83,7 +85,7 @@ def _fixed_direction(Kxx, Kxy, Kyy, tx, ty, rho, g, c_along, work):
     return f * gs, s * us, lam * us / rs
 
 
-def _complementary_milp(Kh, gh, ch, rho, work, lam0, time_limit=30.0):
+def _complementary_milp(Kh, gh, ch, rho, work, lam0, time_limit=5.0):
     """The fixed-direction problem with complementarity by binaries (scaled variables).
 
     Variables [f, s, z, lambda]: K f + s - lambda rho = c, s <= S z, f >= g z, rho.f = work;
@@ -139,7 +141,7 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
     tn = target / (target @ target)
     N = np.zeros((3, len(rows) - 1))
     N[rows] = np.linalg.svd(target[rows][None, :])[2][1:].T
-    state = {"it": 0}
+    state = {"it": 0, "infeasible": 0, "best": np.inf, "best_zz": None}
     cache = {}
 
     def solve_for(zz):
@@ -158,47 +160,70 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
     def residual(zz):
         out, yv, tx, ty = solve_for(zz)
         state["it"] += 1
-        if out is None:
+        if out is None:  # no stick/slip split is consistent with these directions
+            state["infeasible"] += 1
             return np.full(2, np.nan)
         f = out[0]
         q = np.stack([f * tx, f * ty])
         carried = np.array([q[0].sum(), q[1].sum(), (Xc * q[1] - Yc * q[0]).sum() / cons.L])
         r = N.T @ (carried - target) / np.abs(target).max()
+        size = float(np.abs(r).max())
+        if size < state["best"]:
+            state["best"], state["best_zz"] = size, np.array(zz, dtype=float)
         if callback is not None:
-            callback(state["it"], float(np.abs(r).max()))
+            callback(state["it"], size)
         return r
 
     zz = np.zeros(N.shape[1])
     r = residual(zz)
-    J = None
+    J, stalls = None, 0
     while np.all(np.isfinite(r)) and np.abs(r).max() > tol and state["it"] < max_iter:
         if J is None:  # finite-difference Jacobian, then Broyden updates
             h = 1e-4 * np.linalg.norm(tn)
             J = np.column_stack([(residual(zz + h * e) - r) / h for e in np.eye(zz.size)])
+            if not np.all(np.isfinite(J)):
+                break
         dz = -np.linalg.lstsq(J, r, rcond=None)[0]
         step = 1.0
-        while True:  # damped: the residual must decrease
+        while True:  # damped: the residual must decrease (an infeasible trial does not)
             r_new = residual(zz + step * dz)
-            if not np.abs(r_new).max() >= np.abs(r).max() or step < 1e-3:
+            if np.abs(r_new).max() < np.abs(r).max() or step < 0.1:
                 break
             step *= 0.5
         if not np.all(np.isfinite(r_new)):
-            r = r_new
             break
+        # the residual is piecewise constant in places (elements switch between stick and
+        # slip): stop when two steps running gain less than 10 % (each trial may cost a MILP)
+        stalls = stalls + 1 if np.abs(r_new).max() > 0.9 * np.abs(r).max() else 0
         J = J + np.outer(r_new - r - step * (J @ dz), dz) / (step * (dz @ dz))
         zz, r = zz + step * dz, r_new
-    out, yv, tx, ty = solve_for(zz)
+        if stalls >= 2:
+            break
     q = np.zeros((2, *prob.g.shape))
-    if out is None:
-        return _result(q, contact & False, q.copy(), np.zeros(3), prob, gross=False, t=t,
-                       iterations=state["it"], converged=False, residual=np.inf, conv=0,
-                       method="lp")
+    res = state["best"]
+    if state["best_zz"] is None:
+        result = _result(q, contact & False, q.copy(), np.zeros(3), prob, gross=False, t=t,
+                         iterations=state["it"], converged=False, residual=np.inf, conv=0,
+                         method="lp")
+        return replace(result, reason=(
+            "method lp: no stick/slip split is consistent with the traction directions of "
+            "the trial rigid motion (the book's predetermined directions); use method = "
+            "'fft', which does not predetermine them"))
+    out, yv, tx, ty = solve_for(tuple(state["best_zz"]))
     f, s, lam = out
     q[0][contact], q[1][contact] = f * tx, f * ty
     slip = np.zeros_like(q)
     slip[0][contact], slip[1][contact] = s * tx, s * ty
     stick = np.zeros(prob.g.shape, dtype=bool)
     stick[contact] = f < g * (1.0 - 1e-9)
-    res = float(np.abs(r).max()) if np.all(np.isfinite(r)) else float("inf")
-    return _result(q, stick, slip, lam * yv, prob, gross=False, t=t, iterations=state["it"],
-                   converged=res <= tol, residual=res, conv=0, method="lp")
+    result = _result(q, stick, slip, lam * yv, prob, gross=False, t=t, iterations=state["it"],
+                     converged=res <= tol, residual=res, conv=0, method="lp")
+    if res <= tol:
+        return result
+    return replace(result, reason=(
+        f"method lp: no trial rigid motion balances the load with predetermined traction "
+        f"directions: the best of {state['it']} leaves {res:.2g} of the applied load "
+        f"unbalanced ({state['infeasible']} had no stick/slip split consistent with their "
+        "directions; the carried load jumps as elements change between stick and slip); the "
+        "traction shown is that best trial's; use method = 'fft', which does not "
+        "predetermine the directions"))

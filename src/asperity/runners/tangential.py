@@ -308,7 +308,8 @@ def run(case, progress=None) -> Outcome:
         fld.normal is None or fld.normal.converged)
     if not res.converged:
         notes.append(f"The solver did not converge in {res.iterations} iterations (residual "
-                     f"{res.residual:.2e}); the numbers above are not trustworthy.")
+                     f"{res.residual:.2e}); the numbers above are not trustworthy."
+                     + (f" Why: {res.reason}." if res.reason else ""))
     if path is not None and not path.converged:
         notes.append("A step of the load path did not converge; the path is not trustworthy.")
     # prescribed pressures (Hertz, uniform regions) lie inside the grid by construction; a
