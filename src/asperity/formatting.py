@@ -98,7 +98,7 @@ _LABELS = {
     "steps_converged_fraction": "steps converged",
     "contact_time_fraction": "contact time",
     "friction_coefficient": "friction coefficient",
-    "load_capacity": "load / friction capacity",
+    "load_capacity": "gross-slip load / applied load",
 }
 
 #: Relative size below which a value is round-off of zero (see :func:`summary_rows`).
