@@ -9,14 +9,16 @@ the slower surface's roughness has passed x = -a, timed one by one:
   cut short upstream, so that the roughness reaches the contact in ~300 steps), with the
   ``holmes-rough-CC-paper`` example's solver settings.
 
-Printed per mesh: median time per step, sweeps and far-field FFT refreshes per step, work
-units per step and ns per node per work unit. A work unit is one finest-grid sweep (line
-sweep, flow factors, damping and load shift, as the step runs it); a refresh counts as the
-ratio of its cost to a sweep's, timed on that mesh at the run's last state. Constant ns per
-node per work unit across the meshes means the cost grows linearly with the nodes at a given
-number of work units per step. The paper case (801 x 201, ~4,400 steps) is estimated from the
-seed-spacing row's cost per node and work unit and the work per step of the measured full run
-(docs/ehl-transient.md, Cost): an estimate, not a run.
+Printed per mesh: median wall and CPU time per step (the CPU time of all threads is less
+disturbed by other processes on a shared machine), sweeps and far-field FFT refreshes per
+step, work units per step and ns per node per work unit, wall and CPU. A work unit is one
+finest-grid sweep (line sweep, flow factors, damping and load shift, as the step runs it); a
+refresh counts as the ratio of its CPU time to a sweep's, the least of 9 rounds alternated
+between the meshes at each run's last state. Constant ns per node per work unit across the
+meshes means the cost grows linearly with the nodes at a given number of work units per step.
+The paper case (801 x 201, ~4,400 steps) is estimated from the seed-spacing row's wall cost
+per node and work unit and the work per step of the measured full run (docs/ehl-transient.md,
+Cost): an estimate, not a run.
 
 ``--full`` runs the ``holmes-rough-CC-paper`` example itself end to end through the runner as
 ``asperity run`` does (figures and files aside): wall time against the 8 min goal of issue 17,
@@ -80,21 +82,20 @@ def last_state(prob, x, y, result, options: StepOptions):
 
 
 def unit_costs(states, method, rounds=9):
-    """Seconds of one sweep and of one far-field refresh per state: the fastest of ``rounds``
-    rounds that alternate between the states (on a loaded machine the minimum is the least
-    disturbed)."""
+    """CPU seconds (all threads) of one sweep and of one far-field refresh per state: the
+    least of ``rounds`` rounds that alternate between the states."""
     best = [[np.inf, np.inf] for _ in states]
     for state in states:
         state.refresh()
         state.sweep(method)
     for _ in range(rounds):
         for state, costs in zip(states, best, strict=True):
-            t = time.perf_counter()
+            t = time.process_time()
             state.sweep(method)
-            costs[0] = min(costs[0], time.perf_counter() - t)
-            t = time.perf_counter()
+            costs[0] = min(costs[0], time.process_time() - t)
+            t = time.process_time()
             state.refresh()
-            costs[1] = min(costs[1], time.perf_counter() - t)
+            costs[1] = min(costs[1], time.process_time() - t)
     return best
 
 
@@ -107,13 +108,15 @@ def rough_steps(nx, ny, steps=60):
     st = solve_steady(prob, nx=nx, ny=ny, domain=domain)
     dt = 0.5 * dx / prob.u1
     inside = int(np.ceil((-prob.a - x[0]) / (prob.u2 * dt)))  # slower surface reaches -a
-    stamps = [time.perf_counter()]
+    stamps = [(time.perf_counter(), time.process_time())]
     r = solve_transient(prob, C, C, nx=nx, ny=ny, domain=domain, steady=st, warmup_steps=0,
                         counting_steps=inside + steps, **settings,
-                        callback=lambda step, res: stamps.append(time.perf_counter()))
+                        callback=lambda step, res: stamps.append((time.perf_counter(),
+                                                                  time.process_time())))
     options = StepOptions.for_problem(prob, **settings)
     return {"mesh": f"{nx}x{ny}", "nodes": nx * ny, "steps": steps,
-            "per_step": float(np.median(np.diff(stamps)[inside:])),
+            "per_step": float(np.median(np.diff(stamps, axis=0)[inside:, 0])),
+            "cpu_per_step": float(np.median(np.diff(stamps, axis=0)[inside:, 1])),
             "sweeps": r.sweeps[inside:], "refreshes": r.refreshes[inside:],
             "failed": int((~r.step_converged[inside:]).sum()),
             "state": last_state(prob, x, y, r, options)}
@@ -125,17 +128,22 @@ def work_units(row, t_sweep, t_refresh):
     row["refresh_cost"] = t_refresh / t_sweep
     row["work"] = float(np.mean(row["sweeps"] + row["refreshes"] * row["refresh_cost"]))
     row["ns_node_work"] = 1e9 * row["per_step"] / (row["work"] * row["nodes"])
-    row["ns_node_sweep"] = 1e9 * t_sweep / row["nodes"]
+    row["cpu_ns_node_work"] = 1e9 * row["cpu_per_step"] / (row["work"] * row["nodes"])
 
 
 def paper_estimate(row):
-    """Minutes for the paper case from a seed-spacing row: its cost per node and work unit,
+    """The paper case estimated from a seed-spacing row: (WU per step, wall s per step, CPU s
+    per step, minutes at the row's wall cost, minutes at its CPU cost over 2 cores).
+
     801 x 201 nodes, the measured full run's sweeps per step with the row's refreshes per
-    sweep and refresh cost."""
+    sweep and refresh cost, at the row's cost per node and work unit. The CPU-based minutes
+    assume both cores busy all the time: a lower bound for 2 free cores.
+    """
     per_sweep = float(np.mean(row["refreshes"]) / np.mean(row["sweeps"]))
     work = PAPER_SWEEPS * (1.0 + per_sweep * row["refresh_cost"])
-    per_step = row["ns_node_work"] * 1e-9 * work * 801 * 201
-    return work, per_step, PAPER_STEPS * per_step / 60
+    wall = row["ns_node_work"] * 1e-9 * work * 801 * 201
+    cpu = row["cpu_ns_node_work"] * 1e-9 * work * 801 * 201
+    return work, wall, cpu, PAPER_STEPS * wall / 60, PAPER_STEPS * cpu / 2 / 60
 
 
 def full_case(name="holmes-rough-CC-paper"):
@@ -176,24 +184,27 @@ def main():
     for row, (t_sweep, t_refresh) in zip(rows, unit_costs([r["state"] for r in rows], "line"),
                                          strict=True):
         work_units(row, t_sweep, t_refresh)
-    print(f"{'mesh':>9} {'nodes':>7} {'s/step':>7} {'sweeps':>7} {'max':>4} {'refr.':>6} "
-          f"{'refr./sweep':>11} {'WU/step':>8} {'ns/node/WU':>11} {'ns/node/sweep':>13} "
-          f"{'failed':>6}")
+    print(f"{'mesh':>9} {'nodes':>7} {'s/step':>7} {'CPU s/step':>10} {'sweeps':>7} {'max':>4} "
+          f"{'refr.':>6} {'refr./sweep':>11} {'WU/step':>8} {'ns/node/WU':>11} "
+          f"{'CPU ns/node/WU':>14} {'failed':>6}")
     for row in rows:
         print(f"{row['mesh']:>9} {row['nodes']:7d} {row['per_step']:7.3f} "
-              f"{np.mean(row['sweeps']):7.1f} {row['sweeps'].max():4d} "
-              f"{np.mean(row['refreshes']):6.1f} {row['refresh_cost']:11.2f} "
-              f"{row['work']:8.1f} {row['ns_node_work']:11.0f} {row['ns_node_sweep']:13.0f} "
-              f"{row['failed']:6d}")
-    print("s/step: median over the timed steps; WU/step: sweeps + refreshes x refr./sweep; "
-          "ns/node/WU: s/step over WU and nodes; ns/node/sweep: the fastest of 9 alternated "
-          "sweeps at the last state")
+              f"{row['cpu_per_step']:10.3f} {np.mean(row['sweeps']):7.1f} "
+              f"{row['sweeps'].max():4d} {np.mean(row['refreshes']):6.1f} "
+              f"{row['refresh_cost']:11.2f} {row['work']:8.1f} {row['ns_node_work']:11.0f} "
+              f"{row['cpu_ns_node_work']:14.0f} {row['failed']:6d}")
+    print("s/step, CPU s/step: medians over the timed steps (wall; CPU time of all threads, less "
+          "disturbed by other processes); WU/step: sweeps + refreshes x refr./sweep (the CPU "
+          "time of a refresh over a sweep's, least of 9 alternated); ns/node/WU: per step over "
+          "WU and nodes")
     for row in rows:
         if row["mesh"] == "571x201":
-            work, per_step, minutes = paper_estimate(row)
+            work, wall, cpu, minutes, cpu_minutes = paper_estimate(row)
             print(f"estimate, not a run: paper case 801 x 201, {PAPER_STEPS} steps x {work:.1f} "
-                  f"WU ({PAPER_SWEEPS} sweeps, the measured full run) x {row['ns_node_work']:.0f}"
-                  f" ns/node/WU = {per_step:.3f} s/step, {minutes:.0f} min (goal {GOAL_MINUTES})")
+                  f"WU ({PAPER_SWEEPS} sweeps per step, the measured full run): at this run's "
+                  f"wall cost {wall:.3f} s/step, {minutes:.0f} min; at its CPU cost "
+                  f"{cpu:.3f} CPU s/step over 2 cores, {cpu_minutes:.0f} min (a lower bound for "
+                  f"2 free cores); goal {GOAL_MINUTES} min")
     if args.full:
         full_case()
 
