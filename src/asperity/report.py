@@ -278,7 +278,19 @@ def write_report(title: str, case: dict, outcome: Outcome, files: dict, path, *,
 
 def study_variables(ds, limit: int = 9) -> list[str]:
     """The numeric results of a study that vary from case to case: headline quantities first,
-    solver bookkeeping left out, at most ``limit``."""
+    solver bookkeeping and repeats of a swept value left out.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` (:func:`asperity.sweep.combine`).
+    limit : int
+        Most variables returned.
+
+    Returns
+    -------
+    list of str
+    """
     import numpy as np
 
     axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
