@@ -22,7 +22,6 @@ NEWTONIAN = Lubricant(viscosity=0.0166, pressure_viscosity=1.7e-8, viscosity_mod
 FZG = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
                centre_distance=91.5e-3)
 OMEGA = 2170 * 2 * math.pi / 60
-COARSE = EHLMesh(nx=97, levels=1)
 
 
 def test_pitch_point_equals_direct_solver_call():
@@ -48,15 +47,17 @@ def test_pitch_point_equals_direct_solver_call():
 
 
 def test_films_along_the_path_within_formula_accuracy():
-    """Newtonian isothermal solutions against Moes' central film (fit to numerical solutions
-    within a few per cent) and Dowson-Higginson's minimum film (about +-20 %), at 7 positions
-    A-E on a coarse mesh (97 nodes: films about 3-7 % below the 129-node ones)."""
+    """Newtonian isothermal solutions against Moes' central film (a fit to numerical solutions,
+    a few per cent) and Dowson-Higginson's minimum film, at 7 positions A-E on the example's
+    mesh (129 nodes, 2 levels). Measured: central 0.3-6.5 % below Moes (the most at the
+    heaviest load), minimum -5.0 to +1.2 % of Dowson-Higginson."""
     res = solve_path(FZG, FZG.path(7), pinion_speed=OMEGA, torque=302.0, body1=STEEL,
-                     body2=STEEL, lubricant=NEWTONIAN, roughness=0.42e-6, mesh=COARSE)
+                     body2=STEEL, lubricant=NEWTONIAN, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=129, levels=2))
     assert res.converged.all()
     assert res.formula_names == ("Moes", "Dowson-Higginson")
-    assert res.central_film == pytest.approx(res.formula_central, rel=0.15)
-    assert res.minimum_film == pytest.approx(res.formula_minimum, rel=0.25)
+    assert res.central_film == pytest.approx(res.formula_central, rel=0.08)
+    assert res.minimum_film == pytest.approx(res.formula_minimum, rel=0.08)
     crit = res.critical()
     assert res.specific_film[crit["minimum_lambda"]] == res.specific_film.min()
     assert crit["maximum_hertz_pressure"] in np.flatnonzero(res.share == 1.0)
