@@ -242,3 +242,14 @@ def test_inlet_length_criterion_against_a_longer_inlet():
         "central_film_thickness_m"]
     assert loss == pytest.approx(predicted, abs=0.05)
     assert dg.ehl_inlet_length(-4.5e-4, 1e-4, 19.1e-3, 0.5e-6) == []
+
+
+def test_film_collapse():
+    """A film at or below zero anywhere in a smooth steady contact; positive films pass."""
+    film = np.full((9, 5), 2e-7)
+    assert dg.ehl_film_collapse(film, 2e-7) == []
+    film[4, 2] = -1.8e-11
+    lines = dg.ehl_film_collapse(film, 2.5e-9)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and "-0.018 nm" in lines[0] and "<= 0 on 1 nodes" in lines[0]
+    assert "about 2.5 nm" in lines[0]

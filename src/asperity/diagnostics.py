@@ -33,6 +33,7 @@ __all__ = [
     "contact_resolution",
     "ehl_inlet",
     "ehl_inlet_length",
+    "ehl_film_collapse",
     "ehl_mesh",
     "ehl_sides",
     "lowpass_removed",
@@ -352,6 +353,34 @@ def ehl_inlet_length(x_min: float, a: float, rx: float, central_film: float) -> 
             f"{m_star:.3g} a (Hamrock & Dowson 1977, m* = 1 + 3.06 ((Rx/a)^2 hc/Rx)^0.58); "
             f"their starvation fit puts the central film {_pct(loss)} below the flooded one "
             f"(limit {_pct(STARVED_FILM_LOSS)}); use x_min <= -{use:g} a"]
+
+
+def ehl_film_collapse(film, estimate: float | None = None) -> list[str]:
+    """A film at or below zero in a smooth steady contact: below what the solve resolves.
+
+    Parameters
+    ----------
+    film : ndarray
+        Film thickness on the nodes, m.
+    estimate : float, optional
+        A film-formula estimate of the central film, m, for the message.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    h = np.asarray(film, dtype=float)
+    h_min = float(np.min(h))
+    if h_min > 0:
+        return []
+    expected = (f"; the film formulas expect about {estimate * 1e9:.3g} nm"
+                if estimate is not None and estimate > 0 else "")
+    return [f"film: the film is {h_min * 1e9:.3g} nm at its thinnest, <= 0 on "
+            f"{int(np.count_nonzero(h <= 0))} nodes (limit: > 0 in a smooth steady contact)"
+            f"{expected}; the solution has collapsed below what the mesh and tolerance resolve: "
+            "refine the mesh (cells_per_a), lower solver.tolerance, or check the speeds and "
+            "viscosity"]
 
 
 def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:

@@ -84,9 +84,12 @@ def run(case, progress=None) -> Outcome:
     if not res.converged:
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
                      f"(residual {res.residual:.2e}); the numbers above are not trustworthy.")
+    estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
+        "moes_central_film_m"))
+    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, res.central_film)
+    trust += diagnostics.ehl_film_collapse(res.film, estimate)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=ehl_warnings(case, problem, res.pressure, res.x, res.y,
-                                         res.central_film))
+                   warnings=trust)
 
 
 def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
