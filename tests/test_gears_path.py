@@ -156,7 +156,7 @@ def test_cli_refuses_invalid_gear_in_one_line(tmp_path):
     assert len(lines) == 1 and "undercut" in lines[0], out.output
 
 
-@pytest.mark.parametrize("name", ["gear-fzg-c", "gear-helical-industrial"])
+@pytest.mark.parametrize("name", ["gear-fzg-c", "gear-fzg-c-crowned", "gear-helical-industrial"])
 def test_examples_validate(name):
     case = load_case(example_text(name))
     assert case.analysis == "gear"
