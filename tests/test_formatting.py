@@ -142,3 +142,12 @@ def test_round_off_of_zero_shown_as_zero():
     assert rows["shift_x_m"] == "0 m"
     assert rows["force_y_n"] == "5.338 kN"
     assert rows["residual"] == "5.24×10⁻⁹"      # dimensionless numbers are never rounded away
+
+
+def test_swept_values_as_shown_in_a_study():
+    from asperity.formatting import format_axis_value
+
+    assert format_axis_value(math.pi / 2, "rad") == "90 deg"       # angles as written
+    assert format_axis_value(0.005, "m") == "5 mm"
+    assert format_axis_value(1.5e-7, "m2") == "0.15 mm²"
+    assert format_axis_value("steel-al", "1") == "steel-al"

@@ -190,3 +190,21 @@ def test_axis_in_imperial_units_is_stored_in_si_with_its_unit(tmp_path):
     np.testing.assert_allclose(ds["loading__load"].values, [8.8964432, 17.7928864], rtol=1e-7)
     assert ds["loading__load"].attrs["units"] == "N"
     assert (ds["state"] == "missing").all()
+
+
+def test_study_table_shows_flags_and_round_off_as_people_read_them(tmp_path):
+    from asperity.report import render_study_report
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "10 N"]\n')
+    out = tmp_path / "out"
+    for n, (slip, fx) in enumerate([(False, 2.669e3), (True, 3.3e-13)]):  # 3.3e-13 N: zero
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "summary": {"gross_slip": slip, "force_x_n": fx}}))
+    ds = combine(study, out)
+    assert ds["gross_slip"].attrs["flag_meanings"] == "no yes"   # CF flags for a yes/no
+    html = render_study_report(ds)
+    assert "<td>no</td>" in html and "<td>yes</td>" in html
+    assert "<td>2.669 kN</td>" in html and "<td>0 N</td>" in html

@@ -21,6 +21,7 @@ __all__ = [
     "SummaryRow",
     "cf_units",
     "display_unit",
+    "format_axis_value",
     "describe_key",
     "format_number",
     "format_quantity",
@@ -35,7 +36,7 @@ __all__ = [
 _SI_CHOICES = {
     "Pa": (("GPa", "GPa"), ("MPa", "MPa"), ("kPa", "kPa"), ("Pa", "Pa")),
     "m": (("m", "m"), ("mm", "mm"), ("um", "µm"), ("nm", "nm")),
-    "m^2": (("m^2", "m²"), ("mm^2", "mm²"), ("um^2", "µm²")),
+    "m^2": (("m^2", "m²", 0.01), ("mm^2", "mm²", 0.01), ("um^2", "µm²")),
     "N": (("MN", "MN"), ("kN", "kN"), ("N", "N"), ("mN", "mN")),
     "N/m": (("MN/m", "MN/m"), ("kN/m", "kN/m"), ("N/m", "N/m")),
     "N*m": (("kN*m", "kN m"), ("N*m", "N m"), ("N*mm", "N mm")),
@@ -251,6 +252,28 @@ def format_quantity(value, unit: str = "", *, imperial: bool = False, digits: in
         converted, label = _convert(value, unit, _IMPERIAL_CHOICES[unit])
         text += f" ({format_number(converted, digits)} {label})"
     return text
+
+
+def format_axis_value(value, cf_unit: str) -> str:
+    """A swept value of a study as shown in its table and figure: quantities in readable
+    units, angles in degrees, labels as they are.
+
+    Parameters
+    ----------
+    value : float or str
+        The coordinate value (SI).
+    cf_unit : str
+        Its ``units`` attribute in ``study.nc`` (CF spelling).
+
+    Returns
+    -------
+    str
+    """
+    if not isinstance(value, int | float) or isinstance(value, bool):
+        return str(value)
+    if cf_unit == "rad":
+        return f"{format_number(math.degrees(value))} deg"
+    return format_quantity(value, units_from_cf(cf_unit))
 
 
 def describe_key(key: str) -> tuple[str, str]:

@@ -17,12 +17,13 @@ import re
 from pathlib import Path
 
 from .formatting import (
+    NOISE,
     SummaryRow,
     describe_key,
+    format_axis_value,
     format_number,
     format_quantity,
     summary_rows,
-    units_from_cf,
 )
 from .results import Outcome, atomic_path
 
@@ -326,6 +327,7 @@ def _cases_table(ds, variables) -> str:
 
     axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
     dims = list(ds["state"].dims)
+    scale = {v: float(np.nanmax(np.abs(ds[v].values))) for v in variables}
     head = "".join(f"<th>{html.escape(ds[a].attrs.get('long_name', a))}</th>" for a in axes)
     head += "".join(f"<th>{html.escape(describe_key(v)[0])}</th>" for v in variables)
     rows = []
@@ -334,13 +336,15 @@ def _cases_table(ds, variables) -> str:
         cells = []
         for a in axes:
             coord = ds[a].isel({d: i for d, i in sel.items() if d in ds[a].dims})
-            value = coord.values.item()
-            unit = units_from_cf(ds[a].attrs.get("units", "1"))
-            cells.append(format_quantity(value, unit) if isinstance(value, int | float)
-                         else str(value))
+            cells.append(format_axis_value(coord.values.item(), ds[a].attrs.get("units", "1")))
         for v in variables:
             value = float(ds[v].isel(sel).values)
             label, unit = describe_key(v)
+            if ds[v].attrs.get("flag_meanings") == "no yes" and value in (0.0, 1.0):
+                cells.append("yes" if value else "no")
+                continue
+            if unit and abs(value) <= NOISE * scale[v]:
+                value = 0.0  # round-off of zero, as in a run's report
             if unit == "%" and v.endswith("fraction"):
                 value *= 100.0
             cells.append(format_quantity(value, unit))

@@ -291,8 +291,10 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
         label, unit = describe_key(k)
         if k.endswith("fraction") and unit == "%":
             unit = ""  # stored as a fraction; shown in percent only in reports
-        data[k] = (dims, field(lambda s, k=k: (s.get("summary") or {}).get(k, math.nan)),
-                   {"long_name": label, "units": cf_units(unit)})
+        attrs = {"long_name": label, "units": cf_units(unit)}
+        if all(isinstance((s.get("summary") or {}).get(k, False), bool) for s in statuses):
+            attrs |= {"flag_values": "0 1", "flag_meanings": "no yes"}  # CF flags
+        data[k] = (dims, field(lambda s, k=k: (s.get("summary") or {}).get(k, math.nan)), attrs)
     data["state"] = (dims, field(lambda s: s["state"], object).astype(str),
                      {"long_name": "done, failed or missing", "units": "1"})
     data["error"] = (dims, field(lambda s: s.get("error", ""), object).astype(str),

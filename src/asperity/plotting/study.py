@@ -7,7 +7,7 @@ import itertools
 
 import numpy as np
 
-from ..formatting import describe_key, display_unit, format_quantity, units_from_cf
+from ..formatting import describe_key, display_unit, format_axis_value, units_from_cf
 from .style import plt
 
 __all__ = ["plot_study"]
@@ -15,9 +15,9 @@ __all__ = ["plot_study"]
 def _axis_values(ds, name):
     """(numbers for the x axis or None for labels, tick labels) of a study coordinate."""
     values = ds[name].values
-    unit = units_from_cf(ds[name].attrs.get("units", "1"))
+    unit = ds[name].attrs.get("units", "1")
     if np.issubdtype(values.dtype, np.number):
-        return values.astype(float), [format_quantity(float(v), unit) for v in values]
+        return values.astype(float), [format_axis_value(float(v), unit) for v in values]
     return None, [str(v) for v in values]
 
 
@@ -45,7 +45,9 @@ def plot_study(ds, variables, columns: int = 3):
     first = axes_names[0]
     x, labels = _axis_values(ds, first)
     x_shown = ""
-    if x is not None:
+    if x is not None and ds[first].attrs.get("units") == "rad":
+        x, x_shown = np.degrees(x), "deg"  # swept angles in degrees, as they are written
+    elif x is not None:
         x_scale, x_shown = display_unit(float(np.nanmax(np.abs(x))),
                                         units_from_cf(ds[first].attrs.get("units", "1")))
         x = x * x_scale
@@ -77,6 +79,9 @@ def plot_study(ds, variables, columns: int = 3):
             ax.set_xticks(np.arange(len(labels)), labels, rotation=30, ha="right")
         elif len(x) > 2 and np.all(x > 0) and x.max() / x.min() > 50:
             ax.set_xscale("log")
+        else:  # the whole axis on every panel, also where some cases have no value
+            pad = 0.05 * (np.ptp(x) or 1.0)
+            ax.set_xlim(x.min() - pad, x.max() + pad)
         xlabel = ds[first].attrs.get("long_name", first)
         ax.set_xlabel(f"{xlabel} ({x_shown})" if x is not None and x_shown else xlabel)
         ax.set_ylabel(f"{label} ({shown})" if shown else label)
