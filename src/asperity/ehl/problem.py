@@ -270,18 +270,20 @@ class PointContact(_Contact):
     def default_nodes(self, domain=None) -> tuple[int, int]:
         """Default mesh (nx, ny) on ``domain`` (default :meth:`default_domain`).
 
-        Along x ``dX = 1/``:meth:`cells_per_a`; across, 32 cells (``dY = b/8`` on the
-        default domain of an ellipse with ``b >= a/2``) or fewer (16 at least) to keep
-        ``dY >= 4 dX``: with cells nearly square the lagged y-couplings of an Eyring
-        lubricant's Poiseuille flow made the x-line relaxation diverge
-        (docs/ehl-robustness.md). ``nx - 1`` and ``ny - 1`` are multiples of 8.
+        Across ``dY = b/10`` (40 cells on the default domain of an ellipse with ``k >= 1/2``),
+        coarser where needed to keep ``dY >= 3 dX`` (16 cells at least): with cells nearly
+        square the lagged y-couplings of an Eyring lubricant's Poiseuille flow made the x-line
+        relaxation diverge (docs/ehl-robustness.md). Along x ``dX = 1/``:meth:`cells_per_a`,
+        refined to ``dX <= b/30`` when ``b < a`` so that both hold. ``nx - 1`` and ``ny - 1``
+        are multiples of 8.
         """
         (x0, x1), (y0, y1) = _check_domain(
             self.default_domain() if domain is None else domain, self.a, self.b)
-        dx = self.a / self.cells_per_a()
+        n = max(self.cells_per_a(), int(2 ** np.ceil(np.log2(30.0 * self.a / self.b))))
+        dx = self.a / n
         nx = 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1
-        ny = 8 * int(np.clip((y1 - y0) / (32 * dx), 2, 4)) + 1
-        return nx, ny
+        cells = min(8 * np.ceil((y1 - y0) / (0.8 * self.b)), 8 * np.floor((y1 - y0) / (24 * dx)))
+        return nx, int(max(cells, 16)) + 1
 
     def grid(self, nx: int, ny: int, domain=None):
         """Node (cell-centre) coordinates ``x``, ``y`` in m on ``domain`` (default: the seed's).

@@ -478,7 +478,7 @@ def solve_steady(
         Nodes along x and y on the finest grid (``ny`` is ignored for a line contact); the
         seed's mesh is 801 x 201 on its domain. Default ``problem.default_nodes(domain)``:
         dX from the estimated film (a discretisation error of the central film near 2 %),
-        ``dY >= 4 dX`` (docs/ehl-robustness.md).
+        ``dY >= 3 dX`` (docs/ehl-robustness.md).
     domain : ((x0, x1), (y0, y1)), optional
         In m; default ``problem.default_domain()``: the seed's -2.5a..1.5a, -2b..2b, with the
         inlet moved upstream where Hamrock & Dowson's fully flooded inlet distance asks for
