@@ -80,3 +80,20 @@ def test_lp_says_why_it_cannot_balance_the_books_combined_case_2():
     assert lp.warnings == (lp.reason,)
     fft = solve_tangential(p, x, y, 0.12, steel, steel, **load)
     assert fft.converged and not fft.reason
+
+
+def test_solvers_share_the_friction_set_up_without_private_imports():
+    """The FFT and LP modules import the shared set-up from contact.friction: no underscore
+    names across modules, no import inside a function (issue 19), no dead helpers."""
+    import ast
+    import inspect
+
+    from asperity.contact import tangential, tangential_lp
+
+    for module in (tangential, tangential_lp):
+        tree = ast.parse(inspect.getsource(module))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom | ast.Import):
+                assert node.col_offset == 0, (module.__name__, node.lineno)
+                assert not any(a.name.startswith("_") for a in node.names), module.__name__
+    assert not hasattr(tangential, "_disc_project")

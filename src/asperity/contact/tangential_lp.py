@@ -32,13 +32,12 @@ from scipy.sparse import csr_matrix, eye, hstack, vstack
 
 from ..elastic import tangential_influence
 from ..materials import Material
-from .tangential import (
-    TangentialOperator,
+from .friction import (
+    FrictionProblem,
     TangentialResult,
-    _capacity,
-    _gross_slip_result,
-    _result,
-    _Setup,
+    gross_slip_capacity,
+    gross_slip_result,
+    make_result,
 )
 
 __all__ = ["solve_lp"]
@@ -118,22 +117,44 @@ def _complementary_milp(Kh, gh, ch, rho, work, lam0, time_limit=5.0):
     return None
 
 
-def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2: Material,
-             pressure, callback=None, tol=1e-9, max_iter=40) -> TangentialResult:
+def solve_lp(prob: FrictionProblem, linear, x, y, body1: Material, body2: Material,
+             callback=None, tol=1e-9, max_iter=40) -> TangentialResult:
     """Solve with predetermined directions and HiGHS; see the module docstring.
 
     Called by :func:`asperity.contact.solve_tangential` with ``method="lp"`` (virgin loading
-    only). The residual is the relative norm of the unbalanced load.
+    only).
+
+    Parameters
+    ----------
+    prob : FrictionProblem
+        The problem from :func:`asperity.contact.friction.friction_problem`.
+    linear : ndarray (2, nx, ny)
+        Relative in-plane displacement caused by the pressure, m (zero for identical bodies).
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    body1, body2 : Material
+        The two bodies.
+    callback : callable, optional
+        ``callback(trial, residual)`` after each trial motion.
+    tol : float
+        Tolerance on the residual: the largest unbalanced load component over the applied.
+    max_iter : int
+        Largest number of trial motions.
+
+    Returns
+    -------
+    TangentialResult
+        ``converged=False`` with ``reason`` when no trial motion balances the load.
     """
-    t, y_cap = _capacity(prob.g, prob.cons, prob.target, prob.rows)
+    t, y_cap = gross_slip_capacity(prob.g, prob.cons, prob.target, prob.rows)
     if t <= 1.0:
-        return _gross_slip_result(prob, t, y_cap, "lp")
+        return gross_slip_result(prob, t, y_cap, "lp")
     contact = prob.g > 0
     cons = prob.cons
     Xc, Yc, g = cons.X[contact], cons.Y[contact], prob.g[contact]
     dx, dy = x[1] - x[0], y[1] - y[0]
     Kxx, Kxy, Kyy = _dense_blocks(Xc, Yc, dx, dy, body1, body2)
-    c = op.pressure(np.asarray(pressure, float))[:, contact]
+    c = np.asarray(linear, dtype=float)[:, contact]
     # trial motions y = tn + N z with target.y = 1 (rotation fixed: y2 = 0, one parameter)
     rows = list(prob.rows)
     target = np.zeros(3)
@@ -202,9 +223,9 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
     q = np.zeros((2, *prob.g.shape))
     res = state["best"]
     if state["best_zz"] is None:
-        result = _result(q, contact & False, q.copy(), np.zeros(3), prob, gross=False, t=t,
-                         iterations=state["it"], converged=False, residual=np.inf, conv=0,
-                         method="lp")
+        result = make_result(q, contact & False, q.copy(), np.zeros(3), prob, gross=False,
+                             t=t, iterations=state["it"], converged=False, residual=np.inf,
+                             conv=0, method="lp")
         return replace(result, reason=(
             "method lp: no stick/slip split is consistent with the traction directions of "
             "the trial rigid motion (the book's predetermined directions); use method = "
@@ -216,8 +237,9 @@ def solve_lp(prob: _Setup, op: TangentialOperator, x, y, body1: Material, body2:
     slip[0][contact], slip[1][contact] = s * tx, s * ty
     stick = np.zeros(prob.g.shape, dtype=bool)
     stick[contact] = f < g * (1.0 - 1e-9)
-    result = _result(q, stick, slip, lam * yv, prob, gross=False, t=t, iterations=state["it"],
-                     converged=res <= tol, residual=res, conv=0, method="lp")
+    result = make_result(q, stick, slip, lam * yv, prob, gross=False, t=t,
+                         iterations=state["it"], converged=res <= tol, residual=res, conv=0,
+                         method="lp")
     if res <= tol:
         return result
     return replace(result, reason=(
