@@ -102,7 +102,6 @@ def centre_line_profiles(x, pressure, film, a, hertz_pressure=None, title="Centr
     if hertz_pressure is not None:
         ax_p.plot(xa, np.asarray(hertz_pressure) / 1e9, "r--", lw=1.0, label="dry Hertz")
     ax_p.set(ylabel="pressure (GPa)", title=title)
-    ax_p.legend(loc="upper left", fontsize=8)
     h_um = np.asarray(film) * 1e6
     ax_h.plot(xa, h_um, "b-", lw=1.4)
     i_min = int(np.argmin(h_um))
@@ -114,7 +113,8 @@ def centre_line_profiles(x, pressure, film, a, hertz_pressure=None, title="Centr
     ax_h.set(xlabel="x / a  (entrainment ->)", ylabel="film (um)",
              ylim=(0.0, max(top, 1.2 * float(h_um.min()), 1e-9)))
     for ax in (ax_p, ax_h):
-        ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
+        ax.axvspan(-1.0, 1.0, color="0.92", zorder=0, label="Hertz width")
+    ax_p.legend(loc="upper left", fontsize=8)
     return fig
 
 
@@ -147,7 +147,8 @@ def transverse_section(y, pressure, film, b, title="Transverse section x = 0"):
     top = 3.0 * float(np.median(h_um[inside])) if inside.any() else float(h_um.max())
     ax2.set_ylim(0.0, max(top, 1e-9))
     ax2.set_ylabel("film (um)", color="b")
-    ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
-    lines = ax.get_lines() + ax2.get_lines()
-    ax.legend(lines, [ln.get_label() for ln in lines], loc="upper right", fontsize=8)
+    band = ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
+    handles = [*ax.get_lines(), *ax2.get_lines(), band]
+    fig.legend(handles, ["pressure", "film", "Hertz width"], loc="outside lower center",
+               ncols=3, fontsize=8, frameon=False)
     return fig
