@@ -369,7 +369,8 @@ class SolverSpec(CaseModel):
     """
 
     levels: Annotated[int, Field(ge=1, le=6)] = 1
-    """Grids in the multilevel sequence (node counts 2^(levels-1) m + 1)."""
+    """Grids in the multilevel sequence (node counts 2^(levels-1) m + 1); without a [grid]
+    table and without levels, chosen with the mesh."""
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
     """Relative convergence tolerance."""
     max_sweeps: Annotated[int, Field(ge=1, le=200_000)] | None = None
