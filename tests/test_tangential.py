@@ -167,7 +167,7 @@ def test_bad_input():
 #
 # Independent reference: a traction mode q cos(k.r) on a half-space is a 2-D problem in the
 # plane of k. Traction along k is plane strain, u = (1 - nu) q / (G k) along k; traction across
-# k is antiplane shear, u = q / (G k) across k (Johnson 1985, sec. 2.6; docs/tangential.md).
+# k is antiplane shear, u = q / (G k) across k (derived in docs/tangential.md).
 # Rotating back gives the in-plane response for any k, both traction components.
 # A pressure mode p cos(k.r) moves the surface along k by -(1 - 2 nu) p sin(k.r) / (2 G k)
 # (plane strain), which is what the normal-tangential coupling of two bodies adds up.
