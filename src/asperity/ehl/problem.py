@@ -286,10 +286,11 @@ class PointContact(_Contact):
         return nx, int(max(cells, 16)) + 1
 
     def grid(self, nx: int, ny: int, domain=None):
-        """Node (cell-centre) coordinates ``x``, ``y`` in m on ``domain`` (default: the seed's).
+        """Node (cell-centre) coordinates ``x``, ``y`` in m on ``domain`` (default
+        :meth:`default_domain`).
 
         The end nodes lie on the domain bounds; the seed's mesh dx = a/200, dy = b/50 is
-        ``nx, ny = 801, 201`` on the default domain.
+        ``nx, ny = 801, 201`` on the seed's domain -2.5a..1.5a, -2b..2b.
         """
         (x0, x1), (y0, y1) = _check_domain(
             self.default_domain() if domain is None else domain, self.a, self.b
