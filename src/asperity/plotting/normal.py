@@ -13,7 +13,7 @@ def pressure_map(x, y, pressure, contact=None, title="Contact pressure"):
     """Pressure (GPa) over x, y (mm) on equal axes, with the contact boundary; the figure is
     sized to the domain's shape."""
     tall = float(np.ptp(y) / max(np.ptp(x), 1e-300)) if len(y) > 1 else 1.0
-    height = float(np.clip(3.8 * tall, 2.4, 6.0))
+    height = float(np.clip(3.2 * tall, 2.4, 4.5))
     fig, ax = new_figure(float(np.clip(height / tall, 2.4, 6.0)) + 1.8, height + 1.0)
     X, Y = np.meshgrid(np.asarray(x) * 1e3, np.asarray(y) * 1e3, indexing="ij")
     m = ax.pcolormesh(X, Y, pressure / 1e9, shading="auto", cmap="magma")
