@@ -17,7 +17,9 @@ from asperity.elastic import (
     normal_influence,
     normal_operator,
     tangential_influence,
+    tangential_transfer,
 )
+from asperity.errors import InputError
 from asperity.materials import Material, contact_modulus
 
 STEEL = Material(206e9, 0.3, "steel")
@@ -174,3 +176,17 @@ def test_cerruti_self_cell_integrals_by_quadrature():
                            epsrel=1e-10)[0]
         assert float(g[name]) == pytest.approx(4.0 * quadrant, rel=1e-8), name
     assert float(g["xy"]) == 0.0 and float(g["x_r2"]) == 0.0
+
+
+def test_tangential_transfer_limits():
+    """nu = 0: the Fourier response is isotropic, 1/(G k), no coupling (FT(1/r) = 2 pi/k);
+    the transfer of the cells' kernel is not defined at k = 0 (refused, naming the field)."""
+    body = Material(2.0e11, 0.0, "nu0")
+    k = np.array([1.0e3, 2.0e3])
+    t = tangential_transfer(k, 0.5 * k, body)
+    kk = np.hypot(k, 0.5 * k)
+    np.testing.assert_allclose(t.xx, 1 / (body.shear_modulus * kk), rtol=1e-14)
+    np.testing.assert_allclose(t.yy, t.xx, rtol=1e-14)
+    assert np.all(t.xy == 0)
+    with pytest.raises(InputError, match="kx, ky"):
+        tangential_transfer(0.0, 0.0, body)

@@ -161,6 +161,10 @@ def test_bad_input():
         solve_tangential(p, x, y, MU, STEEL, STEEL, force=(np.nan, 0.0))
     with pytest.raises(InputError, match="method"):
         solve_tangential(p, x, y, MU, STEEL, STEEL, method="simplex")
+    # the LP's dense influence matrix is the isolated half-space's: refused, not ignored
+    with pytest.raises(InputError, match="periodic"):
+        solve_tangential(p, x, y, MU, STEEL, STEEL, force=(1.0, 0.0), method="lp",
+                         periodic=True)
 
 
 # --- the periodic half-space ---------------------------------------------------------------

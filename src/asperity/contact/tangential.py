@@ -312,6 +312,9 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
         raise InputError("previous", "a result on the same grid", previous.traction.shape)
     if method == "lp" and previous is not None:
         raise InputError("previous", "None with method='lp' (virgin loading only)")
+    if method == "lp" and periodic:
+        raise InputError("periodic", "False with method='lp' (its influence matrix is the "
+                                     "isolated half-space's; use method='fft')")
     loaded = np.any(prob.target[list(prob.rows)])
     if not loaded and previous is None:
         zero = np.zeros((2, *prob.g.shape))
