@@ -65,7 +65,7 @@ def test_zero_is_zero_in_the_si_unit(unit, text):
     (300e3 * 6894.757, "Pa", "2.068 GPa (300000 psi)"),
     (0.6 * 0.0254, "m", "15.24 mm (0.6 in)"),
     (10e-6 * 0.0254, "m", "254 nm (10 µin)"),                # roughness in microinches
-    (100 * 4.4482216 * 0.0254, "N*m", "11.3 N m (100 lbf in)"),
+    (100 * 4.4482216 * 0.0254, "N*m", "11.3 N m (100 in lbf)"),
 ])
 def test_imperial_beside_si(value, unit, text):
     assert format_quantity(value, unit, imperial=True) == text

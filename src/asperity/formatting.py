@@ -60,7 +60,7 @@ _IMPERIAL_CHOICES = {
     "m^2": (("in^2", "in²"),),
     "N": (("lbf", "lbf"),),
     "N/m": (("lbf/in", "lbf/in"),),
-    "N*m": (("lbf*in", "lbf in"),),
+    "N*m": (("lbf*in", "in lbf"),),  # as Seireg writes moments
     "J": (("lbf*in", "in lbf"),),
     "m/s": (("ft/s", "ft/s"),),
 }
