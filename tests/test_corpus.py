@@ -111,6 +111,7 @@ COMMANDS = [
     ("out-under-a-file", ["run", _case("ok-sphere"), "--out", "{tmp}/file/out"], 2,
      "error: --out"),
     ("case-missing", ["run", "{tmp}/missing.toml", "--out", "{tmp}/o"], 2, "error: case"),
+    ("case-too-large", ["run", "{tmp}/huge.toml", "--out", "{tmp}/o"], 2, "error: case"),
     ("case-is-a-folder", ["run", "{tmp}/folder.toml", "--out", "{tmp}/o"], 2, "error: case"),
     ("example-unknown", ["run", "no-such-example", "--out", "{tmp}/o"], 2, "error: "),
     ("print-unknown-example", ["example", "no-such-example"], 2, "error: "),
@@ -140,6 +141,8 @@ COMMANDS = [
 def test_command_line(argv, code, start, tmp_path):
     (tmp_path / "file").write_text("not a folder\n")
     (tmp_path / "folder.toml").mkdir()
+    if any("huge.toml" in a for a in argv):
+        (tmp_path / "huge.toml").write_text("# padding\n" * 500_000)  # 5 MB of comments
     result = runner.invoke(app, [a.replace("{tmp}", str(tmp_path)) for a in argv])
     _no_traceback(result)
     assert result.exit_code == code, result.output

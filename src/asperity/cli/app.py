@@ -36,6 +36,8 @@ EXIT_BAD_INPUT = 2
 EXIT_NOT_CONVERGED = 3
 #: ``run --strict`` with warnings exits with this code too (the answer is not to be trusted).
 EXIT_WARNINGS = 3
+#: Largest case file read (a case file holds keys; measured data go in their own files).
+MAX_CASE_BYTES = 4 * 2**20
 #: An unexpected exception (a bug): one line instead of a traceback.
 EXIT_INTERNAL = 1
 
@@ -97,6 +99,9 @@ def _check_case_file(path: Path) -> None:
         raise InputError("case", "a TOML case file, not a folder", str(path))
     if not path.is_file():
         return  # load_case names the missing file
+    if path.stat().st_size > MAX_CASE_BYTES:
+        raise InputError("case", f"a TOML case file of at most {MAX_CASE_BYTES // 2**20} MiB "
+                         "(data belong in a separate file named by path)", str(path))
     data = path.read_bytes()
     if b"\x00" in data:
         raise InputError("case", "a UTF-8 TOML text file (this one is binary or UTF-16)",
