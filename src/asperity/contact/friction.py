@@ -89,7 +89,8 @@ class TangentialResult(SolverResult):
     ``previous`` state), (2, nx, ny), m; in gross slip the unit
     direction of the instantaneous sliding motion (its magnitude is indeterminate)."""
     shift: np.ndarray
-    """Rigid shift (2,) of body 1 relative to body 2, m (NaN in gross slip)."""
+    """Rigid shift (2,) of body 1 relative to body 2, m (NaN in gross slip; periodic: measured
+    from the mean displacement)."""
     rotation: float
     """Rigid rotation of body 1 relative to body 2 about z, rad (NaN in gross slip)."""
     center_of_rotation: np.ndarray
