@@ -313,3 +313,15 @@ ny = 24
     assert s["moment_center_y_m"] == pytest.approx(3e-3, rel=1e-9)
     assert abs(s["rotation_rad"]) * 1e-3 < 1e-9 * s["shift_m"]
     assert 0 < s["stick_fraction"] < 1
+
+
+@pytest.mark.slow
+def test_lp_on_the_books_combined_case_2_warns_why():
+    """The LP method on Case 2's 72 book elements cannot balance the load with predetermined
+    directions: the run says so as a warning (printed by the command line), not converged."""
+    data = case_dict("seireg-squares-combined-2-spaced", nx=20, ny=6)
+    data["method"] = "lp"
+    out = run_case(load_case(data))
+    assert not out.converged
+    assert any(w.startswith("method lp: no trial rigid motion") for w in out.warnings)
+    assert any("Why: method lp" in n for n in out.notes)

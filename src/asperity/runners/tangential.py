@@ -318,5 +318,7 @@ def run(case, progress=None) -> Outcome:
              if case.pressure.source == "normal" else [])
     trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
     trust += diagnostics.above_hardness(fld.pressure, [("body1", body1), ("body2", body2)])
+    if res.reason and not res.converged:  # the solver's own account of its failure (lp)
+        trust.append(res.reason)
     return Outcome(_dataset(case, fld, res, path), summary, _figures(case, fld, res, path),
                    comparisons, converged=converged, notes=notes, warnings=trust)
