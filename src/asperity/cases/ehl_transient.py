@@ -31,9 +31,10 @@ import numpy as np
 from pydantic import Field, field_validator, model_validator
 
 from ..errors import InputError
+from ..surfaces.recipe import build_surface
 from .ehl import EHLCaseBase, EHLGridSpec
 from .fields import CaseModel, Quantity, existing_file
-from .roughness import WavinessSpec
+from .roughness import WavinessSpec, surface_recipe
 
 __all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
 
@@ -103,48 +104,21 @@ class MovingSurfaceSpec(CaseModel):
         return self
 
     def build(self, length: float, spacing: float, y: np.ndarray, dx: float):
-        """The surface (Profile, Topography or None), at least ``length`` m long along x."""
-        from .. import surfaces as s
+        """The surface (Profile, Topography or None), at least ``length`` m long along x.
 
+        Built by :func:`asperity.surfaces.recipe.build_surface` on cells of ``spacing`` m;
+        ``dx`` is the mesh spacing (of ``lowpass``), ``y`` the mesh's cell centres across x (of
+        a dent, a bump or a transverse waviness). None for a smooth surface without waviness.
+        """
         if self.kind == "smooth" and self.waviness is None:
             return None
-        if self.kind == "builtin":
-            surf = s.builtin_profile(self.profile, length=length, spacing=spacing)
-        elif self.kind == "ground":
-            kwargs = ({} if self.correlation_length is None
-                      else {"correlation_length": self.correlation_length})
-            surf = s.transverse_ground_profile(length, spacing, self.ra, run_in=self.run_in,
-                                               seed=self.seed, **kwargs)
-        elif self.kind == "gaussian":
-            surf = s.gaussian_profile(length, spacing, self.rms, self.correlation_length,
-                                      seed=self.seed)
-        elif self.kind == "file":
-            surf = s.read_surface(self.path, self.spacing)
-        elif self.kind == "feature":
-            from ..surfaces.features import feature_surface
-
+        changes = {"lowpass_wavelength": self.lowpass * dx if self.lowpass > 0 else None}
+        if self.kind == "feature":
             # the surface enters the inlet end first: its last cell centre arrives at t = 0
             end = (np.ceil(length / spacing) - 0.5) * spacing
             lead = self.half_width if self.lead is None else self.lead
-            surf = feature_surface(self.feature, length, spacing, amplitude=self.amplitude,
-                                   half_width=self.half_width, position=max(end - lead, 0.0),
-                                   y=y)
-        else:
-            surf = s.Profile(s.cell_centres(int(np.ceil(length / spacing)), spacing),
-                             np.zeros(int(np.ceil(length / spacing))), periodic=True)
-        if isinstance(surf, s.Profile):
-            z = np.asarray(surf.z)
-            if self.lowpass > 0:
-                z = s.gaussian_filter(z, surf.x, self.lowpass * dx, periodic=surf.periodic)
-            surf = surf.with_heights(self.scale * z)
-        elif self.scale != 1.0:
-            surf = surf.with_heights(self.scale * np.asarray(surf.z))
-        if self.waviness is not None:
-            w = self.waviness
-            if isinstance(surf, s.Profile) and w.direction == "y":
-                surf = surf.extrude(y)
-            surf = s.add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
-        return surf
+            changes["position"] = max(end - lead, 0.0)
+        return build_surface(surface_recipe(self, **changes), length, spacing, y=y)
 
 
 class TimeSpec(CaseModel):

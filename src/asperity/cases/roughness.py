@@ -12,10 +12,11 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, field_validator, model_validator
 
+from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface
 from .fields import CaseModel, Quantity, existing_file
 
 __all__ = ["MeasuredFile", "RoughnessSpec", "WavinessSpec", "length_unit", "measured_file",
-           "surface_heights", "undeformed_gap"]
+           "surface_heights", "surface_recipe", "undeformed_gap"]
 
 
 def measured_file(cls, value, info):
@@ -161,37 +162,45 @@ class RoughnessSpec(MeasuredFile):
         return self
 
 
+def surface_recipe(spec: CaseModel, **changes) -> SurfaceRecipe:
+    """The neutral recipe of a case table's surface (``[roughness]``, ``[surface1]``,
+    ``[surface]``): its keys named as :class:`~asperity.surfaces.recipe.SurfaceRecipe` fields,
+    the file reading keys of a :class:`MeasuredFile`, its waviness, then ``changes``.
+
+    Keys left out (None) take the recipe's defaults, which are the generators' defaults.
+    """
+    fields = type(spec).model_fields
+    values = {name: getattr(spec, name) for name in SurfaceRecipe.__dataclass_fields__
+              if name in fields and name != "waviness" and getattr(spec, name) is not None}
+    if spec.kind == "file":
+        values["file_spacing"] = spec.spacing
+        if isinstance(spec, MeasuredFile):
+            values["read_options"] = spec.read_options()
+    wavy = getattr(spec, "waviness", None)
+    if wavy is not None:
+        values["waviness"] = Waviness(wavy.wavelength, wavy.amplitude, wavy.direction)
+    return SurfaceRecipe(**{**values, **changes})
+
+
 def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
-    """Heights (m) of the specified surface at the cell centres ``x`` by ``y``."""
+    """Heights (m) of the specified surface at the cell centres ``x`` by ``y``.
+
+    A gaussian or self-affine surface is generated over the grid (periodic), a ground, built-in
+    or measured profile is sampled at ``x`` and repeated across ``y``; ``scale`` multiplies the
+    heights with the waviness.
+    """
     from .. import surfaces as s
 
     x, y = np.asarray(x, float), np.asarray(y, float)
     dx = x[1] - x[0]
     dy = y[1] - y[0] if len(y) > 1 else dx
-    size, spacing = (len(x) * dx, len(y) * dy), (dx, dy)
-    if spec.kind == "gaussian":
-        ell = (spec.correlation_length, spec.correlation_length_y or spec.correlation_length)
-        surf = s.gaussian_topography(size, spacing, spec.rms, ell, acf=spec.acf, seed=spec.seed)
-    elif spec.kind == "self-affine":
-        surf = s.self_affine_topography(size, spacing, spec.hurst, rms_height=spec.rms,
-                                        rms_slope=spec.rms_slope,
-                                        rolloff_wavelength=spec.rolloff_wavelength,
-                                        short_cutoff=spec.short_cutoff, seed=spec.seed)
-    elif spec.kind == "ground":
-        kwargs = {} if spec.correlation_length is None else {
-            "correlation_length": spec.correlation_length}
-        surf = s.transverse_ground_profile(size[0], dx, spec.ra, run_in=spec.run_in,
-                                           seed=spec.seed, **kwargs)
-    elif spec.kind == "builtin":
-        surf = s.builtin_profile(spec.profile, length=size[0] + dx, spacing=min(dx, 0.5e-6))
-    else:
-        surf = s.read_surface(spec.path, spec.spacing, **spec.read_options())
-    if spec.waviness is not None:
-        w = spec.waviness
-        if isinstance(surf, s.Profile) and w.direction == "y":
-            surf = surf.extrude(y - y[0] + dy / 2)
-        surf = s.add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
-    z = _on_grid(surf, x - x[0] + dx / 2, y - y[0] + dy / 2, s)
+    length, spacing = len(x) * dx, (dx, dy)
+    if spec.kind == "builtin":
+        length, spacing = length + dx, min(dx, 0.5e-6)
+    ys = y - y[0] + dy / 2
+    surf = build_surface(surface_recipe(spec, scale=1.0), length, spacing, width=len(y) * dy,
+                         y=ys)
+    z = _on_grid(surf, x - x[0] + dx / 2, ys, s)
     return spec.scale * z
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from functools import wraps
 from pathlib import Path
 from typing import Annotated
@@ -294,6 +295,7 @@ def generate(
 ):
     """Generate a synthetic surface and write it to --out."""
     from .. import surfaces as s
+    from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface
 
     if kind not in KINDS:
         raise InputError("KIND", f"one of {', '.join(KINDS)}", kind)
@@ -302,49 +304,38 @@ def generate(
     W = _length(width, "--width")
     _check_size(L, h, W)
     ell = _length(correlation_length, "--correlation-length")
+    recipe = SurfaceRecipe(kind, seed=seed, hurst=hurst, run_in=run_in, profile=name,
+                           rms=_length(rms, "--rms"), correlation_length=ell)
     if kind == "gaussian":
-        rms_m = _require(_length(rms, "--rms"), "--rms", kind)
-        ell = _require(ell, "--correlation-length", kind)
-        if W is None:
-            surface = s.gaussian_profile(L, h, rms_m, ell, seed=seed)
-        else:
-            ell_y = _length(correlation_length_y, "--correlation-length-y") or ell
-            surface = s.gaussian_topography((L, W), h, rms_m, (ell, ell_y), seed=seed)
+        _require(recipe.rms, "--rms", kind)
+        _require(ell, "--correlation-length", kind)
+        recipe = replace(recipe, correlation_length_y=_length(correlation_length_y,
+                                                              "--correlation-length-y"))
     elif kind == "self-affine":
-        options = {"rms_height": _length(rms, "--rms"),
-                   "rms_slope": _quantity(rms_slope, "dimensionless", "--rms-slope"),
-                   "rolloff_wavelength": _length(rolloff, "--rolloff"),
-                   "short_cutoff": _length(cutoff, "--cutoff"), "seed": seed}
-        if W is None:
-            surface = s.self_affine_profile(L, h, hurst, **options)
-        else:
-            surface = s.self_affine_topography((L, W), h, hurst, **options)
-    elif kind in ("ground", "builtin"):
-        if kind == "ground":
-            surface = s.transverse_ground_profile(
-                L, h, _require(_length(ra, "--ra"), "--ra", kind),
-                ell if ell is not None else 15e-6, run_in=run_in, seed=seed)
-        else:
-            surface = s.builtin_profile(name, L, h)
-        if W is not None:
-            surface = surface.extrude(s.cell_centres(max(2, round(W / h)), h))
-    else:
-        f = _require(_length(feed, "--feed"), "--feed", kind)
-        r = _require(_length(nose_radius, "--nose-radius"), "--nose-radius", kind)
+        recipe = replace(recipe, rms_slope=_quantity(rms_slope, "dimensionless", "--rms-slope"),
+                         rolloff_wavelength=_length(rolloff, "--rolloff"),
+                         short_cutoff=_length(cutoff, "--cutoff"))
+    elif kind == "ground":
+        recipe = replace(recipe, ra=_require(_length(ra, "--ra"), "--ra", kind))
+    elif kind == "turned":
         fn = _quantity(natural_frequency, "frequency", "--natural-frequency")
-        if fn is None:
-            surface = s.turned_profile(f, r, L, h)
-        else:
-            surface = s.turned_profile_dynamic(
-                f, r, _length(depth_of_cut, "--depth-of-cut"),
-                _quantity(cutting_speed, "speed", "--cutting-speed"),
-                _length(diameter, "--diameter"), L, h, fn,
-                damping_ratio=damping_ratio, mass=_quantity(mass, "mass", "--mass"),
-                seed=seed).profile
+        recipe = replace(recipe, feed=_require(_length(feed, "--feed"), "--feed", kind),
+                         nose_radius=_require(_length(nose_radius, "--nose-radius"),
+                                              "--nose-radius", kind))
+        if fn is not None:
+            recipe = replace(recipe, natural_frequency=fn,
+                             depth_of_cut=_length(depth_of_cut, "--depth-of-cut"),
+                             cutting_speed=_quantity(cutting_speed, "speed", "--cutting-speed"),
+                             workpiece_diameter=_length(diameter, "--diameter"),
+                             damping_ratio=damping_ratio, mass=_quantity(mass, "mass", "--mass"))
     if waviness_wavelength is not None:
-        surface = s.add_waviness(surface, _length(waviness_wavelength, "--waviness-wavelength"),
-                                 _length(waviness_amplitude, "--waviness-amplitude"),
-                                 direction=waviness_direction)
+        recipe = replace(recipe, waviness=Waviness(
+            _length(waviness_wavelength, "--waviness-wavelength"),
+            _length(waviness_amplitude, "--waviness-amplitude"), waviness_direction))
+    y = None if W is None else s.cell_centres(max(2, round(W / h)), h)
+    surface = build_surface(recipe, L, h, width=W, y=y)
+    if W is not None and isinstance(surface, s.Profile):
+        surface = surface.extrude(y)
     s.write_surface(surface, out)
     Console().print(_table(_statistics(surface), f"Generated {kind} surface -> {out} "
                                                  "(unfiltered: heights from the least-squares "

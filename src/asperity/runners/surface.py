@@ -18,11 +18,13 @@ import numpy as np
 import xarray as xr
 
 from .. import surfaces as s
+from ..cases.roughness import surface_recipe
 from ..cases.surface import MAX_POINTS, SurfaceSpec
 from ..errors import InputError
 from ..results import Comparison, Outcome, variable
 from ..surfaces.io import read_measured
 from ..surfaces.machining import MICROINCH
+from ..surfaces.recipe import build_surface
 
 __all__ = ["run"]
 
@@ -82,28 +84,11 @@ def _prefixed(exc: InputError) -> InputError:
 
 
 def _generated(spec):
-    """The gaussian, self-affine, ground or built-in surface of ``spec``, or the
+    """The gaussian, self-affine or ground surface of ``spec``, or the
     :class:`~asperity.surfaces.io.Reading` of its file."""
-    length, h = spec.profile_length(), spec.profile_spacing()
-    seed = spec.seed or 0
-    if spec.kind == "gaussian":
-        if spec.width is None:
-            return s.gaussian_profile(length, h, spec.rms, spec.correlation_length,
-                                      acf=spec.acf or "gaussian", seed=seed)
-        ell = (spec.correlation_length, spec.correlation_length_y or spec.correlation_length)
-        return s.gaussian_topography((length, spec.width), h, spec.rms, ell,
-                                     acf=spec.acf or "gaussian", seed=seed)
-    if spec.kind == "self-affine":
-        options = {"rms_height": spec.rms, "rms_slope": spec.rms_slope, "seed": seed,
-                   "rolloff_wavelength": spec.rolloff_wavelength,
-                   "short_cutoff": spec.short_cutoff}
-        if spec.width is None:
-            return s.self_affine_profile(length, h, spec.hurst, **options)
-        return s.self_affine_topography((length, spec.width), h, spec.hurst, **options)
-    if spec.kind == "ground":
-        ell = 15e-6 if spec.correlation_length is None else spec.correlation_length
-        return s.transverse_ground_profile(length, h, spec.ra, ell, run_in=spec.run_in or 0.0,
-                                           seed=seed)
+    if spec.kind != "file":
+        return build_surface(surface_recipe(spec), spec.profile_length(), spec.profile_spacing(),
+                             width=spec.width)
     try:
         reading = read_measured(spec.path, spec.spacing, **spec.read_options())
     except InputError as exc:
@@ -130,8 +115,8 @@ def _surfaces(spec, progress) -> tuple[dict, list]:
     try:
         if spec.kind == "builtin":
             for label in labels:
-                made[label] = s.builtin_profile(label, spec.profile_length(),
-                                                spec.profile_spacing())
+                made[label] = build_surface(surface_recipe(spec, profile=label),
+                                            spec.profile_length(), spec.profile_spacing())
                 if progress is not None:
                     progress(len(made), total, f"profile {label}")
         elif spec.kind == "turned":
@@ -146,8 +131,8 @@ def _surfaces(spec, progress) -> tuple[dict, list]:
                 made[label] = res.profile
                 if progress is not None:
                     progress(len(made), total, f"tool vibration at {label}")
-            made["kinematic"] = s.turned_profile(spec.feed, spec.nose_radius, length, h,
-                                                 end_relief_angle=spec.end_relief_angle)
+            made["kinematic"] = build_surface(surface_recipe(spec, natural_frequency=None),
+                                              length, h)
         else:
             made[labels[0]] = _generated(spec)
     except InputError as exc:

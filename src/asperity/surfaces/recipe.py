@@ -1,0 +1,195 @@
+"""One recipe -> surface function: the kind dispatch of every surface a case or the CLI makes.
+
+A :class:`SurfaceRecipe` names a surface by its ``kind`` and the parameters of that kind, in SI
+units, with no reference to a case file; :func:`build_surface` makes it on a grid of a given
+length and spacing. The case tables ``[roughness]``, ``[surface1]``/``[surface2]`` (transient
+EHL, gears) and ``[surface]`` (surface analysis), and ``asperity surface generate``, all describe
+their surface as a recipe (:func:`asperity.cases.roughness.surface_recipe`) and build it here.
+
+Kinds and the parameters they use:
+
+- ``smooth``: no roughness (zero heights, periodic; a waviness may still be added)
+- ``gaussian``: ``rms``, ``correlation_length`` (``correlation_length_y`` of a topography),
+  ``acf``, ``seed`` (:func:`~.generate.gaussian_profile`, :func:`~.generate.gaussian_topography`)
+- ``self-affine``: ``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
+  ``short_cutoff``, ``seed`` (:func:`~.generate.self_affine_profile`,
+  :func:`~.generate.self_affine_topography`)
+- ``ground``: ``ra``, ``correlation_length`` (default 15 um), ``run_in``, ``seed``
+  (:func:`~.ground.transverse_ground_profile`)
+- ``builtin``: ``profile`` "A", "B" or "C" (:func:`~.ground.builtin_profile`)
+- ``file``: ``path``, ``file_spacing`` (a file without coordinates) and ``read_options``
+  (:func:`~.io.read_surface`)
+- ``feature``: ``feature`` "dent", "bump" or "ridge", ``amplitude``, ``half_width``, ``position``
+  (:func:`~.features.feature_surface`)
+- ``turned``: ``feed``, ``nose_radius``, ``end_relief_angle`` (:func:`~.machining.turned_profile`);
+  with ``natural_frequency`` the tool vibrates (:func:`~.machining.turned_profile_dynamic`:
+  ``depth_of_cut``, ``cutting_speed``, ``workpiece_diameter``, ``mass``, ``damping_ratio``,
+  ``seed``)
+
+Every kind then takes, in this order: ``lowpass_wavelength`` (the cut-off of an ISO 16610-21
+Gaussian filter applied to a profile), ``scale`` (a factor on the heights) and ``waviness`` (a
+sinusoid added to the scaled heights).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .features import feature_surface
+from .filters import gaussian_filter
+from .generate import (
+    add_waviness,
+    gaussian_profile,
+    gaussian_topography,
+    self_affine_profile,
+    self_affine_topography,
+)
+from .ground import builtin_profile, transverse_ground_profile
+from .io import read_surface
+from .machining import turned_profile, turned_profile_dynamic
+from .topography import Profile, Topography, cell_centres
+
+__all__ = ["KINDS", "SurfaceRecipe", "Waviness", "build_surface"]
+
+#: The kinds of surface :func:`build_surface` makes.
+KINDS = ("smooth", "gaussian", "self-affine", "ground", "builtin", "file", "feature", "turned")
+
+
+@dataclass(frozen=True)
+class Waviness:
+    """A sinusoid of ``wavelength`` and ``amplitude`` (m) varying along ``direction``."""
+
+    wavelength: float
+    amplitude: float
+    direction: str = "y"
+
+
+@dataclass(frozen=True)
+class SurfaceRecipe:
+    """A surface by its kind and that kind's parameters (SI units; module docstring).
+
+    Parameters left at None take the defaults of the generator that uses them.
+    """
+
+    kind: str
+    rms: float | None = None
+    rms_slope: float | None = None
+    ra: float | None = None
+    correlation_length: float | None = None
+    correlation_length_y: float | None = None
+    acf: str = "gaussian"
+    hurst: float | None = None
+    rolloff_wavelength: float | None = None
+    short_cutoff: float | None = None
+    run_in: float = 0.0
+    profile: str | None = None
+    path: str | None = None
+    file_spacing: float | None = None
+    read_options: dict = field(default_factory=dict)
+    feature: str | None = None
+    amplitude: float | None = None
+    half_width: float | None = None
+    position: float | None = None
+    feed: float | None = None
+    nose_radius: float | None = None
+    end_relief_angle: float | None = None
+    natural_frequency: float | None = None
+    depth_of_cut: float | None = None
+    cutting_speed: float | None = None
+    workpiece_diameter: float | None = None
+    mass: float | None = None
+    damping_ratio: float = 0.05
+    seed: int = 0
+    lowpass_wavelength: float | None = None
+    scale: float = 1.0
+    waviness: Waviness | None = None
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise ValueError(f"unknown surface kind {self.kind!r}; expected one of {KINDS}")
+
+
+def _made(recipe: SurfaceRecipe, length: float, spacing, width, y):
+    """The surface of the recipe's kind, before low-pass, scale and waviness."""
+    h = spacing[0] if isinstance(spacing, tuple) else spacing
+    kind = recipe.kind
+    if kind == "gaussian":
+        if width is None:
+            return gaussian_profile(length, h, recipe.rms, recipe.correlation_length,
+                                    acf=recipe.acf, seed=recipe.seed)
+        ell = (recipe.correlation_length,
+               recipe.correlation_length_y or recipe.correlation_length)
+        return gaussian_topography((length, width), spacing, recipe.rms, ell, acf=recipe.acf,
+                                   seed=recipe.seed)
+    if kind == "self-affine":
+        options = {"rms_height": recipe.rms, "rms_slope": recipe.rms_slope,
+                   "rolloff_wavelength": recipe.rolloff_wavelength,
+                   "short_cutoff": recipe.short_cutoff, "seed": recipe.seed}
+        if width is None:
+            return self_affine_profile(length, h, recipe.hurst, **options)
+        return self_affine_topography((length, width), spacing, recipe.hurst, **options)
+    if kind == "ground":
+        ell = {} if recipe.correlation_length is None else {
+            "correlation_length": recipe.correlation_length}
+        return transverse_ground_profile(length, h, recipe.ra, run_in=recipe.run_in,
+                                         seed=recipe.seed, **ell)
+    if kind == "builtin":
+        return builtin_profile(recipe.profile, length=length, spacing=h)
+    if kind == "file":
+        return read_surface(recipe.path, recipe.file_spacing, **recipe.read_options)
+    if kind == "feature":
+        return feature_surface(recipe.feature, length, h, amplitude=recipe.amplitude,
+                               half_width=recipe.half_width, position=recipe.position, y=y)
+    if kind == "turned":
+        if recipe.natural_frequency is None:
+            return turned_profile(recipe.feed, recipe.nose_radius, length, h,
+                                  end_relief_angle=recipe.end_relief_angle)
+        return turned_profile_dynamic(
+            recipe.feed, recipe.nose_radius, recipe.depth_of_cut, recipe.cutting_speed,
+            recipe.workpiece_diameter, length, h, recipe.natural_frequency,
+            damping_ratio=recipe.damping_ratio, mass=recipe.mass, seed=recipe.seed).profile
+    n = int(np.ceil(length / h))
+    return Profile(cell_centres(n, h), np.zeros(n), periodic=True)
+
+
+def build_surface(recipe: SurfaceRecipe, length: float, spacing, *, width: float | None = None,
+                  y=None) -> Profile | Topography:
+    """The surface a recipe describes.
+
+    Parameters
+    ----------
+    recipe : SurfaceRecipe
+    length : float
+        Length along x (m) of a generated surface (a file has its own).
+    spacing : float or (float, float)
+        Grid spacing (m); a pair ``(dx, dy)`` for a gaussian or self-affine topography.
+    width : float, optional
+        Width along y (m): a gaussian or self-affine kind then makes a topography instead of a
+        profile. Profile kinds (ground, builtin, turned) ignore it.
+    y : array_like, optional
+        Cell-centre coordinates across x: the grid of a dent or bump, and the ``y`` over which a
+        profile is extruded when a waviness varies along y (without it, such a waviness is an
+        error).
+
+    Returns
+    -------
+    Profile or Topography
+        Profiles vary along x; the caller extrudes them where it needs a topography.
+    """
+    surf = _made(recipe, length, spacing, width, y)
+    if isinstance(surf, Profile):
+        z = np.asarray(surf.z)
+        if recipe.lowpass_wavelength:
+            z = gaussian_filter(z, surf.x, recipe.lowpass_wavelength, periodic=surf.periodic)
+        if recipe.scale != 1.0 or recipe.lowpass_wavelength:
+            surf = surf.with_heights(recipe.scale * z)
+    elif recipe.scale != 1.0:
+        surf = surf.with_heights(recipe.scale * np.asarray(surf.z))
+    if recipe.waviness is not None:
+        w = recipe.waviness
+        if isinstance(surf, Profile) and w.direction == "y" and y is not None:
+            surf = surf.extrude(y)
+        surf = add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
+    return surf
