@@ -1,18 +1,15 @@
 """Nodal fields of an EHL grid shared by the steady and transient solvers.
 
 Values at the Hertz centre and along the centre line ``y = 0`` of a field indexed ``[ix, iy]``
-(linear interpolation between nodes), and the central film of the Hertzian start from the
-film formulas of :mod:`asperity.ehl.formulas`.
+(linear interpolation between nodes). The start film is the problem's own
+:meth:`film_estimate`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from . import formulas
-from .problem import LineContact
-
-__all__ = ["at_centre", "centre_line", "film_estimate"]
+__all__ = ["at_centre", "centre_line"]
 
 
 def at_centre(state, field) -> float:
@@ -30,17 +27,3 @@ def centre_line(state, field) -> np.ndarray:
     if state.line:
         return field[:, 0]
     return np.array([np.interp(0.0, state.Y, field[i]) for i in range(field.shape[0])])
-
-
-def film_estimate(problem) -> float:
-    """Central film of the Hertzian start, m: Moes (line) or Nijenbanning (point).
-
-    Nijenbanning's fit covers ``ry >= rx``; for ``ry < rx`` it is evaluated at ``ry = rx``,
-    which is good enough for a start value.
-    """
-    lub = problem.lubricant
-    args = (problem.mean_speed, lub.viscosity, lub.pressure_viscosity, problem.reduced_modulus)
-    if isinstance(problem, LineContact):
-        return formulas.moes_line(problem.load_per_length, problem.radius, *args).central
-    ry = max(problem.ry, problem.rx)
-    return formulas.nijenbanning_point(problem.load, problem.rx, ry, *args).central

@@ -36,7 +36,6 @@ from .kernels import damp_oscillations, line_sweep, point_sweep
 from .lubricant import friction_coefficient
 from .nodal import at_centre as _at_centre
 from .nodal import centre_line as _centre_line
-from .nodal import film_estimate as _film_estimate
 from .problem import LineContact, PointContact
 
 __all__ = ["EHLState", "SteadyResult", "solve_steady"]
@@ -545,7 +544,7 @@ def solve_steady(
         grids.append(((cx - 1) // 2 + 1, cy if line else (cy - 1) // 2 + 1))
     grids.reverse()
     if initial_film is None:
-        h_start = _film_estimate(problem) / problem.film_scale
+        h_start = problem.film_estimate() / problem.film_scale
     else:
         h_start = check_positive("initial_film", initial_film) / problem.film_scale
     k_near = near if method == "line" else 0

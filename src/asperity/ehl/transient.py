@@ -48,7 +48,7 @@ from ..solution import SolverResult
 from ..surfaces.topography import Profile, Topography
 from .checkpoint import Checkpointer, fingerprint
 from .kernels import CAVITATED, CONTACT
-from .nodal import centre_line, film_estimate
+from .nodal import centre_line
 from .problem import LineContact
 from .solver import solve_steady
 from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
@@ -421,7 +421,7 @@ def solve_transient(
             z[k] = surface.heights(t)
         return z
 
-    film_ref = film_estimate(problem)
+    film_ref = problem.film_estimate()
     contact_film = opts.tol * film_ref if contact_film is None else float(contact_film)
     if not contact_film >= 0.0:
         raise InputError("contact_film", "a film thickness >= 0 in m", contact_film)
