@@ -295,3 +295,26 @@ def test_flow_field_keeps_the_memory_order_of_p():
     for e, g in zip(expected, got, strict=True):
         assert g.flags.f_contiguous
         np.testing.assert_array_equal(g, e)
+
+
+@pytest.mark.parametrize("model", ["barus", "roelands"])
+@pytest.mark.parametrize("tau0", [None, 5e6])
+def test_flow_field_at_overflowing_viscosity_tends_to_zero(model, tau0):
+    """A pressure spike whose viscosity overflows (exp(alpha p) > 1e308 for p > ~35 GPa at
+    alpha = 2e-8 /Pa) or whose h/eta underflows must give the limit of a rigid film: flow
+    factors and their slopes 0, finite (was NaN, or ZeroDivisionError in the compiled pass
+    on a fine line-contact mesh). Against the limits sigma -> 0 as eta -> inf."""
+    lub = Lubricant(viscosity=0.01, pressure_viscosity=2e-8, viscosity_model=model,
+                    eyring_stress=tau0)
+    p = np.array([3e10, 5e10, 1e12])
+    h = np.full(3, 1e-7)
+    sx, sy, rho, dsx, dsy = lub.flow_field(p, h, 1.0, slopes=True)
+    for field in (sx, sy, dsx, dsy):
+        assert np.all(np.isfinite(field))
+    # Newtonian: sigma_x -> 0 (it is ~1e-20 at 1 MPa); Eyring: sigma_x -> rho h^2 (|du|/tau0)/12,
+    # the limit of h^2 sqrt((h/eta)^2 + (du/tau0)^2)/12 as eta -> inf; sigma_y -> 0 for both
+    limit_x = 0.0 if tau0 is None else rho * h**2 * (1.0 / tau0) / 12.0
+    assert np.allclose(sx, limit_x, rtol=1e-12, atol=1e-23)
+    assert np.all(np.abs(sy) < 1e-23)
+    assert np.all(np.abs(dsx) < 1e-30) and np.all(np.abs(dsy) < 1e-30)
+    assert np.allclose(rho, lub.density_ratio(p))

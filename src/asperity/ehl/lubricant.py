@@ -97,6 +97,8 @@ def _eyring_x(h, eta, shear):
         return 0.0, 0.0
     u = h / eta
     root = math.sqrt(u * u + shear * shear)
+    if root == 0.0:  # Newtonian film whose h/eta underflows (eta overflowing at huge p): limit 0
+        return 0.0, 0.0
     return h * h * root / 12.0, -h * h * u * u / (12.0 * eta * root)
 
 
@@ -107,7 +109,9 @@ def _eyring_y(h, eta, shear):
     X = 0 the series ``g = (1 + X^2/6) / eta``, ``dg/deta = -1/eta^2 + shear^2/(6 h^2)``."""
     if h <= 0.0:
         return 0.0, 0.0
-    x = eta * shear / h
+    x = eta * shear / h if shear > 0.0 else 0.0
+    if x == math.inf:  # eta overflowing at huge p: g -> shear / (h asinh X) -> 0
+        return 0.0, 0.0
     if x < 1e-4:
         g = (1.0 + x * x / 6.0) / eta
         dg = -1.0 / (eta * eta) + shear * shear / (6.0 * h * h)
@@ -160,6 +164,8 @@ def _flow_field(p, h, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho
             eta, deta = _roelands_law(pk, eta0, v1, v2, v3)
         else:
             eta, deta = _barus_law(pk, eta0, v1)
+        if eta == math.inf:  # overflow at a huge pressure: the flow factors and slopes -> 0
+            deta = 0.0
         r, dr = _dowson_higginson_law(pk, gamma, lam)
         fx, dfx = _eyring_x(hk, eta, shear)
         fy, dfy = _eyring_y(hk, eta, shear)
