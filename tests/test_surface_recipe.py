@@ -246,3 +246,21 @@ def test_tables_with_the_same_keys_make_the_same_surface():
 def test_unknown_kind_is_refused():
     with pytest.raises(ValueError, match="kind"):
         SurfaceRecipe("knurled")
+
+
+def test_one_schema_of_surface_keys_across_tables():
+    # the same keys give the same profile in [surface1], [surface] and [roughness]
+    keys = dict(kind="ground", ra=0.3e-6, run_in=0.2, seed=4)
+    length, h = 1e-3, 1e-6
+    moving = MovingSurfaceSpec(**keys).build(length, h, np.array([-1e-6, 1e-6]), h)
+    spec = SurfaceSpec(**keys, length=length, spacing=h)
+    analysed = build_surface(surface_recipe(spec), spec.profile_length(), spec.profile_spacing())
+    np.testing.assert_array_equal(moving.z, analysed.z)
+    x = (np.arange(1000) + 0.5) * h
+    on_grid = surface_heights(RoughnessSpec(**keys), x, x[:2])
+    np.testing.assert_allclose(on_grid[:, 1], analysed.z, rtol=1e-9, atol=1e-15)
+    # kinds and reading keys now shared: a self-affine moving surface; unit only for a file
+    rough = MovingSurfaceSpec(kind="self-affine", hurst=0.8, rms=0.2e-6, seed=1)
+    assert rough.build(length, h, np.array([-1e-6, 1e-6]), h).z.shape == (1000,)
+    with pytest.raises(ValueError, match="for a measured file"):
+        MovingSurfaceSpec(kind="gaussian", rms=1e-7, correlation_length=1e-5, unit="um")

@@ -28,52 +28,41 @@ from __future__ import annotations
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, model_validator
 
 from ..errors import InputError
 from ..surfaces.recipe import build_surface
 from .ehl import EHLCaseBase, EHLGridSpec
-from .fields import CaseModel, Quantity, existing_file
-from .roughness import WavinessSpec, surface_recipe
+from .fields import CaseModel, Quantity
+from .roughness import SurfaceKeys, WavinessSpec, surface_recipe
 
 __all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
 
 
-class MovingSurfaceSpec(CaseModel):
+class MovingSurfaceSpec(SurfaceKeys):
     """``[surface1]``/``[surface2]``: the roughness a surface carries into the contact.
 
     ``kind``: ``smooth``; ``builtin`` (``profile`` "A", "B" or "C": the synthetic stand-ins of
     the seed's transverse-ground profiles); ``ground`` (``ra``, ``correlation_length``,
-    ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``seed``); ``file``
-    (a measured profile: ``path``, ``spacing`` when the file has no x column); ``feature``
+    ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``acf``, ``seed``);
+    ``self-affine`` (``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
+    ``short_cutoff``, ``seed``); ``file`` (a measured profile: ``path``, ``spacing`` when the
+    file has no x column, and the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``,
+    ``resample``); ``feature``
     (one ``feature`` "dent", "bump" or "ridge" of ``amplitude`` and ``half_width`` on a smooth
     surface, its centre ``lead`` upstream of the inlet at the start: the probes of Venner &
     Lubrecht, Kaneta, Ai & Cheng; :mod:`asperity.surfaces.features`). Profiles vary
     along x (the rolling direction) and are extruded across y. ``scale`` multiplies the
     heights (the seed's sqrt(2) x C); ``lowpass`` removes wavelengths shorter than that many
     mesh spacings (ISO Gaussian filter) when the mesh cannot resolve them; ``waviness`` adds a
-    sinusoid along y (transverse waviness) or x.
+    sinusoid along y (transverse waviness) or x. The surface keys are those of
+    :class:`~asperity.cases.roughness.SurfaceKeys`.
     """
 
-    kind: Literal["smooth", "builtin", "ground", "gaussian", "file", "feature"] = "smooth"
-    """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian", "file" or
-    "feature" (a single dent, bump or ridge)."""
-    profile: Literal["A", "B", "C"] | None = None
-    """Built-in profile "A", "B" or "C" (stand-ins of the seed's transverse-ground profiles)."""
-    ra: Quantity("length", gt=0) | None = None
-    """Arithmetic mean height Ra of a ground profile."""
-    rms: Quantity("length", gt=0) | None = None
-    """Root-mean-square height of a gaussian profile."""
-    correlation_length: Quantity("length", gt=0) | None = None
-    """Lag where the autocorrelation falls to 0.2 (ground, gaussian)."""
-    run_in: Annotated[float, Field(ge=0, lt=1)] = 0.0
-    """Degree of running-in of a ground profile, 0 fresh to < 1 strongly run-in."""
-    seed: Annotated[int, Field(ge=0)] = 0
-    """Seed of the random generator (the same seed gives the same surface)."""
-    path: str | None = None
-    """Measured profile file, relative to the case file."""
-    spacing: Quantity("length", gt=0) | None = None
-    """Sampling interval of a file without an x column."""
+    kind: Literal["smooth", "builtin", "ground", "gaussian", "self-affine", "file",
+                  "feature"] = "smooth"
+    """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian", "self-affine",
+    "file" or "feature" (a single dent, bump or ridge)."""
     scale: Annotated[float, Field(ge=0, le=100)] = 1.0
     """Factor on the heights (the seed's sqrt(2) x C)."""
     lowpass: Annotated[float, Field(ge=0, le=100)] = 0.0
@@ -91,16 +80,11 @@ class MovingSurfaceSpec(CaseModel):
     """Distance of the feature's centre upstream of the inlet at the start (default: its
     half-width, so that it enters at once)."""
 
-    _path = field_validator("path")(existing_file)
-
     @model_validator(mode="after")
     def _required(self):
-        need = {"smooth": (), "builtin": ("profile",), "ground": ("ra",),
-                "gaussian": ("rms", "correlation_length"), "file": ("path",),
-                "feature": ("feature", "amplitude", "half_width")}[self.kind]
-        for key in need:
-            if getattr(self, key) is None:
-                raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
+        self.check_kind({"builtin": ("profile",), "ground": ("ra",), "self-affine": ("hurst",),
+                         "gaussian": ("rms", "correlation_length"), "file": ("path",),
+                         "feature": ("feature", "amplitude", "half_width")})
         return self
 
     def build(self, length: float, spacing: float, y: np.ndarray, dx: float):

@@ -15,8 +15,8 @@ from pydantic import Field, field_validator, model_validator
 from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface
 from .fields import CaseModel, Quantity, existing_file
 
-__all__ = ["MeasuredFile", "RoughnessSpec", "WavinessSpec", "length_unit", "measured_file",
-           "surface_heights", "surface_recipe", "undeformed_gap"]
+__all__ = ["MeasuredFile", "RoughnessSpec", "SurfaceKeys", "WavinessSpec", "length_unit",
+           "measured_file", "surface_heights", "surface_recipe", "undeformed_gap"]
 
 
 def measured_file(cls, value, info):
@@ -89,7 +89,69 @@ class WavinessSpec(CaseModel):
     """Direction along which the waviness varies."""
 
 
-class RoughnessSpec(MeasuredFile):
+class SurfaceKeys(MeasuredFile):
+    """The keys of a surface shared by every table that names one: ``[roughness]``,
+    ``[surface1]``/``[surface2]`` (transient EHL, gears) and ``[surface]`` (surface analysis).
+
+    Each key is declared once here (type, unit, bounds, meaning); the tables add the kinds and
+    keys of their own (``scale``, ``waviness``, ``lowpass``, features, the turning models) and
+    which keys each kind needs. Keys left out take the defaults of
+    :class:`~asperity.surfaces.recipe.SurfaceRecipe` (:func:`surface_recipe`).
+    """
+
+    kind: str
+    """Which surface (each table names the kinds it takes)."""
+    rms: Quantity("length", ge=1e-12, le=1e-2) | None = None
+    """Root-mean-square height Sq (gaussian; self-affine instead of rms_slope)."""
+    rms_slope: Quantity("dimensionless", gt=0, le=100) | None = None
+    """Root-mean-square slope (self-affine, instead of rms)."""
+    ra: Quantity("length", ge=1e-12, le=1e-2) | None = None
+    """Arithmetic mean height Ra of a ground profile."""
+    correlation_length: Quantity("length", gt=0) | None = None
+    """Lag where the autocorrelation falls to 0.2 (gaussian; ground, default 15 um)."""
+    correlation_length_y: Quantity("length", gt=0) | None = None
+    """Correlation length along y of a gaussian topography (default: correlation_length)."""
+    acf: Literal["gaussian", "exponential"] | None = None
+    """Autocorrelation function of a gaussian surface ("gaussian", the default, or
+    "exponential")."""
+    hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
+    """Hurst exponent H of a self-affine surface (0 < H < 1)."""
+    rolloff_wavelength: Quantity("length", gt=0) | None = None
+    """Wavelength above which the self-affine spectrum is flat."""
+    short_cutoff: Quantity("length", gt=0) | None = None
+    """Shortest wavelength of the self-affine spectrum."""
+    run_in: Annotated[float, Field(ge=0, lt=1)] | None = None
+    """Degree of running-in of a ground profile, 0 fresh (the default) to < 1 strongly run-in
+    (peaks truncated)."""
+    profile: Literal["A", "B", "C"] | None = None
+    """Built-in profile "A", "B" or "C" (synthetic stand-ins of the mixed-EHL seed's Fig. 1)."""
+    path: str | None = None
+    """Measured surface file (text, npy, npz or an instrument format), relative to the case file,
+    or builtin:NAME for data shipped with asperity."""
+    spacing: Quantity("length", gt=0) | None = None
+    """Sampling interval of a file without coordinates (surface analysis: also of a generated
+    surface)."""
+    seed: Annotated[int, Field(ge=0)] | None = None
+    """Seed of the random generator (default 0; the same seed gives the same surface)."""
+
+    _path = field_validator("path")(measured_file)
+
+    def check_kind(self, need: dict) -> None:
+        """Refuse a missing key that ``need[kind]`` names, reading keys of a measured file for
+        another kind, and a self-affine surface without exactly one of rms or rms_slope."""
+        for key in need.get(self.kind, ()):
+            if getattr(self, key) is None:
+                raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
+        if self.kind != "file":
+            for key in MeasuredFile.model_fields:
+                if getattr(self, key) is not None:
+                    raise ValueError(f"expected no {key} for kind = \"{self.kind}\" (it is "
+                                     "for a measured file)")
+        if self.kind == "self-affine" and (self.rms is None) == (self.rms_slope is None):
+            raise ValueError("expected exactly one of rms or rms_slope for a self-affine surface")
+
+
+class RoughnessSpec(SurfaceKeys):
     """Which surface: ``kind`` and its parameters (unused ones must be left out).
 
     - ``gaussian``: ``rms``, ``correlation_length`` (or ``correlation_length_y`` too), ``acf``
@@ -103,62 +165,21 @@ class RoughnessSpec(MeasuredFile):
       reading keys of :class:`MeasuredFile` (``unit``, ``x_unit``, ``z_unit``, ``missing``,
       ``resample``)
     All kinds take ``scale`` (multiplies the heights), ``seed`` and an optional ``waviness``.
+    The keys are those of :class:`SurfaceKeys`.
     """
 
     kind: Literal["gaussian", "self-affine", "ground", "builtin", "file"]
     """Which surface: "gaussian", "self-affine", "ground", "builtin" or "file" (each takes its own
     keys)."""
-    rms: Quantity("length", gt=0) | None = None
-    """Root-mean-square height Sq (gaussian; self-affine instead of rms_slope)."""
-    rms_slope: Quantity("dimensionless", gt=0) | None = None
-    """Root-mean-square slope (self-affine, instead of rms)."""
-    ra: Quantity("length", gt=0) | None = None
-    """Arithmetic mean height Ra of a ground profile."""
-    correlation_length: Quantity("length", gt=0) | None = None
-    """Lag where the autocorrelation falls to 0.2 (gaussian; ground)."""
-    correlation_length_y: Quantity("length", gt=0) | None = None
-    """Correlation length along y of an anisotropic gaussian surface (default: correlation_length).
-    """
-    acf: Literal["gaussian", "exponential"] = "gaussian"
-    """Autocorrelation function of a gaussian surface."""
-    hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
-    """Hurst exponent H of a self-affine surface (0 < H < 1)."""
-    rolloff_wavelength: Quantity("length", gt=0) | None = None
-    """Wavelength above which the self-affine spectrum is flat."""
-    short_cutoff: Quantity("length", gt=0) | None = None
-    """Shortest wavelength of the self-affine spectrum."""
-    run_in: Annotated[float, Field(ge=0, lt=1)] = 0.0
-    """Degree of running-in of a ground profile, 0 fresh to < 1 strongly run-in (peaks truncated).
-    """
-    profile: Literal["A", "B", "C"] | None = None
-    """Built-in profile "A", "B" or "C" (synthetic stand-ins of the mixed-EHL seed's Fig. 1)."""
-    path: str | None = None
-    """Measured surface file (text, npy, npz or an instrument format), relative to the case file."""
-    spacing: Quantity("length", gt=0) | None = None
-    """Sampling interval of a file without coordinates."""
     scale: Annotated[float, Field(ge=0, le=1e3)] = 1.0
     """Factor on the heights."""
-    seed: Annotated[int, Field(ge=0)] = 0
-    """Seed of the random generator (the same seed gives the same surface)."""
     waviness: WavinessSpec | None = None
     """A sinusoidal waviness added to the roughness."""
 
-    _path = field_validator("path")(measured_file)
-
     @model_validator(mode="after")
     def _required(self):
-        need = {"gaussian": ("rms", "correlation_length"), "self-affine": ("hurst",),
-                "ground": ("ra",), "builtin": ("profile",), "file": ("path",)}[self.kind]
-        for key in need:
-            if getattr(self, key) is None:
-                raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
-        if self.kind != "file":
-            for key in MeasuredFile.model_fields:
-                if getattr(self, key) is not None:
-                    raise ValueError(f"expected no {key} for kind = \"{self.kind}\" (it is "
-                                     "for a measured file)")
-        if self.kind == "self-affine" and (self.rms is None) == (self.rms_slope is None):
-            raise ValueError("expected exactly one of rms or rms_slope for a self-affine surface")
+        self.check_kind({"gaussian": ("rms", "correlation_length"), "self-affine": ("hurst",),
+                         "ground": ("ra",), "builtin": ("profile",), "file": ("path",)})
         return self
 
 

@@ -19,7 +19,7 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from .fields import CaseHeader, CaseModel, Quantity
-from .roughness import MeasuredFile, measured_file
+from .roughness import MeasuredFile, SurfaceKeys
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
 
@@ -72,7 +72,7 @@ def _as_list(value):
     return value if isinstance(value, list | tuple) else [value]
 
 
-class SurfaceSpec(MeasuredFile):
+class SurfaceSpec(SurfaceKeys):
     """The surface to analyse: ``kind`` and the keys of that kind (others must be left out).
 
     - ``gaussian``: ``length``, ``spacing``, ``rms``, ``correlation_length`` (lag where the
@@ -97,6 +97,9 @@ class SurfaceSpec(MeasuredFile):
       :func:`asperity.surfaces.turned_profile_dynamic`), which needs ``depth_of_cut``,
       ``cutting_speed``, ``workpiece_diameter``, ``mass`` and takes ``damping_ratio`` (0.05)
       and ``seed``.
+
+    The surface keys are those of :class:`~asperity.cases.roughness.SurfaceKeys`; ``profile``
+    here also takes a list.
     """
 
     kind: Literal["gaussian", "self-affine", "ground", "builtin", "file", "turned"]
@@ -104,34 +107,10 @@ class SurfaceSpec(MeasuredFile):
     its own keys; others must be left out)."""
     length: Quantity("length", gt=0) | None = None
     """Length of a generated surface along x."""
-    spacing: Quantity("length", gt=0) | None = None
-    """Sampling interval of a generated surface (or of a file without coordinates)."""
     width: Quantity("length", gt=0) | None = None
     """Width along y of a generated topography (absent: a profile)."""
-    rms: Quantity("length", ge=1e-12, le=1e-2) | None = None
-    """Root-mean-square height Sq (gaussian; self-affine instead of rms_slope)."""
-    rms_slope: Quantity("dimensionless", gt=0, le=100) | None = None
-    """Root-mean-square slope (self-affine, instead of rms)."""
-    ra: Quantity("length", ge=1e-12, le=1e-2) | None = None
-    """Arithmetic mean height Ra of a ground profile."""
-    correlation_length: Quantity("length", gt=0) | None = None
-    """Lag where the autocorrelation falls to 0.2 (gaussian; ground, default 15 um)."""
-    correlation_length_y: Quantity("length", gt=0) | None = None
-    """Correlation length along y of a gaussian topography (with width)."""
-    acf: Literal["gaussian", "exponential"] | None = None
-    """Autocorrelation function of a gaussian surface ("gaussian" or "exponential")."""
-    hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
-    """Hurst exponent H of a self-affine surface (0 < H < 1)."""
-    rolloff_wavelength: Quantity("length", gt=0) | None = None
-    """Wavelength above which the self-affine spectrum is flat."""
-    short_cutoff: Quantity("length", gt=0) | None = None
-    """Shortest wavelength of the self-affine spectrum."""
-    run_in: Annotated[float, Field(ge=0, lt=1)] | None = None
-    """Degree of running-in of a ground profile, 0 fresh to < 1 strongly run-in."""
     profile: Annotated[tuple[Literal["A", "B", "C"], ...], Field(min_length=1)] | None = None
     """Built-in profile "A", "B", "C", or a list of them to compare."""
-    path: str | None = None
-    """Measured surface file (text, npy, npz or an instrument format), relative to the case file."""
     feed: Quantity("length", gt=0, le=0.01) | None = None
     """Feed per revolution of a turning tool."""
     nose_radius: Quantity("length", gt=0, le=0.1) | None = None
@@ -152,8 +131,6 @@ class SurfaceSpec(MeasuredFile):
     """Damping ratio of the tool (tool-vibration model; default 0.05)."""
     mass: Quantity("mass", ge=1e-6, le=1e6) | None = None
     """Effective mass of the tool (tool-vibration model)."""
-    seed: Annotated[int, Field(ge=0)] | None = None
-    """Seed of the random generator (the same seed gives the same surface)."""
 
     @field_validator("profile", "natural_frequency", mode="before")
     @classmethod
@@ -166,8 +143,6 @@ class SurfaceSpec(MeasuredFile):
         if value is not None and len(set(value)) != len(value):
             raise ValueError("expected distinct values")
         return value
-
-    _path = field_validator("path")(measured_file)
 
     @model_validator(mode="after")
     def _keys_of_kind(self):
