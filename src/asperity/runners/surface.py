@@ -21,6 +21,7 @@ from .. import surfaces as s
 from ..cases.roughness import surface_recipe
 from ..cases.surface import MAX_POINTS, SurfaceSpec
 from ..errors import InputError
+from ..references import cite
 from ..results import Comparison, Outcome, variable
 from ..surfaces.io import read_measured
 from ..surfaces.machining import MICROINCH
@@ -334,9 +335,10 @@ def _turning(spec, surfaces, evaluated, turned, evaluation):
     arc = f"circle vs parabola differ by about f^2/(16 r^2) = {100 * f * f / (16 * r * r):.2g} %"
     comparisons = [
         Comparison("kinematic Rt of the feed marks", kin["Rt"], rt_ref,
-                   "Seireg eq. (4.1), Rmax = f^2/(8 r)", "m", 0.01, arc),
+                   cite("Seireg eq. (4.1), Rmax = f^2/(8 r)", "turning"), "m", 0.01, arc),
         Comparison("kinematic Ra of the feed marks", kin["Ra"], ra_ref,
-                   "parabolic feed marks, Ra = f^2/(18 sqrt(3) r)", "m", 0.01, arc),
+                   cite("parabolic feed marks, Ra = f^2/(18 sqrt(3) r)", "turning"), "m", 0.01,
+                   arc),
     ]
     table = s.process_roughness(_TURNING)
     first = next(iter(surfaces))
@@ -344,11 +346,12 @@ def _turning(spec, surfaces, evaluated, turned, evaluation):
     lo, hi = table.ra_min_microinch, table.ra_max_microinch
     where = "inside" if lo <= ra <= hi else "below" if ra < lo else "above"
     note = f"Ra of {first} is {where} the range {lo:g}-{hi:g} uin"
+    table41 = cite("Seireg Table 4.1", "turning")
     comparisons += [
-        Comparison("Ra vs Table 4.1 boring/turning, lowest", ra, lo, "Seireg Table 4.1", "uin",
+        Comparison("Ra vs Table 4.1 boring/turning, lowest", ra, lo, table41, "uin",
                    note=note),
-        Comparison("Ra vs Table 4.1 boring/turning, highest", ra, hi, "Seireg Table 4.1",
-                   "uin", note=note),
+        Comparison("Ra vs Table 4.1 boring/turning, highest", ra, hi, table41, "uin",
+                   note=note),
     ]
     if not turned:
         return summary, comparisons, None
@@ -363,9 +366,10 @@ def _turning(spec, surfaces, evaluated, turned, evaluation):
         summary[f"rt_along_mean_{tag}_m"] = mean
         summary[f"static_deflection_{tag}_m"] = res.static_deflection
         comparisons.append(Comparison(
-            f"mean Rt along the workpiece, {label}", mean, rt_ref, "Seireg eq. (4.1) and "
-            "Fig. 4.2", "m", note="tool vibration adds to the kinematic roughness; the book "
-            "finds it essentially kinematic above 150 Hz"))
+            f"mean Rt along the workpiece, {label}", mean, rt_ref,
+            cite("Seireg eq. (4.1) and Fig. 4.2", "turning"), "m",
+            note="tool vibration adds to the kinematic roughness; the book finds it essentially "
+            "kinematic above 150 Hz"))
     frequencies = [*(float(fn) for fn in spec.natural_frequency), math.nan]
     centres = along["kinematic"][0]
     values = np.stack([v for _, v in along.values()])
@@ -379,7 +383,8 @@ def _reference_ra(spec, surfaces, evaluated) -> list:
         for label in surfaces:
             target = s.BUILTIN_PROFILES[label]["ra"]
             out.append(Comparison(f"Ra of profile {label}", evaluated[label].primary["Ra"],
-                                  target, "Holmes, Evans & Snidle (2005), Fig. 1 text", "m",
+                                  target, cite("Holmes, Evans & Snidle (2005), Fig. 1 text",
+                                               "the-papers-ground-profiles"), "m",
                                   0.01, "synthetic stand-in generated to this Ra"))
     elif spec.kind == "ground":
         out.append(Comparison("Ra", evaluated["ground"].primary["Ra"], spec.ra,
@@ -387,7 +392,8 @@ def _reference_ra(spec, surfaces, evaluated) -> list:
     elif spec.kind in ("gaussian", "self-affine") and spec.rms is not None:
         name = "Rq" if spec.width is None else "Sq"
         out.append(Comparison(name, evaluated[spec.kind].primary[name], spec.rms,
-                              "expected rms of the random surface", "m",
+                              cite("expected rms of the random surface",
+                                   "generated-surfaces"), "m",
                               note="one realisation of a random surface, not a check"))
     return out
 
