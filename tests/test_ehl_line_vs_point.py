@@ -56,13 +56,13 @@ def _fig10(counting_steps, snapshots):
     s1 = point_case.surface1.build(length, spacing, y, dx)
     s2 = point_case.surface2.build(length, spacing, y, dx)
     point_steady = solve_steady(point, nx=NX, ny=ny, domain=domain)
-    line_steady = solve_steady(line, nx=NX, domain=line_domain, max_sweeps=40000)
+    line_steady = solve_steady(line, nx=NX, domain=line_domain, max_iter=40000)
     common = dict(dt=dt, counting_steps=counting_steps, warmup_steps=warmup,
                   snapshot_steps=snaps)
     point_run = solve_transient(point, s1, s2, nx=NX, ny=ny, domain=domain, steady=point_steady,
                                 **common)
     line_run = solve_transient(line, s1, s2, nx=NX, domain=line_domain, steady=line_steady,
-                               max_sweeps=line_case.solver.max_sweeps, **common)
+                               max_iter=line_case.solver.max_sweeps, **common)
     return compare_centre_lines(point_run, line_run, point, line, point_steady, line_steady)
 
 
@@ -136,7 +136,7 @@ def small():
     domain = ((-2.0 * point.a, 1.25 * point.a), (-1.4 * point.b, 1.4 * point.b))
     line_domain = (domain[0], (0.0, 0.0))
     point_steady = solve_steady(point, nx=33, ny=17, domain=domain, levels=1)
-    line_steady = solve_steady(line, nx=33, domain=line_domain, max_sweeps=40000)
+    line_steady = solve_steady(line, nx=33, domain=line_domain, max_iter=40000)
     point_run = solve_transient(point, nx=33, ny=17, domain=domain, steady=point_steady,
                                 counting_steps=2)
     line_run = solve_transient(line, nx=33, domain=line_domain, steady=line_steady,
@@ -225,7 +225,7 @@ def test_steady_solutions_must_be_both_and_on_the_grid(small):
     with pytest.raises(InputError) as exc:
         compare_centre_lines(*args, s["line_steady"], s["line_steady"])
     assert _field(exc) == "point_steady"
-    coarse = solve_steady(s["line"], nx=17, domain=s["domain"], max_sweeps=40000)
+    coarse = solve_steady(s["line"], nx=17, domain=s["domain"], max_iter=40000)
     with pytest.raises(InputError) as exc:
         compare_centre_lines(*args, s["point_steady"], coarse)
     assert _field(exc) == "line_steady"

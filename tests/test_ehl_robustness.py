@@ -168,7 +168,7 @@ def test_high_viscosity_ball_diverged_on_square_cells():
     converge in 1000 sweeps (the residual stays of order 1); the default mesh (dY >= 3 dX)
     converges in a few hundred sweeps."""
     prob = _ball(15.0, STEEL, 5e6, 0.5)
-    old = solve_steady(prob, nx=129, ny=65, max_sweeps=1000,
+    old = solve_steady(prob, nx=129, ny=65, max_iter=1000,
                        domain=((-2.5 * prob.a, 1.5 * prob.a), (-2 * prob.b, 2 * prob.b)))
     assert not old.converged and old.residual > 1e-2
     new = solve_steady(prob)
@@ -223,7 +223,7 @@ def test_default_mesh_error_is_near_two_percent(name):
     nx, ny = coarse.levels[-1]
     domain = ((coarse.x[0], coarse.x[-1]), (coarse.y[0], coarse.y[-1]))
     fine = solve_steady(prob, nx=2 * (nx - 1) + 1, ny=ny, domain=domain,
-                        levels=len(coarse.levels), max_sweeps=40000)
+                        levels=len(coarse.levels), max_iter=40000)
     print(f"\n{name}: hc {coarse.central_film * 1e9:.1f} -> {fine.central_film * 1e9:.1f} nm")
     assert coarse.converged and fine.converged
     assert fine.central_film == pytest.approx(coarse.central_film, rel=0.025)

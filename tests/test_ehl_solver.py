@@ -43,7 +43,7 @@ def test_gear_case_coarse_matches_paper(gear_129):
 def test_point_and_line_relaxation_agree():
     """The seed's point update and the x-line relaxation converge to the same solution."""
     prob = gear_point()
-    a = solve_steady(prob, nx=65, ny=33, method="point", tol=2e-6, max_sweeps=6000)
+    a = solve_steady(prob, nx=65, ny=33, method="point", tol=2e-6, max_iter=6000)
     b = solve_steady(prob, nx=65, ny=33, method="line", tol=2e-6)
     assert a.converged and b.converged
     assert b.sweeps < a.sweeps / 5
@@ -86,14 +86,14 @@ def test_line_contact_gear_centre_line():
     """Seed's line column: hc, hmin close to the point contact's centre line (paper Fig. 10)."""
     prob = LineContact(0.0191, 527e3, 25 * 0.875, 25 * 1.125, STEEL, STEEL,
                        Lubricant(0.0048, 11.1e-9, eyring_stress=10e6))
-    r = solve_steady(prob, nx=101, tol=1e-5, max_sweeps=20000)
+    r = solve_steady(prob, nx=101, tol=1e-5, max_iter=20000)
     assert r.converged
     assert r.central_film == pytest.approx(0.48e-6, rel=0.05)
     assert r.minimum_film == pytest.approx(0.42e-6, rel=0.05)
 
 
 def test_not_converged_is_reported():
-    r = solve_steady(gear_point(), nx=33, ny=17, max_sweeps=5, refresh=5)
+    r = solve_steady(gear_point(), nx=33, ny=17, max_iter=5, refresh=5)
     assert not r.converged
     assert r.sweeps == 5
 

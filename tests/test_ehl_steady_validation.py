@@ -38,7 +38,7 @@ def test_newtonian_line_contact_matches_moes(M, L):
     """
     prob = _moes_problem(M, L)
     assert prob.M == pytest.approx(M) and prob.L == pytest.approx(L)
-    res = solve_steady(prob, nx=257, max_sweeps=40000,
+    res = solve_steady(prob, nx=257, max_iter=40000,
                        domain=((-4.0 * prob.a, 1.5 * prob.a), (0.0, 0.0)))
     assert res.converged and abs(res.load_error) < 1e-5
     lub = prob.lubricant
@@ -62,7 +62,7 @@ def test_dry_limit_line_contact_tends_to_hertz():
     dev = []
     for u in (25.0, 2.5, 0.25):
         prob = LineContact(0.0191, 527e3, u, u, GEAR, GEAR, JET2_LINE)
-        res = solve_steady(prob, nx=129, max_sweeps=40000)
+        res = solve_steady(prob, nx=129, max_iter=40000)
         assert res.converged
         dev.append(_hertz_deviation(res, prob))
     assert dev[0] > dev[1] > dev[2]

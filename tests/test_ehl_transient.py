@@ -65,7 +65,7 @@ def _amplitude_ratio(M, L, nabla, nx=151):
     """A_d/A_i of one-sided waviness: film amplitude at X = 0 over one period (Venner 1997)."""
     prob = moes_line(M, L)
     domain = ((-3.0 * prob.a, 1.5 * prob.a), (0.0, 0.0))
-    st = solve_steady(prob, nx=nx, domain=domain, tol=1e-7, max_sweeps=50000)
+    st = solve_steady(prob, nx=nx, domain=domain, tol=1e-7, max_iter=50000)
     wavelength = nabla * prob.a * L**0.5 / M**0.75
     amplitude = 0.05 * st.central_film
     dt = 0.5 * 4.5 * prob.a / (nx - 1) / prob.u1
@@ -73,7 +73,7 @@ def _amplitude_ratio(M, L, nabla, nx=151):
     warm = int(np.ceil(4.5 * prob.a / (prob.u1 * dt)))
     r = solve_transient(prob, wave(wavelength, amplitude), None, nx=nx, domain=domain, steady=st,
                         counting_steps=period, snapshot_steps=range(warm + 1, warm + period + 1),
-                        tol=1e-5, max_sweeps=1000)
+                        tol=1e-5, max_iter=1000)
     assert r.converged
     hc = r.centre_film[:, np.argmin(np.abs(r.x))]
     return 0.5 * (hc.max() - hc.min()) / amplitude
@@ -110,10 +110,10 @@ def test_mass_balance_over_the_inlet_and_contact():
     prob = moes_line(20, 10)
     domain = ((-3.0 * prob.a, 1.5 * prob.a), (0.0, 0.0))
     nx = 181
-    st = solve_steady(prob, nx=nx, domain=domain, tol=1e-7, max_sweeps=50000)
+    st = solve_steady(prob, nx=nx, domain=domain, tol=1e-7, max_iter=50000)
     surf = wave(1.5 * prob.a, 0.2 * st.central_film)
     runs = [solve_transient(prob, surf, None, nx=nx, domain=domain, steady=st, warmup_steps=0,
-                            counting_steps=n, tol=1e-7, max_sweeps=3000) for n in (60, 61)]
+                            counting_steps=n, tol=1e-7, max_iter=3000) for n in (60, 61)]
     assert all(r.converged for r in runs)
     x = runs[0].x
     ia, ib = np.searchsorted(x, [-2.6 * prob.a, 0.8 * prob.a])

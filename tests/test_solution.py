@@ -9,8 +9,15 @@ import numpy as np
 import pytest
 
 from asperity.cases import load_case
-from asperity.contact import ellipsoid_gap, solve_normal, solve_tangential, surface_gap
-from asperity.ehl import LineContact, Lubricant, solve_steady
+from asperity.contact import (
+    ellipsoid_gap,
+    proportional_path,
+    solve_normal,
+    solve_tangential,
+    surface_gap,
+    tangential_load_path,
+)
+from asperity.ehl import LineContact, Lubricant, solve_steady, solve_transient
 from asperity.errors import InputError
 from asperity.materials import Material
 from asperity.runners import run_case
@@ -83,20 +90,20 @@ def test_ehl_steady_result_protocol_and_starved_inlet_warning():
     body = Material(2e11, 0.3)
     lub = Lubricant(0.04, 2e-8, viscosity_model="barus", compressible=False)
     prob = LineContact(0.01, 2e5, 1.0, 1.0, body, body, lub)
-    res = solve_steady(prob, nx=129, max_sweeps=40000)
+    res = solve_steady(prob, nx=129, max_iter=40000)
     _protocol(res, "sweeps")
     ds = res.to_dataset()
     assert ds["pressure"].attrs == {"units": "Pa", "long_name": "film pressure"}
     assert ds["film"].dims == ("x", "y")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
-        starved = solve_steady(prob, nx=65, max_sweeps=2000,
+        starved = solve_steady(prob, nx=65, max_iter=2000,
                                domain=((-1.05 * prob.a, 1.5 * prob.a), (0.0, 0.0)))
     assert any("inlet" in w for w in starved.warnings)
 
 
 def test_ehl_transient_result_protocol():
-    from asperity.ehl import PointContact, solve_transient
+    from asperity.ehl import PointContact
 
     body = Material(2e11, 0.3)
     lub = Lubricant(0.04, 2e-8, viscosity_model="barus", compressible=False)
@@ -134,6 +141,46 @@ def test_old_spellings_warn_and_still_work():
         old = solve_tangential(p, x, x, 0.3, STEEL, STEEL, moment=1e-3, center=(0.0, 0.0))
     new = solve_tangential(p, x, x, 0.3, STEEL, STEEL, moment=1e-3, centre=(0.0, 0.0))
     assert old.rotation == new.rotation
+
+
+def test_old_result_field_names_warn_and_read_the_new_fields():
+    a, x = _sphere(24)
+    p = solve_normal(ellipsoid_gap(0.01, 0.01, x, x), x, x, STEEL, STEEL, load=100.0).pressure
+    res = solve_tangential(p, x, x, 0.3, STEEL, STEEL, force=(5.0, 0.0), moment=1e-3,
+                           centre=(0.2 * a, 0.0))
+    assert np.all(np.isfinite(res.centre_of_rotation))
+    with pytest.warns(DeprecationWarning, match="TangentialResult.center is deprecated"):
+        np.testing.assert_array_equal(res.center, res.centre)
+    np.testing.assert_array_equal(res.centre, [0.2 * a, 0.0])
+    with pytest.warns(DeprecationWarning, match="center_of_rotation is deprecated"):
+        np.testing.assert_array_equal(res.center_of_rotation, res.centre_of_rotation)
+    with pytest.raises(AttributeError):
+        res.center = (0.0, 0.0)
+    path = tangential_load_path(p, x, x, 0.3, STEEL, STEEL,
+                                proportional_path(moment=1e-3, steps=2))
+    with pytest.warns(DeprecationWarning, match="LoadPathResult.center_of_rotation"):
+        np.testing.assert_array_equal(path.center_of_rotation, path.centre_of_rotation)
+    assert path.centre_of_rotation.shape == (2, 2)
+
+
+def test_ehl_max_sweeps_is_the_old_spelling_of_max_iter():
+    body = Material(2e11, 0.3)
+    lub = Lubricant(0.04, 2e-8, viscosity_model="barus", compressible=False)
+    prob = LineContact(0.01, 2e5, 1.0, 1.0, body, body, lub)
+    new = solve_steady(prob, nx=33, max_iter=30)
+    with pytest.warns(DeprecationWarning, match="'max_sweeps' is deprecated, use 'max_iter'"):
+        old = solve_steady(prob, nx=33, max_sweeps=30)
+    assert new.sweeps == old.sweeps == 30 and not new.converged
+    np.testing.assert_array_equal(old.pressure, new.pressure)
+    with pytest.raises(TypeError, match="both"):
+        solve_steady(prob, nx=33, max_iter=30, max_sweeps=30)
+    options = dict(nx=33, counting_steps=2, warmup_steps=0, steady=new)
+    new = solve_transient(prob, max_iter=3, **options)
+    with pytest.warns(DeprecationWarning, match="solve_transient: 'max_sweeps'"):
+        old = solve_transient(prob, max_sweeps=3, **options)
+    assert np.max(new.sweeps) <= 3
+    np.testing.assert_array_equal(old.sweeps, new.sweeps)
+    np.testing.assert_array_equal(old.pressure, new.pressure)
 
 
 def test_solve_normal_takes_a_topography():

@@ -19,7 +19,7 @@ def test_figures_render(tmp_path):
     path = tangential_load_path(p, x, x, 0.3, STEEL, STEEL,
                                 proportional_path((50.0, 0.0), m, steps=3))
     figs = [tplot.traction_map(path.final, x, x), tplot.slip_progression(path, x, x),
-            tplot.compliance_curves(path), tplot.center_of_rotation_curve(path)]
+            tplot.compliance_curves(path), tplot.centre_of_rotation_curve(path)]
     for k, fig in enumerate(figs):
         out = tmp_path / f"fig{k}.png"
         fig.savefig(out)

@@ -18,7 +18,9 @@ name; dims default to ``("x", "y")``, and a field of shape ``(2, nx, ny)`` is sp
 :meth:`SolverResult.coordinates`.
 
 :func:`renamed_keywords` accepts a keyword's old spelling with a :class:`DeprecationWarning`
-(``max_iterations`` -> ``max_iter``, ``center`` -> ``centre``).
+(``max_iterations`` and ``max_sweeps`` -> ``max_iter``, ``center`` -> ``centre``);
+:func:`renamed_attribute` keeps a result field's old spelling as a read-only property that warns
+(``center_of_rotation`` -> ``centre_of_rotation``).
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ import warnings
 import numpy as np
 import xarray as xr
 
-__all__ = ["SolverResult", "renamed_keywords"]
+__all__ = ["SolverResult", "renamed_attribute", "renamed_keywords"]
 
 _COORDINATES = {"x": ("m", "x (first in-plane direction)"),
                 "y": ("m", "y (second in-plane direction)")}
@@ -144,3 +146,33 @@ def renamed_keywords(**renames):
         return wrapper
 
     return decorate
+
+
+def renamed_attribute(old: str, new: str) -> property:
+    """A read-only property under an attribute's old spelling that warns (DeprecationWarning).
+
+    Parameters
+    ----------
+    old, new : str
+        The old spelling (the name the property is bound to) and the attribute it reads.
+
+    Returns
+    -------
+    property
+        Reading it warns and returns ``getattr(self, new)``.
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> @dataclass(frozen=True)
+    ... class Result:
+    ...     centre: float
+    ...     center = renamed_attribute("center", "centre")
+    """
+
+    def get(self):
+        warnings.warn(f"{type(self).__name__}.{old} is deprecated, use {new!r}",
+                      DeprecationWarning, stacklevel=2)
+        return getattr(self, new)
+
+    return property(get, doc=f"Deprecated spelling of ``{new}`` (read-only; warns).")

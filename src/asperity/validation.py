@@ -207,7 +207,7 @@ def _ehl_moes_line():
     load = m_load * two_u**0.5 * e_prime * radius
     lub = Lubricant(eta0, alpha, viscosity_model="barus", compressible=False)
     prob = LineContact(radius, load, u, u, body, body, lub)
-    res = solve_steady(prob, nx=257, max_sweeps=40000,
+    res = solve_steady(prob, nx=257, max_iter=40000,
                        domain=((-4.0 * prob.a, 1.5 * prob.a), (0.0, 0.0)))
     ref = moes_line(load, radius, u, eta0, alpha, e_prime).central
     return [Comparison("central film (257 nodes)", res.central_film, ref,

@@ -23,7 +23,7 @@ from scipy import ndimage, optimize
 
 from ..elastic import grid_spacing
 from ..errors import InputError, check_finite
-from ..solution import SolverResult, renamed_keywords
+from ..solution import SolverResult, renamed_attribute, renamed_keywords
 
 __all__ = [
     "FIXED",
@@ -39,7 +39,7 @@ __all__ = [
     "gross_slip_result",
     "load_centroid",
     "make_result",
-    "rotation_center",
+    "rotation_centre",
 ]
 
 
@@ -54,7 +54,7 @@ class RegionLoad:
     force: np.ndarray
     """Tangential force (Fx, Fy) carried, N."""
     moment: float
-    """Twisting moment carried about the solve's ``center``, N m."""
+    """Twisting moment carried about the solve's ``centre``, N m."""
     capacity: float
     """Friction capacity int mu p dA, N."""
     stick_fraction: float
@@ -93,7 +93,7 @@ class TangentialResult(SolverResult):
     from the mean displacement)."""
     rotation: float
     """Rigid rotation of body 1 relative to body 2 about z, rad (NaN in gross slip)."""
-    center_of_rotation: np.ndarray
+    centre_of_rotation: np.ndarray
     """Point (2,) where the rigid motion vanishes, m (NaN when it does not rotate)."""
     gross_slip: bool
     """True when friction cannot carry the applied load."""
@@ -104,8 +104,8 @@ class TangentialResult(SolverResult):
     force: np.ndarray
     """Tangential force (2,) carried, N."""
     moment: float
-    """Twisting moment carried about ``center``, N m."""
-    center: np.ndarray
+    """Twisting moment carried about ``centre``, N m."""
+    centre: np.ndarray
     """Reference point (2,) of the moment, m."""
     labels: np.ndarray
     """Connected contact patches, int (nx, ny), 0 outside the contact."""
@@ -113,7 +113,7 @@ class TangentialResult(SolverResult):
     """One :class:`RegionLoad` per patch."""
     reaction_moment: float
     """Moment supplied by the constraint that prevents rotation (``rotation="fixed"``): the
-    traction's moment about ``center`` minus the applied moment, N m; 0 when rotation is free."""
+    traction's moment about ``centre`` minus the applied moment, N m; 0 when rotation is free."""
     iterations: int
     converged: bool
     residual: float
@@ -129,6 +129,9 @@ class TangentialResult(SolverResult):
     reason: str = ""
     """Why the solve did not converge, in words, when the method can tell (``"lp"``: no trial
     motion balances the load with predetermined directions); empty otherwise."""
+
+    center = renamed_attribute("center", "centre")
+    center_of_rotation = renamed_attribute("center_of_rotation", "centre_of_rotation")
 
     @property
     def warnings(self) -> tuple[str, ...]:
@@ -213,14 +216,14 @@ def friction_capacity(pressure, x, y, mu, *, force=(0.0, 0.0), moment=0.0, centr
     -------
     load_factor : float
         t such that t (Fx, Fy, M) is the largest load of that direction that friction carries.
-    center_of_rotation : ndarray
+    centre_of_rotation : ndarray
         Instantaneous centre (2,) of the full-slip motion (NaN for pure translation), m.
     """
     prob = friction_problem(pressure, x, y, mu, force, moment, centre, rotation)
     if not np.any(prob.target[list(prob.rows)]):
         return float("inf"), np.full(2, np.nan)
     t, yv = gross_slip_capacity(prob.g, prob.cons, prob.target, prob.rows)
-    return t, rotation_center(yv, prob)
+    return t, rotation_centre(yv, prob)
 
 
 # --- problem set-up --------------------------------------------------------------------------
@@ -233,12 +236,12 @@ class FrictionProblem:
     g: np.ndarray
     """Friction bound mu p per cell, Pa (zero outside the contact)."""
     cons: Constraints
-    """Equilibrium operator, coordinates relative to ``center``."""
+    """Equilibrium operator, coordinates relative to ``centre``."""
     target: np.ndarray
     """Equilibrium right-hand side (Fx, Fy, M / L) / A, Pa."""
     area: float
     """Cell area A, m^2."""
-    center: np.ndarray
+    centre: np.ndarray
     """Reference point (2,) of the moment, m."""
     load: np.ndarray
     """Applied (Fx, Fy, M), N and N m."""
@@ -246,7 +249,7 @@ class FrictionProblem:
     """Equilibrium rows imposed (:data:`FREE` or :data:`FIXED`)."""
 
 
-def friction_problem(pressure, x, y, mu, force, moment, center,
+def friction_problem(pressure, x, y, mu, force, moment, centre,
                      rotation="free") -> FrictionProblem:
     """Validate the inputs of a frictional-contact solve and set up its equilibrium.
 
@@ -261,8 +264,8 @@ def friction_problem(pressure, x, y, mu, force, moment, center,
     force : (float, float)
         Applied tangential force, N.
     moment : float
-        Applied twisting moment about ``center``, N m.
-    center : (float, float) or None
+        Applied twisting moment about ``centre``, N m.
+    centre : (float, float) or None
         Reference point of the moment, m; None: the centre of the normal load
         (:func:`load_centroid`).
     rotation : {"free", "fixed"}
@@ -298,9 +301,9 @@ def friction_problem(pressure, x, y, mu, force, moment, center,
         raise InputError("moment", "a finite number in N m", moment)
     if rotation not in ("free", "fixed"):
         raise InputError("rotation", "'free' or 'fixed'", rotation)
-    c = load_centroid(p, x, y) if center is None else np.asarray(center, dtype=float)
+    c = load_centroid(p, x, y) if centre is None else np.asarray(centre, dtype=float)
     if c.shape != (2,) or not np.all(np.isfinite(c)):
-        raise InputError("center", "two finite coordinates (m)", center)
+        raise InputError("centre", "two finite coordinates (m)", centre)
     X, Y = np.meshgrid(x - c[0], y - c[1], indexing="ij")
     g = mu_arr * p
     contact = g > 0
@@ -326,12 +329,12 @@ def load_centroid(pressure, x, y) -> np.ndarray:
     return np.array([np.dot(p.sum(axis=1), x), np.dot(p.sum(axis=0), y)]) / total
 
 
-def rotation_center(yv, prob: FrictionProblem):
+def rotation_centre(yv, prob: FrictionProblem):
     """Zero of W = (y0 - w Y, y1 + w X), w = y2 / L, in absolute coordinates."""
     w = yv[2] / prob.cons.L
     if abs(w) * prob.cons.L <= 1e-12 * np.hypot(yv[0], yv[1]) or w == 0.0:
         return np.full(2, np.nan)
-    return prob.center + np.array([-yv[1] / w, yv[0] / w])
+    return prob.centre + np.array([-yv[1] / w, yv[0] / w])
 
 
 def contact_regions(q, stick, prob: FrictionProblem):
@@ -373,12 +376,12 @@ def make_result(q, stick, slip, yv, prob, *, gross, t, iterations, converged, re
         np.zeros(3)
     return TangentialResult(
         traction=q, stick=stick, slip=slip, shift=shift, rotation=rot,
-        center_of_rotation=rotation_center(yv, prob), gross_slip=bool(gross),
+        centre_of_rotation=rotation_centre(yv, prob), gross_slip=bool(gross),
         load_capacity=float(t), excess=excess,
-        force=carried[:2], moment=moment, center=prob.center, reaction_moment=float(reaction),
+        force=carried[:2], moment=moment, centre=prob.centre, reaction_moment=float(reaction),
         labels=labels, regions=regions, iterations=int(iterations), converged=bool(converged),
         residual=float(residual), convolutions=int(conv), method=method,
-        x=prob.cons.X[:, 0] + prob.center[0], y=prob.cons.Y[0, :] + prob.center[1])
+        x=prob.cons.X[:, 0] + prob.centre[0], y=prob.cons.Y[0, :] + prob.centre[1])
 
 
 def gross_slip_result(prob: FrictionProblem, t, yv, method) -> TangentialResult:

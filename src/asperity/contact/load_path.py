@@ -15,7 +15,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..materials import Material
-from ..solution import renamed_keywords
+from ..solution import renamed_attribute, renamed_keywords
 from .tangential import TangentialResult, solve_tangential
 
 __all__ = ["LoadPathResult", "proportional_path", "tangential_load_path"]
@@ -31,7 +31,7 @@ class LoadPathResult:
     """Rigid shift of body 1 relative to body 2, (k, 2), m."""
     rotation: np.ndarray
     """Rigid rotation, (k,), rad."""
-    center_of_rotation: np.ndarray
+    centre_of_rotation: np.ndarray
     """(k, 2), m (NaN where the motion has no rotation)."""
     region_force: np.ndarray
     """Force carried by each connected patch, (k, n_regions, 2), N."""
@@ -56,6 +56,8 @@ class LoadPathResult:
     """Every step converged."""
     final: TangentialResult
     """The full result of the last step."""
+
+    center_of_rotation = renamed_attribute("center_of_rotation", "centre_of_rotation")
 
 
 def proportional_path(force=(0.0, 0.0), moment=0.0, steps=10, *, cycle=False, unload=False):
@@ -134,7 +136,7 @@ def tangential_load_path(pressure, x, y, mu, body1: Material, body2: Material, l
         dissipated = float(work[-1] - work[int(np.argmax(same))])
     return LoadPathResult(
         loads=done, shift=shift, rotation=rotation,
-        center_of_rotation=np.array([r.center_of_rotation for r in results]),
+        centre_of_rotation=np.array([r.centre_of_rotation for r in results]),
         region_force=np.array([[reg.force for reg in r.regions] for r in results]),
         region_moment=np.array([[reg.moment for reg in r.regions] for r in results]),
         reaction_moment=np.array([r.reaction_moment for r in results]),

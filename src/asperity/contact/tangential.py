@@ -271,7 +271,7 @@ def solve_tangential(pressure, x, y, mu, body1: Material, body2: Material, *,
     centre : (float, float), optional
         Reference point of the moment, m; by default the centre of the normal load (the
         pressure centroid, :func:`load_centroid`), so that a force alone causes no twist
-        whatever the coordinates. The point used is :attr:`TangentialResult.center`. The old
+        whatever the coordinates. The point used is :attr:`TangentialResult.centre`. The old
         spelling ``center`` is accepted with a DeprecationWarning.
     method : {"fft", "lp"}
         ``"fft"``: accelerated projected gradient on the FFT operator (module docstring).

@@ -31,7 +31,7 @@ from ..elastic.differential import (
 )
 from ..elastic.kernels import love_integral
 from ..errors import InputError, check_int, check_positive
-from ..solution import SolverResult
+from ..solution import SolverResult, renamed_keywords
 from .kernels import damp_oscillations, line_sweep, point_sweep
 from .lubricant import friction_coefficient
 from .nodal import at_centre as _at_centre
@@ -449,6 +449,7 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
     return False, residual, sweeps, history
 
 
+@renamed_keywords(max_sweeps="max_iter")
 def solve_steady(
     problem,
     *,
@@ -459,7 +460,7 @@ def solve_steady(
     levels: int | None = None,
     near: int = 4,
     tol: float = 1e-5,
-    max_sweeps: int = 5000,
+    max_iter: int = 5000,
     refresh: int = 10,
     load_gain: float | None = None,
     initial_film: float | None = None,
@@ -497,8 +498,9 @@ def solve_steady(
         Convergence when max |dP| per sweep, max |dH| / H_ref (H_ref the larger of the central
         and the mean edge film) and the relative load error are
         all below ``tol`` at a far-field refresh.
-    max_sweeps : int
-        Sweep limit per grid; a solve that reaches it returns ``converged=False``.
+    max_iter : int
+        Sweep limit per grid; a solve that reaches it returns ``converged=False`` (the old
+        spelling ``max_sweeps`` is accepted with a DeprecationWarning).
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films.
     load_gain : float, optional
@@ -531,7 +533,7 @@ def solve_steady(
     nx = default_nx if nx is None else nx
     ny = default_ny if ny is None else ny
     levels = check_int("levels", levels, 1)
-    max_sweeps = check_int("max_sweeps", max_sweeps, 1)
+    max_iter = check_int("max_iter", max_iter, 1)
     refresh = check_int("refresh", refresh, 1)
     near = check_int("near", near, 0)
     if line:
@@ -560,7 +562,7 @@ def solve_steady(
             new.interpolate_from(state)
         state = new
         converged, residual, sweeps, history = _relax(
-            state, method, tol=tol, max_sweeps=max_sweeps, refresh=refresh, gain=load_gain,
+            state, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=load_gain,
             callback=callback, sweep_offset=total,
         )
         total += sweeps

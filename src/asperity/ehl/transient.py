@@ -44,7 +44,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_int, check_positive
-from ..solution import SolverResult
+from ..solution import SolverResult, renamed_keywords
 from ..surfaces.topography import Profile, Topography
 from .checkpoint import Checkpointer, fingerprint
 from .kernels import CAVITATED, CONTACT
@@ -282,6 +282,7 @@ def _levels(nx, ny, line):
     return levels
 
 
+@renamed_keywords(max_sweeps="max_iter")
 def solve_transient(
     problem,
     roughness1=None,
@@ -297,7 +298,7 @@ def solve_transient(
     method: str | None = None,
     near: int = 2,
     tol: float = 1e-4,
-    max_sweeps: int = 400,
+    max_iter: int = 400,
     refresh: int = 3,
     acceleration: int | None = None,
     load_gain: float | None = None,
@@ -345,8 +346,9 @@ def solve_transient(
     tol : float
         Per-step convergence: max |dP|, max |dH| relative to the estimated central film, and
         the relative load error below ``tol`` on the first sweep after a far-field refresh.
-    max_sweeps : int
-        Sweep limit per step; a step reaching it is recorded as not converged.
+    max_iter : int
+        Sweep limit per step; a step reaching it is recorded as not converged (the old
+        spelling ``max_sweeps`` is accepted with a DeprecationWarning).
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films.
     acceleration : int, optional
@@ -389,7 +391,7 @@ def solve_transient(
     TransientResult
     """
     opts = StepOptions.for_problem(problem, method=method, theta=theta, near=near, tol=tol,
-                                   max_sweeps=max_sweeps, refresh=refresh,
+                                   max_sweeps=max_iter, refresh=refresh,
                                    acceleration=acceleration, load_gain=load_gain,
                                    damping=damping)
     line = isinstance(problem, LineContact)
@@ -463,7 +465,7 @@ def solve_transient(
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,
                                   levels=_levels(nx, ny, line), near=opts.near,
-                                  tol=min(opts.tol, 1e-5), max_sweeps=20000)
+                                  tol=min(opts.tol, 1e-5), max_iter=20000)
         if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
             raise InputError("steady", f"a steady solution on the same {nx} x {ny} grid")
         state.P = steady.pressure / problem.p_hertz

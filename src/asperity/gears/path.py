@@ -164,7 +164,7 @@ def _solve(problem, mesh: EHLMesh):
     for damping, x_min in tries:
         res = solve_steady(problem, nx=mesh.nx, ny=1 if line else mesh.ny,
                            domain=((x_min * a, mesh.x_max * a), y_range), levels=mesh.levels,
-                           tol=mesh.tol, max_sweeps=mesh.max_sweeps, damping=damping)
+                           tol=mesh.tol, max_iter=mesh.max_sweeps, damping=damping)
         if res.converged:
             break
     return res

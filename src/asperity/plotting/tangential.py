@@ -9,7 +9,7 @@ import numpy as np
 
 from .style import new_figure
 
-__all__ = ["traction_map", "slip_progression", "compliance_curves", "center_of_rotation_curve",
+__all__ = ["traction_map", "slip_progression", "compliance_curves", "centre_of_rotation_curve",
            "load_sharing"]
 
 MM, MPA = 1e3, 1e-6
@@ -59,8 +59,8 @@ def traction_map(result, x, y, title="Tangential traction", arrows=16):
         ax.plot([], [], "k--", lw=1.2, label="stick/slip border")
     ax.plot([], [], marker=r"$\rightarrow$", ls="none", color="0.3", ms=10,
             label="traction direction")
-    if np.all(np.isfinite(result.center_of_rotation)):
-        ax.plot(*(result.center_of_rotation * MM), "r+", ms=10, mew=2,
+    if np.all(np.isfinite(result.centre_of_rotation)):
+        ax.plot(*(result.centre_of_rotation * MM), "r+", ms=10, mew=2,
                 label="centre of rotation")
     fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=4,
                fontsize=8, frameon=False)
@@ -124,10 +124,10 @@ def compliance_curves(path, title="Compliance"):
     return fig
 
 
-def center_of_rotation_curve(path, reference=(0.0, 0.0), title="Centre of rotation"):
+def centre_of_rotation_curve(path, reference=(0.0, 0.0), title="Centre of rotation"):
     """Distance of the centre of rotation from a reference point vs moment (Fig. 3.31)."""
     fig, ax = new_figure()
-    d = path.center_of_rotation - np.asarray(reference)[None, :]
+    d = path.centre_of_rotation - np.asarray(reference)[None, :]
     ax.plot(path.loads[:, 2], d[:, 0] * MM, "o-", label="x")
     ax.plot(path.loads[:, 2], d[:, 1] * MM, "s--", label="y")
     ax.set(xlabel="twisting moment (N m)", ylabel="offset from reference (mm)", title=title)

@@ -33,7 +33,7 @@ def run(case, progress=None) -> Outcome:
         warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
         res = solve_steady(problem, **case.solve_options(problem), method=case.solver.method,
                            tol=case.solver.tolerance,
-                           max_sweeps=case.solver.sweep_limit(line),
+                           max_iter=case.solver.sweep_limit(line),
                            boundary_friction=case.solver.boundary_friction, callback=callback)
     lub = problem.lubricant
     hz = problem.hertz

@@ -145,7 +145,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             problem, rough1, rough2, nx=nx, ny=ny, domain=domain, dt=dt,
             counting_steps=case.time.counting_steps, warmup_steps=warmup,
             theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
-            max_sweeps=case.solver.max_sweeps, refresh=case.solver.refresh,
+            max_iter=case.solver.max_sweeps, refresh=case.solver.refresh,
             acceleration=case.solver.acceleration, damping=case.solver.damping,
             contact_film=case.solver.contact_film,
             snapshot_steps=snaps, checkpoint=checkpoint,

@@ -115,9 +115,9 @@ def _summary(case, fld, res, applied, identical):
         if identical:
             s["shift_per_body_m"] = 0.5 * s["shift_m"]
             s["rotation_per_body_rad"] = 0.5 * s["rotation_rad"]
-    if np.all(np.isfinite(res.center_of_rotation)):
-        s.update(center_of_rotation_x_m=float(res.center_of_rotation[0]),
-                 center_of_rotation_y_m=float(res.center_of_rotation[1]))
+    if np.all(np.isfinite(res.centre_of_rotation)):
+        s.update(center_of_rotation_x_m=float(res.centre_of_rotation[0]),
+                 center_of_rotation_y_m=float(res.centre_of_rotation[1]))
     if math.isfinite(res.load_capacity):
         if any(applied[:2]):
             s["gross_slip_force_n"] = float(res.load_capacity * math.hypot(*applied[:2]))
@@ -139,7 +139,7 @@ def _summary(case, fld, res, applied, identical):
              residual=float(res.residual), convolutions=int(res.convolutions),
              converged=bool(res.converged))
     # the reference point of the moment (loading.center, or the centre of the normal load)
-    s.update(moment_center_x_m=float(res.center[0]), moment_center_y_m=float(res.center[1]))
+    s.update(moment_center_x_m=float(res.centre[0]), moment_center_y_m=float(res.centre[1]))
     return s
 
 
@@ -179,9 +179,9 @@ def _dataset(case, fld, res, path):
             "path_shift_x": variable(st, path.shift[:, 0], "m", "relative rigid shift x"),
             "path_shift_y": variable(st, path.shift[:, 1], "m", "relative rigid shift y"),
             "path_rotation": variable(st, path.rotation, "rad", "relative rigid rotation"),
-            "path_center_x": variable(st, path.center_of_rotation[:, 0], "m",
+            "path_center_x": variable(st, path.centre_of_rotation[:, 0], "m",
                                       "centre of rotation x"),
-            "path_center_y": variable(st, path.center_of_rotation[:, 1], "m",
+            "path_center_y": variable(st, path.centre_of_rotation[:, 1], "m",
                                       "centre of rotation y"),
             "path_stick_fraction": variable(st, path.stick_fraction, "1", "stuck area share"),
             "path_work": variable(st, path.work, "J", "cumulative work of the applied loads"),
@@ -224,9 +224,9 @@ def _figures(case, fld, res, path):
                                 "Stick-zone borders at the successive load steps.")
     figs["load_sharing"] = (lambda: tplot.load_sharing(path),
                             "Force and moment carried by each contact region along the path.")
-    if case.loading.rotation == "free" and np.any(np.isfinite(path.center_of_rotation)):
+    if case.loading.rotation == "free" and np.any(np.isfinite(path.centre_of_rotation)):
         figs["center_of_rotation"] = (
-            lambda: tplot.center_of_rotation_curve(path, res.center),
+            lambda: tplot.centre_of_rotation_curve(path, res.centre),
             "Centre of rotation relative to the moment's reference point vs the moment.")
     return figs
 
@@ -292,7 +292,7 @@ def run(case, progress=None) -> Outcome:
                      "(loading.direction); the moment is about "
                      + ("loading.center" if case.loading.center is not None
                         else "the centre of the normal load")
-                     + f" ({res.center[0]:.4g}, {res.center[1]:.4g}) m.")
+                     + f" ({res.centre[0]:.4g}, {res.centre[1]:.4g}) m.")
     if not free:
         notes.append("Rotation is fixed (loading.rotation): body 1 translates only, the moment "
                      "equation is dropped and the fixture supplies the reaction moment "
