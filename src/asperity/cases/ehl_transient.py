@@ -11,7 +11,7 @@ per surface, the time stepping and the per-step solver options of
     nx = 129
     ny = 65
     [surface1]
-    kind = "builtin"    # smooth | builtin | ground | gaussian | file
+    kind = "builtin"    # smooth | builtin | ground | gaussian | self-affine | file | feature
     profile = "C"
     [surface2]
     kind = "builtin"
