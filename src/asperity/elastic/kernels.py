@@ -156,6 +156,17 @@ class TangentialInfluence:
         return -self.zy
 
 
+def _pair(one: TangentialInfluence, two: TangentialInfluence) -> TangentialInfluence:
+    """Two bodies' coefficients combined: in-plane terms add, normal coupling terms subtract."""
+    return TangentialInfluence(
+        xx=one.xx + two.xx,
+        xy=one.xy + two.xy,
+        yy=one.yy + two.yy,
+        zx=one.zx - two.zx,
+        zy=one.zy - two.zy,
+    )
+
+
 def _one_body(g, body: Material) -> TangentialInfluence:
     """Cerruti influence for one body (Johnson eq. 3.86 at z = 0), z positive into the body.
 
@@ -190,13 +201,7 @@ def tangential_influence(x, y, dx, dy, body1: Material, body2: Material | None =
     if body2 is None:
         return one
     two = _one_body(g, body2)
-    return TangentialInfluence(
-        xx=one.xx + two.xx,
-        xy=one.xy + two.xy,
-        yy=one.yy + two.yy,
-        zx=one.zx - two.zx,
-        zy=one.zy - two.zy,
-    )
+    return _pair(one, two)
 
 
 def _one_body_transfer(kx, ky, k, body: Material) -> TangentialInfluence:
@@ -246,10 +251,4 @@ def tangential_transfer(kx, ky, body1: Material, body2: Material | None = None):
     if body2 is None:
         return one
     two = _one_body_transfer(kx, ky, k, body2)
-    return TangentialInfluence(
-        xx=one.xx + two.xx,
-        xy=one.xy + two.xy,
-        yy=one.yy + two.yy,
-        zx=one.zx - two.zx,
-        zy=one.zy - two.zy,
-    )
+    return _pair(one, two)
