@@ -11,14 +11,17 @@ import hashlib
 
 import numpy as np
 import pytest
+import typer
+from typer.testing import CliRunner
 
 from asperity.cases import load_case
 from asperity.cases.ehl_transient import MovingSurfaceSpec
 from asperity.cases.roughness import RoughnessSpec, surface_heights, surface_recipe
 from asperity.cases.surface import SurfaceSpec
+from asperity.cli.surface import surface_app
 from asperity.examples import example_text, list_examples
 from asperity.runners import run_case
-from asperity.surfaces import Profile, write_surface
+from asperity.surfaces import Profile, read_surface, write_surface
 from asperity.surfaces.recipe import SurfaceRecipe, Waviness, build_surface
 
 #: example:table -> hash of its heights (None: no surface), recorded before the factory
@@ -264,3 +267,23 @@ def test_one_schema_of_surface_keys_across_tables():
     assert rough.build(length, h, np.array([-1e-6, 1e-6]), h).z.shape == (1000,)
     with pytest.raises(ValueError, match="for a measured file"):
         MovingSurfaceSpec(kind="gaussian", rms=1e-7, correlation_length=1e-5, unit="um")
+
+
+def test_surface_generate_reads_its_options_as_the_case_keys(tmp_path):
+    app = typer.Typer()
+    app.add_typer(surface_app, name="surface")
+    runner = CliRunner()
+    out = tmp_path / "g.npy"
+    res = runner.invoke(app, ["surface", "generate", "gaussian", "--rms", "0.5 um",
+                              "--correlation-length", "12 um", "--length", "0.4 mm",
+                              "--spacing", "1 um", "--seed", "5", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    spec = SurfaceSpec(kind="gaussian", rms="0.5 um", correlation_length="12 um",
+                       length="0.4 mm", spacing="1 um", seed=5)
+    case = build_surface(surface_recipe(spec), spec.profile_length(), spec.profile_spacing())
+    np.testing.assert_array_equal(read_surface(out, 1e-6).z, case.z)
+    # the bounds of the case keys, named by the option
+    res = runner.invoke(app, ["surface", "generate", "ground", "--ra", "2 cm", "--out",
+                              str(out)])
+    assert res.exit_code == 2
+    assert res.stderr.startswith("error: --ra: expected a value less than or equal to 0.01")

@@ -255,6 +255,32 @@ def _check_size(length: float, spacing: float, width: float | None) -> None:
                          "--spacing or make the surface smaller")
 
 
+#: Option of ``surface generate`` for each surface key it shares with the case files.
+_OPTIONS = {"rms": "--rms", "rms_slope": "--rms-slope", "ra": "--ra",
+            "correlation_length": "--correlation-length",
+            "correlation_length_y": "--correlation-length-y", "hurst": "--hurst",
+            "rolloff_wavelength": "--rolloff", "short_cutoff": "--cutoff", "run_in": "--run-in",
+            "seed": "--seed"}
+
+
+def _surface_keys(kind: str, options: dict):
+    """The options as the case files' surface keys
+    (:class:`~asperity.cases.roughness.SurfaceKeys`: units, bounds), an error naming the
+    option."""
+    from pydantic import ValidationError
+
+    from ..cases.fields import first_error
+    from ..cases.roughness import SurfaceKeys
+
+    given = {key: _numeric(value) if isinstance(value, str) else value
+             for key, value in options.items() if value is not None}
+    try:
+        return SurfaceKeys(kind=kind, **given)
+    except ValidationError as exc:
+        err = first_error(exc)
+        raise InputError(_OPTIONS.get(err.field, err.field), err.expected, err.got) from None
+
+
 @surface_app.command()
 @_one_line_errors
 def generate(
@@ -295,7 +321,8 @@ def generate(
 ):
     """Generate a synthetic surface and write it to --out."""
     from .. import surfaces as s
-    from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface
+    from ..cases.roughness import surface_recipe
+    from ..surfaces.recipe import Waviness, build_surface
 
     if kind not in KINDS:
         raise InputError("KIND", f"one of {', '.join(KINDS)}", kind)
@@ -303,20 +330,16 @@ def generate(
     h = _length(spacing, "--spacing")
     W = _length(width, "--width")
     _check_size(L, h, W)
-    ell = _length(correlation_length, "--correlation-length")
-    recipe = SurfaceRecipe(kind, seed=seed, hurst=hurst, run_in=run_in, profile=name,
-                           rms=_length(rms, "--rms"), correlation_length=ell)
+    keys = _surface_keys(kind, {
+        "rms": rms, "rms_slope": rms_slope, "ra": ra, "correlation_length": correlation_length,
+        "correlation_length_y": correlation_length_y, "hurst": hurst,
+        "rolloff_wavelength": rolloff, "short_cutoff": cutoff, "run_in": run_in, "seed": seed})
+    recipe = surface_recipe(keys, profile=name)
     if kind == "gaussian":
-        _require(recipe.rms, "--rms", kind)
-        _require(ell, "--correlation-length", kind)
-        recipe = replace(recipe, correlation_length_y=_length(correlation_length_y,
-                                                              "--correlation-length-y"))
-    elif kind == "self-affine":
-        recipe = replace(recipe, rms_slope=_quantity(rms_slope, "dimensionless", "--rms-slope"),
-                         rolloff_wavelength=_length(rolloff, "--rolloff"),
-                         short_cutoff=_length(cutoff, "--cutoff"))
+        _require(keys.rms, "--rms", kind)
+        _require(keys.correlation_length, "--correlation-length", kind)
     elif kind == "ground":
-        recipe = replace(recipe, ra=_require(_length(ra, "--ra"), "--ra", kind))
+        _require(keys.ra, "--ra", kind)
     elif kind == "turned":
         fn = _quantity(natural_frequency, "frequency", "--natural-frequency")
         recipe = replace(recipe, feed=_require(_length(feed, "--feed"), "--feed", kind),
