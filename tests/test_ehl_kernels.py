@@ -12,7 +12,6 @@ from asperity.ehl.kernels import (
     _block_band_solve,
     damp_oscillations,
 )
-from asperity.ehl.nodal import film_estimate
 from asperity.ehl.solver import EHLState
 from asperity.materials import Material
 
@@ -38,7 +37,7 @@ def rough_state():
     """A Hertzian start on rough surfaces, with nodes forced to contact and cavitation."""
     x, y = GEAR.grid(161, 21, None)
     s = EHLState(GEAR, x, y, near=2)
-    s.hertz_start(film_estimate(GEAR) / GEAR.film_scale)
+    s.hertz_start(GEAR.film_estimate() / GEAR.film_scale)
     rng = np.random.default_rng(3)
     s.roughness = 0.3 * s.H.max() * rng.standard_normal(s.P.shape)
     s.refresh()
