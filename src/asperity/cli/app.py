@@ -89,10 +89,6 @@ class Interrupted(Exception):
         self.signum = signum
 
 
-def _raise_interrupted(signum, _frame):
-    raise Interrupted(signum)
-
-
 def _check_case_file(path: Path) -> None:
     """Fail unless ``path`` is a readable UTF-8 text file (binary, UTF-16, a folder: no)."""
     if path.is_dir():
@@ -156,17 +152,33 @@ def run(
     _check_out_dir(out)
     console.print(f"[bold]{model.title}[/bold] ({model.analysis})")
     where = {"description": "the start"}
-    handlers = {sig: signal.signal(sig, _raise_interrupted)
-                for sig in (signal.SIGINT, signal.SIGTERM)}
+    pending = []  # a signal whose exception landed where Python ignores it (a weakref callback)
+
+    def interrupt(signum, _frame):
+        pending.append(signum)
+        raise Interrupted(signum)
+
+    previous_hook = sys.unraisablehook
+
+    def unraisable(info):
+        if not isinstance(info.exc_value, Interrupted):  # that one is taken up from pending
+            previous_hook(info)
+
+    handlers = {sig: signal.signal(sig, interrupt) for sig in (signal.SIGINT, signal.SIGTERM)}
+    sys.unraisablehook = unraisable
     try:
         with progress_bar(console, disable=quiet) as progress, warnings.catch_warnings():
             warnings.showwarning = _warning_line  # numpy's, also when not started by main()
 
             def tracked(done, total=None, description=None):
+                if pending:
+                    raise Interrupted(pending[0])
                 where["description"] = description or f"step {done}"
                 progress(done, total, description)
 
             outcome = run_case(model, progress=tracked, workdir=out, resume=resume)
+        if pending:
+            raise Interrupted(pending[0])
         where["description"] = "writing the results"
         files = write_outcome(outcome, out)
         imperial = _in_imperial(case, is_file)
@@ -179,6 +191,7 @@ def run(
     finally:
         for sig, handler in handlers.items():
             signal.signal(sig, handler)
+        sys.unraisablehook = previous_hook
     _print_summary(outcome.summary, imperial)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
