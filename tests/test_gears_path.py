@@ -11,7 +11,16 @@ from asperity.cases import load_case
 from asperity.cli import app
 from asperity.ehl import LineContact, Lubricant, solve_steady
 from asperity.examples import example_text
-from asperity.gears import EHLMesh, GearPair, load_sharing, solve_path, transient_case
+from asperity.gears import (
+    LINE_MAX_SWEEPS,
+    NODES_PER_CORRELATION,
+    EHLMesh,
+    GearPair,
+    load_sharing,
+    roughness_nodes,
+    solve_path,
+    transient_case,
+)
 from asperity.materials import Material
 
 DEG = math.pi / 180.0
@@ -203,3 +212,38 @@ def test_roughness_from_a_measured_profile(tmp_path, parameter, factor):
     assert s1 == pytest.approx(factor * amplitude, rel=2e-3)
     if parameter == "ra":
         assert s2 == pytest.approx(0.3e-6, rel=1e-9)   # a ground profile meets its Ra exactly
+
+
+def test_handoff_sets_the_sweep_limit_of_a_line_contact():
+    """The emitted line contact allows 2000 sweeps per step (the seed's line-contact example):
+    with the solver's default 400, 225 of 1363 steps of the FZG example's minimum-lambda point
+    stopped unconverged and the most any step needed was 788 (docs/gears.md, hand-off). Its
+    mesh spacing is at most the surfaces' autocorrelation length / 3.5. The time step is left
+    to the seed's rule dx / (2 u_max), Courant number 1/2 for the faster flank;
+    ``[handoff.solver]`` keys are written as given."""
+    from asperity.runners.gear import correlation_length, handoff, solve
+
+    case = load_case(GEAR_CASE)
+    result, _ = solve(case)
+    _, text = handoff(case, result, "min-lambda")
+    emitted = load_case(text)
+    assert emitted.contact.line
+    assert emitted.solver.max_sweeps == LINE_MAX_SWEEPS >= 2 * 788
+    assert emitted.time.dt is None
+    dx = 4.0 * emitted.problem().a / (emitted.grid.nx - 1)
+    assert 14e-6 < correlation_length(case) < 16e-6        # ground, 15 um nominal
+    assert dx <= correlation_length(case) / NODES_PER_CORRELATION
+    assert abs(emitted.speeds.u1 - emitted.speeds.u2) > 0.5 * emitted.speeds.u1  # sliding
+    tuned = load_case(GEAR_CASE + "[handoff.solver]\nmax_sweeps = 3000\ntheta = 1.0\n")
+    data, _ = handoff(tuned, result, "pitch")
+    assert data["solver"] == {"max_sweeps": 3000, "theta": 1.0}
+
+
+def test_roughness_nodes_refine_to_the_correlation_length():
+    """The FZG example's pitch point (a = 245 um on -2.5a..1.5a, ground flanks with an
+    autocorrelation length of 14.5 um) gets 257 nodes instead of 129 (dx 3.8 um: every
+    roughness step converged, against half of them stalled at 7.7 um); a mesh already fine
+    enough is kept."""
+    assert roughness_nodes(129, 4 * 245e-6, 14.5e-6) == 257
+    assert roughness_nodes(129, 4 * 96.6e-6, 14.5e-6) == 129
+    assert roughness_nodes(300, 4 * 245e-6, 14.5e-6) == 300

@@ -34,6 +34,8 @@
     points = 25
     [handoff]                            # the point `asperity gear --emit-transient` writes
     at = "min-lambda"                    # "pitch", "min-lambda", "max-flash" or a roll angle
+    [handoff.solver]                     # optional [solver] keys of the transient case (a line
+                                         # contact gets max_sweeps = 2000 unless given)
 """
 
 from __future__ import annotations
@@ -51,7 +53,7 @@ from ..materials import Material
 from ..units import to_si
 from .bodies import MaterialSpec
 from .ehl import LubricantSpec
-from .ehl_transient import MovingSurfaceSpec, TimeSpec
+from .ehl_transient import MovingSurfaceSpec, TimeSpec, TransientSolverSpec
 from .fields import CaseHeader, CaseModel, Quantity
 
 __all__ = ["GearCase", "GearSpec", "HandoffSpec", "OperationSpec"]
@@ -210,14 +212,16 @@ class GearEHLSpec(CaseModel):
 class HandoffSpec(CaseModel):
     """``[handoff]``: the point whose transient mixed-EHL case ``asperity gear
     --emit-transient`` writes: ``at`` = ``"pitch"``, ``"min-lambda"``, ``"max-flash"`` or a
-    pinion roll angle (``"24 deg"``), with the transient mesh and time stepping."""
+    pinion roll angle (``"24 deg"``), with the transient mesh, time stepping and solver keys."""
 
     at: str = "min-lambda"
     """Point of the transient hand-off: "pitch", "min-lambda", "max-flash" or a pinion roll angle
     ("24 deg")."""
     nx: Annotated[int, Field(ge=9, le=8193)] = 129
     """Nodes along x of the transient case (default 129, dx = a/32: at the FZG example's
-    start of contact the steady line-contact start does not converge on finer meshes)."""
+    start of contact the steady line-contact start does not converge on finer meshes); raised
+    to 32 m + 1 nodes where the spacing would exceed the surfaces' autocorrelation length / 3.5
+    (docs/gears.md)."""
     ny: Annotated[int, Field(ge=1, le=4097)] = 65
     """Nodes along y of the transient case."""
     x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
@@ -226,6 +230,9 @@ class HandoffSpec(CaseModel):
     """Outlet end of the transient domain in Hertz semi-axes a."""
     time: TimeSpec = TimeSpec()
     """Time stepping of the transient case."""
+    solver: TransientSolverSpec | None = None
+    """Per-step solver keys of the transient case (the keys given are written; a line contact
+    gets max_sweeps = 2000 unless given)."""
 
     @field_validator("at")
     @classmethod

@@ -3,7 +3,14 @@ contact, Blok's flash temperature, and the steady EHL film, lambda and friction 
 position (:func:`solve_path`)."""
 
 from .geometry import GearPair, inverse_involute, involute
-from .handoff import point_index, toml_text, transient_case
+from .handoff import (
+    LINE_MAX_SWEEPS,
+    NODES_PER_CORRELATION,
+    point_index,
+    roughness_nodes,
+    toml_text,
+    transient_case,
+)
 from .kinematics import Kinematics, kinematics
 from .loading import hertz_along_path, load_per_length, load_sharing, normal_force
 from .mixed import asperity_share, composite_roughness, mixed_friction
@@ -16,9 +23,10 @@ from .thermal import (
 )
 
 __all__ = [
-    "FLASH_CONSTANTS", "EHLMesh", "GearPair", "GearPathResult", "Kinematics", "Thermal",
+    "FLASH_CONSTANTS", "LINE_MAX_SWEEPS", "NODES_PER_CORRELATION", "EHLMesh", "GearPair",
+    "GearPathResult", "Kinematics", "Thermal",
     "asperity_share", "composite_roughness", "contact_problem", "flash_temperature",
     "hertz_along_path", "involute", "inverse_involute", "kinematics", "load_per_length",
     "load_sharing", "mixed_friction", "normal_force", "peclet_number", "point_index",
-    "solve_path", "thermal_contact_coefficient", "toml_text", "transient_case",
+    "roughness_nodes", "solve_path", "thermal_contact_coefficient", "toml_text", "transient_case",
 ]

@@ -4,6 +4,12 @@
 speeds, and the crowning radius of a crowned pair) into the tables of an ``analysis =
 "ehl-transient"`` case; :func:`toml_text` writes such a case as TOML (strings, numbers,
 booleans and nested tables: all a case needs).
+
+A line contact is written with ``[solver] max_sweeps = 2000`` (:data:`LINE_MAX_SWEEPS`), as
+the seed's line-contact example sets it: the point relaxation of a rough line contact at the
+sliding of a gear flank needs up to about 800 sweeps in a time step. The mesh is refined until
+the shorter autocorrelation length of the two surfaces spans :data:`NODES_PER_CORRELATION`
+spacings (:func:`roughness_nodes`): on coarser meshes the steps stall (docs/gears.md).
 """
 
 from __future__ import annotations
@@ -15,7 +21,44 @@ import numpy as np
 from ..errors import InputError
 from .path import GearPathResult
 
-__all__ = ["point_index", "toml_text", "transient_case"]
+__all__ = ["LINE_MAX_SWEEPS", "NODES_PER_CORRELATION", "point_index", "roughness_nodes",
+           "toml_text", "transient_case"]
+
+#: Sweep limit per time step written into the case of a line contact (the transient solver's
+#: default of 400 left 16.5 % of the steps of the FZG example's minimum-lambda point
+#: unconverged; the most any step needed was 788).
+LINE_MAX_SWEEPS = 2000
+
+#: Mesh spacings per autocorrelation length (ACF down to 0.2) of the surfaces at least: the
+#: FZG example's pitch point stalled at 1.9 (half of the steps unconverged at 2000 sweeps);
+#: at 3.8 every step after the first 8 (an unconverged steady start) converged, and both
+#: minimum-lambda points converged at 3.8 and 4.8.
+NODES_PER_CORRELATION = 3.5
+
+
+def roughness_nodes(nx: int, span: float, correlation_length: float) -> int:
+    """Node count along x that resolves the roughness.
+
+    Parameters
+    ----------
+    nx : int
+        Node count asked for.
+    span : float
+        Length of the domain along x (m).
+    correlation_length : float
+        The shorter autocorrelation length of the two surfaces (m).
+
+    Returns
+    -------
+    int
+        ``nx``, or where its spacing exceeds ``correlation_length /``
+        :data:`NODES_PER_CORRELATION` the smallest count ``32 m + 1`` whose spacing does not
+        (the form of the default 129 and of 257, which keeps grid sequencing).
+    """
+    cells = math.ceil(span * NODES_PER_CORRELATION / correlation_length)
+    if cells <= nx - 1:
+        return nx
+    return 32 * math.ceil(cells / 32) + 1
 
 
 def point_index(result: GearPathResult, at: str, roll_angle: float | None = None) -> int:
@@ -35,12 +78,33 @@ def point_index(result: GearPathResult, at: str, roll_angle: float | None = None
 
 def transient_case(result: GearPathResult, index: int, *, title: str, body1: dict, body2: dict,
                    lubricant: dict, surface1: dict, surface2: dict, grid: dict,
-                   time: dict) -> dict:
+                   time: dict, solver: dict | None = None,
+                   correlation_length: float | None = None) -> dict:
     """The ``ehl-transient`` case (a dict ready for :func:`asperity.cases.load_case`) of the
     path position ``index``, in SI numbers.
 
-    Surface 1 is the pinion flank (speed u1), surface 2 the wheel flank (u2); ``body1`` ...
-    ``time`` are the tables as they appear in a case file (dicts, units allowed).
+    Parameters
+    ----------
+    result : GearPathResult
+        The path of contact.
+    index : int
+        Path position handed over (:func:`point_index`).
+    title : str
+        Title of the case.
+    body1, body2, lubricant, surface1, surface2, grid, time : dict
+        The tables as they appear in a case file (units allowed). Surface 1 is the pinion
+        flank (speed u1), surface 2 the wheel flank (u2).
+    solver : dict, optional
+        The ``[solver]`` table; a line contact gets ``max_sweeps`` = :data:`LINE_MAX_SWEEPS`
+        unless it is given here.
+    correlation_length : float, optional
+        The shorter autocorrelation length of the two surfaces (m): ``grid["nx"]`` (a count
+        over ``x_min`` .. ``x_max`` in Hertz semi-widths) is raised by :func:`roughness_nodes`.
+
+    Returns
+    -------
+    dict
+        The case, with a ``[solver]`` table only when it has keys.
     """
     kin = result.kin
     if not result.load[index] > 0:
@@ -58,11 +122,17 @@ def transient_case(result: GearPathResult, index: int, *, title: str, body1: dic
                    f"({kin.distance[index] * 1e3:+.3f} mm from the pitch point): "
                    f"lambda = {result.specific_film[index]:.3g} from the steady film.")
     grid = dict(grid)
+    if correlation_length is not None:
+        span = (grid["x_max"] - grid["x_min"]) * float(result.hertz_a[index])
+        grid["nx"] = roughness_nodes(grid["nx"], span, correlation_length)
     if result.line:
         grid.pop("ny", None)
         grid.pop("y_min", None)
         grid.pop("y_max", None)
-    return {
+    solver = dict(solver or {})
+    if result.line:
+        solver.setdefault("max_sweeps", LINE_MAX_SWEEPS)
+    case = {
         "analysis": "ehl-transient", "title": title, "description": description,
         "source": "asperity gear hand-off",
         "body1": dict(body1), "body2": dict(body2), "contact": contact,
@@ -70,6 +140,9 @@ def transient_case(result: GearPathResult, index: int, *, title: str, body1: dic
         "lubricant": dict(lubricant), "surface1": dict(surface1), "surface2": dict(surface2),
         "grid": grid, "time": dict(time),
     }
+    if solver:
+        case["solver"] = solver
+    return case
 
 
 def _value(value) -> str:

@@ -18,9 +18,9 @@ from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.mixed import composite_roughness
 from ..gears.path import GearPathResult, solve_path
 from ..results import Comparison, Outcome, variable
-from ..surfaces import Profile, roughness_parameters
+from ..surfaces import Profile, autocorrelation_length, roughness_parameters
 
-__all__ = ["handoff", "outcome", "roughness_values", "run", "solve"]
+__all__ = ["correlation_length", "handoff", "outcome", "roughness_values", "run", "solve"]
 
 #: Length and spacing of the profiles built from [surface1]/[surface2] to measure Ra or Rq.
 PROFILE_LENGTH = 4e-3
@@ -36,6 +36,19 @@ def roughness_values(case) -> tuple[float, float]:
         params = roughness_parameters(surf if isinstance(surf, Profile) else surf)
         values.append(params[key])
     return values[0], values[1]
+
+
+def correlation_length(case) -> float:
+    """The shorter autocorrelation length (ACF down to 0.2) of the pinion and wheel surfaces
+    along x, m, measured on the profiles built as for :func:`roughness_values`; NaN for
+    surfaces without roughness along x."""
+    lengths = []
+    for spec in (case.surface1, case.surface2):
+        surf = spec.build(PROFILE_LENGTH, PROFILE_SPACING, np.zeros(1), PROFILE_SPACING)
+        if isinstance(surf, Profile):
+            lengths.append(autocorrelation_length(surf))
+    lengths = [v for v in lengths if math.isfinite(v)]
+    return min(lengths) if lengths else math.nan
 
 
 def solve(case, progress=None) -> tuple[GearPathResult, float]:
@@ -186,7 +199,8 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
 
 def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, str]:
     """The ``ehl-transient`` case (dict and TOML text) of the position named by ``at``
-    (default the case's ``[handoff] at``)."""
+    (default the case's ``[handoff] at``), its mesh refined to the surfaces' autocorrelation
+    length and a line contact's sweep limit raised (:mod:`asperity.gears.handoff`)."""
     from ..cases.gear import HandoffSpec
 
     spec = case.handoff if at is None else case.handoff.model_copy(
@@ -194,6 +208,7 @@ def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, 
     index = point_index(result, spec.at, spec.roll_angle())
     h = case.handoff
     grid = {"nx": h.nx, "ny": h.ny, "x_min": h.x_min, "x_max": h.x_max}
+    length = correlation_length(case)
     dump = {"exclude_none": True, "by_alias": True}
     data = transient_case(
         result, index, title=f"{case.title}: transient mixed EHL at {spec.at}",
@@ -201,7 +216,9 @@ def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, 
         lubricant=case.lubricant.model_dump(**dump),
         surface1=case.surface1.model_dump(exclude_defaults=True, **dump),
         surface2=case.surface2.model_dump(exclude_defaults=True, **dump),
-        grid=grid, time=h.time.model_dump(**dump))
+        grid=grid, time=h.time.model_dump(**dump),
+        solver=None if h.solver is None else h.solver.model_dump(exclude_unset=True, **dump),
+        correlation_length=length if math.isfinite(length) else None)
     header = (f"Written by `asperity gear` from the case \"{case.title}\" ({spec.at}).\n"
               "Surface 1 is the pinion flank, surface 2 the wheel flank; SI units.")
     return data, toml_text(data, header)
