@@ -65,11 +65,6 @@ _IMPERIAL_CHOICES = {
     "m/s": (("ft/s", "ft/s"),),
 }
 
-#: How unit strings written elsewhere in asperity (CF attributes, Comparison.unit) are read.
-_ALIASES = {"m2": "m^2", "m^2": "m^2", "N m": "N*m", "N*m": "N*m", "ms-1": "1/ms",
-            "1/ms": "1/ms", "m s-1": "m/s", "m/s": "m/s", "Pa s": "Pa*s", "Pa-1": "1/Pa",
-            "percent": "%", "%": "%"}
-
 #: Unit suffixes of summary keys, longest first.
 _SUFFIXES = (("_deg", "deg"), ("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "m/s"),
              ("_pa_s", "Pa*s"), ("_k", "K"), ("_c", "°C"),
@@ -152,6 +147,7 @@ def _strip(text: str) -> str:
 #: asperity unit spellings -> CF/UDUNITS strings (for netCDF attributes).
 _CF = {"": "1", "m^2": "m2", "N*m": "N m", "m/s": "m s-1", "Pa*s": "Pa s", "1/Pa": "Pa-1",
        "1/ms": "ms-1", "%": "percent", "kg/m^3": "kg m-3", "N/m": "N m-1", "N*s/m": "N s m-1"}
+_FROM_CF = {v: k for k, v in _CF.items()}
 
 
 def cf_units(unit: str) -> str:
@@ -162,13 +158,13 @@ def cf_units(unit: str) -> str:
 
 def units_from_cf(cf: str) -> str:
     """The inverse of :func:`cf_units`: ``"m2"`` -> ``"m^2"``, ``"1"`` -> ``""``."""
-    return {v: k for k, v in _CF.items()}.get(cf, cf)
+    return _FROM_CF.get(cf, cf)
 
 
 def unit_label(unit: str) -> str:
     """A unit as printed: ``"m^2"`` -> ``"m²"``, ``"N*m"`` -> ``"N m"``, ``"ms-1"`` ->
     ``"1/ms"``, ``"1"`` -> ``""``."""
-    unit = _ALIASES.get(unit, unit)
+    unit = units_from_cf(unit)
     if unit in ("", "1"):
         return ""
     return unit.replace("^2", "²").replace("^3", "³").replace("*", " ")
@@ -202,7 +198,7 @@ def display_unit(magnitude: float, unit: str) -> tuple[float, str]:
     (float, str)
         The factor from SI to the chosen unit and its label: ``(1e-9, "GPa")`` for 1.4e10 Pa.
     """
-    unit = _ALIASES.get(unit, unit)
+    unit = units_from_cf(unit)
     choices = _SI_CHOICES.get(unit)
     if choices is None or not math.isfinite(magnitude) or magnitude == 0:
         return 1.0, unit_label(unit)
@@ -237,7 +233,7 @@ def format_quantity(value, unit: str = "", *, imperial: bool = False, digits: in
     >>> format_quantity(9608.1, "N", imperial=True)
     '9.608 kN (2160 lbf)'
     """
-    unit = _ALIASES.get(unit, unit)
+    unit = units_from_cf(unit)
     if isinstance(value, bool) or not isinstance(value, int | float) or (
             isinstance(value, float) and not math.isfinite(value)):
         return format_number(value) if isinstance(value, int | float) else str(value)
