@@ -15,6 +15,7 @@ from asperity.ehl import (
     nijenbanning_film,
     nijenbanning_point,
 )
+from asperity.ehl.formulas import chittenden_point
 from asperity.errors import InputError
 
 # seed Table 1: point contact, and line contact (eta0 = 0.0048, w' = 527 kN/m); U = 25 m/s
@@ -78,6 +79,41 @@ def test_nijenbanning_gear_case():
     # piezoviscous branch dominates this case, so the two differ by only 2 %.
     assert film.central == pytest.approx(0.622e-6, abs=0.001e-6)
     assert film.central / hamrock_dowson_point(*POINT).central == pytest.approx(1.065, abs=0.002)
+
+
+
+@pytest.mark.parametrize("ratio", [1.0, 2.0, 4.0, RY / RX, 16.0, 30.0])
+def test_chittenden_against_hamrock_dowson_where_both_apply(ratio):
+    """Chittenden et al. (1985) and Hamrock-Dowson (1977) are independent fits to solutions
+    entrained along the minor axis (``ry >= rx``, HD's 1 <= k <= 8): on the gear case's
+    operating point their central films agree within 5 % and their minimum films (same
+    exponents, different ellipticity factors) within 2 %, from ry/rx = 1 to 30."""
+    args = (LOAD, RX, ratio * RX, SPEED, ETA0, ALPHA, E_RED)
+    ch, hd = chittenden_point(*args), hamrock_dowson_point(*args)
+    assert ch.central / hd.central == pytest.approx(1.0, abs=0.05)
+    assert ch.minimum / hd.minimum == pytest.approx(1.0, abs=0.02)
+    assert ch.minimum < ch.central
+
+
+def test_chittenden_scaling_and_major_axis_entrainment():
+    """Speed exponent 0.68 of both films; entrained along the major axis (ry < rx) the films
+    are thinner than in the circular contact (side leakage), and they tend to the
+    ellipticity-free fits 4.31 and 3.68 U^0.68 G^0.49 W^-0.073 as ry/rx grows."""
+    slow = chittenden_point(LOAD, RX, RY, SPEED / 2, ETA0, ALPHA, E_RED)
+    fast = chittenden_point(*POINT)
+    assert fast.central / slow.central == pytest.approx(2**0.68)
+    assert fast.minimum / slow.minimum == pytest.approx(2**0.68)
+    films = [chittenden_point(LOAD, RX, r * RX, SPEED, ETA0, ALPHA, E_RED)
+             for r in (0.05, 0.25, 1.0)]
+    assert films[0].central < films[1].central < films[2].central
+    assert films[0].minimum < films[1].minimum < films[2].minimum
+    g = hamrock_dowson_groups(*POINT)
+    base = RX * g.U**0.68 * g.G**0.49 * g.W**-0.073
+    wide = chittenden_point(LOAD, RX, 1e4 * RX, SPEED, ETA0, ALPHA, E_RED)
+    g_wide = hamrock_dowson_groups(LOAD, RX, 1e4 * RX, SPEED, ETA0, ALPHA, E_RED)
+    assert g_wide.W == g.W  # the groups use rx only
+    assert wide.central == pytest.approx(4.31 * base, rel=1e-9)
+    assert wide.minimum == pytest.approx(3.68 * base, rel=1e-9)
 
 
 def _reference_transcription(M, L, D):
