@@ -34,6 +34,7 @@ import numpy as np
 from ..errors import InputError, check_int
 from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for
 from .filters import gaussian_filter
+from .form import remove_form
 from .topography import Profile
 
 __all__ = ["ProfileFamilies", "amplitude_parameters", "height_moments", "mean_element_width",
@@ -84,14 +85,6 @@ class ProfileFamilies:
         """Heights of ``"P"``, ``"W"`` or ``"R"`` over the evaluation length."""
         profile = {"P": self.primary, "W": self.waviness, "R": self.roughness}[which]
         return profile.z[self.evaluation]
-
-
-def _without_form(profile: Profile, degree: int) -> np.ndarray:
-    """Heights minus their least-squares polynomial of ``degree`` (minus the mean if periodic)."""
-    if profile.periodic:
-        return profile.z - profile.z.mean()
-    fit = np.polynomial.Polynomial.fit(profile.x, profile.z, degree)
-    return profile.z - fit(profile.x)
 
 
 def _fits(cutoff: float, profile: Profile) -> bool:
@@ -183,7 +176,7 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
     sampling_lengths = check_int("sampling_lengths", sampling_lengths, 1)
     notes: list[str] = []
     warnings: list[str] = []
-    p = _without_form(profile, form_degree)
+    p = remove_form(profile, form_degree).z
     if cutoff is None:
         cutoff = _iso4288_cutoff(p, profile, notes, warnings)
     else:
