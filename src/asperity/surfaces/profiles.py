@@ -35,6 +35,7 @@ from ..errors import InputError, check_int
 from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for
 from .filters import gaussian_filter
 from .form import remove_form
+from .parameters import _amplitude
 from .topography import Profile
 
 __all__ = ["ProfileFamilies", "amplitude_parameters", "height_moments", "mean_element_width",
@@ -214,13 +215,7 @@ def height_moments(z: np.ndarray, prefix: str) -> dict:
     ``a`` mean |z|, ``q`` rms, ``sk`` skewness, ``ku`` kurtosis, ``p`` highest peak, ``v``
     deepest valley (positive), ``z`` = p + v (ISO 4287 clause 4.1-4.2, ISO 25178-2 4.1).
     """
-    z = np.asarray(z, dtype=float).ravel()
-    rq = float(np.sqrt(np.mean(z**2)))
-    if rq == 0:
-        raise InputError("heights", "a surface that is not flat (Rq > 0)")
-    out = {f"{prefix}a": float(np.mean(np.abs(z))), f"{prefix}q": rq,
-           f"{prefix}sk": float(np.mean(z**3) / rq**3), f"{prefix}ku": float(np.mean(z**4) / rq**4),
-           f"{prefix}p": float(z.max()), f"{prefix}v": float(-z.min())}
+    out = _amplitude(np.asarray(z, dtype=float).ravel(), prefix, 0.0)  # flat: Rq == 0
     out[f"{prefix}z"] = out[f"{prefix}p"] + out[f"{prefix}v"]
     return out
 
