@@ -15,6 +15,7 @@ import numpy as np
 import xarray as xr
 
 from ..gears.handoff import point_index, toml_text, transient_case
+from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness
 from ..gears.path import GearPathResult, solve_path
 from ..results import Comparison, Outcome, variable
@@ -127,7 +128,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     crit = result.critical()
     i_lam, i_fl, i_p = (crit[k] for k in ("minimum_lambda", "maximum_flash_temperature",
                                           "maximum_hertz_pressure"))
-    i_c = int(np.argmin(np.abs(kin.distance)))
+    i_c = point_index(result, "pitch")
     rb1 = pair.rb[0]
     summary = {
         "transverse_contact_ratio": pair.contact_ratio,
@@ -137,7 +138,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "tip_diameter_pinion_m": pair.da[0],
         "tip_diameter_wheel_m": pair.da[1],
         **{f"roll_angle_{k}_deg": math.degrees(v / rb1) for k, v in pair.points.items()},
-        "normal_force_n": case.operation.torque / (rb1 * math.cos(pair.beta_b)),
+        "normal_force_n": normal_force(pair, case.operation.torque),
         "composite_roughness_m": result.composite_roughness,
         "minimum_lambda": float(result.specific_film[i_lam]),
         **_at(result, i_lam, "minimum_lambda"),
