@@ -31,23 +31,23 @@ PROFILE_SPACING = 0.5e-6
 def roughness_values(case) -> tuple[float, float]:
     """Ra or Rq (``[roughness] parameter``) of the pinion and wheel surfaces, m."""
     key = "Ra" if case.roughness.parameter == "ra" else "Rq"
-    values = []
-    for spec in (case.surface1, case.surface2):
-        surf = spec.build(PROFILE_LENGTH, PROFILE_SPACING, np.zeros(1), PROFILE_SPACING)
-        params = roughness_parameters(surf if isinstance(surf, Profile) else surf)
-        values.append(params[key])
-    return values[0], values[1]
+    first, second = (roughness_parameters(surf)[key] for surf in _profiles(case))
+    return first, second
+
+
+def _profiles(case) -> tuple:
+    """The pinion and wheel surfaces of ``[surface1]``/``[surface2]`` built over
+    :data:`PROFILE_LENGTH` at :data:`PROFILE_SPACING` (profiles, or maps for 2-D kinds)."""
+    return tuple(spec.build(PROFILE_LENGTH, PROFILE_SPACING, np.zeros(1), PROFILE_SPACING)
+                 for spec in (case.surface1, case.surface2))
 
 
 def correlation_length(case) -> float:
     """The shorter autocorrelation length (ACF down to 0.2) of the pinion and wheel surfaces
     along x, m, measured on the profiles built as for :func:`roughness_values`; NaN for
     surfaces without roughness along x."""
-    lengths = []
-    for spec in (case.surface1, case.surface2):
-        surf = spec.build(PROFILE_LENGTH, PROFILE_SPACING, np.zeros(1), PROFILE_SPACING)
-        if isinstance(surf, Profile):
-            lengths.append(autocorrelation_length(surf))
+    lengths = [autocorrelation_length(surf) for surf in _profiles(case)
+               if isinstance(surf, Profile)]
     lengths = [v for v in lengths if math.isfinite(v)]
     return min(lengths) if lengths else math.nan
 
