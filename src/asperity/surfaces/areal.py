@@ -38,7 +38,7 @@ from .cutoffs import LAMBDA_S
 from .filters import areal_gaussian_filter
 from .form import remove_form
 from .material_ratio import rk_parameters, section_height_difference, volume_parameters
-from .parameters import autocorrelation_length, roughness_parameters
+from .parameters import _autocorrelation, autocorrelation_length, roughness_parameters
 from .profiles import height_moments
 from .topography import Topography
 
@@ -129,10 +129,7 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
 
 def _acf(z: np.ndarray) -> np.ndarray:
     """Normalised, zero-padded autocorrelation with lag (0, 0) at the centre."""
-    shape = tuple(2 * n for n in z.shape)
-    f = scipy.fft.rfftn(z - z.mean(), s=shape, workers=-1)
-    acf = scipy.fft.irfftn(np.abs(f) ** 2, s=shape, workers=-1)
-    return scipy.fft.fftshift(acf / acf.flat[0])
+    return scipy.fft.fftshift(_autocorrelation(z - z.mean(), periodic=False))
 
 
 def texture_aspect_ratio(topography: Topography, threshold=ACF_THRESHOLD) -> tuple[float, bool]:
