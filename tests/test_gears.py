@@ -230,3 +230,13 @@ def test_blok_partition_of_equal_surfaces():
     both = flash_temperature(q, a, v, v, b, b)
     single = FLASH_CONSTANTS["semi-elliptic"] * 0.5 * q * math.sqrt(2 * a / v) / b
     assert float(both) == pytest.approx(single, rel=1e-12)
+
+
+@pytest.mark.parametrize("crowning", [(10e-6, 10e-6), (4e-6, 0.0), (3e-6, 12e-6)])
+def test_crowning_radius_from_the_total_crowning_height(crowning):
+    """Two circular crowns over the face width b touch like one crown of the summed height:
+    1/R_c1 + 1/R_c2 = 8 (C_b1 + C_b2) / b^2 (parabolic approximation of each circle)."""
+    g = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
+                 centre_distance=91.5e-3, crowning=crowning)
+    assert g.crowning_radius == pytest.approx(14e-3**2 / (8 * sum(crowning)), rel=1e-12)
+    assert fzg_c().crowning_radius == math.inf

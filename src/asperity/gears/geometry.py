@@ -277,6 +277,13 @@ class GearPair:
         return tuple(b * b / (8.0 * c) if c > 0 else math.inf for c in self.crowning)
 
     @property
+    def crowning_radius(self) -> float:
+        """Relative crowning radius 1 / (1/R_c1 + 1/R_c2), m: the ``ry`` of the elliptical
+        contact of a crowned pair (inf without crowning)."""
+        curvature = sum(1.0 / r for r in self.crowning_radii)
+        return 1.0 / curvature if curvature > 0 else math.inf
+
+    @property
     def crowned(self) -> bool:
         """True when either flank is crowned: the contact is then elliptical."""
         return max(self.crowning) > 0

@@ -114,8 +114,8 @@ def transient_case(result: GearPathResult, index: int, *, title: str, body1: dic
         contact = {"type": "line", "radius": float(kin.reduced_radius[index]),
                    "load_per_length": float(result.load[index])}
     else:
-        ry = 1.0 / sum(1.0 / r for r in result.pair.crowning_radii)
-        contact = {"type": "point", "rx": float(kin.reduced_radius[index]), "ry": ry,
+        contact = {"type": "point", "rx": float(kin.reduced_radius[index]),
+                   "ry": result.pair.crowning_radius,
                    "load": float(result.load[index])}
     angle = math.degrees(float(kin.roll_angle[index]))
     description = (f"Path of contact at pinion roll angle {angle:.3f} deg "

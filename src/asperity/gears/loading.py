@@ -81,7 +81,7 @@ def hertz_along_path(pair: GearPair, rho1, torque: float, reduced_radius, body1:
     b = np.full(rho.shape, np.nan)
     p = np.zeros(rho.shape)
     if pair.crowned:
-        ry = 1.0 / sum(1.0 / r for r in pair.crowning_radii)
+        ry = pair.crowning_radius
         load = load_sharing(pair, rho) * normal_force(pair, torque)
         for i in np.flatnonzero(load > 0):
             hz = hertz_point(load[i], radius[i], ry, body1, body2)

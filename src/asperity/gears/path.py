@@ -130,8 +130,7 @@ def contact_problem(pair: GearPair, kin: Kinematics, index: int, load: float, bo
     u1, u2 = float(kin.u1[index]), float(kin.u2[index])
     radius = float(kin.reduced_radius[index])
     if pair.crowned:
-        ry = 1.0 / sum(1.0 / r for r in pair.crowning_radii)
-        return PointContact(radius, ry, load, u1, u2, body1, body2, lubricant)
+        return PointContact(radius, pair.crowning_radius, load, u1, u2, body1, body2, lubricant)
     return LineContact(radius, load, u1, u2, body1, body2, lubricant)
 
 
