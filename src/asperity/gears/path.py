@@ -5,8 +5,8 @@ radius, load and surface speeds of :mod:`asperity.gears.kinematics` and
 :mod:`asperity.gears.loading` define a :class:`~asperity.ehl.LineContact` (or a
 :class:`~asperity.ehl.PointContact` for crowned flanks), which :func:`asperity.ehl.solve_steady`
 solves (smooth, isothermal, with the lubricant's Eyring law). Beside each solution stand the
-Newtonian film formulas (Dowson-Higginson and Moes for a line contact, Hamrock-Dowson and
-Nijenbanning for an elliptical one). The minimum film over the composite roughness is the
+Newtonian film formulas (Moes central and Dowson-Higginson minimum for a line contact,
+Hamrock-Dowson for an elliptical one). The minimum film over the composite roughness is the
 specific film thickness lambda; the EHL traction and a boundary friction coefficient, weighted
 by the asperity load share of :mod:`asperity.gears.mixed`, give the friction coefficient, and
 Blok's formula (:mod:`asperity.gears.thermal`) the flash temperature.
