@@ -150,6 +150,27 @@ def test_feature_shapes():
         feature_surface("dent", 1e-3, 1e-5, amplitude=1e-7, half_width=5e-5, position=0.0)
 
 
+def test_feature_position_width_and_volume():
+    """The cap sits where asked and is as wide as asked: the ridge's centroid is ``position``,
+    it is non-zero only within ``half_width`` of it, and its area is ``amplitude * w`` (the
+    integral of cos^2(pi r/(2w)) over -w..w is w); the dent's volume is
+    ``amplitude * w^2 (1 - 4/pi^2) pi / 2`` (2 pi times the integral of r cos^2(pi r/(2w)) over
+    0..w) and its deepest cell lies at the centre."""
+    amp, w, pos, s = 1e-7, 5e-5, 3.7e-4, 1e-6
+    ridge = feature_surface("ridge", 1e-3, s, amplitude=amp, half_width=w, position=pos)
+    on = ridge.z > 0
+    assert np.sum(ridge.x * ridge.z) / np.sum(ridge.z) == pytest.approx(pos, abs=s / 10)
+    assert ridge.x[on].min() > pos - w and ridge.x[on].max() < pos + w
+    assert ridge.x[on].max() - ridge.x[on].min() == pytest.approx(2 * w, abs=2 * s)
+    assert np.sum(ridge.z) * s / (amp * w) == pytest.approx(1.0, rel=1e-3)
+    y = s * (np.arange(161) - 80)
+    dent = feature_surface("dent", 1e-3, s, amplitude=amp, half_width=w, position=pos, y=y)
+    volume = np.sum(dent.z) * s * s  # in units of amp w^2: pytest.approx's abs=1e-12 default
+    assert volume / (amp * w**2) == pytest.approx(-0.5 * np.pi * (1 - 4 / np.pi**2), rel=2e-3)
+    i, j = np.unravel_index(np.argmin(dent.z), dent.z.shape)
+    assert dent.x[i] == pytest.approx(pos, abs=s) and y[j] == 0.0
+
+
 @pytest.mark.parametrize("name", ["dent-rolling", "dent-sliding"])
 def test_example_case_places_the_dent_upstream_of_the_inlet(name):
     """The example case files build a dent whose centre enters the inlet at the start."""
