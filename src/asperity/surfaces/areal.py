@@ -34,7 +34,7 @@ import scipy.fft
 from scipy.ndimage import map_coordinates
 
 from ..errors import InputError
-from .cutoffs import LAMBDA_S
+from .cutoffs import lambda_s_for
 from .filters import areal_gaussian_filter
 from .form import remove_form
 from .material_ratio import rk_parameters, section_height_difference, volume_parameters
@@ -99,11 +99,7 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
                                      f"least-squares polynomial of degree {form_degree}"))
     spacing = max(topography.spacing)
     if s_filter == "iso":
-        s_filter = None
-        match = next((k for k in LAMBDA_S if l_filter is not None and math.isclose(k, l_filter)),
-                     None)
-        if match is not None and spacing <= LAMBDA_S[match][1] * (1 + 1e-9):
-            s_filter = LAMBDA_S[match][0]
+        s_filter = None if l_filter is None else lambda_s_for(l_filter, spacing)[0]
     x, y, periodic = topography.x, topography.y, topography.periodic
     if s_filter is not None:
         surface = surface.with_heights(areal_gaussian_filter(surface.z, x, y, s_filter,
