@@ -75,6 +75,18 @@ def test_l_filter_transmits_half_at_its_nesting_index():
     assert fam.label == "S-L" and any("L-filter" in n for n in fam.notes)
 
 
+def test_iso_s_filter_is_iso_3274s_for_the_l_filter_where_the_spacing_allows():
+    # ISO 3274 Table 1: lambda_c 0.08 mm -> lambda_s 2.5 um for spacings up to 0.5 um
+    x1, y1 = (np.arange(200) + 0.5) * 0.5e-6, (np.arange(180) + 0.5) * 0.5e-6
+    z = 0.1e-6 * np.random.default_rng(2).standard_normal((200, 180))
+    fine = areal_families(Topography(x1, y1, z), l_filter=0.08e-3)
+    assert fine.s_filter == pytest.approx(2.5e-6, rel=1e-12)
+    coarse = areal_families(Topography(2 * x1, 2 * y1, z), l_filter=0.08e-3)  # 1 um spacing
+    assert coarse.s_filter is None
+    assert areal_families(Topography(x1, y1, z), l_filter=0.05e-3).s_filter is None  # not ISO
+    assert areal_families(Topography(x1, y1, z)).s_filter is None  # no L-filter
+
+
 def test_areal_parameters_are_grouped_and_of_the_scale_limited_surface():
     t = gaussian_topography((200e-6, 160e-6), H, 0.3e-6, 10e-6, seed=3)
     fam = areal_families(t)
