@@ -208,3 +208,20 @@ def test_study_table_shows_flags_and_round_off_as_people_read_them(tmp_path):
     html = render_study_report(ds)
     assert "<td>no</td>" in html and "<td>yes</td>" in html
     assert "<td>2.669 kN</td>" in html and "<td>0 N</td>" in html
+
+
+def test_study_table_shows_fractions_in_percent_as_a_run_report_does(tmp_path):
+    from asperity.report import render_study_report
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "10 N"]\n')
+    out = tmp_path / "out"
+    for n, fraction in enumerate([0.385, 0.5]):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "summary": {"contact_area_fraction": fraction}}))
+    ds = combine(study, out)
+    assert ds["contact_area_fraction"].attrs["units"] == "1"    # stored as a fraction
+    html = render_study_report(ds)
+    assert "<td>38.5 %</td>" in html and "<td>50 %</td>" in html

@@ -25,6 +25,7 @@ __all__ = [
     "describe_key",
     "format_number",
     "format_quantity",
+    "format_summary_value",
     "given_in_imperial",
     "summary_rows",
     "unit_label",
@@ -353,16 +354,41 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
         if isinstance(value, dict | list | tuple) or value is None:
             continue
         label, unit = describe_key(key)
-        if isinstance(value, str):
-            text = value
-        else:
-            if key in scalars and unit and abs(value) <= NOISE * scale[unit]:
-                value = 0.0  # round-off of a quantity that is zero (a force along an unloaded axis)
-            if unit == "%" and key.endswith("fraction") and not isinstance(value, bool):
-                value = 100.0 * value
-            text = format_quantity(value, unit, imperial=imperial)
+        text = format_summary_value(key, value, scale=scale.get(unit, 0.0), imperial=imperial)
         rows.append(SummaryRow(key, label, unit_label(unit), text))
     return rows
+
+
+def format_summary_value(key: str, value, *, scale: float = 0.0, imperial: bool = False) -> str:
+    """One value of a summary key as shown in a report (a run's key results, a study's cases).
+
+    A value with a unit whose magnitude is at most :data:`NOISE` times ``scale`` is round-off
+    of zero and shown as ``0`` (a force along an unloaded axis); a key ending in ``fraction``
+    is shown in percent; text is shown as it is.
+
+    Parameters
+    ----------
+    key : str
+        The summary key (its suffix gives the unit, :func:`describe_key`).
+    value : float, int, bool or str
+    scale : float
+        The largest magnitude it is compared with (of the same unit, or of the same key).
+    imperial : bool
+        Put the imperial value beside SI.
+
+    Returns
+    -------
+    str
+    """
+    if isinstance(value, str):
+        return value
+    unit = describe_key(key)[1]
+    if not isinstance(value, bool):
+        if unit and math.isfinite(value) and abs(value) <= NOISE * scale:
+            value = 0.0  # round-off of a quantity that is zero
+        if unit == "%" and key.endswith("fraction"):
+            value = 100.0 * value
+    return format_quantity(value, unit, imperial=imperial)
 
 
 def given_in_imperial(data) -> bool:

@@ -17,12 +17,12 @@ import re
 from pathlib import Path
 
 from .formatting import (
-    NOISE,
     SummaryRow,
     describe_key,
     format_axis_value,
     format_number,
     format_quantity,
+    format_summary_value,
     summary_rows,
 )
 from .results import Outcome, atomic_path
@@ -339,15 +339,10 @@ def _cases_table(ds, variables) -> str:
             cells.append(format_axis_value(coord.values.item(), ds[a].attrs.get("units", "1")))
         for v in variables:
             value = float(ds[v].isel(sel).values)
-            label, unit = describe_key(v)
             if ds[v].attrs.get("flag_meanings") == "no yes" and value in (0.0, 1.0):
                 cells.append("yes" if value else "no")
                 continue
-            if unit and abs(value) <= NOISE * scale[v]:
-                value = 0.0  # round-off of zero, as in a run's report
-            if unit == "%" and v.endswith("fraction"):
-                value *= 100.0
-            cells.append(format_quantity(value, unit))
+            cells.append(format_summary_value(v, value, scale=scale[v]))  # as in a run's report
         state = str(ds["state"].isel(sel).values)
         error = str(ds["error"].isel(sel).values)
         badge = ("<span class=pass>done</span>" if state == "done" else
