@@ -144,13 +144,13 @@ def rk_parameters(z, prefix="R") -> dict:
 def volume_parameters(z, p=0.1, q=0.8) -> dict:
     """Vmp, Vmc, Vvc, Vvv (ISO 25178-2, m^3/m^2 = m) at material ratios ``p`` and ``q``."""
     heights = _heights(z)
+    level_p, level_q = section_height(heights, p), section_height(heights, q)
 
-    def vm(ratio):
-        level = section_height(heights, ratio)
+    def vm(level):
         return float(np.sum(np.clip(heights - level, 0, None)) / heights.size)
 
-    def vv(ratio):
-        level = section_height(heights, ratio)
+    def vv(level):
         return float(np.sum(np.clip(level - heights, 0, None)) / heights.size)
 
-    return {"Vmp": vm(p), "Vmc": vm(q) - vm(p), "Vvc": vv(p) - vv(q), "Vvv": vv(q)}
+    vm_p, vv_q = vm(level_p), vv(level_q)
+    return {"Vmp": vm_p, "Vmc": vm(level_q) - vm_p, "Vvc": vv(level_p) - vv_q, "Vvv": vv_q}
