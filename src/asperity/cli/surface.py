@@ -50,7 +50,7 @@ def _one_line_errors(command: Callable) -> Callable:
 
 
 def _length(value: str | None, field: str) -> float | None:
-    return None if value is None else to_si(_numeric(value), "length", field)
+    return _quantity(value, "length", field)
 
 
 def _quantity(value: str | None, dimension: str, field: str) -> float | None:
