@@ -18,6 +18,8 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from .ehl.formulas import flooded_inlet_distance
+
 __all__ = [
     "FILL_FRACTION",
     "PATCH_PERIOD_FRACTION",
@@ -342,7 +344,7 @@ def ehl_inlet_length(x_min: float, a: float, rx: float, central_film: float) -> 
     m = -x_min / a
     if not (central_film > 0 and m > 1):
         return []
-    m_star = 1.0 + 3.06 * ((rx / a) ** 2 * central_film / rx) ** 0.58
+    m_star = flooded_inlet_distance((rx / a) ** 2 * central_film / rx)
     if m >= m_star:
         return []
     loss = 1.0 - ((m - 1.0) / (m_star - 1.0)) ** 0.29

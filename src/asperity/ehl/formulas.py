@@ -44,6 +44,7 @@ __all__ = [
     "moes_groups",
     "hamrock_dowson_point",
     "chittenden_point",
+    "flooded_inlet_distance",
     "dowson_higginson_line",
     "moes_line",
     "moes_line_film",
@@ -219,6 +220,17 @@ def chittenden_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):
         formula="Chittenden et al.",
         dimensionless={"U": g.U, "G": g.G, "W": g.W, "k": g.k, "Hc": float(hc), "Hmin": float(hm)},
     )
+
+
+def flooded_inlet_distance(film, stretch=1.0):
+    """Hamrock & Dowson's (1977, part IV) fully flooded inlet distance of a point contact.
+
+    ``m* = 1 + 3.06 H^0.58`` in Hertz semi-axes ``a`` upstream of the centre, with
+    ``H = (Rx/a)^2 hc/Rx = hc Rx/a^2`` the central film in Hertzian units; an inlet at
+    ``m < m*`` starves the film. ``stretch`` counts the inlet length ``m* - 1`` that many
+    times: ``1 + stretch (m* - 1)``.
+    """
+    return 1.0 + stretch * 3.06 * film**0.58
 
 
 def dowson_higginson_line(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus):

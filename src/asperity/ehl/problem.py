@@ -168,7 +168,7 @@ class _Contact:
         L = 10), one at ``1 + 1.5 (m* - 1)`` by 0.2 % (docs/ehl-robustness.md).
         """
         film = self.film_estimate() / self.film_scale
-        return max(MIN_INLET, 1.0 + 1.8 * 3.06 * film**0.58)
+        return max(MIN_INLET, formulas.flooded_inlet_distance(film, 1.8))
 
     def cells_per_a(self) -> int:
         """Default mesh spacing along x: dX = 1/n with n a power of two from 32 to 1024.
