@@ -198,3 +198,16 @@ y_extent = "0.04 in"
     assert "12.7 mm (0.5 in)" in html                       # the radius among the parameters
     assert re.search(r"maximum pressure</td><td>\d+(\.\d+)? GPa \(\d+ psi\)", html)
     assert "100 lbf" in result.output                       # the terminal summary too
+
+
+@pytest.mark.parametrize(("value", "reference", "shown"), [
+    (962.0, 962.0, "<td>0 %</td>"),                   # exact
+    (5765.0, 1296 * 4.4482216, "<td>&lt; 0.01 %</td>"),  # 0.0019 %: below what two decimals show
+    (1006.3, 1000.0, "<td>+0.63 %</td>"),
+    (993.7, 1000.0, "<td>\u22120.63 %</td>"),         # a minus sign, not a hyphen
+])
+def test_comparison_differences_as_people_read_them(value, reference, shown):
+    outcome = Outcome(xr.Dataset(), {}, comparisons=[
+        Comparison("load", value, reference, "closed form", "N", 1e-2)])
+    html = render_report("t", {"analysis": "normal"}, outcome, {})
+    assert shown in html
