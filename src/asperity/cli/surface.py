@@ -125,7 +125,7 @@ def _read(file: Path, spacing, spacing_y, unit, x_unit, z_unit, missing, resampl
 
 
 def _texture_json(file: Path, reading, texture) -> dict:
-    from ..surfaces.texture import unit_of
+    from ..surfaces.texture import suffixed
 
     surface = reading.surface
     spacing = ([surface.spacing] if surface.z.ndim == 1 else list(surface.spacing))
@@ -138,8 +138,7 @@ def _texture_json(file: Path, reading, texture) -> dict:
     for key, values in texture.groups.items():
         groups[key] = {"title": texture.titles[key]}
         for name, value in values.items():
-            suffix = {"m": "_m", "m3/m2": "_m3_per_m2", "deg": "_deg"}.get(unit_of(name), "")
-            groups[key][name + suffix] = value
+            groups[key][suffixed(name)] = value
     return {"file": str(file), "format": reading.style,
             "kind": "profile" if surface.z.ndim == 1 else "topography",
             "points": list(surface.z.shape), "spacing_m": spacing, "periodic": surface.periodic,

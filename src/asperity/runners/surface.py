@@ -145,7 +145,7 @@ def _texture(case, surface, summary, notes, warnings, figures, exclude=None):
     """The ISO texture evaluation of ``surface`` as ``asperity surface stats`` shows it:
     summary keys ``iso_<name>`` (unit-suffixed), its notes, and the ``texture`` figure."""
     from ..plotting.surfaces import plot_texture
-    from ..surfaces.texture import evaluate_texture, unit_of
+    from ..surfaces.texture import evaluate_texture, suffixed
 
     try:
         texture = evaluate_texture(surface, case.evaluation.cutoff, exclude=exclude)
@@ -162,8 +162,7 @@ def _texture(case, surface, summary, notes, warnings, figures, exclude=None):
         summary["iso_surface"] = fam.label
     for values in texture.groups.values():
         for name, value in values.items():
-            suffix = {"m": "_m", "m3/m2": "_m3_per_m2", "deg": "_deg"}.get(unit_of(name), "")
-            summary[f"iso_{name.lower()}{suffix}"] = value
+            summary["iso_" + suffixed(name).lower()] = value
     notes.extend(f"ISO texture: {note}" for note in texture.notes)
     warnings.extend(texture.warnings)
     figures["texture"] = (lambda: plot_texture(texture, title=case.title),

@@ -19,7 +19,7 @@ from .material_ratio import relative_material_ratio, rk_parameters, section_heig
 from .profiles import ProfileFamilies, profile_families, profile_parameters
 from .topography import Profile, Topography
 
-__all__ = ["TextureEvaluation", "UNITS", "evaluate_texture", "unit_of"]
+__all__ = ["TextureEvaluation", "UNITS", "evaluate_texture", "suffixed", "unit_of"]
 
 _LENGTH_SUFFIXES = ("a", "q", "p", "v", "z", "t", "k", "pk", "vk", "dc", "al", "Sm")
 #: Parameters that are not lengths: their SI unit ("1" for ratios and moments).
@@ -33,6 +33,12 @@ def unit_of(name: str) -> str:
     if name in UNITS:
         return UNITS[name]
     return "m" if name[1:] in _LENGTH_SUFFIXES else "1"
+
+
+def suffixed(name: str) -> str:
+    """The parameter's name with its SI unit as a JSON/summary key suffix (``Ra`` -> ``Ra_m``,
+    ``Vmp`` -> ``Vmp_m3_per_m2``, ``Std`` -> ``Std_deg``; ratios unchanged)."""
+    return name + {"m": "_m", "m3/m2": "_m3_per_m2", "deg": "_deg"}.get(unit_of(name), "")
 
 
 @dataclass(frozen=True)
