@@ -176,3 +176,26 @@ def test_gaussian_filter_end_correction_keeps_a_constant():
     np.testing.assert_allclose(wavy.z + rough.z, p.z, atol=1e-15)
     with pytest.raises(InputError, match="cutoff"):
         gaussian_filter(p.z, x, 1e-6)
+
+
+def test_linear_end_correction_passes_a_line_and_a_plane_undistorted():
+    # A Gaussian-weighted least-squares line through points on a line is that line, at the ends
+    # too; the zero-order correction (a weighted mean) bends it there. The areal filter is the
+    # profile one along x then y, so a plane passes as well.
+    from asperity.surfaces.filters import areal_gaussian_filter
+
+    n, h, cutoff = 400, 1e-6, 80e-6
+    x = cell_centres(n, h)
+    line = 2e-6 + 3e-3 * x
+    linear = gaussian_filter(line, x, cutoff, end_correction="linear")
+    np.testing.assert_allclose(linear, line, rtol=0, atol=1e-12 * np.abs(line).max())
+    zero = gaussian_filter(line, x, cutoff)
+    assert abs(zero[0] - line[0]) > 1e-2 * 3e-3 * cutoff  # the weighted mean lags the ends
+    inner = slice(int(cutoff / h) + 1, n - int(cutoff / h) - 1)
+    np.testing.assert_allclose(zero[inner], line[inner], rtol=0, atol=1e-12 * line.max())
+    y = cell_centres(300, h)
+    plane = 1e-6 + 2e-3 * x[:, None] - 4e-3 * y[None, :]
+    np.testing.assert_allclose(areal_gaussian_filter(plane, x, y, cutoff), plane, rtol=0,
+                               atol=1e-12 * np.abs(plane).max())
+    with pytest.raises(InputError, match="end_correction"):
+        gaussian_filter(line, x, cutoff, end_correction="quadratic")
