@@ -51,7 +51,6 @@ from functools import lru_cache
 
 import numba
 import numpy as np
-import scipy.fft as sfft
 
 from ..elastic import (
     Convolution,
@@ -107,17 +106,12 @@ class TangentialOperator:
         a, b, d = xx.spectrum.real, xy.spectrum.real, yy.spectrum.real
         self.norm_bound = float(np.max(0.5 * (a + d) + np.sqrt(0.25 * (a - d) ** 2 + b * b)))
 
-    def _crop(self, u):
-        return u[: self.shape[0], : self.shape[1]]
-
     def __call__(self, q: np.ndarray) -> np.ndarray:
-        qx = sfft.rfft2(q[0], s=self.fft_shape, workers=-1)
-        qy = sfft.rfft2(q[1], s=self.fft_shape, workers=-1)
-        ux = sfft.irfft2(self.xx.spectrum * qx + self.xy.spectrum * qy, s=self.fft_shape,
-                         workers=-1)
-        uy = sfft.irfft2(self.xy.spectrum * qx + self.yy.spectrum * qy, s=self.fft_shape,
-                         workers=-1)
-        return np.stack([self._crop(ux), self._crop(uy)])
+        # the Convolution's transforms: non-periodic, they skip the zero padding rows
+        qx, qy = self.xx.spectrum_of(q[0]), self.xx.spectrum_of(q[1])
+        ux = self.xx.inverse(self.xx.spectrum * qx + self.xy.spectrum * qy)
+        uy = self.xx.inverse(self.xy.spectrum * qx + self.yy.spectrum * qy)
+        return np.stack([ux, uy])
 
     def pressure(self, p: np.ndarray) -> np.ndarray:
         """Relative in-plane displacement due to the pressure p (Pa), m."""

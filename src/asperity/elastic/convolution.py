@@ -100,7 +100,12 @@ class Convolution:
         Non-periodic: after the inverse transforms along x only the ``nx`` rows of the grid are
         transformed back along y (the rows that are cropped away are never formed).
         """
-        product = load_spectrum * self.spectrum
+        return self.inverse(load_spectrum * self.spectrum)
+
+    def inverse(self, product: np.ndarray) -> np.ndarray:
+        """Field on the grid from a spectrum on the FFT grid (inverse FFT, crop), as in
+        :meth:`from_spectrum`; for sums of kernel products (block operators). ``product`` may
+        be overwritten."""
         if self.periodic:
             return sfft.irfft2(product, s=self.fft_shape, workers=-1)
         columns = sfft.ifft(product, axis=0, overwrite_x=True, workers=-1)[: self.shape[0]]
