@@ -221,6 +221,9 @@ def test_run_in_makes_negative_skew_at_the_target_ra():
     fresh = roughness_parameters(transverse_ground_profile(5e-3, 0.5e-6, 0.4e-6, seed=1))
     worn = roughness_parameters(transverse_ground_profile(5e-3, 0.5e-6, 0.4e-6, run_in=0.3,
                                                           seed=1))
+    # Ra is met exactly, fresh or run-in (the docstring's promise)
+    assert fresh["Ra"] == pytest.approx(0.4e-6, rel=1e-12)
+    assert worn["Ra"] == pytest.approx(0.4e-6, rel=1e-12)
     # fresh: Gaussian heights, Rq / Ra = sqrt(pi / 2) (one 5 mm realisation: 2 %)
     assert fresh["Rq"] / fresh["Ra"] == pytest.approx(np.sqrt(np.pi / 2), rel=0.02)
     assert abs(fresh["Rsk"]) < 0.2
