@@ -98,6 +98,9 @@ def test_vibration_example_is_rougher_at_low_natural_frequency(outcomes):
 def test_holmes_profiles_keep_their_ra_and_order_of_slopes(outcomes):
     out = outcomes["holmes-profiles"]
     sm = out.summary
+    # the stand-ins are generated to the paper's Ra exactly, and the summary reports it
+    assert (sm["ra_a_m"], sm["ra_b_m"], sm["ra_c_m"]) == pytest.approx((0.32e-6, 0.22e-6,
+                                                                        0.31e-6), rel=1e-9)
     # the report sets each profile beside the Ra the paper gives (Holmes et al. 2005)
     assert [c.reference for c in out.comparisons] == pytest.approx([0.32e-6, 0.22e-6, 0.31e-6])
     assert all(c.source.startswith("Holmes, Evans & Snidle (2005)") for c in out.comparisons)
