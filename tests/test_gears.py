@@ -240,3 +240,51 @@ def test_crowning_radius_from_the_total_crowning_height(crowning):
                  centre_distance=91.5e-3, crowning=crowning)
     assert g.crowning_radius == pytest.approx(14e-3**2 / (8 * sum(crowning)), rel=1e-12)
     assert fzg_c().crowning_radius == math.inf
+
+
+@pytest.mark.parametrize("make", PAIRS)
+def test_normal_force_from_the_tangential_force(make):
+    """F_bn = F_t / (cos alpha_n cos beta) with F_t = 2 T / d1 at the reference circle
+    (ISO 6336-1), a route through the normal pressure angle and the reference helix."""
+    g = make()
+    f_t = 2 * 302.0 / g.d[0]
+    assert normal_force(g, 302.0) == pytest.approx(
+        f_t / (math.cos(g.pressure_angle) * math.cos(g.helix_angle)), rel=1e-12)
+
+
+def test_helical_hertz_pressure_against_iso_6336_nominal_stress():
+    """At the pitch point of a helical pair with eps_beta >= 1 the Hertz pressure is ISO
+    6336-2's nominal contact stress Z_H Z_E Z_eps sqrt(F_t (u + 1) / (d1 b u)) with
+    Z_H = sqrt(2 cos beta_b cos alpha_wt / (cos^2 alpha_t sin alpha_wt)),
+    Z_E = sqrt(1 / (pi (2 (1 - nu^2) / E))), Z_eps = sqrt(1 / eps_alpha) (the empirical helix
+    factor Z_beta left out): checks the normal-section radius, w' and F_bn together."""
+    from asperity.gears import hertz_along_path
+    from asperity.materials import Material
+
+    g = helical()
+    assert g.overlap_ratio >= 1
+    steel = Material(206e9, 0.3)
+    kin = kinematics(g, np.array([g.points["C"]]), 100.0)
+    _, _, p, _ = hertz_along_path(g, kin.rho1, 400.0, kin.reduced_radius, steel, steel)
+    u = g.ratio
+    z_h = math.sqrt(2 * math.cos(g.beta_b) * math.cos(g.alpha_wt)
+                    / (math.cos(g.alpha_t) ** 2 * math.sin(g.alpha_wt)))
+    z_e = math.sqrt(1 / (math.pi * 2 * (1 - 0.3**2) / 206e9))
+    f_t = 2 * 400.0 / g.d[0]
+    sigma = z_h * z_e * math.sqrt(1 / g.contact_ratio) * math.sqrt(
+        f_t * (u + 1) / (g.d[0] * g.face_width * u))
+    assert p[0] == pytest.approx(sigma, rel=1e-10)
+
+
+def test_spur_load_sharing_values_of_iso_tr_13989():
+    """ISO/TR 13989-1 for spur gears without relief: X = 1/3 at A and E, 2/3 at B and D (just
+    outside single contact), 1 between; a relieved wheel tip (acting at A) sets X(A) = 0."""
+    g = fzg_c()
+    pts = g.points
+    eps = 1e-9 * g.pbt
+    x = load_sharing(g, np.array([pts["A"], pts["B"] - eps, pts["C"], pts["D"] + eps,
+                                  pts["E"]]))
+    assert x == pytest.approx([1 / 3, 2 / 3, 1.0, 2 / 3, 1 / 3], abs=1e-6)
+    relieved = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
+                        centre_distance=91.5e-3, tip_relief=(0.0, 10e-6))
+    assert load_sharing(relieved, np.array([relieved.points["A"]])) == pytest.approx([0.0])
