@@ -145,8 +145,9 @@ def periodic_tangential_spectra(shape, dx: float, dy: float, body1: Material,
     period), the same continuum model as :func:`periodic_halfspace_spectrum`. The mean mode
     ``k = 0`` is set to zero (displacements from their mean; the rigid shift is measured from
     it). On an even grid the Nyquist row and column cannot carry a component odd in that
-    wavenumber (``xy``, ``zx``, ``zy`` there are their own mirror images): those entries are
-    zero, which keeps the block operator real and symmetric.
+    wavenumber (the Nyquist modes are their own mirror images): those entries of ``xy``,
+    ``zx``, ``zy`` are zero, which keeps the operator invariant under the mirrors x -> -x and
+    y -> -y, as the half-space is (the block operator is real and symmetric either way).
     """
     nx, ny = int(shape[0]), int(shape[1])
     kx = 2 * np.pi * np.fft.fftfreq(nx, d=dx)[:, None]
