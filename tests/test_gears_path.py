@@ -247,3 +247,27 @@ def test_roughness_nodes_refine_to_the_correlation_length():
     assert roughness_nodes(129, 4 * 245e-6, 14.5e-6) == 257
     assert roughness_nodes(129, 4 * 96.6e-6, 14.5e-6) == 129
     assert roughness_nodes(300, 4 * 245e-6, 14.5e-6) == 300
+
+
+def test_flash_temperature_at_a_path_point_by_blok_load_route():
+    """Blok's formula written with the load, theta = 1.11 mu w' |v_s| / ((B1 sqrt u1 +
+    B2 sqrt u2) sqrt(2a)), with w' = T / (r_b1 b) (single contact), a = sqrt(8 w' R / (pi E'))
+    and the flank speeds omega_i rho_i taken by hand, at a point between C and D; the Peclet
+    number is that of the slower flank."""
+    rho = FZG.points["C"] + 0.5 * (FZG.points["D"] - FZG.points["C"])
+    res = solve_path(FZG, np.array([rho]), pinion_speed=OMEGA, torque=302.0, body1=STEEL,
+                     body2=STEEL, lubricant=NEWTONIAN, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1, damping=0.3))
+    rho2 = FZG.t1t2 - rho
+    radius = rho * rho2 / (rho + rho2)
+    w = 302.0 / FZG.rb[0] / FZG.face_width
+    e_prime = 206e9 / (1 - 0.3**2)
+    a = math.sqrt(8 * w * radius / (math.pi * e_prime))
+    u1, u2 = OMEGA * rho, OMEGA * 16 / 24 * rho2
+    b = math.sqrt(45.0 * 7850.0 * 460.0)
+    theta = 1.11153 * res.friction[0] * w * abs(u1 - u2) / (
+        (b * math.sqrt(u1) + b * math.sqrt(u2)) * math.sqrt(2 * a))
+    assert res.hertz_a[0] == pytest.approx(a, rel=1e-10)
+    assert res.flash_temperature[0] == pytest.approx(theta, rel=1e-9)
+    kappa = 45.0 / (7850.0 * 460.0)
+    assert res.peclet[0] == pytest.approx(min(u1, u2) * a / (2 * kappa), rel=1e-10)
