@@ -130,3 +130,28 @@ def test_plot_of_a_stylus_export(runner, tmp_path):
                               str(png)])
     assert res.exit_code == 0, res.output
     assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_stats_of_a_sine_give_its_closed_form_parameters(runner, tmp_path):
+    # z = a sin(2 pi x / 20 um) + a tilt, 4.8 mm at 0.5 um, lambda_c = 0.8 mm: the line goes
+    # with the form, lambda_c leaves the sine whole (transmission 1 - 1e-700), ISO 3274's
+    # lambda_s = 2.5 um keeps exp(-pi (alpha lambda_s / 20 um)^2) of it (ISO 16610-21), and
+    # each sampling length holds 40 periods, so with A the amplitude left Ra = 2 A / pi,
+    # Rq = A / sqrt 2, Rsk = 0, Rku = 1.5, Rt = 2 A, RSm = 20 um, Rdq = 2 pi A / 20 um / sqrt 2
+    # (up to the forward difference)
+    a, lam, h = 0.4e-6, 20e-6, 0.5e-6
+    amp = a * np.exp(-np.pi * (np.sqrt(np.log(2) / np.pi) * 2.5e-6 / lam) ** 2)
+    x = (np.arange(9600) + 0.5) * h
+    out = tmp_path / "sine.txt"
+    out.write_text("\n".join(f"{a:.9e} {b:.9e}" for a, b in
+                             zip(x, a * np.sin(2 * np.pi * x / lam) + 1e-4 * x, strict=True)))
+    res = runner.invoke(app, ["surface", "stats", str(out), "--cutoff", "0.8 mm", "--json"])
+    assert res.exit_code == 0, res.output
+    r = json.loads(res.stdout)["parameters"]["R"]
+    # 40 samples a period: their mean |sin| is 2/pi to 0.05 %, their highest 2 pi / 80 off-peak
+    assert r["Ra_m"] == pytest.approx(2 * amp / np.pi, rel=2e-3)
+    assert r["Rq_m"] == pytest.approx(amp / np.sqrt(2), rel=1e-4)
+    assert r["Rsk"] == pytest.approx(0, abs=1e-3) and r["Rku"] == pytest.approx(1.5, rel=1e-3)
+    assert r["Rt_m"] == pytest.approx(2 * amp * np.cos(np.pi / 40), rel=1e-3)
+    assert r["RSm_m"] == pytest.approx(lam, abs=h)
+    assert r["Rdq"] == pytest.approx(2 * np.pi * amp / lam / np.sqrt(2), rel=2e-3)
