@@ -13,12 +13,14 @@ from asperity.errors import InputError
 from asperity.gears import (
     FLASH_CONSTANTS,
     GearPair,
+    asperity_share,
     flash_temperature,
     inverse_involute,
     involute,
     kinematics,
     load_per_length,
     load_sharing,
+    mixed_friction,
     normal_force,
 )
 
@@ -288,3 +290,13 @@ def test_spur_load_sharing_values_of_iso_tr_13989():
     relieved = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
                         centre_distance=91.5e-3, tip_relief=(0.0, 10e-6))
     assert load_sharing(relieved, np.array([relieved.points["A"]])) == pytest.approx([0.0])
+
+
+def test_mixed_friction_between_the_lambda_limits():
+    """Halfway between lambda_b = 1 and lambda_f = 3 the asperities carry half the load, so
+    mu is the mean of the EHL and boundary values; all on asperities at and below 1, none at
+    and above 3 (and the limits move with the arguments: lambda 2.5 is 1/4 of 2..4)."""
+    f = asperity_share(np.array([0.5, 1.0, 2.0, 3.0, 4.0]))
+    assert f == pytest.approx([1.0, 1.0, 0.5, 0.0, 0.0], abs=1e-15)
+    assert asperity_share(2.5, 2.0, 4.0) == pytest.approx(0.75)
+    assert mixed_friction(0.04, 0.1, 0.5) == pytest.approx(0.07)
