@@ -87,8 +87,11 @@ class Outcome:
     warnings: list = field(default_factory=list)
     case: object = None
 
-    def write(self, out_dir: str | Path, figures: bool = True) -> dict:
+    def write(self, out_dir: str | Path, figures: bool = True, *, imperial: bool = False) -> dict:
         """Write what ``asperity run`` writes: result.nc, summary.json, figures, report.html.
+
+        ``imperial`` puts imperial values beside SI in the report (``asperity run`` sets it for
+        a case given in imperial units).
 
         Returns
         -------
@@ -100,7 +103,8 @@ class Outcome:
         files = write_outcome(self, out_dir, figures=figures)
         title = getattr(self.case, "title", None) or self.dataset.attrs.get("title", "asperity")
         case = {} if self.case is None else self.case.model_dump(mode="json", exclude_none=True)
-        files["report"] = write_report(title, case, self, files, Path(out_dir) / "report.html")
+        files["report"] = write_report(title, case, self, files, Path(out_dir) / "report.html",
+                                       imperial=imperial)
         return files
 
 

@@ -138,8 +138,6 @@ def run(
     """Run a case: write result.nc, summary.json, figures and report.html to OUT."""
     from ..cases import load_case
     from ..examples import DEFAULT_EXAMPLE, example_text
-    from ..report import write_report
-    from ..results import write_outcome
     from ..runners import run_case
     from .progress import progress_bar
 
@@ -180,12 +178,8 @@ def run(
         if pending:
             raise Interrupted(pending[0])
         where["description"] = "writing the results"
-        files = write_outcome(outcome, out)
         imperial = _in_imperial(case, is_file)
-        files["report"] = write_report(model.title,
-                                       model.model_dump(mode="json", exclude_none=True),
-                                       outcome, files, Path(out) / "report.html",
-                                       imperial=imperial)
+        files = outcome.write(out, imperial=imperial)  # outcome.case is the model
     except Interrupted as exc:
         _stopped(exc, where["description"], case, out, quiet)
     finally:
