@@ -119,6 +119,13 @@ class Convolution:
         return self.from_spectrum(self.spectrum_of(load))
 
 
+def _periodic_wavevectors(shape, dx: float, dy: float):
+    """Wavevector components (rad/m) of the periodic grid's modes in rfft2 layout, (fx, fy//2+1)."""
+    kx = 2 * np.pi * np.fft.fftfreq(int(shape[0]), d=dx)[:, None]
+    ky = 2 * np.pi * np.fft.rfftfreq(int(shape[1]), d=dy)[None, :]
+    return np.broadcast_arrays(kx, ky)
+
+
 def periodic_halfspace_spectrum(shape, dx: float, dy: float, modulus: float) -> np.ndarray:
     """rfft2-layout spectrum of the periodic half-space Green's function, m/Pa.
 
@@ -126,10 +133,7 @@ def periodic_halfspace_spectrum(shape, dx: float, dy: float, modulus: float) -> 
     1/(pi E* r)); the q = 0 term is set to zero so that displacements are measured from their
     mean, which a contact solver fixes through the rigid approach.
     """
-    nx, ny = shape
-    qx = 2 * np.pi * np.fft.fftfreq(nx, d=dx)
-    qy = 2 * np.pi * np.fft.rfftfreq(ny, d=dy)
-    q = np.hypot(qx[:, None], qy[None, :])
+    q = np.hypot(*_periodic_wavevectors(shape, dx, dy))
     with np.errstate(divide="ignore"):
         g = np.where(q > 0, 2.0 / (modulus * q), 0.0)
     return g
@@ -150,9 +154,7 @@ def periodic_tangential_spectra(shape, dx: float, dy: float, body1: Material,
     y -> -y, as the half-space is (the block operator is real and symmetric either way).
     """
     nx, ny = int(shape[0]), int(shape[1])
-    kx = 2 * np.pi * np.fft.fftfreq(nx, d=dx)[:, None]
-    ky = 2 * np.pi * np.fft.rfftfreq(ny, d=dy)[None, :]
-    KX, KY = np.broadcast_arrays(kx, ky)
+    KX, KY = _periodic_wavevectors(shape, dx, dy)
     mean = (KX == 0) & (KY == 0)
     t = tangential_transfer(np.where(mean, 1.0, KX), KY, body1, body2)
     odd_x = np.zeros(KX.shape, dtype=bool)
