@@ -1,6 +1,7 @@
 """Parameter studies: Dask matches serial, failures are recorded, interrupted studies resume."""
 
 import json
+import math
 import subprocess
 import sys
 import time
@@ -225,3 +226,21 @@ def test_study_table_shows_fractions_in_percent_as_a_run_report_does(tmp_path):
     assert ds["contact_area_fraction"].attrs["units"] == "1"    # stored as a fraction
     html = render_study_report(ds)
     assert "<td>38.5 %</td>" in html and "<td>50 %</td>" in html
+
+
+@pytest.mark.parametrize(("values", "expected", "units"), [
+    (["0 deg", "90 deg", "180 deg"], [0.0, math.pi / 2, math.pi], "rad"),   # angles in radians
+    (["10 %", "25 %"], [0.1, 0.25], "1"),                                   # ratios as fractions
+    (["0.5 in", "1 in"], [0.0127, 0.0254], "m"),
+    (["11.1 1/GPa"], [11.1e-9], "Pa-1"),                                   # CF spelling
+    (["steel", "bronze"], ["steel", "bronze"], "1"),                        # labels stay text
+])
+def test_axis_values_in_the_si_unit_of_their_dimension(values, expected, units):
+    from asperity.sweep import _coordinate
+
+    array, unit = _coordinate(values)
+    assert unit == units
+    if isinstance(expected[0], str):
+        assert list(array) == expected
+    else:
+        np.testing.assert_allclose(array, expected, rtol=1e-12)
