@@ -116,8 +116,9 @@ def test_sliding_speed_from_pitch_distance(make):
     i_c = int(np.argmin(np.abs(s)))
     assert abs(s[i_c]) < 1e-15
     assert kin.slide_roll_ratio[i_c] == pytest.approx(0.0, abs=1e-12)
-    # pitch-line speed omega1 r_w1 is the rolling speed of both flanks at C (transverse)
-    v_t = omega1 * 0.5 * g.dw[0] * math.sin(g.alpha_wt) * math.cos(g.beta_b)
+    # omega1 r_w1 sin(alpha_wt), the transverse rolling speed at C, entrains for spur and helical
+    # pairs alike (the flank velocity's part along a helical contact line entrains nothing)
+    v_t = omega1 * 0.5 * g.dw[0] * math.sin(g.alpha_wt)
     assert kin.u1[i_c] == pytest.approx(v_t, rel=1e-12)
     assert kin.u2[i_c] == pytest.approx(v_t, rel=1e-12)
 

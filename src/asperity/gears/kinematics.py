@@ -2,10 +2,12 @@
 
 At a point of the line of action at distance ``rho1`` from T1 the flanks have the transverse
 radii of curvature ``rho1`` and ``rho2 = T1T2 - rho1`` (ISO 21771, clause 5), and each flank
-moves across the line of action at its rolling speed ``omega_i rho_i``. In the normal section
-of a helical pair (perpendicular to the contact line, inclined at the base helix angle beta_b
-in the plane of action) the radii are ``rho_i / cos beta_b`` and the speeds normal to the
-contact line ``omega_i rho_i cos beta_b`` (the components along the line do not entrain oil).
+moves across the line of action at its rolling speed ``omega_i rho_i``. In a helical pair
+the flank velocity at the contact is ``omega_i (rho_i`` across the plane of action, ``+ r_bi``
+within it``)``: the part within the plane splits into the normal approach ``omega_i r_bi cos
+beta_b`` (equal for both flanks) and a part along the contact line, which entrains nothing, so
+the entraining speeds across the contact line are the transverse ``omega_i rho_i``; the radii
+in the section perpendicular to the contact line are ``rho_i / cos beta_b``.
 
 Sliding: ``u1 - u2 = (omega1 + omega2) s`` with ``s = rho1 - rho1(C)`` the signed distance
 from the pitch point, since ``omega1 rho1(C) = omega2 rho2(C)`` there.
@@ -96,6 +98,6 @@ def kinematics(pair: GearPair, rho1, pinion_speed: float) -> Kinematics:
         rho1=rho1, rho2=rho2, roll_angle=pair.roll_angle(rho1),
         distance=rho1 - pair.points["C"], radius1=r1, radius2=r2,
         reduced_radius=r1 * r2 / (r1 + r2),
-        u1=omega1 * rho1 * cos_bb, u2=omega2 * rho2 * cos_bb,
+        u1=omega1 * rho1, u2=omega2 * rho2,
         sliding_speed=omega1 * rho1 - omega2 * rho2,
     )
