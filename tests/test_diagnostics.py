@@ -253,3 +253,17 @@ def test_film_collapse():
     _every_line_names_a_limit(lines)
     assert len(lines) == 1 and "-0.018 nm" in lines[0] and "<= 0 on 1 nodes" in lines[0]
     assert "about 2.5 nm" in lines[0]
+
+
+def test_roughness_correlation_length_in_cells():
+    """15 um on cells of 12.7 um is 15/12.7 = 1.18 cells (below the limit of 2), named with
+    the cell size that resolves it (a quarter of the length)."""
+    x = y = (np.arange(160) + 0.5) * 12.7e-6
+    lines = dg.roughness_resolution("roughness", 15e-6, x, y)
+    assert len(lines) == 1 and lines[0].startswith("roughness: correlation_length = 15 um")
+    assert "1.2 cells of 12.7 um" in lines[0] and "cells <= 3.8 um" in lines[0]
+
+
+def test_roughness_of_two_and_a_half_cells_is_silent():
+    x = y = (np.arange(64) + 0.5) * 4e-6
+    assert dg.roughness_resolution("roughness", 10e-6, x, y) == []

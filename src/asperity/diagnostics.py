@@ -554,3 +554,45 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int) -> list
             f"limit 0) did not reach the tolerance {tolerance:g} within {max_sweeps} sweeps "
             f"(steps {first}); their statistics are included; raise max_sweeps or use a "
             "smaller dt"]
+
+
+#: cells per autocorrelation length below which a rough surface is set by the mesh (heights
+#: nearly uncorrelated from one cell to the next; at 2 cells the answer still moves with the
+#: mesh: docs/references.md#roughness-on-the-mesh)
+MIN_CELLS_PER_CORRELATION_LENGTH = 2.0
+
+
+def roughness_resolution(label: str, correlation_length: float, x, y,
+                         min_cells: float = MIN_CELLS_PER_CORRELATION_LENGTH) -> list[str]:
+    """A generated roughness whose correlation length is shorter than a couple of cells.
+
+    The surface is generated on the grid: with fewer than ``min_cells`` cells per
+    correlation length (the lag where its autocorrelation falls to 0.2) every asperity is a
+    cell or two wide, the mesh rather than the surface sets the asperity size, and the real
+    contact area and asperity pressures change with the mesh (docs/references.md).
+
+    Parameters
+    ----------
+    label : str
+        The surface, e.g. ``"roughness"``.
+    correlation_length : float
+        The surface's correlation length, m.
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    min_cells : float
+        Smallest acceptable correlation length in cells.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    cell = max(_spacing(x), _spacing(y) if len(y) > 1 else 0.0)
+    cells = correlation_length / cell
+    if not cells < min_cells:
+        return []
+    return [f"{label}: correlation_length = {correlation_length * 1e6:.3g} um is "
+            f"{cells:.2g} cells of {cell * 1e6:.3g} um (limit {min_cells:g} cells), so the mesh, "
+            "not the surface, sets the asperity size and the real contact area and asperity "
+            f"pressures depend on the mesh; use cells <= {correlation_length / 4 * 1e6:.2g} um "
+            "and check that the answer no longer moves"]

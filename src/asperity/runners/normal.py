@@ -10,6 +10,7 @@ from ..cases.roughness import undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..references import cite
 from ..results import Comparison, Outcome, variable
+from ..surfaces.ground import GROUND_CORRELATION_LENGTH
 
 __all__ = ["run"]
 
@@ -103,7 +104,8 @@ def run(case, progress=None) -> Outcome:
 
 
 def _warnings(case, res, x, y, body1, body2) -> list[str]:
-    """Trust checks: domain, mesh and hardness (:mod:`asperity.diagnostics`)."""
+    """Trust checks: domain, mesh, roughness on the mesh and hardness
+    (:mod:`asperity.diagnostics`)."""
     if case.grid.periodic:
         lines = diagnostics.periodic_contact(res.contact, x, y)
     else:
@@ -114,4 +116,11 @@ def _warnings(case, res, x, y, body1, body2) -> list[str]:
             size = (2.0 * h.a, 2.0 * h.b)
         lines = diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
     lines += diagnostics.contact_resolution(res.contact, x, y)
+    rough = case.roughness
+    if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
+        ell = rough.correlation_length
+        if ell is None and rough.kind == "ground":
+            ell = GROUND_CORRELATION_LENGTH
+        if ell is not None:
+            lines += diagnostics.roughness_resolution("roughness", ell, x, y)
     return lines + diagnostics.above_hardness(res.pressure, [("body1", body1), ("body2", body2)])

@@ -24,13 +24,18 @@ from ..errors import InputError, check_positive
 from .generate import gaussian_profile
 from .topography import Profile
 
-__all__ = ["BUILTIN_PROFILES", "builtin_profile", "transverse_ground_profile"]
+__all__ = ["BUILTIN_PROFILES", "GROUND_CORRELATION_LENGTH", "builtin_profile",
+           "transverse_ground_profile"]
 
 #: Rounding width of the run-in truncation, in units of the fresh profile's Rq.
 ROUNDING = 0.25
 
+#: Default autocorrelation length of a transverse-ground profile, m.
+GROUND_CORRELATION_LENGTH = 15e-6
 
-def transverse_ground_profile(length, spacing, ra, correlation_length=15e-6, *, run_in=0.0,
+
+def transverse_ground_profile(length, spacing, ra,
+                              correlation_length=GROUND_CORRELATION_LENGTH, *, run_in=0.0,
                               seed=0) -> Profile:
     """Synthetic transverse-ground profile with an exact Ra, optionally run-in.
 
