@@ -33,8 +33,6 @@ def gear(
     """Film, lambda, friction and flash temperature along the path of contact."""
     from ..cases import load_case
     from ..examples import example_text
-    from ..report import write_report
-    from ..results import write_outcome
     from ..runners.gear import handoff, outcome, solve
     from .app import EXIT_NOT_CONVERGED, console, err_console, fail
     from .progress import progress_bar
@@ -53,9 +51,8 @@ def gear(
     with progress_bar(console, disable=quiet) as progress:
         result, seconds = solve(model, progress)
     done = outcome(model, result, seconds)
-    files = write_outcome(done, out)
-    files["report"] = write_report(model.title, model.model_dump(mode="json", exclude_none=True),
-                                   done, files, Path(out) / "report.html")
+    done.case = model
+    files = done.write(out)
     for key in ("transverse_contact_ratio", "overlap_ratio", "minimum_lambda",
                 "maximum_flash_temperature_k", "maximum_hertz_pressure_pa", "ehl_wall_time_s"):
         console.print(f"{key:32s} {done.summary[key]:.4g}")
