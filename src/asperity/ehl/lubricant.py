@@ -147,34 +147,50 @@ def _sigma_y(h, eta, rho, shear):
     return rho * _eyring_y(h, eta, shear)[0]
 
 
+@numba.njit(cache=True)
+def _pressure_laws(p, roelands, eta0, v1, v2, v3, gamma, lam):
+    """(eta, d eta/dp, rho/rho0, d(rho/rho0)/dp) at pressure p (arguments of
+    :func:`_flow_field`); d eta/dp is 0 where eta overflows."""
+    if roelands:
+        eta, deta = _roelands_law(p, eta0, v1, v2, v3)
+    else:
+        eta, deta = _barus_law(p, eta0, v1)
+    if eta == math.inf:  # overflow at a huge pressure: the flow factors and slopes -> 0
+        deta = 0.0
+    r, dr = _dowson_higginson_law(p, gamma, lam)
+    return eta, deta, r, dr
+
+
 @numba.njit(parallel=True, cache=True)
-def _flow_field(p, h, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho, slopes,
-                dsx, dsy):
+def _flow_field(p, h, units, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho,
+                slopes, dsx, dsy):
     """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (1-D arrays, the nodes
     in memory order), and with ``slopes`` their derivatives in p at constant h into ``dsx, dsy``.
 
-    Viscosity: Roelands (``v1 = ln(eta0/kappa), v2 = chi, v3 = Z``) or Barus (``v1 = alpha``).
-    Films ``h < 0`` count as 0. Chain rule: ``d sigma/dp = (sigma/rho) rho' +
-    rho d(sigma/rho)/d eta eta'``.
+    ``units = (p_unit, h_unit, s_unit, ds_unit)``: the node's pressure is ``p_unit p`` (Pa)
+    and film ``h_unit h`` (m); ``sx, sy`` get ``s_unit sigma`` and ``dsx, dsy``
+    ``ds_unit d sigma/dp``. Viscosity: Roelands (``v1 = ln(eta0/kappa), v2 = chi, v3 = Z``)
+    or Barus (``v1 = alpha``). Films ``h < 0`` count as 0. Chain rule: ``d sigma/dp =
+    (sigma/rho) rho' + rho d(sigma/rho)/d eta eta'``. The laws at p <= 0 (a cavitated
+    region) are those at 0, evaluated once.
     """
+    p_unit, h_unit, s_unit, ds_unit = units
+    at_zero = _pressure_laws(0.0, roelands, eta0, v1, v2, v3, gamma, lam)
     for k in numba.prange(p.size):
-        pk = p[k]
-        hk = max(h[k], 0.0)
-        if roelands:
-            eta, deta = _roelands_law(pk, eta0, v1, v2, v3)
+        pk = p[k] * p_unit
+        hk = max(h[k] * h_unit, 0.0)
+        if pk > 0.0:
+            eta, deta, r, dr = _pressure_laws(pk, roelands, eta0, v1, v2, v3, gamma, lam)
         else:
-            eta, deta = _barus_law(pk, eta0, v1)
-        if eta == math.inf:  # overflow at a huge pressure: the flow factors and slopes -> 0
-            deta = 0.0
-        r, dr = _dowson_higginson_law(pk, gamma, lam)
+            eta, deta, r, dr = at_zero
         fx, dfx = _eyring_x(hk, eta, shear)
         fy, dfy = _eyring_y(hk, eta, shear)
-        sx[k] = r * fx
-        sy[k] = r * fy
+        sx[k] = r * fx * s_unit
+        sy[k] = r * fy * s_unit
         rho[k] = r
         if slopes:
-            dsx[k] = fx * dr + r * dfx * deta
-            dsy[k] = fy * dr + r * dfy * deta
+            dsx[k] = (fx * dr + r * dfx * deta) * ds_unit
+            dsy[k] = (fy * dr + r * dfy * deta) * ds_unit
 
 
 def barus_viscosity(p, eta0, alpha):
@@ -356,31 +372,39 @@ class Lubricant:
         """Density at pressure ``p``, kg/m^3."""
         return self.density * self.density_ratio(p)
 
-    def flow_field(self, p, h, sliding_speed: float, slopes: bool = False):
+    def flow_field(self, p, h, sliding_speed: float, slopes: bool = False, *,
+                   units=(1.0, 1.0, 1.0)):
         """Flow factors and density ratio of a pressure and film field, in one parallel pass.
 
         The same as ``eyring_flow_factors(h, eta(p), density_ratio(p), sliding_speed,
         eyring_stress)`` and ``density_ratio(p)``, compiled and evaluated node by node on the
-        available cores (the EHL solvers call it at every sweep).
+        available cores (the EHL solvers call it at every sweep, on their dimensionless
+        fields: ``units``).
 
         Parameters
         ----------
         p : array_like
-            Pressure, Pa (negative counts as 0).
+            Pressure, in units of ``units[0]`` Pa (negative counts as 0).
         h : array_like
-            Film thickness, m, shaped like ``p`` (negative counts as 0).
+            Film thickness, in units of ``units[1]`` m, shaped like ``p`` (negative counts
+            as 0).
         sliding_speed : float
             du = u2 - u1, m/s.
         slopes : bool
             Also return the derivatives of the flow factors with respect to p at constant h
             (analytic, through eta(p) and rho(p); the right derivative at p <= 0).
+        units : (float, float, float)
+            Units of ``p`` (Pa) and ``h`` (m), and a factor on the returned flow factors and
+            slopes; the default: SI in and out.
 
         Returns
         -------
         sigma_x, sigma_y, rho_ratio : ndarray
-            Flow factors (in rho0 m^3/(Pa s)) and rho/rho0, shaped like ``p``.
+            Flow factors (in rho0 m^3/(Pa s), times ``units[2]``) and rho/rho0, shaped like
+            ``p``.
         dsigma_x, dsigma_y : ndarray
-            With ``slopes``: d sigma/dp, rho0 m^3/(Pa^2 s).
+            With ``slopes``: d sigma/dp times ``units[2]``, p in the units of ``p``
+            (SI: rho0 m^3/(Pa^2 s)).
         """
         p = np.asarray(p, dtype=float)
         h = np.asarray(h, dtype=float)
@@ -400,8 +424,9 @@ class Lubricant:
         gamma, lam = (self.dh_gamma, self.dh_lambda) if self.compressible else (0.0, 0.0)
         shear = 0.0 if self.newtonian else abs(float(sliding_speed)) / self.eyring_stress
         flat = [a.ravel(order=order) for a in (p, h, *out)]
-        _flow_field(*flat[:2], roelands, self.viscosity, v1, v2, v3, gamma, lam, shear,
-                    *flat[2:5], slopes, *flat[5:])
+        p_unit, h_unit, scale = (float(u) for u in units)
+        _flow_field(*flat[:2], (p_unit, h_unit, scale, scale * p_unit), roelands,
+                    self.viscosity, v1, v2, v3, gamma, lam, shear, *flat[2:5], slopes, *flat[5:])
         return tuple(out[:5 if slopes else 3])
 
 

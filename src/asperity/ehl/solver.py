@@ -222,17 +222,13 @@ class EHLState:
     def flow_coefficients(self, slopes: bool = False):
         """Dimensionless (eps_x, eps_y, rho_bar) at the current (P, H), lagged in a sweep;
         with ``slopes`` also (d eps_x/dP, d eps_y/dP) at constant H (analytic,
-        :meth:`asperity.ehl.lubricant.Lubricant.flow_field`)."""
+        :meth:`asperity.ehl.lubricant.Lubricant.flow_field`, which takes the dimensionless
+        fields and scales its results in its one pass over the nodes)."""
         prob = self.problem
         lub = prob.lubricant
-        out = lub.flow_field(self.P * prob.p_hertz, self.H * prob.film_scale,
-                             prob.sliding_speed, slopes=slopes)
         scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
-        sx, sy, rho = out[:3]
-        if not slopes:
-            return sx * scale, sy * scale, rho
-        dscale = scale * prob.p_hertz
-        return sx * scale, sy * scale, rho, out[3] * dscale, out[4] * dscale
+        return lub.flow_field(self.P, self.H, prob.sliding_speed, slopes=slopes,
+                              units=(prob.p_hertz, prob.film_scale, scale))
 
     def sweep(self, method: str):
         """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|.
