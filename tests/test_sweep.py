@@ -244,3 +244,41 @@ def test_axis_values_in_the_si_unit_of_their_dimension(values, expected, units):
         assert list(array) == expected
     else:
         np.testing.assert_allclose(array, expected, rtol=1e-12)
+
+
+def _paper_cases(name):
+    from asperity.cases import load_case
+
+    return [(coords, load_case(case)) for _, case, coords in load_study(name).cases]
+
+
+def test_seed_mesh_studies_run_the_paper_example():
+    """The seed-resolution studies (issue 17) are the paper example's mesh, domain and counting
+    period with only the swept keys changed; Table 2's paper values agree with the examples
+    that carry them (holmes-rough-AA, -BB, -CC, -AC, -C-smooth, -sqrt2C-smooth at xi = 0.25)."""
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+
+    for name, count in [("holmes-table2-paper", 14), ("holmes-aspect-ratio-paper", 3),
+                        ("holmes-transverse-waviness-paper", 6), ("holmes-mesh-CC", 4)]:
+        cases = _paper_cases(name)
+        assert len(cases) == count
+        for _, case in cases:
+            assert (case.grid.x_min, case.grid.x_max, case.grid.y_min, case.grid.y_max) \
+                == (-2.5, 1.5, -2.0, 2.0)
+            assert case.surface1.lowpass == 0 and case.surface2.lowpass == 0
+    for _, case in _paper_cases("holmes-table2-paper"):
+        assert (case.grid.nx, case.grid.ny, case.time.counting_steps) == (801, 201, 2370)
+    table2 = {(c.surface1.profile, c.surface1.scale,
+               c.surface2.profile if c.surface2.kind != "smooth" else None, c.speeds.xi):
+              c.paper_contact_time_percent for _, c in _paper_cases("holmes-table2-paper")}
+    assert len(table2) == 14
+    for example in ["AA", "BB", "CC", "AC", "C-smooth", "sqrt2C-smooth"]:
+        c = load_case(example_text(f"holmes-rough-{example}"))
+        key = (c.surface1.profile, c.surface1.scale,
+               c.surface2.profile if c.surface2.kind != "smooth" else None, c.speeds.xi)
+        assert table2[key] == c.paper_contact_time_percent
+    # the mesh study keeps the counting time: 2370 steps at dx = a/200, dt = dx / (2 u1)
+    for _, case in _paper_cases("holmes-mesh-CC"):
+        assert case.time.counting_steps / (case.grid.nx - 1) == pytest.approx(2370 / 800, rel=1e-3)
+        assert (case.grid.ny - 1) * 4 == case.grid.nx - 1
