@@ -175,36 +175,53 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
 
 
 @numba.njit(cache=True)
-def _block_band_solve(m, b, bl, bu):
-    """Solve a block-banded system of 2 x 2 blocks in place by block elimination.
+def _block_band_solve(m, b, bl, bu, x=None, start=0):
+    """Solve the block-banded system of a row (:func:`_assemble_row`) by block elimination,
+    from block row ``start``.
 
     ``m[i, j - i + bl]`` holds the 2 x 2 block A[i, j] for ``-bl <= j - i <= bu`` and
-    ``b[i]`` the right-hand side of block row i; ``b`` is overwritten with the solution.
-    Block LU without interchanges between block rows keeps the band, so it needs no fill-in
-    storage; each diagonal block is inverted directly. A row of the coupled (p, h) system has
-    a nonsingular diagonal block at every node (``det = A0 D0 - B0 C0 > 0`` at a fluid node,
-    ``D0`` cavitated, ``-C0`` in contact) and is dominated by it, which is what elimination
-    without pivoting needs; it costs about a third of a scalar band elimination with partial
-    pivoting (LAPACK ``gbsv``) of the same rows.
+    ``b[i]`` the right-hand side of block row i; the solution goes to ``x`` (to ``b`` without
+    ``x``). Block LU without interchanges between block rows keeps the band, so it needs no
+    fill-in storage; each diagonal block is inverted directly. ``m`` and ``b`` are eliminated
+    in place: block row k then holds the inverse of its pivot, its unchanged blocks right of
+    it and (with ``x``) its eliminated right-hand side. A row of the coupled (p, h) system
+    has a nonsingular diagonal block at every node (``det = A0 D0 - B0 C0 > 0`` at a fluid
+    node, ``D0`` cavitated, ``-C0`` in contact) and is dominated by it, which is what
+    elimination without pivoting needs; it costs about a third of a scalar band elimination
+    with partial pivoting (LAPACK ``gbsv``) of the same rows.
+
+    The h-columns of the blocks right of the diagonal are those of the deflection Laplacian:
+    ``(0, 1/dX^2)`` in A[k, k + 1] (zero at a boundary node) and zero further right. The
+    elimination keeps them (their updates only involve h-columns further right), so the
+    products with these zeros are left out; the other products are those of a full block
+    elimination, in the same order.
+
+    With ``start > 0`` rows ``< start`` must hold their elimination by an earlier call with
+    ``x`` and rows ``>= start`` the (new) system: only the rows from ``start`` on are
+    eliminated, in the same operations as a solve from row 0, so the solution is the same to
+    the bit.
     """
+    _eliminate(m, b, bl, bu, start)
+    if x is None:
+        _back_substitute(m, b, b, bl, bu)
+    else:
+        _back_substitute(m, b, x, bl, bu)
+
+
+@numba.njit(cache=True)
+def _eliminate(m, b, bl, bu, start):
+    """The block elimination of :func:`_block_band_solve`, from block row ``start``."""
     n = b.shape[0]
-    for k in range(n):
-        d00 = m[k, bl, 0, 0]
-        d01 = m[k, bl, 0, 1]
-        d10 = m[k, bl, 1, 0]
-        d11 = m[k, bl, 1, 1]
-        inv = 1.0 / (d00 * d11 - d01 * d10)
-        i00 = d11 * inv
-        i01 = -d01 * inv
-        i10 = -d10 * inv
-        i11 = d00 * inv
-        m[k, bl, 0, 0] = i00
-        m[k, bl, 0, 1] = i01
-        m[k, bl, 1, 0] = i10
-        m[k, bl, 1, 1] = i11
+    for k in range(max(0, start - bl), n):
+        if k >= start:
+            _invert_pivot(m, k, bl)
+        i00 = m[k, bl, 0, 0]
+        i01 = m[k, bl, 0, 1]
+        i10 = m[k, bl, 1, 0]
+        i11 = m[k, bl, 1, 1]
         b0 = b[k, 0]
         b1 = b[k, 1]
-        for i in range(k + 1, min(k + bl, n - 1) + 1):
+        for i in range(max(k + 1, start), min(k + bl, n - 1) + 1):
             a = k - i + bl
             a00 = m[i, a, 0, 0]
             a01 = m[i, a, 0, 1]
@@ -216,41 +233,66 @@ def _block_band_solve(m, b, bl, bu):
             l01 = a00 * i01 + a01 * i11
             l10 = a10 * i00 + a11 * i10
             l11 = a10 * i01 + a11 * i11
+            # h-column of block (k, k + 1): (0, 1/dX^2); right of it the h-column is zero
+            u11 = m[k, bl + 1, 1, 1]
+            m[i, bl + k + 1 - i, 0, 1] -= l01 * u11
+            m[i, bl + k + 1 - i, 1, 1] -= l11 * u11
             for j in range(k + 1, min(k + bu, n - 1) + 1):
                 u = j - k + bl
                 c = j - i + bl
                 u00 = m[k, u, 0, 0]
-                u01 = m[k, u, 0, 1]
                 u10 = m[k, u, 1, 0]
-                u11 = m[k, u, 1, 1]
                 m[i, c, 0, 0] -= l00 * u00 + l01 * u10
-                m[i, c, 0, 1] -= l00 * u01 + l01 * u11
                 m[i, c, 1, 0] -= l10 * u00 + l11 * u10
-                m[i, c, 1, 1] -= l10 * u01 + l11 * u11
             b[i, 0] -= l00 * b0 + l01 * b1
             b[i, 1] -= l10 * b0 + l11 * b1
+
+
+@numba.njit(cache=True)
+def _back_substitute(m, b, x, bl, bu):
+    """Back substitution of :func:`_block_band_solve` into ``x`` (which may be ``b``: each row
+    of ``b`` is read before it is overwritten)."""
+    n = b.shape[0]
     for k in range(n - 1, -1, -1):
         s0 = b[k, 0]
         s1 = b[k, 1]
         for j in range(k + 1, min(k + bu, n - 1) + 1):
             u = j - k + bl
-            s0 -= m[k, u, 0, 0] * b[j, 0] + m[k, u, 0, 1] * b[j, 1]
-            s1 -= m[k, u, 1, 0] * b[j, 0] + m[k, u, 1, 1] * b[j, 1]
-        b[k, 0] = m[k, bl, 0, 0] * s0 + m[k, bl, 0, 1] * s1
-        b[k, 1] = m[k, bl, 1, 0] * s0 + m[k, bl, 1, 1] * s1
+            s0 -= m[k, u, 0, 0] * x[j, 0]
+            if j == k + 1:
+                s1 -= m[k, u, 1, 0] * x[j, 0] + m[k, u, 1, 1] * x[j, 1]
+            else:
+                s1 -= m[k, u, 1, 0] * x[j, 0]
+        x[k, 0] = m[k, bl, 0, 0] * s0 + m[k, bl, 0, 1] * s1
+        x[k, 1] = m[k, bl, 1, 0] * s0 + m[k, bl, 1, 1] * s1
+
+
+@numba.njit(cache=True)
+def _invert_pivot(m, k, bl):
+    """Replace the diagonal 2 x 2 block ``m[k, bl]`` by its inverse."""
+    d00 = m[k, bl, 0, 0]
+    d01 = m[k, bl, 0, 1]
+    d10 = m[k, bl, 1, 0]
+    d11 = m[k, bl, 1, 1]
+    inv = 1.0 / (d00 * d11 - d01 * d10)
+    m[k, bl, 0, 0] = d11 * inv
+    m[k, bl, 0, 1] = -d01 * inv
+    m[k, bl, 1, 0] = -d10 * inv
+    m[k, bl, 1, 1] = d00 * inv
 
 
 @numba.njit(cache=True)
 def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
-                  f_near, j, kind, m, b, bl, deps_x, deps_y):
-    """Assemble the block-banded system of row j: block i holds (p_i, h_i); ``m[i, k + bl]``
-    couples node i to node i + k (layout of :func:`_block_band_solve`)."""
+                  f_near, j, kind, m, b, bl, deps_x, deps_y, start=0):
+    """Assemble block rows ``start..nx-1`` of the block-banded system of row j: block i holds
+    (p_i, h_i); ``m[i, k + bl]`` couples node i to node i + k (layout of
+    :func:`_block_band_solve`)."""
     nx, ny = p.shape
     two_d = ny > 1
     dx2, dy2, inv_dy2, d0 = _spacing(ny, dx, dy)
     kn = f_near.size - 1
-    m[:] = 0.0
-    for i in range(nx):
+    m[start:] = 0.0
+    for i in range(start, nx):
         if i == 0 or i == nx - 1:
             m[i, bl, 0, 0] = 1.0
             b[i, 0] = 0.0
@@ -291,6 +333,26 @@ def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
 
 
 @numba.njit(cache=True)
+def _update_active_set(row_kind, x):
+    """Move the interior nodes of a row whose solution ``x = (p, h)`` leaves their state:
+    fluid with p < 0 to cavitated, fluid or cavitated with h < 0 to contact, contact with
+    p < 0 to cavitated. Returns the first node moved (``len(x)`` if none)."""
+    n = x.shape[0]
+    first = n
+    for i in range(1, n - 1):
+        old = row_kind[i]
+        if old == FLUID and x[i, 0] < 0.0:
+            row_kind[i] = CAVITATED
+        elif old != CONTACT and x[i, 1] < 0.0:
+            row_kind[i] = CONTACT
+        elif old == CONTACT and x[i, 0] < 0.0:
+            row_kind[i] = CAVITATED
+        if row_kind[i] != old and first == n:
+            first = i
+    return first
+
+
+@numba.njit(cache=True)
 def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
                kind, deps_x, deps_y, j):
     """Solve row j for all its (p, h) at once with an active set (see :func:`line_sweep`).
@@ -304,6 +366,7 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
     bu = max(1, kn)
     m = np.empty((nx, bl + bu + 1, 2, 2))
     b = np.empty((nx, 2))
+    x = np.empty((nx, 2))
     d0 = _spacing(ny, dx, dy)[3]
     c_self = -c_el * f_near[0]
     row_kind = kind[:, j]
@@ -318,28 +381,19 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
             row_kind[i] = FLUID
         elif row_kind[i] == CONTACT and (a0 * e - c_self * r) / det > 0.0:
             row_kind[i] = FLUID
+    start = 0
     for _ in range(4):
         _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
-                      f_near, j, row_kind, m, b, bl, deps_x, deps_y)
-        _block_band_solve(m, b, bl, bu)
-        changed = False
-        for i in range(1, nx - 1):
-            if row_kind[i] == FLUID and b[i, 0] < 0.0:
-                row_kind[i] = CAVITATED
-                changed = True
-            elif row_kind[i] != CONTACT and b[i, 1] < 0.0:
-                row_kind[i] = CONTACT
-                changed = True
-            elif row_kind[i] == CONTACT and b[i, 0] < 0.0:
-                row_kind[i] = CAVITATED
-                changed = True
-        if not changed:
+                      f_near, j, row_kind, m, b, bl, deps_x, deps_y, start)
+        _block_band_solve(m, b, bl, bu, x, start)
+        start = _update_active_set(row_kind, x)
+        if start == nx:
             break
     dp_max = 0.0
     dh_max = 0.0
     for i in range(1, nx - 1):
-        pn = max(b[i, 0], 0.0)
-        hn = max(b[i, 1], 0.0)
+        pn = max(x[i, 0], 0.0)
+        hn = max(x[i, 1], 0.0)
         dp_max = max(dp_max, abs(pn - p[i, j]))
         dh_max = max(dh_max, abs(hn - h[i, j]))
         p[i, j] = pn
@@ -354,7 +408,8 @@ def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
 
     Each row is solved for all its (p, h) at once with an active set: nodes are fluid,
     cavitated (p = 0) or in contact (h = 0). Fluid nodes that come out with p < 0 (h < 0)
-    become cavitated (in contact) and the row is solved again; cavitated or contact nodes are
+    become cavitated (in contact) and the row is solved again from the first node that changed
+    (the elimination of the nodes before it is kept); cavitated or contact nodes are
     released when the point update of Eq. 7 at the current iterate gives p > 0 (h > 0).
     ``kind`` (int8, shape p.shape) persists the active set between sweeps. ``f_near[k]`` are
     the implicit coefficients f_{k,0}, k = 0..K; ``efar`` must exclude them.
