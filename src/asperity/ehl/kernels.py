@@ -451,3 +451,53 @@ def damp_oscillations(p, h, p_before, h_before, last_change, damping, has_last):
                 p[i, j] = p_before[i, j] + change
                 h[i, j] = h_before[i, j] + damping * (h[i, j] - h_before[i, j])
             last_change[i, j] = change
+
+
+@numba.njit(cache=True)
+def _laplacian_column(w, j, dx2, dy2, two_d, out):
+    """Column j of the 5-point Laplacian of ``w`` into ``out[:, j]``:
+    ``(w_E - 2 w_P + w_W)/dX^2 [+ (w_N - 2 w_P + w_S)/dY^2]``, the y-part only when
+    ``two_d``; zero on the edges (i = 0, nx - 1 and, when ``two_d``, j = 0, ny - 1)."""
+    nx, ny = w.shape
+    out[0, j] = 0.0
+    out[nx - 1, j] = 0.0
+    if two_d and (j == 0 or j == ny - 1):
+        out[1:nx - 1, j] = 0.0
+        return
+    for i in range(1, nx - 1):
+        lap = (w[i + 1, j] - 2.0 * w[i, j] + w[i - 1, j]) / dx2
+        if two_d:
+            lap += (w[i, j + 1] - 2.0 * w[i, j] + w[i, j - 1]) / dy2
+        out[i, j] = lap
+
+
+@numba.njit(cache=True, parallel=True)
+def five_point_laplacian(w, dx2, dy2, two_d, out):
+    """The 5-point Laplacian of the nodal field ``w`` into ``out`` (:func:`_laplacian_column`;
+    ``dx2, dy2`` the squared spacings)."""
+    for j in numba.prange(w.shape[1]):
+        _laplacian_column(w, j, dx2, dy2, two_d, out)
+
+
+@numba.njit(cache=True, parallel=True)
+def far_field(w, p, source, c_el, f_near, dx2, dy2, two_d, efar):
+    """The far-field term ``efar = source + c (Delta_h w - sum_{|k|<=K} f_k p_{i+k})`` of the
+    deflection equation at every node, into ``efar``.
+
+    ``w = D * p`` is the deflection sum, ``Delta_h`` its 5-point Laplacian
+    (:func:`_laplacian_column`, zero on the edges) and ``f_near[k]`` the coefficients f_{k,0}
+    kept implicit by the sweeps, summed over the x-neighbours inside the grid. Fastest with
+    all fields x-fastest (like those of :class:`asperity.ehl.solver.EHLState`).
+    """
+    nx, ny = p.shape
+    kn = f_near.size - 1
+    for j in numba.prange(ny):
+        _laplacian_column(w, j, dx2, dy2, two_d, efar)
+        for i in range(nx):
+            near = f_near[0] * p[i, j]
+            for k in range(1, kn + 1):
+                if i >= k:
+                    near += f_near[k] * p[i - k, j]
+                if i + k < nx:
+                    near += f_near[k] * p[i + k, j]
+            efar[i, j] = source[i, j] + c_el * (efar[i, j] - near)

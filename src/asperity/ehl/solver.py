@@ -32,7 +32,7 @@ from ..elastic.differential import (
 from ..elastic.kernels import love_integral
 from ..errors import InputError, check_int, check_positive
 from ..solution import SolverResult, renamed_keywords
-from .kernels import damp_oscillations, line_sweep, point_sweep
+from .kernels import damp_oscillations, far_field, five_point_laplacian, line_sweep, point_sweep
 from .lubricant import friction_coefficient
 from .nodal import at_centre as _at_centre
 from .nodal import centre_line as _centre_line
@@ -180,13 +180,10 @@ class EHLState:
         self._source = self.laplacian(self._roughness) + self.problem.curvature
 
     def laplacian(self, field) -> np.ndarray:
-        """5-point Laplacian ``Delta_h`` of a nodal field (zero on the edges)."""
-        out = np.zeros_like(field)
-        out[1:-1] = (field[2:] - 2 * field[1:-1] + field[:-2]) / self.dX**2
-        if not self.line:
-            out[:, 1:-1] += (field[:, 2:] - 2 * field[:, 1:-1] + field[:, :-2]) / self.dY**2
-            out[:, [0, -1]] = 0.0
-        out[[0, -1]] = 0.0
+        """5-point Laplacian ``Delta_h`` of a nodal field (zero on the edges), x-fastest."""
+        field = np.asarray(field, dtype=float)
+        out = np.empty(field.shape, order="F")
+        five_point_laplacian(field, self.dX**2, self.dY**2, not self.line, out)
         return out
 
     def refresh(self):
@@ -197,15 +194,12 @@ class EHLState:
         ``H = H0 + geometry + phi + c W``, ``W = D * P`` (EHL-NOTES sec. 2). Since ``f`` is the
         5-point Laplacian of ``D`` (:mod:`asperity.elastic.differential`), ``S = Delta_h W``
         exactly at the interior nodes, where ``efar`` is used: a refresh costs one forward and
-        one inverse FFT.
+        one inverse FFT and one compiled pass over the nodes
+        (:func:`asperity.ehl.kernels.far_field`, into ``efar`` in place).
         """
-        W = self._d_conv(self.P)
-        S = self.laplacian(W)
-        near = self.f_near[0] * self.P
-        for k in range(1, self.f_near.size):
-            near[k:] += self.f_near[k] * self.P[:-k]
-            near[:-k] += self.f_near[k] * self.P[k:]
-        self.efar = self._source + self.c * (S - near)
+        W = np.asfortranarray(self._d_conv(self.P))
+        far_field(W, self.P, self._source, self.c, self.f_near, self.dX**2, self.dY**2,
+                  not self.line, self.efar)
         self.H[self.edge] = self.rigid_film(W)[self.edge]
         self.refreshes += 1
         self._derivatives = None
