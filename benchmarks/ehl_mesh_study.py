@@ -1,0 +1,142 @@
+"""Mesh convergence of the contact statistics of a finished ``holmes-mesh-CC`` study.
+
+Reads ``OUT/cases/NNNN/result.nc`` and ``summary.json`` of ``asperity sweep holmes-mesh-CC
+--out OUT`` (the seed's C-C case at xi = 0.25 on 301 x 76, 401 x 101, 601 x 151 and 801 x 201
+over the same counting time) and prints, per mesh:
+
+- the percentage of counting steps with contact at one or more nodes (the seed's Table 2
+  measure) and the mean contact area per step over the Hertz area ``pi a b``;
+- the largest contact count rate Q (per ms, the seed's Figs. 4-8) and the largest fraction of
+  the counting time a node spends in contact. Q counts timesteps, and the timestep is
+  ``dx / (2 u1)``, so at the same fraction of time in contact Q grows as the mesh is refined:
+  the time fraction (``Q dt``) is the measure that can converge; ``Q`` is also given scaled to
+  the seed's timestep;
+- where the contact is: the share of the contact (node-steps weighted by cell area) at the
+  transverse edges ``|y| > 0.8 b`` and downstream of the centre (``x > 0``);
+- the Q map against the finest mesh's: the time fraction in contact averaged over common bins
+  (``a/10 x b/5`` over ``|x| <= 1.2 a``, ``|y| <= 1.2 b``), relative L2 difference and
+  correlation coefficient;
+- largest pressure, steady central film, mean sweeps per step, wall time from ``summary.json``.
+
+``--figure PATH`` writes the four time-fraction maps side by side.
+
+Run: ``python benchmarks/ehl_mesh_study.py OUT [--figure mesh.png]``.
+"""
+
+import argparse
+import json
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+BINS_X = np.linspace(-1.2, 1.2, 25)  # in a
+BINS_Y = np.linspace(-1.2, 1.2, 13)  # in b
+
+
+def load(folder: Path):
+    """(dataset, summary) of one finished case folder."""
+    data = xr.open_dataset(folder / "result.nc")
+    summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
+    return data, summary
+
+
+def binned_fraction(frac, X, Y):
+    """Mean over the bins of the per-node time fraction in contact (nodes weighted equally:
+    the grids are uniform), shape (len(BINS_X) - 1, len(BINS_Y) - 1)."""
+    Xg, Yg = np.meshgrid(X, Y, indexing="ij")
+    total, _, _ = np.histogram2d(Xg.ravel(), Yg.ravel(), [BINS_X, BINS_Y], weights=frac.ravel())
+    count, _, _ = np.histogram2d(Xg.ravel(), Yg.ravel(), [BINS_X, BINS_Y])
+    return total / np.maximum(count, 1)
+
+
+def mesh_row(folder: Path) -> dict:
+    """The statistics of one mesh (see the module docstring)."""
+    data, summary = load(folder)
+    a = summary["hertz_a_m"]
+    x, y = data.x.values, data.y.values
+    dx, dy = x[1] - x[0], y[1] - y[0]
+    steps = int(data.attrs["counting_steps"])
+    count = data.contact_count.values
+    frac = count / steps
+    # b from the Hertz ellipse of the paper case: y runs over -2b..2b
+    b = -y[0] / 2.0
+    X, Y = x / a, y / b
+    Yg = np.broadcast_to(Y, count.shape)
+    Xg = np.broadcast_to(X[:, None], count.shape)
+    total = count.sum()
+    return {
+        "mesh": f"{x.size}x{y.size}",
+        "steps": steps,
+        "contact_percent": summary["contact_time_percent"],
+        "area_fraction": float(total * dx * dy / steps / (np.pi * a * b)),
+        "max_q": summary["max_contact_count_rate_per_ms"],
+        # Q = (time fraction) / dt, dt proportional to dx: scaled to the seed's dx = a/200
+        "max_q_seed_dt": summary["max_contact_count_rate_per_ms"] * dx / (a / 200.0),
+        "max_fraction": float(frac.max()),
+        "edge_share": float(count[np.abs(Yg) > 0.8].sum() / total) if total else np.nan,
+        "downstream_share": float(count[Xg > 0].sum() / total) if total else np.nan,
+        "bins": binned_fraction(frac, X, Y),
+        "frac": frac, "X": X, "Y": Y,
+        "max_pressure_gpa": summary["max_pressure_pa"] / 1e9,
+        "central_film_um": summary["steady_central_film_thickness_m"] * 1e6,
+        "sweeps": summary["mean_sweeps_per_step"],
+        "converged": summary["steps_converged_fraction"],
+    }
+
+
+def compare_maps(rows):
+    """Relative L2 difference and correlation of each binned map with the last (finest)."""
+    ref = rows[-1]["bins"]
+    for row in rows:
+        diff = row["bins"] - ref
+        row["map_l2"] = float(np.linalg.norm(diff) / np.linalg.norm(ref))
+        row["map_corr"] = float(np.corrcoef(row["bins"].ravel(), ref.ravel())[0, 1])
+
+
+def figure(rows, path):
+    """The per-node time fraction in contact of every mesh, side by side."""
+    from asperity.plotting.style import plt
+
+    fig, axes = plt.subplots(1, len(rows), figsize=(3.2 * len(rows), 3.6), sharey=True,
+                             constrained_layout=True)
+    vmax = max(float(r["frac"].max()) for r in rows)
+    t = np.linspace(0, 2 * np.pi, 200)
+    for ax, row in zip(np.atleast_1d(axes), rows, strict=True):
+        im = ax.pcolormesh(row["X"], row["Y"], 100 * row["frac"].T, vmin=0, vmax=100 * vmax,
+                           cmap="magma_r", shading="nearest")
+        ax.plot(np.cos(t), np.sin(t), color="0.5", lw=0.8)
+        ax.set_xlim(-1.3, 1.3)
+        ax.set_ylim(-1.3, 1.3)
+        ax.set_title(f"{row['mesh']}: {row['contact_percent']:.1f} % of steps", fontsize=9)
+        ax.set_xlabel("x / a")
+    np.atleast_1d(axes)[0].set_ylabel("y / b")
+    fig.colorbar(im, ax=axes, label="time in contact, % of counting time")
+    fig.savefig(path, dpi=150)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", type=Path, help="the study's output folder")
+    parser.add_argument("--figure", type=Path, help="write the time-fraction maps here")
+    args = parser.parse_args()
+    folders = sorted(p for p in (args.out / "cases").iterdir() if (p / "summary.json").exists())
+    rows = sorted((mesh_row(f) for f in folders), key=lambda r: r["frac"].size)
+    compare_maps(rows)
+    print(f"{'mesh':>8} {'steps':>5} {'contact %':>9} {'area/Hertz':>10} {'max Q/ms':>8} "
+          f"{'Q at seed dt':>12} {'max time %':>10} {'|y|>0.8b':>8} {'x>0':>5} "
+          f"{'map L2':>6} {'map r':>5} {'p_max GPa':>9} {'h_c um':>6} {'sweeps':>6} "
+          f"{'conv.':>5}")
+    for r in rows:
+        print(f"{r['mesh']:>8} {r['steps']:5d} {r['contact_percent']:9.1f} "
+              f"{r['area_fraction']:10.4f} {r['max_q']:8.0f} {r['max_q_seed_dt']:12.0f} "
+              f"{100 * r['max_fraction']:10.1f} {r['edge_share']:8.2f} "
+              f"{r['downstream_share']:5.2f} {r['map_l2']:6.2f} {r['map_corr']:5.2f} "
+              f"{r['max_pressure_gpa']:9.2f} {r['central_film_um']:6.3f} {r['sweeps']:6.1f} "
+              f"{r['converged']:5.3f}")
+    if args.figure:
+        figure(rows, args.figure)
+
+
+if __name__ == "__main__":
+    main()
