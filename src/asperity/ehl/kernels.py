@@ -46,7 +46,8 @@ FLUID, CAVITATED, CONTACT = 0, 1, 2
 
 # The helpers called at every node are inlined into their callers by numba
 # (``inline="always"``): called as functions, they took their arrays with reference counts
-# (atomic increments and decrements at every call), a fifth of the line sweep's time.
+# (atomic increments and decrements at every call), an eighth of the line sweep's time on
+# 571 x 201 nodes (10.5 against 9.2 ms, one thread).
 
 
 @numba.njit(cache=True, inline="always")
