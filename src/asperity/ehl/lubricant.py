@@ -179,10 +179,10 @@ def _flow_field(p, h, units, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, 
     for k in numba.prange(p.size):
         pk = p[k] * p_unit
         hk = max(h[k] * h_unit, 0.0)
-        if pk > 0.0:
-            eta, deta, r, dr = _pressure_laws(pk, roelands, eta0, v1, v2, v3, gamma, lam)
-        else:
+        if pk <= 0.0:
             eta, deta, r, dr = at_zero
+        else:  # p > 0 or NaN
+            eta, deta, r, dr = _pressure_laws(pk, roelands, eta0, v1, v2, v3, gamma, lam)
         fx, dfx = _eyring_x(hk, eta, shear)
         fy, dfy = _eyring_y(hk, eta, shear)
         sx[k] = r * fx * s_unit
