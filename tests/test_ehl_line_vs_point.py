@@ -37,15 +37,9 @@ NX = 131
 # the seed's mesh and domain (holmes-rough-CC-paper): 801 x 201 on -2.5a..1.5a, -2b..2b
 SEED_NX, SEED_NY = 801, 201
 SEED_DOMAIN = ((-2.5, 1.5), (-2.0, 2.0))
-# The line contact's smooth steady start at 801 nodes (a/200): with the defaults (one grid,
-# load gain 0.01 per sweep) the point update never converges there (40000 sweeps, load error
-# swinging +-0.3). The point relaxation itself does not diverge but is slow (with the separation
-# frozen the load error drifts for ~1500 sweeps), so the per-sweep load correction overshoots:
-# converged at 201 nodes with 0.01, at 401 with 0.003 (not 0.01), at 801 with none of 0.01 / 0.003 /
-# 0.0015 on one grid. Grid sequencing from 101 nodes with gain 1e-4 converges, to 1e-6 as well
-# (0.0005 reached 1e-5 but then oscillated). Only the steady start: the transient steps
-# converge with the defaults.
-SEED_LINE_STEADY = dict(levels=4, load_gain=1e-4)
+# The line contact's smooth steady start at 801 nodes (a/200) converges with the defaults
+# (grid sequencing from 101 nodes, load gain scaled with the mesh: docs/ehl-robustness.md,
+# tests/test_ehl_line_steady.py); before, one grid with gain 0.01 never converged there.
 
 
 def _fig10_setup(counting_steps, snapshots, nx=NX, ny=None, domain=None, lowpass=True,
@@ -55,7 +49,7 @@ def _fig10_setup(counting_steps, snapshots, nx=NX, ny=None, domain=None, lowpass
     ``ny`` and ``domain`` (in Hertz semi-axes, ((x0, x1), (y0, y1))) default to the
     holmes-rough-AA example's; ``lowpass=False`` keeps the profiles' shortest wavelengths (as
     the paper-mesh example does); ``line_steady``: extra options of the line contact's smooth
-    steady start (see :data:`SEED_LINE_STEADY`). Returns a dict for :func:`_run_point` /
+    steady start (:func:`solve_steady` keywords). Returns a dict for :func:`_run_point` /
     :func:`_run_line`.
     """
     point_case = load_case(example_text("holmes-rough-AA"))
@@ -191,8 +185,7 @@ def test_line_contact_follows_point_contact_on_seed_mesh():
     differences are 5-35 % above the reduced mesh's 20-step run (max 0.077-0.088, RMS
     0.029-0.033 h_c) and within its 200-step range (max up to 0.11, RMS up to 0.042).
     """
-    c = _fig10(10, 5, SEED_NX, SEED_NY, SEED_DOMAIN, lowpass=False,
-               line_steady=SEED_LINE_STEADY)
+    c = _fig10(10, 5, SEED_NX, SEED_NY, SEED_DOMAIN, lowpass=False)
     assert c.steps.tolist() == [2059, 2061, 2064, 2066, 2068] and c.x.size == SEED_NX
     assert c.x[1] - c.x[0] == pytest.approx(c.a / 200, rel=1e-6)
     _check_seed_statement(c)

@@ -45,6 +45,23 @@ __all__ = ["EHLState", "SteadyResult", "solve_steady"]
 #: 12 % below that of an inlet at -2a (-1.1a: 13 %, film -47 %; -1.6a: 0.4 %, -5 %).
 STARVED_INLET = 0.01
 
+#: Default separation shift per sweep per unit relative load error (dimensionless film units).
+POINT_LOAD_GAIN = 0.05
+LINE_LOAD_GAIN = 0.01
+#: A line contact on a mesh finer than its default one (``problem.default_nodes``) gets
+#: ``LINE_LOAD_GAIN (dX / dX_default)^3.5`` on that grid. The point update of a line contact
+#: moves the pressure, and so the load, only slowly after a shift of the separation: on the
+#: seed's line contact (-2.5a..1.5a) the load error reaches 63 % of its value 6000 sweeps
+#: later 1, 7, 38 and 250 sweeps after the shift on 101, 201, 401 and 801 nodes (~ N^2.6),
+#: so the per-sweep load correction, an integral control of that lag, overshoots and cycles
+#: unless its gain falls about as fast: the largest gains that converged there were 2.5e-3,
+#: 8.8e-4 and 2.2e-4 on 401, 513 and 801 nodes (default 257: 0.01); the exponent 3.5 gives
+#: 2.1e-3, 8.8e-4, 1.9e-4. Not smaller: where the point relaxation keeps drifting slowly
+#: the gain sets the load error left (drift / gain), and the Newtonian M = 100 line contact
+#: on twice its default resolution converged with 8.8e-4, not with 6.3e-4
+#: (docs/ehl-robustness.md).
+LINE_GAIN_EXPONENT = 3.5
+
 
 class _XFastest:
     """A nodal field of :class:`EHLState`, stored x-fastest (Fortran order) whatever is assigned.
@@ -480,8 +497,9 @@ def solve_steady(
     levels : int, optional
         Grid sequencing: solve first on ``levels - 1`` grids coarsened by 2 in each direction
         (node counts ``(n - 1)/2 + 1``) and interpolate each solution as the next start.
-        Default: :func:`sequencing_levels` of the default mesh when ``nx`` is not given,
-        else 1.
+        Default: :func:`sequencing_levels` of the default mesh when ``nx`` is not given; with
+        ``nx`` given, :func:`sequencing_levels` of ``(nx, 1)`` for a line contact (cheap there,
+        and needed on fine meshes: docs/ehl-robustness.md), else 1.
     near : int
         Number of x-neighbour pressure coefficients kept implicit by the line relaxation.
     tol : float
@@ -495,7 +513,11 @@ def solve_steady(
         Sweeps between FFT refreshes of the far field and the edge films.
     load_gain : float, optional
         Separation shift per sweep per unit relative load error (dimensionless film units);
-        default 0.05 (point contact), 0.01 (line contact).
+        default 0.05 (point contact), 0.01 (line contact) on grids no finer than the default
+        mesh; on a finer grid a line contact gets ``0.01 (dX / dX_default)^3.5``
+        (:data:`LINE_GAIN_EXPONENT`: the point update's load answers a shift of the
+        separation the more slowly the finer the mesh, and a larger gain overshoots). A
+        given value is used on every grid.
     initial_film : float, optional
         Central film of the Hertzian start, m; default Nijenbanning's (point) or Moes' (line)
         Newtonian central film.
@@ -512,14 +534,21 @@ def solve_steady(
     SteadyResult
     """
     line, method = check_contact_and_method(problem, method)
+    scale_gain = line and load_gain is None
     if load_gain is None:
-        load_gain = 0.01 if line else 0.05
+        load_gain = LINE_LOAD_GAIN if line else POINT_LOAD_GAIN
     tol = check_positive("tol", tol)
     load_gain = check_positive("load_gain", load_gain)
     damping = check_damping(damping)
     default_nx, default_ny = problem.default_nodes(domain)
     if levels is None:
-        levels = sequencing_levels(default_nx, default_ny) if nx is None else 1
+        if nx is None:
+            levels = sequencing_levels(default_nx, default_ny)
+        elif line:
+            nx = check_int("nx", nx, 9, "an integer number of nodes >= 9")
+            levels = sequencing_levels(nx, 1)
+        else:
+            levels = 1
     nx = default_nx if nx is None else nx
     ny = default_ny if ny is None else ny
     levels = check_int("levels", levels, 1)
@@ -551,8 +580,11 @@ def solve_steady(
         else:
             new.interpolate_from(state)
         state = new
+        gain = load_gain
+        if scale_gain and gx > default_nx:
+            gain *= ((default_nx - 1) / (gx - 1)) ** LINE_GAIN_EXPONENT
         converged, residual, sweeps, history = _relax(
-            state, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=load_gain,
+            state, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
             callback=callback, sweep_offset=total,
         )
         total += sweeps
@@ -568,9 +600,10 @@ def solve_steady(
 
 
 def sequencing_levels(nx: int, ny: int) -> int:
-    """Grid-sequencing levels of a default mesh: halve (at most 3 times) while the coarsest
-    grid keeps at least 33 nodes along x and 17 across (``ny = 1``: a line contact); on
-    9 nodes across (dY = b/2) the gear case's coarsest grid did not converge."""
+    """Grid-sequencing levels of a default mesh (and of a line contact's given mesh): halve
+    (at most 3 times) while the coarsest grid keeps at least 33 nodes along x and 17 across
+    (``ny = 1``: a line contact); on 9 nodes across (dY = b/2) the gear case's coarsest grid
+    did not converge."""
     levels = 1
     while levels < 4:
         f = 2**levels
