@@ -48,7 +48,8 @@ def test_pitch_point_equals_direct_solver_call():
     problem = LineContact(r1 * r2 / (r1 + r2), w, v, v, STEEL, STEEL, NEWTONIAN)
     a = problem.a
     direct = solve_steady(problem, nx=97, domain=((-2.5 * a, 1.5 * a), (0.0, 0.0)),
-                          tol=mesh.tol, max_iter=mesh.max_sweeps, damping=0.3)
+                          levels=mesh.levels, tol=mesh.tol, max_iter=mesh.max_sweeps,
+                          damping=0.3)
     assert direct.converged and res.converged[0]
     assert res.central_film[0] == pytest.approx(direct.central_film, rel=1e-9)
     assert res.minimum_film[0] == pytest.approx(direct.minimum_film, rel=1e-9)
