@@ -12,7 +12,8 @@ over the same counting time) and prints, per mesh:
   the time fraction (``Q dt``) is the measure that can converge; ``Q`` is also given scaled to
   the seed's timestep;
 - where the contact is: the share of the contact (node-steps weighted by cell area) at the
-  transverse edges ``|y| > 0.8 b`` and downstream of the centre (``x > 0``);
+  transverse edges ``|y| > 0.8 b`` and downstream of the centre (``x > 0``), the share of the
+  edge contact that lies downstream, and the node of the largest Q;
 - the Q map against the finest mesh's: the time fraction in contact averaged over common bins
   (``a/10 x b/5`` over ``|x| <= 1.2 a``, ``|y| <= 1.2 b``), relative L2 difference and
   correlation coefficient;
@@ -76,6 +77,11 @@ def mesh_row(folder: Path) -> dict:
         "max_fraction": float(frac.max()),
         "edge_share": float(count[np.abs(Yg) > 0.8].sum() / total) if total else np.nan,
         "downstream_share": float(count[Xg > 0].sum() / total) if total else np.nan,
+        "edge_downstream": (float(count[(np.abs(Yg) > 0.8) & (Xg > 0)].sum()
+                                  / count[np.abs(Yg) > 0.8].sum()) if total else np.nan),
+        "max_at": tuple(float(v) for v in
+                        (X[np.unravel_index(count.argmax(), count.shape)[0]],
+                         Y[np.unravel_index(count.argmax(), count.shape)[1]])),
         "bins": binned_fraction(frac, X, Y),
         "frac": frac, "X": X, "Y": Y,
         "max_pressure_gpa": summary["max_pressure_pa"] / 1e9,
@@ -125,13 +131,16 @@ def main():
     compare_maps(rows)
     print(f"{'mesh':>8} {'steps':>5} {'contact %':>9} {'area/Hertz':>10} {'max Q/ms':>8} "
           f"{'Q at seed dt':>12} {'max time %':>10} {'|y|>0.8b':>8} {'x>0':>5} "
-          f"{'map L2':>6} {'map r':>5} {'p_max GPa':>9} {'h_c um':>6} {'sweeps':>6} "
+          f"{'edge x>0':>8} {'max Q at (x/a, y/b)':>19} {'map L2':>6} {'map r':>5} "
+          f"{'p_max GPa':>9} {'h_c um':>6} {'sweeps':>6} "
           f"{'conv.':>5}")
     for r in rows:
+        where = "({:+.3f}, {:+.2f})".format(*r["max_at"])
         print(f"{r['mesh']:>8} {r['steps']:5d} {r['contact_percent']:9.1f} "
               f"{r['area_fraction']:10.4f} {r['max_q']:8.0f} {r['max_q_seed_dt']:12.0f} "
               f"{100 * r['max_fraction']:10.1f} {r['edge_share']:8.2f} "
-              f"{r['downstream_share']:5.2f} {r['map_l2']:6.2f} {r['map_corr']:5.2f} "
+              f"{r['downstream_share']:5.2f} {r['edge_downstream']:8.2f} "
+              f"{where:>19} {r['map_l2']:6.2f} {r['map_corr']:5.2f} "
               f"{r['max_pressure_gpa']:9.2f} {r['central_film_um']:6.3f} {r['sweeps']:6.1f} "
               f"{r['converged']:5.3f}")
     if args.figure:
