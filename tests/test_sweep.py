@@ -282,3 +282,27 @@ def test_seed_mesh_studies_run_the_paper_example():
     for _, case in _paper_cases("holmes-mesh-CC"):
         assert case.time.counting_steps / (case.grid.nx - 1) == pytest.approx(2370 / 800, rel=1e-3)
         assert (case.grid.ny - 1) * 4 == case.grid.nx - 1
+
+
+def test_unset_removes_a_base_key_from_every_case(tmp_path):
+    """``unset`` drops a key of the base case (here its title); a key the base does not set is
+    refused, naming the entry."""
+    study = _study(tmp_path, 'unset = ["title"]\n[[axis]]\nkey = "loading.load"\n'
+                             'values = ["5 N", "10 N"]\n')
+    assert all("title" not in case and case["grid"]["nx"] == 24 for _, case, _ in study.cases)
+    with pytest.raises(InputError, match=r"unset\[0\]"):
+        _study(tmp_path, 'unset = ["grid.z_extent"]\n[[axis]]\nkey = "loading.load"\n'
+                         'values = ["5 N"]\n')
+
+
+def test_derived_studies_do_not_compare_with_the_base_paper_value():
+    """The aspect-ratio and waviness studies are built on the C-C example, whose Table 2 value
+    (95 %) is not the paper's number for their cases."""
+    from asperity.cases import load_case
+
+    for name in ["holmes-aspect-ratio", "holmes-aspect-ratio-paper",
+                 "holmes-transverse-waviness", "holmes-transverse-waviness-paper"]:
+        for _, case, _ in load_study(name).cases:
+            assert load_case(case).paper_contact_time_percent is None
+    assert {load_case(c).paper_contact_time_percent
+            for _, c, _ in load_study("holmes-mesh-CC").cases} == {95}

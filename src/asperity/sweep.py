@@ -10,7 +10,9 @@ A study file (TOML)::
     key = "loading.load"                # dotted path into the case
     values = ["5 N", "10 N", "20 N"]    # or: range = {start = 5, stop = 20, num = 4, unit = "N"}
 
-An axis may also set several keys together (one dimension, labelled points)::
+``unset = ["paper_contact_time_percent"]`` removes keys of the base case from every case (a
+value that holds for the base only). An axis may also set several keys together (one
+dimension, labelled points)::
 
     [[axis]]
     name = "surfaces"
@@ -65,6 +67,24 @@ def _set_path(data: dict, dotted: str, value) -> None:
             node[k] = {}
         node = node[k]
     node[keys[-1]] = value
+
+
+def _unset(data: dict, keys) -> None:
+    """Remove the dotted ``keys`` of the study's ``unset`` list from the base case.
+
+    For a base key that does not hold for the swept cases, e.g. the paper's value of the base
+    case (``paper_contact_time_percent``), which a study of other cases must not compare with.
+    """
+    if not (isinstance(keys, list) and all(isinstance(k, str) for k in keys)):
+        raise InputError("unset", "a list of dotted keys of the base case", keys)
+    for i, dotted in enumerate(keys):
+        *head, last = dotted.split(".")
+        node = data
+        for k in head:
+            node = node.get(k) if isinstance(node, dict) else None
+        if not isinstance(node, dict) or last not in node:
+            raise InputError(f"unset[{i}]", "a key the base case sets", dotted)
+        del node[last]
 
 
 def _axis_values(axis: dict, index: int) -> list:
@@ -128,7 +148,7 @@ def load_study(path: str | Path) -> Study:
     path = Path(path)
     text = path.read_text(encoding="utf-8") if path.is_file() else study_text(str(path))
     spec = parse_toml(text, str(path))
-    unknown = set(spec) - {"title", "base", "mode", "axis", "description"}
+    unknown = set(spec) - {"title", "base", "mode", "axis", "description", "unset"}
     if unknown:
         raise InputError(sorted(unknown)[0], "", problem="unknown key (check the spelling)")
     base = spec.get("base")
@@ -137,6 +157,7 @@ def load_study(path: str | Path) -> Study:
     base_path = path.parent / base
     text = base_path.read_text(encoding="utf-8") if base_path.is_file() else example_text(base)
     base_case = parse_toml(text, base)
+    _unset(base_case, spec.get("unset", []))
     mode = spec.get("mode", "cross")
     if mode not in ("cross", "zip"):
         raise InputError("mode", '"cross" or "zip"', mode)
