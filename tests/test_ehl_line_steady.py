@@ -86,3 +86,19 @@ def test_seed_line_contact_converges_with_defaults_up_to_a_400(seed_line, fine, 
     res = solve_steady(prob, nx=nx, domain=domain)
     assert res.converged and res.sweeps < 5000
     assert res.central_film == pytest.approx(fine.central_film, rel=3e-3)
+
+
+def test_case_file_with_a_fine_grid_uses_the_solvers_grid_sequence():
+    """A case file that gives [grid] nx but no solver.levels gets the solver's default
+    sequence (a line contact at 801 nodes starts on 101), so it converges like the library
+    call above; before, the case layer passed levels = 1 and the same file ran 40000 sweeps
+    without converging."""
+    from asperity.runners import run_case
+
+    text = example_text("holmes-smooth-line").replace("nx = 257", "nx = 801")
+    outcome = run_case(load_case(text))
+    assert outcome.converged
+    assert outcome.summary["total_sweeps"] > outcome.summary["sweeps"]  # coarse grids ran
+    # the 801-node film of the library call (482.50 nm at tol 1e-5; Richardson limit of
+    # 201-1601 nodes 482.58 nm, docs/ehl-robustness.md)
+    assert outcome.summary["central_film_thickness_m"] == pytest.approx(482.5e-9, rel=2e-3)

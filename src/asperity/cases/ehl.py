@@ -428,13 +428,14 @@ class EHLSteadyCase(EHLCaseBase):
 
     def solve_options(self, problem) -> dict:
         """``nx``, ``ny``, ``domain`` and ``levels`` for :func:`asperity.ehl.solve_steady`
-        (None where the solver chooses from the regime, see :attr:`regime_mesh`)."""
+        (None where the solver chooses: the mesh from the regime, see :attr:`regime_mesh`, and
+        the grid sequence unless ``solver.levels`` is given)."""
         line = self.contact.line
+        levels = self.solver.levels if "levels" in self.solver.model_fields_set else None
         if self.regime_mesh:
-            levels = self.solver.levels if "levels" in self.solver.model_fields_set else None
             return {"nx": None, "ny": None, "domain": None, "levels": levels}
         nx, ny = self.grid.nodes(line)
-        return {"nx": nx, "ny": ny, "levels": self.solver.levels,
+        return {"nx": nx, "ny": ny, "levels": levels,
                 "domain": self.grid.domain(problem.a, None if line else problem.b)}
 
     @model_validator(mode="after")
