@@ -1,5 +1,6 @@
 """Compiled EHL kernels: the block elimination against a dense solve of the same rows, the
-oscillation damping against its definition."""
+density's Newton term against a finite difference of the wedge term, the oscillation damping
+against its definition."""
 
 import numpy as np
 import pytest
@@ -58,7 +59,7 @@ def test_block_elimination_equals_dense_solve(rough_state, near):
         m = np.empty((nx, bl + bu + 1, 2, 2))
         b = np.empty((nx, 2))
         _assemble_row(s.P, s.H, ex, ey, rho, s.efar, s.rhs_t, s.lam, s.dX, s.dY, 0.5,
-                      s.lam / 1e-3, s.c, f_near, j, s.kind[:, j], m, b, bl, dex, dey)
+                      s.lam / 1e-3, s.c, f_near, j, s.kind[:, j], m, b, bl, dex, dey, None)
         expected = np.linalg.solve(dense(m, bl), b.ravel()).reshape(nx, 2)
         _block_band_solve(m, b, bl, bu)
         for k in range(2):
@@ -66,6 +67,58 @@ def test_block_elimination_equals_dense_solve(rough_state, near):
             assert np.max(np.abs(b[:, k] - expected[:, k])) < 1e-10 * scale
         assert np.all(b[s.kind[:, j] == CONTACT, 1] == pytest.approx(0.0, abs=1e-12))
         assert np.all(b[s.kind[:, j] == CAVITATED, 0] == pytest.approx(0.0, abs=1e-12))
+
+
+def test_density_newton_term_is_the_wedge_derivative(rough_state):
+    """With ``drho`` the row's pressure coefficients gain the derivative of the Reynolds wedge
+    and time terms ``-theta lam (c0 (rho h)_i - c1 (rho h)_{i-1} + c2 (rho h)_{i-2})/dX
+    - mass (rho h)_i`` with respect to p_i, p_{i-1}, p_{i-2} through the Dowson-Higginson
+    density: against a central difference of those terms with ``density_ratio`` (1e-6
+    relative) at the fluid nodes; the right-hand side moves by the same coefficients times
+    the current pressures, so the row's equations are unchanged at the current iterate."""
+    s = rough_state
+    prob = s.problem
+    ex, ey, rho, dex, dey, drho = prob.lubricant.flow_field(
+        s.P, s.H, prob.sliding_speed, slopes=True, density_slope=True,
+        units=(prob.p_hertz, prob.film_scale, 1.0))
+    theta, mass, bl, j = 0.5, s.lam / 1e-3, 2, 10
+    nx = s.P.shape[0]
+    rows = []
+    for d in (None, drho):
+        m = np.empty((nx, 5, 2, 2))
+        b = np.empty((nx, 2))
+        _assemble_row(s.P, s.H, ex, ey, rho, s.efar, s.rhs_t, s.lam, s.dX, s.dY, theta, mass,
+                      s.c, s.f_near, j, s.kind[:, j], m, b, bl, dex, dey, d)
+        rows.append((m, b))
+    (m0, b0), (m1, b1) = rows
+    density = prob.lubricant.density_ratio
+
+    def wedge(i, p):  # the terms at node i with p the pressures of nodes i, i-1, i-2 (GPa units)
+        c0, c1, c2 = (1.5, 2.0, 0.5) if i >= 2 else (1.0, 1.0, 0.0)
+        q = [density(max(pk, 0.0) * prob.p_hertz) * s.H[i - k, j]
+             for k, pk in enumerate(p[:min(i, 2) + 1])]
+        q += [0.0] * (3 - len(q))
+        return -theta * s.lam * (c0 * q[0] - c1 * q[1] + c2 * q[2]) / s.dX - mass * q[0]
+
+    checked = 0
+    for i in range(1, nx - 1):
+        if s.kind[i, j] != 0 or s.P[i, j] <= 0.01:
+            continue
+        p = [s.P[i - k, j] for k in range(min(i, 2) + 1)]
+        for k in range(len(p)):
+            if p[k] <= 0.01:
+                continue
+            step = 1e-6
+            up, down = list(p), list(p)
+            up[k] += step
+            down[k] -= step
+            expected = (wedge(i, up) - wedge(i, down)) / (2 * step)
+            got = m1[i, bl - k, 0, 0] - m0[i, bl - k, 0, 0]
+            assert got == pytest.approx(expected, rel=1e-6, abs=1e-9 * abs(m0[i, bl, 0, 1]))
+            checked += 1
+        moved = sum((m1[i, bl - k, 0, 0] - m0[i, bl - k, 0, 0]) * p[k] for k in range(len(p)))
+        assert b1[i, 0] - b0[i, 0] == pytest.approx(moved, rel=1e-9, abs=1e-12)
+    assert checked > 100
 
 
 def test_damping_scales_only_the_reversing_changes():

@@ -318,3 +318,24 @@ def test_flow_field_at_overflowing_viscosity_tends_to_zero(model, tau0):
     assert np.all(np.abs(sy) < 1e-23)
     assert np.all(np.abs(dsx) < 1e-30) and np.all(np.abs(dsy) < 1e-30)
     assert np.allclose(rho, lub.density_ratio(p))
+
+
+@pytest.mark.parametrize("compressible", [True, False])
+def test_flow_field_density_slope_is_the_dowson_higginson_derivative(compressible):
+    """``density_slope`` returns d(rho/rho0)/dp in the units of ``p``: against the closed-form
+    derivative of Dowson-Higginson's ``(1 + gamma p)/(1 + lambda p)``,
+    ``(gamma - lambda)/(1 + lambda p)^2`` (1e-12 relative), the right derivative at p <= 0,
+    and 0 for an incompressible oil; the other outputs are those without it."""
+    oil = Lubricant(ETA0, ALPHA, compressible=compressible)
+    p = np.array([-0.2, 0.0, 0.3, 1.0, 2.5, 6.0])  # GPa, as units[0] = 1e9 Pa
+    h = np.full(p.size, 0.2)
+    units = (1e9, 1e-6, 1.0)
+    *fields, drho = oil.flow_field(p, h, 1.0, slopes=True, units=units, density_slope=True)
+    for got, expected in zip(fields, oil.flow_field(p, h, 1.0, slopes=True, units=units),
+                             strict=True):
+        np.testing.assert_array_equal(got, expected)
+    gamma, lam = oil.dh_gamma * 1e9, oil.dh_lambda * 1e9  # 1/GPa
+    pp = np.maximum(p, 0.0)
+    expected = (gamma - lam) / (1 + lam * pp) ** 2 if compressible else np.zeros(p.size)
+    np.testing.assert_allclose(drho, expected, rtol=1e-12, atol=0.0)
+    assert not compressible or drho[-1] > 0.0

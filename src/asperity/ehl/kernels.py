@@ -108,6 +108,27 @@ def _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta):
 
 
 @numba.njit(cache=True, inline="always")
+def _density_newton(h, drho, i, j, lam, dx, theta, mass, k):
+    """Newton derivative of node (i, j)'s Reynolds wedge and time terms with respect to the
+    pressure of node ``i - k`` (k = 0, 1, 2) through the density, at the current film.
+
+    The wedge ``-theta lam (c0 (rho h)_i - c1 (rho h)_{i-1} + c2 (rho h)_{i-2}) / dX`` and the
+    time term ``-mass (rho h)_i`` with ``rho = rho(p)``: the derivative with respect to
+    ``p_{i-k}`` is ``-theta lam c_k' h_{i-k} rho'_{i-k} / dX`` (``c_0' = c0``, ``c_1' = -c1``,
+    ``c_2' = c2``) plus ``-mass h_i rho'_i`` for k = 0. The sweeps add it to the coefficient
+    of ``p_{i-k}`` (and times ``p_{i-k}`` to the right-hand side), so that a compressible
+    lubricant's density follows the pressure within the update instead of lagging one sweep
+    behind; the fixed point is unchanged.
+    """
+    c0, c1, c2 = _upwind(i)
+    c = (c0, -c1, c2)[k]
+    d = -theta * lam * c * h[i - k, j] * drho[i - k, j] / dx
+    if k == 0:
+        d -= mass * h[i, j] * drho[i, j]
+    return d
+
+
+@numba.njit(cache=True, inline="always")
 def _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
                         f_near, i, j):
     """(A0, B0, R^, E^) of the coupled nodal update at interior node (i, j) (module docstring).
@@ -141,7 +162,7 @@ def _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta
 
 @numba.njit(cache=True)
 def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
-                deps_x, deps_y):
+                deps_x, deps_y, drho=None):
     """One lexicographic Gauss-Seidel sweep of the coupled nodal update (Holmes et al. Eq. 7-8).
 
     Rows j in turn, nodes along each row in the entrainment direction (+x). Updates ``p``
@@ -158,10 +179,18 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
     dp_max = 0.0
     dh_max = 0.0
     for j in range(j0, j1):
+        change_w = 0.0  # this sweep's change of p at nodes i - 1 and i - 2
+        change_ww = 0.0
         for i in range(1, nx - 1):
             a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx,
                                                dy, theta, mass, c_el, f_near, i, j)
             newton = _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta)
+            if drho is not None:
+                newton += _density_newton(h, drho, i, j, lam, dx, theta, mass, 0)
+                # the upstream densities at the pressures this sweep gave them
+                r -= _density_newton(h, drho, i, j, lam, dx, theta, mass, 1) * change_w
+                if i >= 2:
+                    r -= _density_newton(h, drho, i, j, lam, dx, theta, mass, 2) * change_ww
             a0 += newton
             r += newton * p[i, j]
             det = a0 * d0 - b0 * c_self
@@ -175,6 +204,8 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
                 pn = max(e / c_self, 0.0)
             dp_max = max(dp_max, abs(pn - p[i, j]))
             dh_max = max(dh_max, abs(hn - h[i, j]))
+            change_ww = change_w
+            change_w = pn - p[i, j]
             p[i, j] = pn
             h[i, j] = hn
     return dp_max, dh_max
@@ -289,7 +320,7 @@ def _invert_pivot(m, k, bl):
 
 @numba.njit(cache=True)
 def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
-                  f_near, j, kind, m, b, bl, deps_x, deps_y, start=0):
+                  f_near, j, kind, m, b, bl, deps_x, deps_y, drho, start=0):
     """Assemble block rows ``start..nx-1`` of the block-banded system of row j: block i holds
     (p_i, h_i); ``m[i, k + bl]`` couples node i to node i + k (layout of
     :func:`_block_band_solve`)."""
@@ -336,6 +367,11 @@ def _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
         if two_d:
             nb = xn * p[i, j + 1] + xs * p[i, j - 1]
         b[i, 0] = -theta * nb - rhs_t[i, j] + newton * p[i, j]
+        if drho is not None:
+            for k in range(min(i, 2) + 1):  # d(rho h)/dp of nodes i, i - 1, i - 2
+                dr = _density_newton(h, drho, i, j, lam, dx, theta, mass, k)
+                m[i, bl - k, 0, 0] += dr
+                b[i, 0] += dr * p[i - k, j]
 
 
 @numba.njit(cache=True)
@@ -360,7 +396,7 @@ def _update_active_set(row_kind, x):
 
 @numba.njit(cache=True)
 def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
-               kind, deps_x, deps_y, j):
+               kind, deps_x, deps_y, drho, j):
     """Solve row j for all its (p, h) at once with an active set (see :func:`line_sweep`).
 
     Updates row j of ``p``, ``h`` and ``kind`` in place (reading only rows j - 1 and j + 1
@@ -390,7 +426,7 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
     start = 0
     for _ in range(4):
         _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
-                      f_near, j, row_kind, m, b, bl, deps_x, deps_y, start)
+                      f_near, j, row_kind, m, b, bl, deps_x, deps_y, drho, start)
         _block_band_solve(m, b, bl, bu, x, start)
         start = _update_active_set(row_kind, x)
         if start == nx:
@@ -409,7 +445,7 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
 
 @numba.njit(cache=True, parallel=True)
 def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
-               kind, deps_x, deps_y):
+               kind, deps_x, deps_y, drho=None):
     """One zebra sweep of x-line relaxation: rows j = const, odd rows then even rows.
 
     Each row is solved for all its (p, h) at once with an active set: nodes are fluid,
@@ -435,7 +471,7 @@ def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
             j = first + 2 * t
             dp_row[j], dh_row[j] = _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx,
                                               dy, theta, mass, c_el, f_near, kind, deps_x,
-                                              deps_y, j)
+                                              deps_y, drho, j)
     return dp_row.max(), dh_row.max()
 
 

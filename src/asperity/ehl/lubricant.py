@@ -163,9 +163,10 @@ def _pressure_laws(p, roelands, eta0, v1, v2, v3, gamma, lam):
 
 @numba.njit(parallel=True, cache=True)
 def _flow_field(p, h, units, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, sy, rho,
-                slopes, dsx, dsy):
+                slopes, dsx, dsy, drho):
     """sigma_x, sigma_y and rho/rho0 at every node into ``sx, sy, rho`` (1-D arrays, the nodes
-    in memory order), and with ``slopes`` their derivatives in p at constant h into ``dsx, dsy``.
+    in memory order), and with ``slopes`` their derivatives in p at constant h into ``dsx, dsy``
+    and ``d(rho/rho0)/dp`` into ``drho`` (in 1/``p_unit``; ``drho`` may be empty).
 
     ``units = (p_unit, h_unit, s_unit, ds_unit)``: the node's pressure is ``p_unit p`` (Pa)
     and film ``h_unit h`` (m); ``sx, sy`` get ``s_unit sigma`` and ``dsx, dsy``
@@ -191,6 +192,8 @@ def _flow_field(p, h, units, roelands, eta0, v1, v2, v3, gamma, lam, shear, sx, 
         if slopes:
             dsx[k] = (fx * dr + r * dfx * deta) * ds_unit
             dsy[k] = (fy * dr + r * dfy * deta) * ds_unit
+            if drho.size:
+                drho[k] = dr * p_unit
 
 
 def barus_viscosity(p, eta0, alpha):
@@ -373,7 +376,7 @@ class Lubricant:
         return self.density * self.density_ratio(p)
 
     def flow_field(self, p, h, sliding_speed: float, slopes: bool = False, *,
-                   units=(1.0, 1.0, 1.0)):
+                   units=(1.0, 1.0, 1.0), density_slope: bool = False):
         """Flow factors and density ratio of a pressure and film field, in one parallel pass.
 
         The same as ``eyring_flow_factors(h, eta(p), density_ratio(p), sliding_speed,
@@ -396,6 +399,9 @@ class Lubricant:
         units : (float, float, float)
             Units of ``p`` (Pa) and ``h`` (m), and a factor on the returned flow factors and
             slopes; the default: SI in and out.
+        density_slope : bool
+            With ``slopes``, also return the density ratio's derivative (the Newton term of a
+            compressible lubricant in :mod:`asperity.ehl.kernels`).
 
         Returns
         -------
@@ -405,6 +411,9 @@ class Lubricant:
         dsigma_x, dsigma_y : ndarray
             With ``slopes``: d sigma/dp times ``units[2]``, p in the units of ``p``
             (SI: rho0 m^3/(Pa^2 s)).
+        drho_ratio : ndarray
+            With ``slopes`` and ``density_slope``: d(rho/rho0)/dp, p in the units of ``p``
+            (the right derivative at p <= 0; zero for an incompressible lubricant).
         """
         p = np.asarray(p, dtype=float)
         h = np.asarray(h, dtype=float)
@@ -414,7 +423,8 @@ class Lubricant:
         order = "F" if p.ndim > 1 and p.flags.f_contiguous and not p.flags.c_contiguous else "C"
         p = np.asarray(p, order=order)
         h = np.asarray(h, order=order)
-        out = [np.empty(p.shape if k < 3 or slopes else 0, order=order) for k in range(5)]
+        sizes = (1, 1, 1, slopes, slopes, slopes and density_slope)
+        out = [np.empty(p.shape if size else 0, order=order) for size in sizes]
         roelands = self.viscosity_model == "roelands"
         if roelands:
             v1 = math.log(self.viscosity / self.roelands_kappa)
@@ -427,7 +437,7 @@ class Lubricant:
         p_unit, h_unit, scale = (float(u) for u in units)
         _flow_field(*flat[:2], (p_unit, h_unit, scale, scale * p_unit), roelands,
                     self.viscosity, v1, v2, v3, gamma, lam, shear, *flat[2:5], slopes, *flat[5:])
-        return tuple(out[:5 if slopes else 3])
+        return tuple(out[:(6 if density_slope else 5) if slopes else 3])
 
 
 def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):
