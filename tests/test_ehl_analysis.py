@@ -189,3 +189,22 @@ def test_xi_study_sweeps_the_slide_roll_ratio():
     xis = [load_case(case).speeds.xi for _, case, _ in study.cases]
     assert xis == [0.1, 0.25, 0.5]
     assert np.all([load_case(c).contact.type == "point" for _, c, _ in study.cases])
+
+
+def test_inlet_advice_of_an_unconverged_run_uses_the_film_formula():
+    """The inlet-length advice (Hamrock & Dowson's m*) of a run that did not converge comes
+    from the film formula, not from the unconverged film: a ball bearing's blown-up
+    iteration (central film 0.29 mm) once advised an inlet of 26 a instead of 2.5 a."""
+    from asperity import diagnostics
+
+    data = _example("holmes-smooth-point", grid={"nx": 65, "ny": 17, "x_min": -1.6},
+                    solver={"levels": 1, "max_sweeps": 2})
+    case = load_case(data)
+    out = run_case(case)
+    assert not out.converged
+    prob = case.problem()
+    x0 = float(out.dataset.x[0])
+    expected = diagnostics.ehl_inlet_length(x0, prob.a, prob.rx, prob.film_estimate())
+    assert expected  # the formula's film asks for a longer inlet than 1.6 a
+    got = [w for w in out.warnings if w.startswith("inlet: x_min")]
+    assert got == expected

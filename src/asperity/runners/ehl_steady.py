@@ -86,7 +86,10 @@ def run(case, progress=None) -> Outcome:
                      f"(residual {res.residual:.2e}); the numbers above are not trustworthy.")
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
         "moes_central_film_m"))
-    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, res.central_film)
+    # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
+    # the inlet advice of ehl_inlet_length; the formula's film is the better guess then
+    film = res.central_film if res.converged else problem.film_estimate()
+    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
     trust += diagnostics.ehl_film_collapse(res.film, estimate)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust)
