@@ -49,7 +49,10 @@ def test_seed_line_contact_films_agree_across_meshes_and_tolerances(seed_line, f
     """The 801-node films against a tighter tolerance and a coarser mesh.
 
     - tol 1e-6 on the same mesh: the default tol 1e-5 changes the central and minimum films
-      by 0.04 % and 0.06 % (measured); tested at 0.1 %.
+      by 0.11 % and 0.14 % (measured; 0.04 % and 0.06 % before the load tangent and the
+      density term of docs/ehl-robustness.md, "Compressible line contacts at large L": the
+      per-sweep criterion stops at a different point of the slow outlet relaxation); tested
+      at 0.2 %.
     - 201 nodes (a/50, defaults): the central film lies 0.85 % and the minimum film 0.49 %
       below the 801-node one (measured), the 201-node discretisation error (0.85 % of the
       Richardson limit for the central film, second order); tested 0.3-1.5 % and 0.1-0.8 %.
@@ -58,8 +61,8 @@ def test_seed_line_contact_films_agree_across_meshes_and_tolerances(seed_line, f
     tight = solve_steady(prob, nx=801, domain=domain, tol=1e-6, max_iter=40000)
     coarse = solve_steady(prob, nx=201, domain=domain)
     assert tight.converged and coarse.converged
-    assert fine.central_film == pytest.approx(tight.central_film, rel=1e-3)
-    assert fine.minimum_film == pytest.approx(tight.minimum_film, rel=1e-3)
+    assert fine.central_film == pytest.approx(tight.central_film, rel=2e-3)
+    assert fine.minimum_film == pytest.approx(tight.minimum_film, rel=2e-3)
     assert 0.003 < fine.central_film / coarse.central_film - 1.0 < 0.015
     assert 0.001 < fine.minimum_film / coarse.minimum_film - 1.0 < 0.008
 
@@ -102,3 +105,62 @@ def test_case_file_with_a_fine_grid_uses_the_solvers_grid_sequence():
     # the 801-node film of the library call (482.50 nm at tol 1e-5; Richardson limit of
     # 201-1601 nodes 482.58 nm, docs/ehl-robustness.md)
     assert outcome.summary["central_film_thickness_m"] == pytest.approx(482.5e-9, rel=2e-3)
+
+
+ROLLER = """
+analysis = "ehl-steady"
+title = "Cylindrical roller on its inner race"
+[body1]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[body2]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[contact]
+type = "line"
+radius = "6.2 mm"
+load_per_length = "450 kN/m"
+[speeds]
+u = "6 m/s"
+xi = 0
+[lubricant]
+eta0 = "0.03 Pa s"
+alpha = "20 1/GPa"
+"""
+
+
+@pytest.mark.parametrize("grid", ["", "[grid]\nnx = 801\n"], ids=["default mesh", "nx=801"])
+def test_roller_case_converges_with_defaults(grid):
+    """A user's roller (Roelands + Dowson-Higginson, Moes M = 19.8, L = 18.4), as written:
+    before the density term of the point update it diverged on 281 (default), 201, 401 and
+    801 nodes (pressure piled up at the outlet, film negative); now it converges with the
+    case defaults. Measured central film 587.5 nm (281 nodes on the default domain
+    -2.82a..1.5a) and 584.4 nm (801 nodes on the [grid] table's -2.5a..1.5a: the shorter
+    inlet starves it by 1 %), 0.80 of Moes (733 nm): compressibility thins it
+    (docs/ehl-robustness.md)."""
+    from asperity.runners import run_case
+
+    outcome = run_case(load_case(ROLLER + grid))
+    assert outcome.converged
+    hc = outcome.summary["central_film_thickness_m"]
+    assert hc == pytest.approx(587.5e-9 if not grid else 584.4e-9, rel=3e-3)
+    assert 0.7 < hc / outcome.summary["moes_central_film_m"] < 1.05
+    assert abs(outcome.summary["load_error"]) < 1e-5
+
+
+def test_density_term_leaves_the_fixed_point_unchanged():
+    """The steady line update with the density's pressure derivative converges to a solution
+    of the seed's update: one sweep of :class:`EHLState` (density lagged) from the roller's
+    converged state (tol 1e-7) changes p and h by no more than that tolerance allows."""
+    from asperity.ehl.solver import EHLState
+
+    prob = load_case(ROLLER).problem()
+    res = solve_steady(prob, tol=1e-7, max_iter=40000)
+    assert res.converged
+    state = EHLState(prob, res.x, res.y)
+    state.P = res.pressure / prob.p_hertz
+    state.H = res.film / prob.film_scale
+    state.H0 = res.separation / prob.film_scale
+    state.refresh()
+    dp, dh = state.sweep("point")
+    assert dp < 1e-6 and dh < 1e-6 * res.central_film / prob.film_scale

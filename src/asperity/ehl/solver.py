@@ -48,18 +48,19 @@ STARVED_INLET = 0.01
 #: Default separation shift per sweep per unit relative load error (dimensionless film units).
 POINT_LOAD_GAIN = 0.05
 LINE_LOAD_GAIN = 0.01
-#: A line contact on a mesh finer than its default one (``problem.default_nodes``) gets
-#: ``LINE_LOAD_GAIN (dX / dX_default)^3.5`` on that grid. The point update of a line contact
-#: moves the pressure, and so the load, only slowly after a shift of the separation: on the
-#: seed's line contact (-2.5a..1.5a) the load error reaches 63 % of its value 6000 sweeps
-#: later 1, 7, 38 and 250 sweeps after the shift on 101, 201, 401 and 801 nodes (~ N^2.6),
-#: so the per-sweep load correction, an integral control of that lag, overshoots and cycles
-#: unless its gain falls about as fast: the largest gains that converged there were 2.5e-3,
-#: 8.8e-4 and 2.2e-4 on 401, 513 and 801 nodes (default 257: 0.01); the exponent 3.5 gives
-#: 2.1e-3, 8.8e-4, 1.9e-4. Not smaller: where the point relaxation keeps drifting slowly
-#: the gain sets the load error left (drift / gain), and the Newtonian M = 100 line contact
-#: on twice its default resolution converged with 8.8e-4, not with 6.3e-4
-#: (docs/ehl-robustness.md).
+#: A line contact on a mesh finer than its default one (``problem.default_nodes``) for which
+#: no :class:`LoadTangent` is at hand (one grid, ``method="line"``, or an unconverged coarser
+#: grid) gets ``LINE_LOAD_GAIN (dX / dX_default)^3.5`` on that grid. The point update of a
+#: line contact moves the pressure, and so the load, only slowly after a shift of the
+#: separation: on the seed's line contact (-2.5a..1.5a) the load error reaches 63 % of its
+#: value 6000 sweeps later 1, 7, 38 and 250 sweeps after the shift on 101, 201, 401 and
+#: 801 nodes (~ N^2.6), so the per-sweep load correction, an integral control of that lag,
+#: overshoots and cycles unless its gain falls about as fast: the largest gains that
+#: converged there were 2.5e-3, 8.8e-4 and 2.2e-4 on 401, 513 and 801 nodes (default 257:
+#: 0.01); the exponent 3.5 gives 2.1e-3, 8.8e-4, 1.9e-4. Not smaller: where the point
+#: relaxation keeps drifting slowly the gain sets the load error left (drift / gain), and
+#: the Newtonian M = 100 line contact on twice its default resolution converged with
+#: 8.8e-4, not with 6.3e-4 (docs/ehl-robustness.md).
 LINE_GAIN_EXPONENT = 3.5
 
 
@@ -316,6 +317,72 @@ class EHLState:
         self.kind[self.P <= 0] = 1
 
 
+class _SteadyLineState(EHLState):
+    """The steady line contact's point update with the density's pressure derivative.
+
+    :meth:`EHLState.sweep` evaluates the density ``rho(p)`` once per sweep, so the point
+    update solves the Reynolds row for ``h`` at a lagged density. Where the Couette flow
+    dominates (the Hertz zone) that row fixes ``rho h``: a pressure change ``dp`` changes the
+    next sweep's film by ``-h rho' dp / rho``, and the deflection row turns a film change
+    ``dh`` into a pressure change ``(|D0| / C0) dh`` (``D0 = -2/dX^2``, ``C0 = -c f_00 ~ 1/dX``).
+    The lag is an iteration with the factor ``-G f``, ``G = h rho' |D0| / (rho C0)`` per
+    node and ``f = |B0| / (|B0| + |A0| |D0| / C0)`` the Couette share of the nodal update
+    (``A0``, ``B0`` of :mod:`asperity.ehl.kernels`); ``G`` grows like ``h / dX``. For a
+    compressible oil and a thick film (large Moes L) ``G f`` passes 1 where the pressure
+    rises into the Hertz zone and the pressure there oscillates from sweep to sweep without
+    bound: the roller of docs/ehl-robustness.md ("Compressible line contacts at large L",
+    M = 20, L = 18) has at most 0.8, 1.4, 2.4, 5.2 on 71, 141, 281, 801 nodes and diverged
+    from 141 nodes on; the seed's line contact (L = 6.9, Eyring) at most 0.27.
+
+    Here the Couette flux is linearised in the pressure, ``rho(p) h ~ rho* h + h* rho' dp``,
+    with the node's own deflection row ``dp = (|D0| / C0) dh`` (a Newton step in the nodal
+    update): ``rho(p) h ~ (rho* + s) h - s h*``, ``s = h* rho' |D0| / C0``, where ``*``
+    marks the values at the start of the sweep. The compiled sweep
+    (:func:`asperity.ehl.kernels.point_sweep`) receives ``rho* + s`` as the density and the
+    Couette difference of ``s h*`` in the explicit term ``rhs_t``, so that the two cancel
+    when ``h = h*``: the converged solution is that of :class:`EHLState`. An incompressible
+    oil has ``s = 0`` and the same update. For steady solves (``theta = 1``, ``mass = 0``).
+    """
+
+    #: Pressure step (over p_hertz) of the one-sided difference of rho(p).
+    DENSITY_STEP = 1e-6
+
+    def _sweep(self, method: str):
+        if method != "point":
+            return super()._sweep(method)
+        if self._derivatives is None or not self.lag_derivatives:
+            ex, ey, rho, *self._derivatives = self.flow_coefficients(slopes=True)
+        else:
+            ex, ey, rho = self.flow_coefficients()
+        dex, dey = self._derivatives
+        stiff = (2.0 / self.dX**2) / (-self.c * self.f_near[0])
+        s = self.density_slope() * self.H * stiff
+        s[self.P <= 0.0] = 0.0
+        rhs_t = self.rhs_t + self.lam / self.dX * _couette_difference(s * self.H)
+        return point_sweep(
+            self.P, self.H, ex, ey, np.asfortranarray(rho + s), self.efar,
+            np.asfortranarray(rhs_t), self.lam, self.dX, self.dY, self.theta, self.mass,
+            self.c, self.f_near, dex, dey,
+        )
+
+    def density_slope(self) -> np.ndarray:
+        """d(rho/rho0)/dP at the nodes (P = p/p_hertz; one-sided, p < 0 counts as 0)."""
+        lub = self.problem.lubricant
+        p = np.maximum(self.P, 0.0) * self.problem.p_hertz
+        dp = self.DENSITY_STEP * self.problem.p_hertz
+        return (lub.density_ratio(p + dp) - lub.density_ratio(p)) / self.DENSITY_STEP
+
+
+def _couette_difference(q):
+    """``dX`` times the upwind derivative dq/dX of the compiled sweeps at every node:
+    ``1.5 q_i - 2 q_{i-1} + 0.5 q_{i-2}``, first order ``q_1 - q_0`` next to the inlet and 0
+    at ``i = 0`` (the weights ``(c0, c1, c2)`` of :mod:`asperity.ehl.kernels`)."""
+    out = np.zeros_like(q)
+    out[1] = q[1] - q[0]
+    out[2:] = 1.5 * q[2:] - 2.0 * q[1:-1] + 0.5 * q[:-2]
+    return out
+
+
 def _bilinear(xc, yc, field, x, y):
     """Bilinear interpolation of ``field[ix, iy]`` from grid (xc, yc) onto (x, y)."""
     tmp = np.array([np.interp(x, xc, field[:, j]) for j in range(field.shape[1])]).T
@@ -428,20 +495,31 @@ def _film_scale(state) -> float:
     return max(_at_centre(state, state.H), float(np.mean(state.H[state.edge])), 1e-12)
 
 
-def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0):
-    """Relax one grid to convergence; return (converged, residual, sweeps, history)."""
-    target = state.problem.load_integral
+def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0,
+           tangent=None, load_factor=1.0):
+    """Relax one grid to convergence; return (converged, residual, sweeps, history).
+
+    The load target is ``load_factor`` times the problem's. Without ``tangent`` the
+    separation is shifted by ``gain`` times the relative load error after every sweep; with
+    a :class:`LoadTangent` the state is moved along it to remove the load error before every
+    far-field refresh instead.
+    """
+    target = state.problem.load_integral * load_factor
     state.start_iteration()
     history = []
     residual = np.inf
     sweeps = 0
+    load_err = 0.0
     while sweeps < max_sweeps:
+        if tangent is not None and sweeps:
+            tangent.correct(state, load_err)
         state.refresh()
         for _ in range(refresh):
             dp, dh = state.sweep(method)
             sweeps += 1
             load_err = (state.load() - target) / target
-            state.shift_separation(gain * load_err)
+            if tangent is None:
+                state.shift_separation(gain * load_err)
         hc = _film_scale(state)
         residual = max(dp, dh / hc, abs(load_err))
         history.append((sweeps, dp, dh / hc, load_err))
@@ -454,6 +532,40 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
             return True, residual, sweeps, history
     state.refresh()
     return False, residual, sweeps, history
+
+
+class LoadTangent:
+    """Change of a line contact's steady solution per relative change of the load, on a grid.
+
+    ``(dP, dH, dH0) = (s1 - s0) / STEP`` between the converged states ``s0`` at the load and
+    ``s1`` at ``1 + STEP`` times the load (:meth:`between`). :meth:`correct` moves a state on
+    a finer grid along it: the load changes at once by the wanted amount, and the film in
+    the Hertz zone, the pressure shape and the separation change together as they do between
+    the two solutions, whereas a shift of the separation alone leaves the pressure to relax
+    in from the inlet over many sweeps (docs/ehl-robustness.md, "Line contacts on fine
+    meshes").
+    """
+
+    #: Relative load step of the difference.
+    STEP = 0.01
+
+    def __init__(self, X, dP, dH, dH0):
+        self.X, self.dP, self.dH, self.dH0 = X, dP, dH, dH0
+
+    @classmethod
+    def between(cls, s0, s1):
+        """The tangent from the converged states ``s0`` and ``s1`` (loads 1 and 1 + STEP)."""
+        return cls(s0.X.copy(), (s1.P[:, 0] - s0.P[:, 0]) / cls.STEP,
+                   (s1.H[:, 0] - s0.H[:, 0]) / cls.STEP, (s1.H0 - s0.H0) / cls.STEP)
+
+    def correct(self, state, load_error):
+        """Move ``state`` by ``-load_error`` along the tangent, interpolated linearly onto its
+        grid with the pressure part scaled to carry exactly the relative load (P >= 0 kept)."""
+        dP = np.interp(state.X, self.X, self.dP)
+        dP *= state.problem.load_integral / (dP.sum() * state.cell_area)
+        state.P = np.maximum(state.P - load_error * dP[:, None], 0.0)
+        state.H = state.H - load_error * np.interp(state.X, self.X, self.dH)[:, None]
+        state.H0 -= load_error * self.dH0
 
 
 @renamed_keywords(max_sweeps="max_iter")
@@ -513,11 +625,15 @@ def solve_steady(
         Sweeps between FFT refreshes of the far field and the edge films.
     load_gain : float, optional
         Separation shift per sweep per unit relative load error (dimensionless film units);
-        default 0.05 (point contact), 0.01 (line contact) on grids no finer than the default
-        mesh; on a finer grid a line contact gets ``0.01 (dX / dX_default)^3.5``
+        default 0.05 (point contact), 0.01 (line contact) on grids coarser than the default
+        mesh. With the default, a line contact's grids from the default mesh on (when
+        sequenced from a converged coarser grid) use no gain: before each far-field refresh
+        the state is moved along the :class:`LoadTangent` of the next coarser grid (its
+        solutions at the load and 1 % above) to remove the load error; without one, a grid
+        finer than the default mesh gets ``0.01 (dX / dX_default)^3.5``
         (:data:`LINE_GAIN_EXPONENT`: the point update's load answers a shift of the
         separation the more slowly the finer the mesh, and a larger gain overshoots). A
-        given value is used on every grid.
+        given value is used on every grid, without the tangent.
     initial_film : float, optional
         Central film of the Hertzian start, m; default Nijenbanning's (point) or Moes' (line)
         Newtonian central film.
@@ -570,10 +686,12 @@ def solve_steady(
         h_start = check_positive("initial_film", initial_film) / problem.film_scale
     k_near = near if method == "line" else 0
     state = None
+    use_tangent = scale_gain and method == "point"
+    tangent = None
     total = 0
-    for gx, gy in grids:
+    for level, (gx, gy) in enumerate(grids):
         x, y = problem.grid(gx, gy, domain)
-        new = EHLState(problem, x, y, k_near)
+        new = (_SteadyLineState if line else EHLState)(problem, x, y, k_near)
         new.damping = damping
         if state is None:
             new.hertz_start(h_start)
@@ -581,13 +699,23 @@ def solve_steady(
             new.interpolate_from(state)
         state = new
         gain = load_gain
-        if scale_gain and gx > default_nx:
+        if scale_gain and gx > default_nx and tangent is None:
             gain *= ((default_nx - 1) / (gx - 1)) ** LINE_GAIN_EXPONENT
         converged, residual, sweeps, history = _relax(
             state, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
-            callback=callback, sweep_offset=total,
+            callback=callback, sweep_offset=total, tangent=tangent,
         )
         total += sweeps
+        if use_tangent and converged and level + 1 < len(grids) \
+                and grids[level + 1][0] >= default_nx:
+            other = _SteadyLineState(problem, x, y, k_near)
+            other.interpolate_from(state)
+            ok, _, extra, _ = _relax(
+                other, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
+                callback=None, tangent=tangent, load_factor=1.0 + LoadTangent.STEP)
+            total += extra
+            if ok:
+                tangent = LoadTangent.between(state, other)
     result = _result(state, converged, residual, sweeps, total, history, grids, method,
                      boundary_friction)
     if result.inlet_pressure > STARVED_INLET:
