@@ -52,7 +52,7 @@ def test_block_elimination_equals_dense_solve(rough_state, near):
     """Rows of fluid, contact and cavitated nodes: agreement to 1e-10 of the solution."""
     s = rough_state
     f_near = EHLState(GEAR, s.x, s.y, near=near).f_near
-    ex, ey, rho, dex, dey = s.flow_coefficients(slopes=True)
+    ex, ey, rho, dex, dey, _ = s.flow_coefficients(slopes=True)
     bl, bu = max(2, near), max(1, near)
     nx = s.P.shape[0]
     for j in (3, 10, 17):

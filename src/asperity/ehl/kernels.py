@@ -162,7 +162,7 @@ def _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta
 
 @numba.njit(cache=True)
 def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
-                deps_x, deps_y, drho=None):
+                deps_x, deps_y):
     """One lexicographic Gauss-Seidel sweep of the coupled nodal update (Holmes et al. Eq. 7-8).
 
     Rows j in turn, nodes along each row in the entrainment direction (+x). Updates ``p``
@@ -179,18 +179,10 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
     dp_max = 0.0
     dh_max = 0.0
     for j in range(j0, j1):
-        change_w = 0.0  # this sweep's change of p at nodes i - 1 and i - 2
-        change_ww = 0.0
         for i in range(1, nx - 1):
             a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx,
                                                dy, theta, mass, c_el, f_near, i, j)
             newton = _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta)
-            if drho is not None:
-                newton += _density_newton(h, drho, i, j, lam, dx, theta, mass, 0)
-                # the upstream densities at the pressures this sweep gave them
-                r -= _density_newton(h, drho, i, j, lam, dx, theta, mass, 1) * change_w
-                if i >= 2:
-                    r -= _density_newton(h, drho, i, j, lam, dx, theta, mass, 2) * change_ww
             a0 += newton
             r += newton * p[i, j]
             det = a0 * d0 - b0 * c_self
@@ -204,8 +196,6 @@ def point_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, 
                 pn = max(e / c_self, 0.0)
             dp_max = max(dp_max, abs(pn - p[i, j]))
             dh_max = max(dh_max, abs(hn - h[i, j]))
-            change_ww = change_w
-            change_w = pn - p[i, j]
             p[i, j] = pn
             h[i, j] = hn
     return dp_max, dh_max

@@ -51,6 +51,11 @@ FILM_ERROR = 5.0
 #: Target relative discretisation error of the central film on the default mesh.
 MESH_TARGET = 0.02
 
+#: Largest dY/dX of a default point-contact mesh: at 32-33 the x-line relaxation diverged for
+#: the ellipses k = 5 at M = 1000 and 3000, L = 19 (Barus); at 16 and 22 it converged
+#: (docs/ehl-robustness.md, "Long ellipses at large L").
+MAX_CELL_ASPECT = 16.0
+
 
 def _check_common(u1, u2, body1, body2, lubricant):
     u1 = float(u1)
@@ -273,8 +278,11 @@ class PointContact(_Contact):
         Across ``dY = b/10`` (40 cells on the default domain of an ellipse with ``k >= 1/2``),
         coarser where needed to keep ``dY >= 3 dX`` (16 cells at least): with cells nearly
         square the lagged y-couplings of an Eyring lubricant's Poiseuille flow made the x-line
-        relaxation diverge (docs/ehl-robustness.md). Along x ``dX = 1/``:meth:`cells_per_a`,
-        refined to ``dX <= b/30`` when ``b < a`` so that both hold. ``nx - 1`` and ``ny - 1``
+        relaxation diverge (docs/ehl-robustness.md); finer where needed to keep
+        ``dY <= MAX_CELL_ASPECT dX``: on cells 32 times longer than wide the relaxation
+        diverged for long ellipses at large Moes L (k = 5, M = 1000 and 3000, L = 19).
+        Along x ``dX = 1/``:meth:`cells_per_a`, refined to ``dX <= b/30`` when ``b < a`` so
+        that both hold. ``nx - 1`` and ``ny - 1``
         are multiples of 8.
         """
         (x0, x1), (y0, y1) = _check_domain(
@@ -283,6 +291,7 @@ class PointContact(_Contact):
         dx = self.a / n
         nx = 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1
         cells = min(8 * np.ceil((y1 - y0) / (0.8 * self.b)), 8 * np.floor((y1 - y0) / (24 * dx)))
+        cells = max(cells, 8 * np.ceil((y1 - y0) / (8 * MAX_CELL_ASPECT * dx)))
         return nx, int(max(cells, 16)) + 1
 
     def grid(self, nx: int, ny: int, domain=None):

@@ -233,14 +233,15 @@ class EHLState:
 
     def flow_coefficients(self, slopes: bool = False):
         """Dimensionless (eps_x, eps_y, rho_bar) at the current (P, H), lagged in a sweep;
-        with ``slopes`` also (d eps_x/dP, d eps_y/dP) at constant H (analytic,
+        with ``slopes`` also (d eps_x/dP, d eps_y/dP) at constant H and d rho_bar/dP (analytic,
         :meth:`asperity.ehl.lubricant.Lubricant.flow_field`, which takes the dimensionless
         fields and scales its results in its one pass over the nodes)."""
         prob = self.problem
         lub = prob.lubricant
         scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
         return lub.flow_field(self.P, self.H, prob.sliding_speed, slopes=slopes,
-                              units=(prob.p_hertz, prob.film_scale, scale))
+                              units=(prob.p_hertz, prob.film_scale, scale),
+                              density_slope=slopes)
 
     def sweep(self, method: str):
         """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|.
@@ -268,17 +269,22 @@ class EHLState:
     def _sweep(self, method: str):
         """The compiled sweep of :mod:`asperity.ehl.kernels` at the current flow factors.
 
-        The flow-factor derivatives of the Newton term (:func:`asperity.ehl.kernels._newton`)
+        The Newton terms of the flow factors (:func:`asperity.ehl.kernels._newton`) and, in
+        the x-line relaxation, of the density (:func:`asperity.ehl.kernels._density_newton`)
         only stabilise the update, which is unchanged at the fixed point, so while
-        ``lag_derivatives`` is set they are evaluated once per far-field refresh (fewer sweeps
-        as well as cheaper ones on rough surfaces); otherwise at every sweep (more robust where
-        a node keeps changing state).
+        ``lag_derivatives`` is set their derivatives are evaluated once per far-field refresh
+        (fewer sweeps as well as cheaper ones on rough surfaces); otherwise at every sweep
+        (more robust where a node keeps changing state). The density's term matters for a
+        compressible oil and a thick film (the lagged density's factor of
+        :class:`_SteadyLineState`, which gives the point update of a line contact its own
+        form of the term): without it the ball bearing and the circular contact at M = 1000,
+        L = 19 of docs/ehl-robustness.md ("Compressible contacts at large L") diverged.
         """
         if self._derivatives is None or not self.lag_derivatives:
             ex, ey, rho, *self._derivatives = self.flow_coefficients(slopes=True)
         else:
             ex, ey, rho = self.flow_coefficients()
-        dex, dey = self._derivatives
+        dex, dey, drho = self._derivatives
         if method == "point":
             return point_sweep(
                 self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
@@ -286,7 +292,7 @@ class EHLState:
             )
         return line_sweep(
             self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
-            self.theta, self.mass, self.c, self.f_near, self.kind, dex, dey,
+            self.theta, self.mass, self.c, self.f_near, self.kind, dex, dey, drho,
         )
 
     def hertz_start(self, film: float):
@@ -354,7 +360,7 @@ class _SteadyLineState(EHLState):
             ex, ey, rho, *self._derivatives = self.flow_coefficients(slopes=True)
         else:
             ex, ey, rho = self.flow_coefficients()
-        dex, dey = self._derivatives
+        dex, dey, _ = self._derivatives
         stiff = (2.0 / self.dX**2) / (-self.c * self.f_near[0])
         s = self.density_slope() * self.H * stiff
         s[self.P <= 0.0] = 0.0
