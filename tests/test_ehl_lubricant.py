@@ -339,3 +339,16 @@ def test_flow_field_density_slope_is_the_dowson_higginson_derivative(compressibl
     expected = (gamma - lam) / (1 + lam * pp) ** 2 if compressible else np.zeros(p.size)
     np.testing.assert_allclose(drho, expected, rtol=1e-12, atol=0.0)
     assert not compressible or drho[-1] > 0.0
+
+
+def test_flow_field_slopes_at_an_underflowing_film_without_sliding():
+    """A film so thin that h^2 underflows (1e-170 m), with no sliding, gives finite flow factors
+    and slopes (the series term shear^2/(6 h^2) was 0/0: ZeroDivisionError in the compiled
+    pass), equal to the Newtonian rho h^3/(12 eta) limit: zero here."""
+    oil = Lubricant(ETA0, ALPHA, eyring_stress=5e6)
+    p = np.array([1e8, 5e8])
+    h = np.array([1e-170, 1e-170])
+    fields = oil.flow_field(p, h, 0.0, slopes=True)
+    for field in fields:
+        assert np.all(np.isfinite(field))
+    assert np.all(fields[0] == 0.0) and np.all(fields[3] == 0.0)

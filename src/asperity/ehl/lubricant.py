@@ -114,7 +114,9 @@ def _eyring_y(h, eta, shear):
         return 0.0, 0.0
     if x < 1e-4:
         g = (1.0 + x * x / 6.0) / eta
-        dg = -1.0 / (eta * eta) + shear * shear / (6.0 * h * h)
+        dg = -1.0 / (eta * eta)
+        if shear > 0.0:  # (not 0/0 where h^2 underflows without sliding)
+            dg += shear * shear / (6.0 * h * h)
     else:
         s = math.asinh(x)
         g = x / (eta * s)
