@@ -98,6 +98,22 @@ def test_not_converged_is_reported():
     assert r.sweeps == 5
 
 
+def test_separated_iterate_is_reported_not_converged(monkeypatch):
+    """An iteration that lost all its pressure (surfaces separated, as a ball bearing's did
+    before the density term) ends as a result that says it did not converge, with no
+    friction coefficient, instead of the friction's 'positive resultant' input error."""
+    from asperity.ehl.solver import EHLState
+
+    def lose_pressure(self, method):
+        self.P = np.zeros_like(self.P)
+        return 0.0, 0.0
+
+    monkeypatch.setattr(EHLState, "sweep", lose_pressure)
+    r = solve_steady(gear_point(), nx=33, ny=17, levels=1, max_iter=6)
+    assert not r.converged and r.load_error == pytest.approx(-1.0)
+    assert np.isnan(r.friction_coefficient)
+
+
 def test_bad_input():
     with pytest.raises(InputError, match="u1, u2"):
         PointContact(0.0191, 0.151, 962.0, 0.0, 0.0, STEEL, STEEL, MOBIL_JET_2)

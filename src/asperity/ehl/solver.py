@@ -780,10 +780,12 @@ def _result(state, converged, residual, sweeps, total, history, grids, method, m
     hc = _at_centre(state, h)
     centre = _centre_line(state, h)
     load_err = (state.load() - prob.load_integral) / prob.load_integral
-    mu = friction_coefficient(
-        state.x, p, np.maximum(h, 0.0), prob.lubricant.eta(p), prob.sliding_speed,
-        prob.lubricant.eyring_stress, boundary_friction=mu_b,
-    )
+    mu = np.nan  # a blown-up or separated iterate carries no load to take friction of
+    if np.isfinite(p).all() and np.isfinite(h).all() and p.sum() > 0.0:
+        mu = friction_coefficient(
+            state.x, p, np.maximum(h, 0.0), prob.lubricant.eta(p), prob.sliding_speed,
+            prob.lubricant.eyring_stress, boundary_friction=mu_b,
+        )
     near_inlet = int(np.searchsorted(state.x, state.x[0] + 0.1 * prob.a))
     return SteadyResult(
         x=state.x, y=state.y, pressure=p, film=h, central_film=hc,
