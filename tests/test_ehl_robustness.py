@@ -114,6 +114,7 @@ CASES = [
     ("circle M=100 L=10", lambda: _point(100, 10), "exact"),
     ("circle M=1000 L=10", lambda: _point(1000, 10), "exact"),
     ("circle M=50 L=2", lambda: _point(50, 2), "exact"),
+    ("circle M=10 L=3", lambda: _point(10, 3), "exact"),
     ("circle M=50 L=20", lambda: _point(50, 20), "exact"),
     ("ellipse k=2 M=100 L=10", lambda: _point(100, 10, 2.0), "exact"),
     ("ellipse k=4 M=100 L=10", lambda: _point(100, 10, 4.0), "exact"),
@@ -137,6 +138,13 @@ CASES = [
     ("ball glass 30 N Eyring 5 MPa xi=0.5", lambda: _ball(30.0, GLASS, 5e6, 0.5), "roelands"),
     ("gear 25 m/s Eyring 10 MPa xi=0.25", _gear, "roelands"),
 ]
+
+
+#: Cases whose converged film lies further from Nijenbanning's fit than its usual few per
+#: cent: the circle at M = 10, L = 3 (near-rigid, near-isoviscous corner) gives 0.907 of it
+#: on the default mesh, 0.908 with dX halved, 0.908 on an inlet at 8 a and 0.916 on a wider
+#: domain (docs/ehl-robustness.md): converged, so the difference is the fit's, not tuned away.
+FIT_TOLERANCE = {"circle M=10 L=3": 0.11}
 
 
 def _formulas(prob):
@@ -182,7 +190,7 @@ def test_default_settings_converge_and_match_the_film_formulas(name, factory, mo
             continue
         ratio = res.central_film / hc
         if model == "exact" and formula in ("Nijenbanning", "Moes"):
-            assert ratio == pytest.approx(1.0, abs=0.06), formula
+            assert ratio == pytest.approx(1.0, abs=FIT_TOLERANCE.get(name, 0.06)), formula
         elif formula == "Chittenden":
             # k < 1: +40 % at k = 0.5 although converged in domain and mesh (within 1 %), +73 %
             # at k = 0.25 and still rising with dY: open, see docs/ehl-robustness.md
