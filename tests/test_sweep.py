@@ -306,3 +306,23 @@ def test_derived_studies_do_not_compare_with_the_base_paper_value():
             assert load_case(case).paper_contact_time_percent is None
     assert {load_case(c).paper_contact_time_percent
             for _, c, _ in load_study("holmes-mesh-CC").cases} == {95}
+
+
+def test_study_shows_a_quantity_stored_as_fraction_and_percent_once(tmp_path):
+    """The transient summary holds the contact time as a fraction and in percent; the study's
+    plots and table show it once (they showed two identical 'contact time' panels)."""
+    from asperity.report import study_variables
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "10 N"]\n')
+    out = tmp_path / "out"
+    for n, fraction in enumerate([0.351, 0.988]):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps({"state": "done", "summary": {
+            "contact_time_fraction": fraction, "contact_time_percent": 100 * fraction,
+            "max_pressure_pa": 2e9 + n}}))
+    ds = combine(study, out)
+    assert ds["contact_time_fraction"].attrs["long_name"] == \
+        ds["contact_time_percent"].attrs["long_name"]
+    assert study_variables(ds) == ["contact_time_percent", "max_pressure_pa"]

@@ -279,7 +279,8 @@ def write_report(title: str, case: dict, outcome: Outcome, files: dict, path, *,
 
 def study_variables(ds, limit: int = 9) -> list[str]:
     """The numeric results of a study that vary from case to case: headline quantities first,
-    solver bookkeeping and repeats of a swept value left out.
+    solver bookkeeping, repeats of a swept value and second copies of a quantity (the same
+    long name: a fraction and its percent) left out.
 
     Parameters
     ----------
@@ -306,7 +307,14 @@ def study_variables(ds, limit: int = 9) -> list[str]:
             numeric.append(str(name))
     ranked = [k for k in HEADLINE_KEYS if k in numeric] + [
         k for k in numeric if k not in HEADLINE_KEYS]
-    return ranked[:limit]
+    # one of a quantity stored twice (a fraction and its percent): the first by rank
+    seen, kept = set(), []
+    for k in ranked:
+        label = ds[k].attrs.get("long_name", k)
+        if label not in seen:
+            seen.add(label)
+            kept.append(k)
+    return kept[:limit]
 
 
 def _repeats_axis(var, coord) -> bool:
