@@ -80,6 +80,14 @@ def _line(M, L):
     return LineContact(r, M * two_u**0.5 * E_PRIME * r, u, u, BODY, BODY, _barus())
 
 
+def _line_oil(M, L):
+    """The line contact of :func:`_line` with the default Roelands + Dowson-Higginson oil of
+    the same ``eta0`` and ``alpha``."""
+    b = _line(M, L)
+    return LineContact(b.radius, b.load_per_length, b.u1, b.u2, b.body1, b.body2,
+                       Lubricant(0.04, 2e-8))
+
+
 def _ball(load, disc, tau0=None, xi=0.0):
     """12.5 mm radius steel ball on a flat disc, 0.25 Pa s Roelands + Dowson-Higginson oil at
     0.1 m/s: the slow, viscous ball-on-disc rig of the issue."""
@@ -129,6 +137,8 @@ CASES = [
     ("line M=100 L=10", lambda: _line(100, 10), "exact"),
     ("line M=1000 L=10", lambda: _line(1000, 10), "exact"),
     ("line M=50 L=20", lambda: _line(50, 20), "exact"),
+    ("line M=100 L=3", lambda: _line(100, 3), "exact"),
+    ("line M=100 L=3 Roelands+DH", lambda: _line_oil(100, 3), "roelands"),
     ("roller 450 kN/m Roelands+DH", _roller, "roelands"),
     ("roller M=10 Roelands+DH", lambda: _roller(10), "roelands"),
     ("roller M=50 Roelands+DH", lambda: _roller(50), "roelands"),
