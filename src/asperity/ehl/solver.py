@@ -115,6 +115,9 @@ class EHLState:
     damping : float
         Factor on the change of P and H at nodes that oscillate from sweep to sweep
         (:meth:`sweep`); 1 switches it off.
+    density_newton : bool
+        Whether the x-line relaxation takes the density's Newton term (:meth:`_sweep`);
+        on by default, off in the transient solver.
     """
 
     P = _XFastest()
@@ -164,6 +167,7 @@ class EHLState:
         self.efar = np.zeros(shape)
         self.refreshes = 0
         self.damping = 1.0
+        self.density_newton = True
         self._p_before = np.empty(shape, order="F")
         self._h_before = np.empty(shape, order="F")
         self._last_change = np.zeros(shape, order="F")
@@ -297,7 +301,8 @@ class EHLState:
             )
         return line_sweep(
             self.P, self.H, ex, ey, rho, self.efar, self.rhs_t, self.lam, self.dX, self.dY,
-            self.theta, self.mass, self.c, self.f_near, self.kind, dex, dey, drho,
+            self.theta, self.mass, self.c, self.f_near, self.kind, dex, dey,
+            drho if self.density_newton else None,
         )
 
     def hertz_start(self, film: float):
