@@ -283,3 +283,19 @@ def test_interrupted_run_says_where_and_how_to_continue(tmp_path, sig):
     proc.send_signal(signal.SIGINT)
     proc.communicate(timeout=60)
     assert json.loads((out / "summary.json").read_text())["steps_done"] > first
+
+
+def test_sphere_on_an_absurdly_large_grid_is_reported_not_crashed(tmp_path):
+    """Hypothesis found it: x_extent = 4.2e16 (metres) for a 10 mm sphere under 50 N. Every
+    cell is 1e15 m wide, the Hertz contact 0.3 mm: the load-controlled solve lost all its
+    pressure (a ZeroDivisionError in the load scaling, then the Hertz comparison of a zero
+    load as an input error). Now: not converged (exit 3) and a mesh warning naming both
+    sizes."""
+    text = BASE.replace('x_extent = "0.6 mm"', "x_extent = 4.207052321927987e+16")
+    case = tmp_path / "huge.toml"
+    case.write_text(text, encoding="utf-8")
+    result = runner.invoke(app, ["run", str(case), "--out", str(tmp_path / "o"), "--quiet"])
+    _no_traceback(result)
+    assert result.exit_code == 3, result.output
+    assert "mesh: no cell is in contact" in result.output
+    assert "did not converge" in result.output

@@ -109,6 +109,19 @@ def test_contact_resolved_by_enough_cells_is_silent():
     assert dg.contact_resolution(np.zeros((64, 64), bool), x, y) == []
 
 
+def test_no_cell_in_contact_with_a_contact_narrower_than_a_cell():
+    """No contact at all, and the expected (Hertz) contact 0.3 cells wide along x: one mesh
+    line naming both sizes; an expected contact wider than the cells, or none given, stays
+    silent (no contact can be a correct answer, e.g. a negative approach)."""
+    x = y = _cells(64, 64.0)
+    none = np.zeros((64, 64), bool)
+    lines = dg.contact_resolution(none, x, y, expected_size=(0.3, 5.0))
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and lines[0].startswith("mesh: no cell is in contact")
+    assert "0.3 m wide along x against cells of 1 m" in lines[0] and "along y" not in lines[0]
+    assert dg.contact_resolution(none, x, y, expected_size=(5.0, 5.0)) == []
+
+
 # -------------------------------------------------------------------------------- hardness
 def test_hardness_exceeded_on_the_hertz_share_of_the_area():
     """Hertz pressure p0 sqrt(1 - r^2/a^2) exceeds H on r^2 < a^2 (1 - (H/p0)^2): that share of

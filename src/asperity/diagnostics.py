@@ -208,8 +208,9 @@ def periodic_contact(contact, x, y) -> list[str]:
             "periodic array"]
 
 
-def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS) -> list[str]:
-    """A contact resolved by too few cells across its smallest semi-axis.
+def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS,
+                       expected_size=None) -> list[str]:
+    """A contact resolved by too few cells across its smallest semi-axis, or by none.
 
     The semi-axes are half the number of grid columns (rows) the contact occupies, so for a
     rough contact they are those of the apparent contact, not of single asperity contacts.
@@ -222,6 +223,9 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
         Cell-centre coordinates, m.
     min_cells : float
         Fewest cells per semi-axis.
+    expected_size : (float, float), optional
+        Expected contact widths along x and y, m (e.g. the Hertz 2a, 2b): a solve without a
+        cell in contact whose expected contact is narrower than a cell gets a line.
 
     Returns
     -------
@@ -230,7 +234,16 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
     """
     c = np.asarray(contact, dtype=bool)
     if not c.any():
-        return []
+        if expected_size is None:
+            return []
+        spacing = (_spacing(x), _spacing(y))
+        narrow = [f"{w:.3g} m wide along {name} against cells of {d:.3g} m"
+                  for w, d, name in zip(expected_size, spacing, "xy", strict=True) if w < d]
+        if not narrow:
+            return []
+        return ["mesh: no cell is in contact; the expected contact is " + " and ".join(narrow)
+                + f" (limit {min_cells:g} cells per semi-axis): use more cells or a smaller "
+                "x_extent/y_extent"]
     lines = []
     for axis, coord, name in ((0, x, "x"), (1, y, "y")):
         n = c.shape[axis]

@@ -432,6 +432,8 @@ def solve_normal(
         tau = g_dot_t / t_k_t
         total, corrected = _update(p, g, t, tau)
         factor = 1.0
+        if load_control and not total > 0.0:
+            break  # the step left no pressure to scale (a contact far below one cell)
         if load_control:  # PK step 10
             factor = load / (total * cell)
             p *= factor

@@ -59,7 +59,8 @@ def run(case, progress=None) -> Outcome:
     comparisons = []
     reference_line = None
     rx, ry = case.geometry.radii()
-    if np.isfinite(rx) and case.roughness is None:
+    curved = np.isfinite(rx) and res.load > 0.0  # (no load: a solve that lost its contact)
+    if curved and case.roughness is None:
         h = hertz_point(res.load, rx, ry, body1, body2)
         j = _centre_row(y)
         i = _centre_row(x)
@@ -77,7 +78,7 @@ def run(case, progress=None) -> Outcome:
         ]
         summary.update(hertz_max_pressure_pa=h.p_max, hertz_a_m=h.a, hertz_b_m=h.b,
                        hertz_approach_m=h.approach)
-    elif np.isfinite(rx):  # rough: show how far roughness takes the contact from smooth Hertz
+    elif curved:  # rough: show how far roughness takes the contact from smooth Hertz
         h = hertz_point(res.load, rx, ry, body1, body2)
         src, note = cite("smooth Hertz", "hertz"), "rough vs smooth, not a check"
         comparisons += [
@@ -106,16 +107,17 @@ def run(case, progress=None) -> Outcome:
 def _warnings(case, res, x, y, body1, body2) -> list[str]:
     """Trust checks: domain, mesh, roughness on the mesh and hardness
     (:mod:`asperity.diagnostics`)."""
+    size = None
     if case.grid.periodic:
         lines = diagnostics.periodic_contact(res.contact, x, y)
     else:
         rx, ry = case.geometry.radii()
-        size = None
-        if np.isfinite(rx) and np.isfinite(ry):
-            h = hertz_point(res.load, rx, ry, body1, body2)
+        load = case.loading.load if case.loading.load is not None else res.load
+        if np.isfinite(rx) and np.isfinite(ry) and load > 0.0:
+            h = hertz_point(load, rx, ry, body1, body2)
             size = (2.0 * h.a, 2.0 * h.b)
         lines = diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
-    lines += diagnostics.contact_resolution(res.contact, x, y)
+    lines += diagnostics.contact_resolution(res.contact, x, y, expected_size=size)
     rough = case.roughness
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
         ell = rough.correlation_length
