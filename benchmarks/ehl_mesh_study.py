@@ -100,9 +100,14 @@ def compare_maps(rows):
         row["map_corr"] = float(np.corrcoef(row["bins"].ravel(), ref.ravel())[0, 1])
 
 
-def figure(rows, path):
-    """The per-node time fraction in contact of every mesh, side by side."""
+def figure(rows, path, title=None):
+    """The per-node time fraction in contact of every row (mesh or case), side by side;
+    ``title(row)`` gives each panel's title (default: the mesh and its contact percentage)."""
     from asperity.plotting.style import plt
+
+    if title is None:
+        def title(row):
+            return f"{row['mesh']}: {row['contact_percent']:.1f} % of steps"
 
     fig, axes = plt.subplots(1, len(rows), figsize=(3.2 * len(rows), 3.6), sharey=True,
                              constrained_layout=True)
@@ -114,11 +119,31 @@ def figure(rows, path):
         ax.plot(np.cos(t), np.sin(t), color="0.5", lw=0.8)
         ax.set_xlim(-1.3, 1.3)
         ax.set_ylim(-1.3, 1.3)
-        ax.set_title(f"{row['mesh']}: {row['contact_percent']:.1f} % of steps", fontsize=9)
-        ax.set_xlabel("x / a")
+        ax.set_title(title(row), fontsize=9)
+        ax.set_xlabel("x / a (entrainment ->)")
     np.atleast_1d(axes)[0].set_ylabel("y / b")
     fig.colorbar(im, ax=axes, label="time in contact, % of counting time")
     fig.savefig(path, dpi=150)
+
+
+#: (header, width, text of a row) of the contact statistics shared with ehl_table2_paper.py
+LOCATION_COLUMNS = [
+    ("area/Hertz", 10, lambda r: f"{r['area_fraction']:.4f}"),
+    ("max Q/ms", 8, lambda r: f"{r['max_q']:.0f}"),
+    ("|y|>0.8b", 8, lambda r: f"{r['edge_share']:.2f}"),
+    ("x>0", 5, lambda r: f"{r['downstream_share']:.2f}"),
+    ("edge x>0", 8, lambda r: f"{r['edge_downstream']:.2f}"),
+    ("max Q at (x/a, y/b)", 19, lambda r: "({:+.3f}, {:+.2f})".format(*r["max_at"])),
+]
+SOLVER_COLUMNS = [("sweeps", 6, lambda r: f"{r['sweeps']:.1f}"),
+                  ("conv.", 5, lambda r: f"{r['converged']:.3f}")]
+
+
+def print_table(rows, columns):
+    """Print ``rows`` as right-aligned columns ``(header, width, text of a row)``."""
+    print(" ".join(f"{head:>{width}}" for head, width, _ in columns))
+    for row in rows:
+        print(" ".join(f"{text(row):>{width}}" for _, width, text in columns))
 
 
 def main():
@@ -129,20 +154,18 @@ def main():
     folders = sorted(p for p in (args.out / "cases").iterdir() if (p / "summary.json").exists())
     rows = sorted((mesh_row(f) for f in folders), key=lambda r: r["frac"].size)
     compare_maps(rows)
-    print(f"{'mesh':>8} {'steps':>5} {'contact %':>9} {'area/Hertz':>10} {'max Q/ms':>8} "
-          f"{'Q at seed dt':>12} {'max time %':>10} {'|y|>0.8b':>8} {'x>0':>5} "
-          f"{'edge x>0':>8} {'max Q at (x/a, y/b)':>19} {'map L2':>6} {'map r':>5} "
-          f"{'p_max GPa':>9} {'h_c um':>6} {'sweeps':>6} "
-          f"{'conv.':>5}")
-    for r in rows:
-        where = "({:+.3f}, {:+.2f})".format(*r["max_at"])
-        print(f"{r['mesh']:>8} {r['steps']:5d} {r['contact_percent']:9.1f} "
-              f"{r['area_fraction']:10.4f} {r['max_q']:8.0f} {r['max_q_seed_dt']:12.0f} "
-              f"{100 * r['max_fraction']:10.1f} {r['edge_share']:8.2f} "
-              f"{r['downstream_share']:5.2f} {r['edge_downstream']:8.2f} "
-              f"{where:>19} {r['map_l2']:6.2f} {r['map_corr']:5.2f} "
-              f"{r['max_pressure_gpa']:9.2f} {r['central_film_um']:6.3f} {r['sweeps']:6.1f} "
-              f"{r['converged']:5.3f}")
+    print_table(rows, [
+        ("mesh", 8, lambda r: r["mesh"]), ("steps", 5, lambda r: f"{r['steps']:d}"),
+        ("contact %", 9, lambda r: f"{r['contact_percent']:.1f}"),
+        *LOCATION_COLUMNS[:2],
+        ("Q at seed dt", 12, lambda r: f"{r['max_q_seed_dt']:.0f}"),
+        ("max time %", 10, lambda r: f"{100 * r['max_fraction']:.1f}"),
+        *LOCATION_COLUMNS[2:],
+        ("map L2", 6, lambda r: f"{r['map_l2']:.2f}"),
+        ("map r", 5, lambda r: f"{r['map_corr']:.2f}"),
+        ("p_max GPa", 9, lambda r: f"{r['max_pressure_gpa']:.2f}"),
+        ("h_c um", 6, lambda r: f"{r['central_film_um']:.3f}"), *SOLVER_COLUMNS,
+    ])
     if args.figure:
         figure(rows, args.figure)
 

@@ -17,10 +17,14 @@ import argparse
 import sys
 from pathlib import Path
 
-import numpy as np
-
 sys.path.insert(0, str(Path(__file__).parent))
-from ehl_mesh_study import mesh_row  # noqa: E402
+from ehl_mesh_study import (  # noqa: E402
+    LOCATION_COLUMNS,
+    SOLVER_COLUMNS,
+    figure,
+    mesh_row,
+    print_table,
+)
 
 from asperity.sweep import load_study  # noqa: E402
 
@@ -41,45 +45,20 @@ def rows(out: Path):
     return found
 
 
-def figure(found, path):
-    """Per-node time in contact of every finished case, side by side."""
-    from asperity.plotting.style import plt
-
-    fig, axes = plt.subplots(1, len(found), figsize=(3.2 * len(found), 3.6), sharey=True,
-                             constrained_layout=True)
-    vmax = max(float(r["frac"].max()) for r in found)
-    t = np.linspace(0, 2 * np.pi, 200)
-    for ax, row in zip(np.atleast_1d(axes), found, strict=True):
-        im = ax.pcolormesh(row["X"], row["Y"], 100 * row["frac"].T, vmin=0, vmax=100 * vmax,
-                           cmap="magma_r", shading="nearest")
-        ax.plot(np.cos(t), np.sin(t), color="0.5", lw=0.8)
-        ax.set_xlim(-1.3, 1.3)
-        ax.set_ylim(-1.3, 1.3)
-        ax.set_title(f"{row['label']}: {row['contact_percent']:.1f} % of steps\n"
-                     f"(seed: {row['paper']:g} %)", fontsize=9)
-        ax.set_xlabel("x / a (entrainment ->)")
-    np.atleast_1d(axes)[0].set_ylabel("y / b")
-    fig.colorbar(im, ax=axes, label="time in contact, % of counting time")
-    fig.savefig(path, dpi=150)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", type=Path, help="the study's output folder")
     parser.add_argument("--figure", type=Path, help="write the time-in-contact maps here")
     args = parser.parse_args()
     found = rows(args.out)
-    print(f"{'case':>18} {'seed %':>6} {'ours %':>6} {'area/Hertz':>10} {'max Q/ms':>8} "
-          f"{'|y|>0.8b':>8} {'x>0':>5} {'edge x>0':>8} {'max Q at (x/a, y/b)':>19} "
-          f"{'p_max GPa':>9} {'sweeps':>6} {'conv.':>5}")
-    for r in found:
-        where = "({:+.3f}, {:+.2f})".format(*r["max_at"])
-        print(f"{r['label']:>18} {r['paper']:6.1f} {r['contact_percent']:6.1f} "
-              f"{r['area_fraction']:10.4f} {r['max_q']:8.0f} {r['edge_share']:8.2f} "
-              f"{r['downstream_share']:5.2f} {r['edge_downstream']:8.2f} {where:>19} "
-              f"{r['max_pressure_gpa']:9.2f} {r['sweeps']:6.1f} {r['converged']:5.3f}")
+    print_table(found, [
+        ("case", 18, lambda r: r["label"]), ("seed %", 6, lambda r: f"{r['paper']:.1f}"),
+        ("ours %", 6, lambda r: f"{r['contact_percent']:.1f}"), *LOCATION_COLUMNS,
+        ("p_max GPa", 9, lambda r: f"{r['max_pressure_gpa']:.2f}"), *SOLVER_COLUMNS,
+    ])
     if args.figure and found:
-        figure(found, args.figure)
+        figure(found, args.figure, title=lambda r: f"{r['label']}: {r['contact_percent']:.1f} "
+               f"% of steps\n(seed: {r['paper']:g} %)")
 
 
 if __name__ == "__main__":
