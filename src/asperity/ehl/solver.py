@@ -36,6 +36,7 @@ from .kernels import damp_oscillations, far_field, five_point_laplacian, line_sw
 from .lubricant import friction_coefficient
 from .nodal import at_centre as _at_centre
 from .nodal import centre_line as _centre_line
+from .nodal import upwind_difference
 from .problem import LineContact, PointContact
 
 __all__ = ["EHLState", "SteadyResult", "solve_steady"]
@@ -353,50 +354,32 @@ class _SteadyLineState(EHLState):
     Here the Couette flux is linearised in the pressure, ``rho(p) h ~ rho* h + h* rho' dp``,
     with the node's own deflection row ``dp = (|D0| / C0) dh`` (a Newton step in the nodal
     update): ``rho(p) h ~ (rho* + s) h - s h*``, ``s = h* rho' |D0| / C0``, where ``*``
-    marks the values at the start of the sweep. The compiled sweep
+    marks the values at the start of the sweep (``rho'`` analytic, from
+    :meth:`~asperity.ehl.lubricant.Lubricant.flow_field`). The compiled sweep
     (:func:`asperity.ehl.kernels.point_sweep`) receives ``rho* + s`` as the density and the
-    Couette difference of ``s h*`` in the explicit term ``rhs_t``, so that the two cancel
+    upwind difference (:func:`~asperity.ehl.nodal.upwind_difference`) of ``s h*`` in the
+    explicit term ``rhs_t``, so that the two cancel
     when ``h = h*``: the converged solution is that of :class:`EHLState`. An incompressible
     oil has ``s = 0`` and the same update. For steady solves (``theta = 1``, ``mass = 0``).
     """
 
-    #: Pressure step (over p_hertz) of the one-sided difference of rho(p).
-    DENSITY_STEP = 1e-6
-
     def _sweep(self, method: str):
         if method != "point":
             return super()._sweep(method)
+        # rho' at the current pressure (the flow factors' slopes stay lagged as in EHLState)
+        ex, ey, rho, *slopes = self.flow_coefficients(slopes=True)
         if self._derivatives is None or not self.lag_derivatives:
-            ex, ey, rho, *self._derivatives = self.flow_coefficients(slopes=True)
-        else:
-            ex, ey, rho = self.flow_coefficients()
+            self._derivatives = slopes
         dex, dey, _ = self._derivatives
         stiff = (2.0 / self.dX**2) / (-self.c * self.f_near[0])
-        s = self.density_slope() * self.H * stiff
+        s = slopes[2] * self.H * stiff
         s[self.P <= 0.0] = 0.0
-        rhs_t = self.rhs_t + self.lam / self.dX * _couette_difference(s * self.H)
+        rhs_t = self.rhs_t + self.lam / self.dX * upwind_difference(s * self.H)
         return point_sweep(
             self.P, self.H, ex, ey, np.asfortranarray(rho + s), self.efar,
             np.asfortranarray(rhs_t), self.lam, self.dX, self.dY, self.theta, self.mass,
             self.c, self.f_near, dex, dey,
         )
-
-    def density_slope(self) -> np.ndarray:
-        """d(rho/rho0)/dP at the nodes (P = p/p_hertz; one-sided, p < 0 counts as 0)."""
-        lub = self.problem.lubricant
-        p = np.maximum(self.P, 0.0) * self.problem.p_hertz
-        dp = self.DENSITY_STEP * self.problem.p_hertz
-        return (lub.density_ratio(p + dp) - lub.density_ratio(p)) / self.DENSITY_STEP
-
-
-def _couette_difference(q):
-    """``dX`` times the upwind derivative dq/dX of the compiled sweeps at every node:
-    ``1.5 q_i - 2 q_{i-1} + 0.5 q_{i-2}``, first order ``q_1 - q_0`` next to the inlet and 0
-    at ``i = 0`` (the weights ``(c0, c1, c2)`` of :mod:`asperity.ehl.kernels`)."""
-    out = np.zeros_like(q)
-    out[1] = q[1] - q[0]
-    out[2:] = 1.5 * q[2:] - 2.0 * q[1:-1] + 0.5 * q[:-2]
-    return out
 
 
 def _bilinear(xc, yc, field, x, y):

@@ -25,6 +25,7 @@ import numpy as np
 from ..errors import InputError, check_int, check_positive
 from .anderson import AndersonMixer
 from .kernels import CAVITATED, CONTACT
+from .nodal import upwind_difference
 from .solver import EHLState, check_contact_and_method, check_damping
 
 __all__ = ["DIVERGED", "MIX_BELOW", "StepOptions", "StepReport", "TimeStepper",
@@ -150,10 +151,7 @@ def reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
     fe = 0.5 * (ex[1:-1] + ex[2:]) / dx2
     fw = 0.5 * (ex[1:-1] + ex[:-2]) / dx2
     L[1:-1] = fe * (P[2:] - P[1:-1]) + fw * (P[:-2] - P[1:-1])
-    wedge = np.zeros_like(P)
-    wedge[2:-1] = 1.5 * q[2:-1] - 2.0 * q[1:-2] + 0.5 * q[:-3]
-    wedge[1] = q[1] - q[0]
-    L -= state.lam * wedge / state.dX
+    L -= state.lam * upwind_difference(q) / state.dX  # (its last node is an edge: zeroed)
     if not state.line:
         dy2 = state.dY**2
         fn = 0.5 * (ey[:, 1:-1] + ey[:, 2:]) / dy2
