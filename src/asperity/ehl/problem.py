@@ -53,7 +53,7 @@ MESH_TARGET = 0.02
 
 #: Largest dY/dX of a default point-contact mesh: at 32-33 the x-line relaxation diverged for
 #: the ellipses k = 5 at M = 1000 and 3000, L = 19 (Barus); at 16 and 22 it converged
-#: (docs/ehl-robustness.md, "Long ellipses at large L").
+#: (docs/ehl-robustness.md, "Compressible point contacts and long ellipses at large L").
 MAX_CELL_ASPECT = 16.0
 
 
@@ -282,8 +282,7 @@ class PointContact(_Contact):
         ``dY <= MAX_CELL_ASPECT dX``: on cells 32 times longer than wide the relaxation
         diverged for long ellipses at large Moes L (k = 5, M = 1000 and 3000, L = 19).
         Along x ``dX = 1/``:meth:`cells_per_a`, refined to ``dX <= b/30`` when ``b < a`` so
-        that both hold. ``nx - 1`` and ``ny - 1``
-        are multiples of 8.
+        that both hold. ``nx - 1`` and ``ny - 1`` are multiples of 8.
         """
         (x0, x1), (y0, y1) = _check_domain(
             self.default_domain() if domain is None else domain, self.a, self.b)

@@ -288,7 +288,8 @@ class EHLState:
         compressible oil and a thick film (the lagged density's factor of
         :class:`_SteadyLineState`, which gives the point update of a line contact its own
         form of the term): without it the ball bearing and the circular contact at M = 1000,
-        L = 19 of docs/ehl-robustness.md ("Compressible contacts at large L") diverged.
+        L = 19 of docs/ehl-robustness.md ("Compressible point contacts and long ellipses at
+        large L") diverged.
         """
         if self._derivatives is None or not self.lag_derivatives:
             ex, ey, rho, *self._derivatives = self.flow_coefficients(slopes=True)
