@@ -16,6 +16,7 @@ from asperity.sweep import load_study, run_study
 BASE = """
 analysis = "normal"
 title = "small sphere"
+source = "a handbook"
 [body1]
 youngs_modulus = "210 GPa"
 [body2]
@@ -285,11 +286,11 @@ def test_seed_mesh_studies_run_the_paper_example():
 
 
 def test_unset_removes_a_base_key_from_every_case(tmp_path):
-    """``unset`` drops a key of the base case (here its title); a key the base does not set is
-    refused, naming the entry."""
-    study = _study(tmp_path, 'unset = ["title"]\n[[axis]]\nkey = "loading.load"\n'
+    """``unset`` drops a key of the base case (here its source); a key the base does not set
+    is refused, naming the entry."""
+    study = _study(tmp_path, 'unset = ["source"]\n[[axis]]\nkey = "loading.load"\n'
                              'values = ["5 N", "10 N"]\n')
-    assert all("title" not in case and case["grid"]["nx"] == 24 for _, case, _ in study.cases)
+    assert all("source" not in case and case["grid"]["nx"] == 24 for _, case, _ in study.cases)
     with pytest.raises(InputError, match=r"unset\[0\]"):
         _study(tmp_path, 'unset = ["grid.z_extent"]\n[[axis]]\nkey = "loading.load"\n'
                          'values = ["5 N"]\n')
@@ -326,3 +327,20 @@ def test_study_shows_a_quantity_stored_as_fraction_and_percent_once(tmp_path):
     assert ds["contact_time_fraction"].attrs["long_name"] == \
         ds["contact_time_percent"].attrs["long_name"]
     assert study_variables(ds) == ["contact_time_percent", "max_pressure_pa"]
+
+
+def test_each_case_is_titled_by_its_own_axis_values(tmp_path):
+    """A case's title and description name what its axes set (by label where the axis has
+    labels), not the base's title: the base "small sphere" at 20 N would otherwise title a
+    5 N case. In zip mode repeated values keep their own position's label."""
+    study = _study(tmp_path, AXES)
+    titles = [case["title"] for _, case, _ in study.cases]
+    assert titles[0] == "t: loading.load = 5 N, geometry.rx = 5 mm"
+    assert titles[-1] == "t: loading.load = 20 N, geometry.rx = 10 mm"
+    assert "loading.load = 10 N; geometry.rx = 5 mm" in study.cases[2][1]["description"]
+    zipped = _study(tmp_path, '[[axis]]\nname = "pair"\nkeys = ["loading.load", "geometry.rx"]\n'
+                              'values = [["5 N", "5 mm"], ["5 N", "5 mm"]]\n'
+                              'labels = ["first", "second"]\n', mode="zip")
+    assert [case["title"] for _, case, _ in zipped.cases] == ["t: pair = first", "t: pair = second"]
+    titled = _study(tmp_path, '[[axis]]\nkey = "title"\nvalues = ["mine"]\n')
+    assert titled.cases[0][1]["title"] == "mine"

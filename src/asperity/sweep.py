@@ -139,6 +139,24 @@ def _axis(ax, i: int) -> tuple:
     return str(name), tuple(keys), values, [str(label) for label in labels]
 
 
+def _name_case(case: dict, base: str, title: str, axes: list, position: tuple) -> None:
+    """Title and describe one case by the values its axes set, unless an axis sets them.
+
+    Without this every case would carry the base example's title and description, which name
+    the base's own values (a C-C study case titled "C against C, xi = 0.25" whatever it runs).
+    """
+    set_keys = {key for _, keys, _, _ in axes for key in keys}
+    parts = []
+    for (name, _, values, labels), i in zip(axes, position, strict=True):
+        shown = labels[i] if labels is not None else values[i]
+        parts.append(f"{name.replace('__', '.')} = {shown}")
+    if "title" not in set_keys:
+        case["title"] = f"{title}: {', '.join(parts)}"
+    if "description" not in set_keys:
+        case["description"] = (f"Case of the study \"{title}\" on the example or case file "
+                               f"{base}, with {'; '.join(parts)}.")
+
+
 def load_study(path: str | Path) -> Study:
     """Read and validate a study file (or a built-in study by name); every case is validated
     before anything runs."""
@@ -167,21 +185,24 @@ def load_study(path: str | Path) -> Study:
     axes = [_axis(ax, i) for i, ax in enumerate(axes_spec)]
     if mode == "zip" and len({len(ax[2]) for ax in axes}) != 1:
         raise InputError("axis", "axes of equal length for mode = \"zip\"")
-    combos = (zip(*(ax[2] for ax in axes), strict=True) if mode == "zip"
-              else itertools.product(*(ax[2] for ax in axes)))
+    positions = (zip(*(range(len(ax[2])) for ax in axes), strict=True) if mode == "zip"
+                 else itertools.product(*(range(len(ax[2])) for ax in axes)))
+    title = spec.get("title", path.stem)
     cases = []
-    for n, combo in enumerate(combos):
+    for n, position in enumerate(positions):
+        combo = tuple(ax[2][i] for ax, i in zip(axes, position, strict=True))
         case = copy.deepcopy(base_case)
         for (_, keys, _, _), value in zip(axes, combo, strict=True):
             for key, v in zip(keys, value if len(keys) > 1 else (value,), strict=True):
                 _set_path(case, key, v)
+        _name_case(case, base, title, axes, position)
         try:
             load_case(case)
         except InputError as exc:
             raise InputError(f"case {n} ({exc.field})", exc.expected, exc.got,
                              problem=str(exc).split(": ", 1)[1]) from None
         cases.append((f"{n:04d}", case, dict(zip((ax[0] for ax in axes), combo, strict=True))))
-    return Study(spec.get("title", path.stem), mode, tuple(axes), tuple(cases))
+    return Study(title, mode, tuple(axes), tuple(cases))
 
 
 def run_one(case: dict, folder: str) -> dict:
