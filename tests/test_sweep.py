@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from asperity.ehl.checkpoint import Checkpointer
 from asperity.errors import InputError
-from asperity.sweep import load_study, run_study
+from asperity.sweep import load_study, run_one, run_study
 
 BASE = """
 analysis = "normal"
@@ -115,10 +116,10 @@ def test_failing_case_is_recorded_and_others_run(tmp_path, monkeypatch):
 
     real = asperity.runners.run_case
 
-    def flaky(case, progress=None):
+    def flaky(case, progress=None, **folder):
         if case.loading.load == 10.0:
             raise RuntimeError("solver exploded")
-        return real(case, progress)
+        return real(case, progress, **folder)
 
     monkeypatch.setattr(asperity.runners, "run_case", flaky)
     study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = [5, 10, 20]\n')
@@ -344,3 +345,81 @@ def test_each_case_is_titled_by_its_own_axis_values(tmp_path):
     assert [case["title"] for _, case, _ in zipped.cases] == ["t: pair = first", "t: pair = second"]
     titled = _study(tmp_path, '[[axis]]\nkey = "title"\nvalues = ["mine"]\n')
     assert titled.cases[0][1]["title"] == "mine"
+
+
+TRANSIENT = """
+analysis = "ehl-transient"
+reduced_modulus = "227 GPa"
+[contact]
+type = "point"
+rx = "19.1 mm"
+ry = "151 mm"
+load = "962 N"
+[speeds]
+u = "25 m/s"
+xi = 0.25
+[lubricant]
+eta0 = "0.005 Pa s"
+alpha = "11.1 1/GPa"
+[grid]
+nx = 65
+ny = 33
+[surface1]
+kind = "smooth"
+[surface1.waviness]
+wavelength = "0.2 mm"
+amplitude = "0.05 um"
+direction = "x"
+[time]
+counting_steps = 30
+warmup_steps = 10
+[solver]
+checkpoint_every = 4
+"""
+
+
+def test_killed_long_case_of_a_study_resumes_from_its_checkpoint(tmp_path, monkeypatch):
+    """A transient case of a study checkpoints into its case folder: killed mid-run and run
+    again, it goes on from the checkpoint (not from step 0) and ends with the numbers of an
+    uninterrupted run."""
+    (tmp_path / "base.toml").write_text(TRANSIENT)
+    (tmp_path / "study.toml").write_text('title = "t"\nbase = "base.toml"\n'
+                                         '[[axis]]\nkey = "speeds.xi"\nvalues = [0.25]\n')
+    study = load_study(tmp_path / "study.toml")
+    whole = run_one(study.cases[0][1], str(tmp_path / "whole"))
+    assert whole["state"] == "done", whole
+
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "asperity.cli", "sweep", str(tmp_path / "study.toml"),
+           "--out", str(out), "--serial", "--quiet"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    partial = out / "cases" / "0000" / "result.nc"
+    deadline, steps = time.time() + 240, 0
+    while time.time() < deadline and proc.poll() is None and steps < 12:
+        if partial.is_file():
+            with xr.open_dataset(partial) as ds:
+                steps = int(ds.attrs.get("steps_done", 0))
+        time.sleep(0.05)
+    proc.kill()
+    proc.wait()
+    assert 12 <= steps < 40, "the case was not killed mid-way"
+    assert not (out / "cases" / "0000" / "status.json").is_file()
+
+    loaded = []
+    original = Checkpointer.load
+
+    def load(self):
+        arrays = original(self)
+        loaded.append(None if arrays is None else arrays)
+        return arrays
+
+    monkeypatch.setattr(Checkpointer, "load", load)
+    resumed = run_one(study.cases[0][1], str(out / "cases" / "0000"))
+    assert len(loaded) == 1 and loaded[0] is not None, "the case started again from step 0"
+    assert resumed["state"] == "done", resumed
+    for key in ("max_pressure_pa", "minimum_film_thickness_m", "contact_time_fraction"):
+        assert resumed["summary"][key] == whole["summary"][key], key
+    with xr.open_dataset(tmp_path / "whole" / "result.nc") as da, \
+            xr.open_dataset(partial) as db:
+        np.testing.assert_array_equal(da["film"].values, db["film"].values)
+        assert "partial" not in db.attrs

@@ -208,15 +208,19 @@ def load_study(path: str | Path) -> Study:
 def run_one(case: dict, folder: str) -> dict:
     """Run one case into ``folder``; return its status (done, summary, or the error).
 
-    Runs in a Dask worker. Errors are caught and recorded, never raised.
+    Runs in a Dask worker. Errors are caught and recorded, never raised. A long-running case
+    (a transient EHL run) checkpoints into ``folder`` and, run again after an interruption,
+    goes on from its last checkpoint with the same final numbers.
     """
     from .cases import load_case
     from .results import write_outcome
     from .runners import run_case
 
     folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
     try:
-        outcome = run_case(load_case(case))
+        outcome = run_case(load_case(case), workdir=folder,
+                           resume=(folder / "checkpoint.npz").is_file())
         write_outcome(outcome, folder, figures=False)
         status = {"state": "done", "converged": bool(outcome.converged),
                   "summary": outcome.summary}
