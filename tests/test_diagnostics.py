@@ -186,6 +186,28 @@ def test_ehl_sides():
                 field[:, band].max() / p_h, rel=1e-3)
 
 
+def test_ehl_side_film():
+    """The side probe's film changes are reported above their limits, with the wider sides
+    as the advice; within the limits, or when a probe solve did not converge, nothing."""
+    from asperity.ehl.sides import SideProbe
+
+    b = 1e-4
+
+    def probe(narrow_min, narrow_centre, converged=True):
+        return SideProbe((-1.4 * b, 1.4 * b), (-2.4 * b, 2.4 * b), (narrow_min, 80e-9),
+                         (narrow_centre, 150e-9), converged)
+
+    lines = dg.ehl_side_film(probe(76e-9, 149e-9), b)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and "y_min <= -2.4 b and y_max >= 2.4 b" in lines[0]
+    assert _percent(lines[0], "minimum film is") == pytest.approx(80 / 76 - 1, rel=1e-3)
+    assert _percent(lines[0], "central film") == pytest.approx(150 / 149 - 1, rel=1e-3)
+    assert "higher" in lines[0]
+    assert dg.ehl_side_film(probe(79e-9, 149e-9), b) == []
+    assert len(dg.ehl_side_film(probe(79e-9, 147e-9), b)) == 1  # the central film alone
+    assert dg.ehl_side_film(probe(60e-9, 140e-9, converged=False), b) == []
+
+
 def test_ehl_mesh():
     a, b = 1e-4, 4e-4
     coarse = dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 17), np.linspace(-2 * b, 2 * b, 81),

@@ -26,6 +26,9 @@ __all__ = [
     "MIN_CELLS_PER_SEMI_AXIS",
     "BOUNDARY_PRESSURE",
     "BOUNDARY_BAND",
+    "SIDE_CENTRAL_CHANGE",
+    "SIDE_FILM_CHANGE",
+    "SIDE_PROBE_PRESSURE",
     "STARVED_FILM_LOSS",
     "UNRESOLVED_WAVELENGTH_CELLS",
     "UNRESOLVED_RMS_SHARE",
@@ -37,7 +40,9 @@ __all__ = [
     "ehl_inlet_length",
     "ehl_film_collapse",
     "ehl_mesh",
+    "ehl_side_film",
     "ehl_sides",
+    "side_pressure",
     "lowpass_removed",
     "periodic_contact",
     "unconverged_steps",
@@ -55,6 +60,14 @@ MIN_CELLS_PER_SEMI_AXIS = 10
 BOUNDARY_PRESSURE = 0.01
 #: Width of the band next to an EHL boundary, in semi-axes, where that pressure is measured.
 BOUNDARY_BAND = 0.1
+#: Side pressure, as a fraction of the Hertz pressure, above which (up to
+#: ``BOUNDARY_PRESSURE``) the film's dependence on the side boundaries is measured by a
+#: re-solve with wider sides (:func:`asperity.ehl.sides.side_probe`).
+SIDE_PROBE_PRESSURE = 1e-4
+#: Change of the minimum film, and of the central film, between that re-solve and the case's
+#: domain above which the sides are reported.
+SIDE_FILM_CHANGE = 0.02
+SIDE_CENTRAL_CHANGE = 0.01
 #: Loss of central film a short inlet may cause (Hamrock & Dowson's starvation fit) before it is
 #: reported.
 STARVED_FILM_LOSS = 0.02
@@ -398,6 +411,57 @@ def ehl_film_collapse(film, estimate: float | None = None) -> list[str]:
             "viscosity"]
 
 
+def side_pressure(pressure, y, b: float) -> float:
+    """Largest pressure within ``BOUNDARY_BAND`` b of a side boundary (and on the two nodes
+    next to each side), Pa.
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (nx, ny)
+        Film pressure on the nodes, Pa.
+    y : ndarray
+        Node coordinates across the entrainment direction (at least 3), m.
+    b : float
+        Hertz semi-axis along y, m.
+    """
+    y = np.asarray(y, dtype=float)
+    near = (y <= y[0] + BOUNDARY_BAND * b) | (y >= y[-1] - BOUNDARY_BAND * b)
+    near[[0, 1, -2, -1]] = True
+    return float(np.max(np.asarray(pressure, dtype=float)[:, near]))
+
+
+def ehl_side_film(probe, b: float) -> list[str]:
+    """Film moved by the side boundaries: the steady solves of a side probe differ by more than
+    ``SIDE_FILM_CHANGE`` in the minimum film or ``SIDE_CENTRAL_CHANGE`` in the central film.
+
+    Parameters
+    ----------
+    probe : asperity.ehl.sides.SideProbe
+        The steady film on the case's domain and on one with the sides moved out.
+    b : float
+        Hertz semi-axis along y, m.
+
+    Returns
+    -------
+    list of str
+        At most one line; none when either solve of the probe did not converge (the side
+        pressure check still applies).
+    """
+    if not probe.converged:
+        return []
+    dmin, dcen = probe.minimum_film_change, probe.central_film_change
+    if abs(dmin) <= SIDE_FILM_CHANGE and abs(dcen) <= SIDE_CENTRAL_CHANGE:
+        return []
+    (y0, y1), (w0, w1) = probe.y_bounds, probe.wide_y_bounds
+    return [f"sides: the side boundaries at y = {y0 / b:.3g} b and {y1 / b:.3g} b change the "
+            f"film: with them at {w0 / b:.3g} b and {w1 / b:.3g} b the minimum film is "
+            f"{_pct(-dmin / (1.0 + dmin))} {'higher' if dmin < 0 else 'lower'} and the central "
+            f"film {_pct(abs(dcen) / (1.0 + dcen))} {'higher' if dcen < 0 else 'lower'} "
+            f"(steady smooth solutions at twice the mesh spacing; limits "
+            f"{_pct(SIDE_FILM_CHANGE)} and {_pct(SIDE_CENTRAL_CHANGE)}); the side leakage is "
+            f"cut off; use y_min <= {w0 / b:.2g} b and y_max >= {w1 / b:.2g} b"]
+
+
 def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:
     """Pressure at the side boundaries of a point contact: side leakage cut off.
 
@@ -420,9 +484,7 @@ def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:
     y = np.asarray(y, dtype=float)
     if y.size < 3:
         return []
-    near = (y <= y[0] + BOUNDARY_BAND * b) | (y >= y[-1] - BOUNDARY_BAND * b)
-    near[[0, 1, -2, -1]] = True
-    level = float(np.max(np.asarray(pressure, dtype=float)[:, near])) / p_hertz
+    level = side_pressure(pressure, y, b) / p_hertz
     if level <= BOUNDARY_PRESSURE:
         return []
     reach = max(abs(y[0]), abs(y[-1])) / b

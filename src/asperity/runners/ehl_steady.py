@@ -15,6 +15,7 @@ import xarray as xr
 from .. import diagnostics
 from ..ehl import solve_steady
 from ..ehl.problem import LineContact
+from ..ehl.sides import side_probe
 from ..references import ehl_steady_comparisons, film_formulas, lubricant_laws
 from ..results import Outcome, variable
 
@@ -98,7 +99,10 @@ def run(case, progress=None) -> Outcome:
 def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
     """Trust checks of an EHL solution: inlet, sides, mesh, hardness.
 
-    Shared by the steady and transient runners (:mod:`asperity.diagnostics`).
+    Shared by the steady and transient runners (:mod:`asperity.diagnostics`). Where the side
+    pressure is small but not negligible (``SIDE_PROBE_PRESSURE`` to ``BOUNDARY_PRESSURE`` of
+    p_h) the film's dependence on the sides is measured by :func:`asperity.ehl.sides.side_probe`
+    (two steady solves at twice the mesh spacing).
     """
     hz = problem.hertz
     b = None if isinstance(problem, LineContact) else hz.b
@@ -107,6 +111,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
         if not lines:  # the pressure is back to ambient: is the inlet still starving the film?
             lines += diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film)
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
+        if diagnostics.SIDE_PROBE_PRESSURE < diagnostics.side_pressure(pressure, y, b) / \
+                hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
+            lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
     lines += diagnostics.ehl_mesh(x, y, hz.a, b)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),

@@ -1,0 +1,87 @@
+"""How much the side boundaries of a point contact's domain move its film.
+
+The Reynolds equation is solved with p = 0 on the side boundaries y = y0, y1. Where the
+pressure has not decayed there, the boundary cuts off the side leakage. A side pressure of
+0.26 % of p_h lowered the minimum film of a ball-on-disc case by 3.9 % and that of the gear
+case by 0.06 % (docs/ehl-robustness.md, "Side boundaries"), so the pressure at the sides alone
+does not say whether the film has moved. :func:`side_probe` measures it: the smooth steady
+contact solved twice at twice the mesh spacing, on the given domain and with both sides moved
+out, everything else the same.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .solver import solve_steady
+
+__all__ = ["SideProbe", "side_probe"]
+
+
+@dataclass(frozen=True)
+class SideProbe:
+    """The steady film on the given domain and on one with the sides moved out.
+
+    Attributes
+    ----------
+    y_bounds, wide_y_bounds : (float, float)
+        Side boundaries of the two solves, m.
+    minimum_film, central_film : (float, float)
+        Minimum and central film of the two solves, m.
+    converged : bool
+        Whether both solves converged.
+    """
+
+    y_bounds: tuple[float, float]
+    wide_y_bounds: tuple[float, float]
+    minimum_film: tuple[float, float]
+    central_film: tuple[float, float]
+    converged: bool
+
+    @property
+    def minimum_film_change(self) -> float:
+        """Minimum film on the given domain relative to the wider one, minus 1."""
+        return self.minimum_film[0] / self.minimum_film[1] - 1.0
+
+    @property
+    def central_film_change(self) -> float:
+        """Central film on the given domain relative to the wider one, minus 1."""
+        return self.central_film[0] / self.central_film[1] - 1.0
+
+
+def side_probe(problem, x, y, widen: float = 1.0) -> SideProbe:
+    """Solve the smooth steady contact on the domain of ``x``, ``y`` and with wider sides.
+
+    Both solves use twice the mesh spacing of the given nodes (``(n - 1) // 2 + 1`` nodes on
+    the given domain) and the solver's defaults otherwise; the wide domain adds whole cells of
+    that spacing on each side.
+
+    Parameters
+    ----------
+    problem : PointContact
+        The contact (SI).
+    x, y : ndarray
+        Nodes of the solution whose domain is probed, m.
+    widen : float
+        How far each side boundary moves out, in units of the Hertz semi-axis b.
+
+    Returns
+    -------
+    SideProbe
+    """
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    nx, ny = (x.size - 1) // 2 + 1, (y.size - 1) // 2 + 1
+    dy = (y[-1] - y[0]) / (ny - 1)
+    extra = max(1, round(widen * problem.b / dy))
+    x_bounds = (float(x[0]), float(x[-1]))
+    y_bounds = (float(y[0]), float(y[-1]))
+    wide = (y_bounds[0] - extra * dy, y_bounds[1] + extra * dy)
+    narrow_res = solve_steady(problem, nx=nx, ny=ny, domain=(x_bounds, y_bounds))
+    wide_res = solve_steady(problem, nx=nx, ny=ny + 2 * extra, domain=(x_bounds, wide))
+    return SideProbe(y_bounds, wide,
+                     (narrow_res.minimum_film, wide_res.minimum_film),
+                     (narrow_res.central_film, wide_res.central_film),
+                     bool(narrow_res.converged and wide_res.converged))
