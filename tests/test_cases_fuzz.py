@@ -3,7 +3,7 @@
 import copy
 import math
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from asperity.cases import load_case, parse_toml
@@ -75,6 +75,17 @@ def _small(case) -> bool:
 
 @settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(mutated_cases())
+# found by this test: 16 nodes over 58 km across the contact once crashed the mesh check
+@example(data={
+    "analysis": "ehl-transient", "reduced_modulus": "227 GPa",
+    "contact": {"type": "point", "rx": "19.1 mm", "ry": "151 mm", "load": "962 N"},
+    "speeds": {"u": "25 m/s", "xi": 0.25},
+    "lubricant": {"eta0": "0.005 Pa s", "alpha": "11.1 1/GPa", "tau0": "10 MPa"},
+    "grid": {"nx": 16, "ny": 16, "x_min": -2.0, "x_max": 1.25, "y_min": "-2.27801e+06 in",
+             "y_max": 1.4},
+    "time": {"counting_steps": 2, "warmup_steps": 1},
+    "surface1": {"kind": "builtin", "profile": "A", "lowpass": 3.0},
+    "surface2": {"kind": "builtin", "profile": "A", "lowpass": 3.0}})
 def test_mutated_case_is_valid_or_one_clear_line(data):
     try:
         case = load_case(data)

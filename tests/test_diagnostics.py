@@ -218,6 +218,10 @@ def test_ehl_mesh():
     assert dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 41), np.linspace(-2 * b, 2 * b, 41),
                        a, b) == []  # exactly 10 spacings per semi-axis
     assert dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 41), np.zeros(1), a, None) == []
+    # 16 nodes over 58 km across a 1.3 mm contact (found by the case fuzzer): a/dy rounds to
+    # 0 at 6 decimals; the line still gives the ratio and a finite node count
+    absurd = dg.ehl_mesh(np.linspace(-2.5 * a, 1.5 * a, 41), np.linspace(-5.8e4, 0, 16), a, b)
+    assert len(absurd) == 1 and "b/dy = 1.03e-07" in absurd[0], absurd
 
 
 # ------------------------------------------------------------------------------- roughness

@@ -444,10 +444,10 @@ def ehl_side_film(probe, b: float) -> list[str]:
     Returns
     -------
     list of str
-        At most one line; none when either solve of the probe did not converge (the side
-        pressure check still applies).
+        At most one line; none when either solve of the probe did not converge or closed the
+        film (the side pressure check still applies).
     """
-    if not probe.converged:
+    if not probe.converged or min(*probe.minimum_film, *probe.central_film) <= 0.0:
         return []
     dmin, dcen = probe.minimum_film_change, probe.central_film_change
     if abs(dmin) <= SIDE_FILM_CHANGE and abs(dcen) <= SIDE_CENTRAL_CHANGE:
@@ -517,8 +517,8 @@ def ehl_mesh(x, y, a: float, b: float | None,
     for name, coord, semi, key in (("a", x, a, "x"), ("b", y, b, "y")):
         if semi is None or np.asarray(coord).size < 2:
             continue
-        spacing = _spacing(coord)
-        cells = round(semi / spacing, 6)
+        ratio = semi / _spacing(coord)
+        cells = round(ratio, 6) or ratio  # rounded off float noise; not to 0 on absurd meshes
         if cells < min_cells:
             n = np.asarray(coord).size
             need = math.ceil((n - 1) * min_cells / cells) + 1

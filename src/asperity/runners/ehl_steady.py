@@ -101,8 +101,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
 
     Shared by the steady and transient runners (:mod:`asperity.diagnostics`). Where the side
     pressure is small but not negligible (``SIDE_PROBE_PRESSURE`` to ``BOUNDARY_PRESSURE`` of
-    p_h) the film's dependence on the sides is measured by :func:`asperity.ehl.sides.side_probe`
-    (two steady solves at twice the mesh spacing).
+    p_h) on a mesh that resolves the Hertz zone, the film's dependence on the sides is
+    measured by :func:`asperity.ehl.sides.side_probe` (two steady solves at twice the mesh
+    spacing, or on the default mesh where that is coarser).
     """
     hz = problem.hertz
     b = None if isinstance(problem, LineContact) else hz.b
@@ -111,10 +112,11 @@ def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
         if not lines:  # the pressure is back to ambient: is the inlet still starving the film?
             lines += diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film)
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
-        if diagnostics.SIDE_PROBE_PRESSURE < diagnostics.side_pressure(pressure, y, b) / \
-                hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
-            lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
-    lines += diagnostics.ehl_mesh(x, y, hz.a, b)
+    mesh = diagnostics.ehl_mesh(x, y, hz.a, b)
+    if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
+            diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
+        lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
+    lines += mesh
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
