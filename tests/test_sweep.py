@@ -423,3 +423,39 @@ def test_killed_long_case_of_a_study_resumes_from_its_checkpoint(tmp_path, monke
             xr.open_dataset(partial) as db:
         np.testing.assert_array_equal(da["film"].values, db["film"].values)
         assert "partial" not in db.attrs
+
+
+def test_study_shows_cases_with_warnings_or_without_convergence(tmp_path, monkeypatch):
+    """A case that ran to the end with warnings, or without converging, is not a plain "done":
+    study.nc keeps its warnings and convergence, the report's banner names the cases and
+    lists the warnings, and the command line says so and exits 3 for the unconverged case."""
+    from typer.testing import CliRunner
+
+    import asperity.runners
+    from asperity.cli import app
+
+    real = asperity.runners.run_case
+
+    def stalled(case, progress=None, **folder):
+        outcome = real(case, progress, **folder)
+        if case.grid.nx == 96:  # a case that "did not converge"
+            outcome.converged = False
+        return outcome
+
+    monkeypatch.setattr(asperity.runners, "run_case", stalled)
+    _study(tmp_path, '[[axis]]\nkey = "grid.nx"\nvalues = [24, 96]\n'
+                     '[[axis]]\nkey = "grid.ny"\nvalues = [96]\n')
+    result = CliRunner().invoke(app, ["sweep", str(tmp_path / "study.toml"), "--out",
+                                      str(tmp_path / "out"), "--serial", "--quiet"])
+    assert result.exit_code == 3, result.output
+    assert "2 of 2 cases done, 1 not converged (0001), 1 with warnings (0000)" in \
+        " ".join(result.output.split())
+    with xr.open_dataset(tmp_path / "out" / "study.nc") as ds:
+        warnings = ds["warnings"].values.ravel()
+        assert warnings[0].startswith("mesh: the contact is resolved by 5 cells") and \
+            warnings[1] == ""
+        assert list(ds["converged"].values.ravel()) == [1.0, 0.0]
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert "note bad" in html and "<h2>Warnings</h2>" in html
+    assert "<li>case 0000: mesh: the contact is resolved by 5 cells" in html
+    assert "not converged</span>" in html and "1 warning (below)" in html

@@ -27,8 +27,8 @@ from .formatting import (
 )
 from .results import Outcome, atomic_path
 
-__all__ = ["render_report", "render_study_report", "study_variables", "write_report",
-           "write_study_report"]
+__all__ = ["render_report", "render_study_report", "study_status", "study_variables",
+           "write_report", "write_study_report"]
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:2rem auto;
@@ -353,13 +353,71 @@ def _cases_table(ds, variables) -> str:
             cells.append(format_summary_value(v, value, scale=scale[v]))  # as in a run's report
         state = str(ds["state"].isel(sel).values)
         error = str(ds["error"].isel(sel).values)
+        if state == "done" and _not_converged(ds, sel):
+            state = "not converged"
+        if not error and "warnings" in ds and str(ds["warnings"].isel(sel).values):
+            count = len(str(ds["warnings"].isel(sel).values).split("\n"))
+            error = f"{count} warning{'s' * (count > 1)} (below)"
         badge = ("<span class=pass>done</span>" if state == "done" else
                  f"<span class=fail>{html.escape(state)}</span>")
         rows.append(f"<tr><td>{n:04d}</td>" + "".join(f"<td>{html.escape(c)}</td>"
                                                        for c in cells)
                     + f"<td>{badge}</td><td class=l>{html.escape(error)}</td></tr>")
-    return (f"<table><tr><th>case</th>{head}<th>state</th><th class=l>error</th></tr>"
+    return (f"<table><tr><th>case</th>{head}<th>state</th><th class=l>error or warnings</th>"
+            "</tr>"
             f"{''.join(rows)}</table>")
+
+
+def _not_converged(ds, sel) -> bool:
+    """Whether the case at ``sel`` ran to the end without converging (False where the study
+    file predates the ``converged`` record)."""
+    return "converged" in ds and float(ds["converged"].isel(sel).values) == 0.0
+
+
+def _case_warnings(ds) -> list[tuple[str, list[str]]]:
+    """(case id, warning lines) of the cases with warnings, in case order."""
+    import numpy as np
+
+    if "warnings" not in ds:
+        return []
+    dims = list(ds["state"].dims)
+    found = []
+    for n, index in enumerate(np.ndindex(*ds["state"].shape)):
+        text = str(ds["warnings"].isel(dict(zip(dims, index, strict=True))).values)
+        if text:
+            found.append((f"{n:04d}", text.split("\n")))
+    return found
+
+
+def study_status(ds) -> tuple[bool, str]:
+    """Whether every case is done, converged and free of warnings, and one line that says
+    how many are not (the study report's banner and the command line's last line).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` (:func:`asperity.sweep.combine`).
+    """
+    import numpy as np
+
+    states = ds["state"].values.ravel()
+    done, failed = int((states == "done").sum()), int((states == "failed").sum())
+    ids = [f"{n:04d}" for n in range(states.size)]
+    unconverged = [] if "converged" not in ds else [
+        c for c, s, v in zip(ids, states, ds["converged"].values.ravel(), strict=True)
+        if s == "done" and v == 0.0]
+    warned = [c for c, _ in _case_warnings(ds)]
+    parts = [f"{done} of {states.size} cases done"]
+    if unconverged:
+        parts.append(f"{len(unconverged)} not converged ({', '.join(unconverged)})")
+    if warned:
+        parts.append(f"{len(warned)} with warnings ({', '.join(warned)})")
+    if failed:
+        parts.append(f"{failed} failed")
+    missing = int(np.sum(states == "missing"))
+    if missing:
+        parts.append(f"{missing} missing")
+    return done == states.size and not unconverged and not warned, ", ".join(parts)
 
 
 def render_study_report(ds, figure_png: bytes | None = None) -> str:
@@ -375,11 +433,17 @@ def render_study_report(ds, figure_png: bytes | None = None) -> str:
     """
     title = str(ds.attrs.get("title", "Parameter study"))
     states = ds["state"].values.ravel()
-    done, failed = int((states == "done").sum()), int((states == "failed").sum())
-    status = (f"<p class='note ok'>{done} of {states.size} cases done.</p>" if done == states.size
-              else f"<p class='note bad'><b>{done} of {states.size} cases done</b>, {failed} "
-                   "failed (errors in the table), "
-                   f"{states.size - done - failed} missing.</p>")
+    clean, line = study_status(ds)
+    warned = _case_warnings(ds)
+    where = [w for w, shown in (("errors in the table", (states == "failed").any()),
+                                ("warnings below it", warned)) if shown]
+    status = (f"<p class='note ok'>{html.escape(line)}.</p>" if clean
+              else f"<p class='note bad'><b>{html.escape(line)}</b>"
+                   f"{' (' + ', '.join(where) + ')' if where else ''}.</p>")
+    warning_list = "" if not warned else (
+        "<h2>Warnings</h2><ul>" + "".join(
+            f"<li>case {cid}: {html.escape(w)}</li>" for cid, lines in warned for w in lines)
+        + "</ul>")
     variables = study_variables(ds)
     figure = ("<p class=info>No result varies from case to case.</p>" if figure_png is None else
               '<figure><img style="max-width:100%" alt="study" src="data:image/png;base64,'
@@ -397,6 +461,7 @@ def render_study_report(ds, figure_png: bytes | None = None) -> str:
 {status}
 <h2>Results against the axes</h2>{figure}
 <h2>Cases</h2>{_cases_table(ds, variables[:6])}
+{warning_list}
 <p class=info>Written by asperity. Every case's files are in cases/NNNN; all scalars, with
 units, in study.nc.</p>
 </body></html>

@@ -223,7 +223,7 @@ def run_one(case: dict, folder: str) -> dict:
                            resume=(folder / "checkpoint.npz").is_file())
         write_outcome(outcome, folder, figures=False)
         status = {"state": "done", "converged": bool(outcome.converged),
-                  "summary": outcome.summary}
+                  "summary": outcome.summary, "warnings": list(outcome.warnings)}
     except Exception as exc:  # recorded for the study, the other cases go on
         status = {"state": "failed", "error": f"{type(exc).__name__}: {exc}"}
     write_json(status, folder / "status.json")
@@ -343,6 +343,13 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
         data[k] = (dims, field(lambda s, k=k: (s.get("summary") or {}).get(k, math.nan)), attrs)
     data["state"] = (dims, field(lambda s: s["state"], object).astype(str),
                      {"long_name": "done, failed or missing", "units": "1"})
+    data["converged"] = (dims, field(lambda s: float(s["converged"]) if "converged" in s
+                                     else math.nan),
+                         {"long_name": "converged", "units": "1", "flag_values": "0 1",
+                          "flag_meanings": "no yes"})
+    data["warnings"] = (dims, field(lambda s: "\n".join(s.get("warnings", [])), object)
+                        .astype(str),
+                        {"long_name": "trust warnings of the case, one per line", "units": "1"})
     data["error"] = (dims, field(lambda s: s.get("error", ""), object).astype(str),
                      {"long_name": "error message of a failed case", "units": "1"})
     return xr.Dataset(data, coords=coords, attrs={"title": study.title, "mode": study.mode,

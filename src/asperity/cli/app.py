@@ -351,9 +351,11 @@ def sweep(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
 ):
     """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc and
-    OUT/report.html."""
+    OUT/report.html. Exits 3 when a case failed or did not converge; cases with warnings are
+    counted on the last line and listed in the report."""
     import logging
 
+    from ..report import study_status
     from ..sweep import load_study, run_study
     from .progress import progress_bar
 
@@ -373,9 +375,11 @@ def sweep(
                 with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, Client(cluster) as client:
                     ds = run_study(spec, out, client=client, progress=progress)
-    failed = int((ds["state"] == "failed").sum())
-    console.print(f"wrote {out / 'study.nc'}: {len(spec.cases) - failed} done, {failed} failed "
-                  f"(report: {out / 'report.html'})")
+    _, line = study_status(ds)
+    console.print(f"wrote {out / 'study.nc'}: {line} (report: {out / 'report.html'})",
+                  markup=False, highlight=False, soft_wrap=True)
+    if (ds["state"] != "done").any() or (ds["converged"] == 0).any():
+        raise typer.Exit(EXIT_NOT_CONVERGED)
 
 
 def _mount_sub_apps() -> None:
