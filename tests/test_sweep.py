@@ -347,44 +347,14 @@ def test_each_case_is_titled_by_its_own_axis_values(tmp_path):
     assert titled.cases[0][1]["title"] == "mine"
 
 
-TRANSIENT = """
-analysis = "ehl-transient"
-reduced_modulus = "227 GPa"
-[contact]
-type = "point"
-rx = "19.1 mm"
-ry = "151 mm"
-load = "962 N"
-[speeds]
-u = "25 m/s"
-xi = 0.25
-[lubricant]
-eta0 = "0.005 Pa s"
-alpha = "11.1 1/GPa"
-[grid]
-nx = 65
-ny = 33
-[surface1]
-kind = "smooth"
-[surface1.waviness]
-wavelength = "0.2 mm"
-amplitude = "0.05 um"
-direction = "x"
-[time]
-counting_steps = 30
-warmup_steps = 10
-[solver]
-checkpoint_every = 4
-"""
-
-
 def test_killed_long_case_of_a_study_resumes_from_its_checkpoint(tmp_path, monkeypatch):
     """A transient case of a study checkpoints into its case folder: killed mid-run and run
     again, it goes on from the checkpoint (not from step 0) and ends with the numbers of an
     uninterrupted run."""
-    (tmp_path / "base.toml").write_text(TRANSIENT)
-    (tmp_path / "study.toml").write_text('title = "t"\nbase = "base.toml"\n'
-                                         '[[axis]]\nkey = "speeds.xi"\nvalues = [0.25]\n')
+    (tmp_path / "study.toml").write_text(
+        'title = "t"\nbase = "holmes-rough-CC"\n[[axis]]\nname = "short"\n'
+        'keys = ["grid.nx", "grid.ny", "time.warmup_steps", "time.counting_steps", '
+        '"solver.checkpoint_every"]\nvalues = [[65, 33, 10, 30, 4]]\n')
     study = load_study(tmp_path / "study.toml")
     whole = run_one(study.cases[0][1], str(tmp_path / "whole"))
     assert whole["state"] == "done", whole
