@@ -195,11 +195,12 @@ def test_ehl_side_film():
 
     def probe(narrow_min, narrow_centre, converged=True):
         return SideProbe((-1.4 * b, 1.4 * b), (-2.4 * b, 2.4 * b), (narrow_min, 80e-9),
-                         (narrow_centre, 150e-9), converged)
+                         (narrow_centre, 150e-9), converged, (65, 29))
 
     lines = dg.ehl_side_film(probe(76e-9, 149e-9), b)
     _every_line_names_a_limit(lines)
     assert len(lines) == 1 and "y_min <= -2.4 b and y_max >= 2.4 b" in lines[0]
+    assert "on 65 x 29 nodes" in lines[0]
     assert _percent(lines[0], "minimum film is") == pytest.approx(80 / 76 - 1, rel=1e-3)
     assert _percent(lines[0], "central film") == pytest.approx(150 / 149 - 1, rel=1e-3)
     assert "higher" in lines[0]

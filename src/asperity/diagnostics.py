@@ -457,7 +457,7 @@ def ehl_side_film(probe, b: float) -> list[str]:
             f"film: with them at {w0 / b:.3g} b and {w1 / b:.3g} b the minimum film is "
             f"{_pct(-dmin / (1.0 + dmin))} {'higher' if dmin < 0 else 'lower'} and the central "
             f"film {_pct(abs(dcen) / (1.0 + dcen))} {'higher' if dcen < 0 else 'lower'} "
-            f"(steady smooth solutions at twice the mesh spacing; limits "
+            f"(steady smooth solutions on {probe.nodes[0]} x {probe.nodes[1]} nodes; limits "
             f"{_pct(SIDE_FILM_CHANGE)} and {_pct(SIDE_CENTRAL_CHANGE)}); the side leakage is "
             f"cut off; use y_min <= {w0 / b:.2g} b and y_max >= {w1 / b:.2g} b"]
 

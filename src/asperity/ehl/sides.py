@@ -36,6 +36,8 @@ class SideProbe:
         Minimum and central film of the two solves, m.
     converged : bool
         Whether both solves converged.
+    nodes : (int, int)
+        Nodes (nx, ny) of the solve on the given domain (the wide one has more along y).
     """
 
     y_bounds: tuple[float, float]
@@ -43,6 +45,7 @@ class SideProbe:
     minimum_film: tuple[float, float]
     central_film: tuple[float, float]
     converged: bool
+    nodes: tuple[int, int]
 
     @property
     def minimum_film_change(self) -> float:
@@ -99,4 +102,4 @@ def side_probe(problem, x, y, widen: float = 1.0) -> SideProbe:
     return SideProbe(y_bounds, wide,
                      (narrow_res.minimum_film, wide_res.minimum_film),
                      (narrow_res.central_film, wide_res.central_film),
-                     bool(narrow_res.converged and wide_res.converged))
+                     bool(narrow_res.converged and wide_res.converged), (nx, ny))
