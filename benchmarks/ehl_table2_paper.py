@@ -2,18 +2,19 @@
 ``holmes-table2-paper`` study against the paper's percentages.
 
 Reads ``OUT/cases/NNNN/result.nc`` and ``summary.json`` of ``asperity sweep
-holmes-table2-paper --out OUT`` (cases may be missing: a study is run a case at a time on a
-small machine) and prints, per finished case, the paper's Table 2 value beside ours (the
-percentage of counting steps with contact at one or more nodes) and the statistics of
-``ehl_mesh_study.py`` (contact area over the Hertz area, largest Q, share of the contact at
-the transverse edges ``|y| > 0.8 b`` and downstream, the node of the largest Q, largest
-pressure, sweeps per step). ``--figure PATH`` draws the per-node time in contact of the
-finished cases side by side.
+holmes-table2-paper --out OUT``. Cases may be missing or still running (a study is run a case
+at a time on a small machine); only cases whose status.json says done are read. Prints, per
+finished case, the paper's Table 2 value beside ours (the percentage of counting steps with
+contact at one or more nodes) and the statistics of ``ehl_mesh_study.py`` (contact area over
+the Hertz area, largest Q, share of the contact at the transverse edges ``|y| > 0.8 b`` and
+downstream, the node of the largest Q, largest pressure, sweeps per step). ``--figure PATH``
+draws the per-node time in contact of the finished cases side by side.
 
 Run: ``python benchmarks/ehl_table2_paper.py OUT [--figure table2.png]``.
 """
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
@@ -36,7 +37,9 @@ def rows(out: Path):
     found = []
     for (cid, case, _), label in zip(study.cases, labels, strict=True):
         folder = out / "cases" / cid
-        if not (folder / "result.nc").exists():
+        status = folder / "status.json"
+        # a running case streams a partial result.nc; only finished cases are read
+        if not status.exists() or json.loads(status.read_text())["state"] != "done":
             continue
         row = mesh_row(folder)
         row["label"] = label
