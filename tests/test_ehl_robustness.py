@@ -286,3 +286,24 @@ def test_default_mesh_error_is_near_two_percent(name):
     print(f"\n{name}: hc {coarse.central_film * 1e9:.1f} -> {fine.central_film * 1e9:.1f} nm")
     assert coarse.converged and fine.converged
     assert fine.central_film == pytest.approx(coarse.central_film, rel=0.025)
+
+
+def test_default_sides_follow_a_long_inlet():
+    """A thick film (circle, M 10, L 10, inlet 5.8 a) gets sides at +-3.4 b: there the central
+    and minimum films are within 1 % of those with the sides at +-4.4 b on the same mesh. On
+    the earlier +-2 b they were 2.8 % and 4.5 % below (docs/ehl-robustness.md, "Side
+    boundaries"). The gear case, whose inlet is the seed's 2.5 a, keeps +-2 b."""
+    thick = _point(10, 10)
+    (x0, x1), (y0, y1) = thick.default_domain()
+    assert 3.2 < y1 / thick.b < 3.6 and y0 == -y1
+    nx, ny = thick.default_nodes()
+    res = solve_steady(thick)
+    dy = (y1 - y0) / (ny - 1)
+    extra = round((4.4 * thick.b - y1) / dy / 4) * 4  # whole cells of the coarsest grid
+    wide = solve_steady(thick, nx=nx, ny=ny + 2 * extra, levels=len(res.levels),
+                        domain=((x0, x1), (y0 - extra * dy, y1 + extra * dy)))
+    assert res.converged and wide.converged
+    assert abs(res.central_film / wide.central_film - 1) < 0.01
+    assert abs(res.minimum_film / wide.minimum_film - 1) < 0.01
+    gear = _gear()
+    assert gear.default_domain()[1][1] == pytest.approx(2 * gear.b)

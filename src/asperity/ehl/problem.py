@@ -51,6 +51,13 @@ FILM_ERROR = 5.0
 #: Target relative discretisation error of the central film on the default mesh.
 MESH_TARGET = 0.02
 
+#: Side margin of the default domain beyond the Hertz contact, per unit of the fully flooded
+#: inlet length (m* - 1) a (at least b): the inlet's pressure build-up spreads sideways as far
+#: as it reaches upstream. With the sides at +-2 b, a circle at M = 10, L = 10 (inlet 5.8 a) had
+#: its central film 2.7 % and its minimum film 4.3 % below those on +-4.4 b
+#: (docs/ehl-robustness.md, "Side boundaries").
+SIDE_PER_INLET = 0.5
+
 #: Largest dY/dX of a default point-contact mesh: at 32-33 the x-line relaxation diverged for
 #: the ellipses k = 5 at M = 1000 and 3000, L = 19 (Barus); at 16 and 22 it converged
 #: (docs/ehl-robustness.md, "Compressible point contacts and long ellipses at large L").
@@ -263,14 +270,19 @@ class PointContact(_Contact):
 
     def default_domain(self):
         """-m a < x < 1.5 a, -w < y < w (m) with ``m`` = :meth:`inlet_extent` and
-        ``w = max(2 b, a)``.
+        ``w = max(b + max(b, SIDE_PER_INLET (m - 1) min(a, b)), a)``.
 
         The seed's domain (-2.5a..1.5a, -2b..2b) for the gear case and any other contact
         whose fully flooded inlet lies within 2.5 a; the transverse half-width keeps at least
-        one a for ellipses entrained along their major axis (b < a).
+        one a for ellipses entrained along their major axis (b < a). A long inlet (thick
+        films, low M) widens the sides with it: a margin of half the inlet length beyond the
+        contact, for circular contacts at M = 10-50 (ellipses b > a keep 2 b: their margin b
+        is already longer than the inlet).
         """
-        half_y = max(2.0 * self.b, self.a)
-        return (-self.inlet_extent() * self.a, OUTLET * self.a), (-half_y, half_y)
+        inlet = self.inlet_extent()
+        margin = max(self.b, SIDE_PER_INLET * (inlet - 1.0) * min(self.a, self.b))
+        half_y = max(self.b + margin, self.a)
+        return (-inlet * self.a, OUTLET * self.a), (-half_y, half_y)
 
     def default_nodes(self, domain=None) -> tuple[int, int]:
         """Default mesh (nx, ny) on ``domain`` (default :meth:`default_domain`).

@@ -624,7 +624,7 @@ def solve_steady(
     domain : ((x0, x1), (y0, y1)), optional
         In m; default ``problem.default_domain()``: the seed's -2.5a..1.5a, -2b..2b, with the
         inlet moved upstream where Hamrock & Dowson's fully flooded inlet distance asks for
-        it (thick films, low M). Must hold the Hertz contact.
+        it (thick films, low M) and the sides moved out with it. Must hold the Hertz contact.
     method : {"line", "point"}, optional
         x-line relaxation or the seed's point update (Eq. 7). Default: ``"line"`` for a point
         contact, ``"point"`` for a line contact (x-line relaxation of the single row of a line
