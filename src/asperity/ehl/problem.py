@@ -24,6 +24,7 @@ M. J. A. Holmes et al., J. Tribol. 127 (2005) 61-69 (the seed: Table 1, domain a
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,7 +55,7 @@ MESH_TARGET = 0.02
 #: Side margin of the default domain beyond the Hertz contact, per unit of the fully flooded
 #: inlet length (m* - 1) a (at least b): the inlet's pressure build-up spreads sideways as far
 #: as it reaches upstream. With the sides at +-2 b, a circle at M = 10, L = 10 (inlet 5.8 a) had
-#: its central film 2.7 % and its minimum film 4.3 % below those on +-4.4 b
+#: its central film 2.8 % and its minimum film 4.3 % below those on +-4.4 b
 #: (docs/ehl-robustness.md, "Side boundaries").
 SIDE_PER_INLET = 0.5
 
@@ -270,18 +271,23 @@ class PointContact(_Contact):
 
     def default_domain(self):
         """-m a < x < 1.5 a, -w < y < w (m) with ``m`` = :meth:`inlet_extent` and
-        ``w = max(b + max(b, SIDE_PER_INLET (m - 1) min(a, b)), a)``.
+        ``w = max(b + max(b, SIDE_PER_INLET (m - 1) min(a, b)), a)`` rounded up to a multiple
+        of 0.4 b.
 
         The seed's domain (-2.5a..1.5a, -2b..2b) for the gear case and any other contact
         whose fully flooded inlet lies within 2.5 a; the transverse half-width keeps at least
         one a for ellipses entrained along their major axis (b < a). A long inlet (thick
         films, low M) widens the sides with it: a margin of half the inlet length beyond the
-        contact, for circular contacts at M = 10-50 (ellipses b > a keep 2 b: their margin b
-        is already longer than the inlet).
+        contact, for circular contacts at M = 10-50 (an ellipse with b > a keeps 2 b while b
+        exceeds half its inlet length (m - 1) a / 2).
         """
         inlet = self.inlet_extent()
         margin = max(self.b, SIDE_PER_INLET * (inlet - 1.0) * min(self.a, self.b))
         half_y = max(self.b + margin, self.a)
+        # whole blocks of 8 cells of b/10, so that the default mesh keeps dY = b/10 where
+        # dY >= 3 dX allows it (+-2.24 b gave the slow ball 40 cells of b/8.9)
+        block = 0.4 * self.b
+        half_y = block * math.ceil(half_y / block - 1e-9)
         return (-inlet * self.a, OUTLET * self.a), (-half_y, half_y)
 
     def default_nodes(self, domain=None) -> tuple[int, int]:
