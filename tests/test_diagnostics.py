@@ -186,6 +186,21 @@ def test_ehl_sides():
                 field[:, band].max() / p_h, rel=1e-3)
 
 
+def test_ehl_film_mesh():
+    """The central film's discretisation error estimated by the default mesh's rule, 5 dx^2/H_c:
+    reported above 5 %, with the nodes that bring it to 2 %; silent below."""
+    a = 1e-4
+    x = np.linspace(-4.0 * a, 1.5 * a, 129)  # dx = a/23.3
+    lines = dg.ehl_film_mesh(x, a, 0.097)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1
+    assert _percent(lines[0], "up to") == pytest.approx(5 * (5.5 / 128) ** 2 / 0.097, rel=1e-2)
+    cells = int(np.ceil(np.sqrt(5 / (0.02 * 0.097))))  # 51 cells per a for 2 %
+    assert f"use nx >= {int(np.ceil(5.5 * cells)) + 1} (cells_per_a >= {cells})" in lines[0]
+    assert dg.ehl_film_mesh(np.linspace(-4.0 * a, 1.5 * a, 257), a, 0.097) == []
+    assert dg.ehl_film_mesh(x, a, 0.0) == []
+
+
 def test_ehl_side_film():
     """The side probe's film changes are reported above their limits, with the wider sides
     as the advice; within the limits, or when a probe solve did not converge, nothing."""

@@ -19,6 +19,7 @@ from collections.abc import Iterable
 import numpy as np
 
 from .ehl.formulas import flooded_inlet_distance
+from .ehl.problem import FILM_ERROR, MESH_TARGET
 
 __all__ = [
     "FILL_FRACTION",
@@ -26,6 +27,7 @@ __all__ = [
     "MIN_CELLS_PER_SEMI_AXIS",
     "BOUNDARY_PRESSURE",
     "BOUNDARY_BAND",
+    "FILM_MESH_ERROR",
     "SIDE_CENTRAL_CHANGE",
     "SIDE_FILM_CHANGE",
     "SIDE_PROBE_PRESSURE",
@@ -39,6 +41,7 @@ __all__ = [
     "ehl_inlet",
     "ehl_inlet_length",
     "ehl_film_collapse",
+    "ehl_film_mesh",
     "ehl_mesh",
     "ehl_side_film",
     "ehl_sides",
@@ -68,6 +71,9 @@ SIDE_PROBE_PRESSURE = 1e-4
 #: domain above which the sides are reported.
 SIDE_FILM_CHANGE = 0.02
 SIDE_CENTRAL_CHANGE = 0.01
+#: Estimated discretisation error of the EHL central film (``FILM_ERROR dX^2 / H_c``, the
+#: default mesh's rule) above which a mesh is reported coarse for the film.
+FILM_MESH_ERROR = 0.05
 #: Loss of central film a short inlet may cause (Hamrock & Dowson's starvation fit) before it is
 #: reported.
 STARVED_FILM_LOSS = 0.02
@@ -493,6 +499,47 @@ def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:
             f"pressure {_pct(level)} of p_h within {BOUNDARY_BAND:g} b of them (limit "
             f"{_pct(BOUNDARY_PRESSURE)}); the side leakage is cut off; use y_min <= -{use:g} b "
             f"and y_max >= {use:g} b"]
+
+
+def ehl_film_mesh(x, a: float, film: float) -> list[str]:
+    """A mesh along x too coarse for the film: the central film's discretisation error,
+    estimated by the rule of the default mesh (:meth:`asperity.ehl.problem.PointContact.
+    cells_per_a`: ``FILM_ERROR dX^2 / H_c``, second order, ``dX`` in a), above
+    ``FILM_MESH_ERROR``.
+
+    The rule was measured on a Newtonian circle at M = 1000 (-17 % at a/32); on two
+    Roelands + Dowson-Higginson balls (M 138 and 313) the error was 0.42-0.45 of the estimate
+    (docs/ehl-robustness.md, "A mesh too coarse for the film"), so the line gives it as an
+    upper estimate.
+
+    Parameters
+    ----------
+    x : ndarray
+        Node coordinates along the entrainment direction, m.
+    a : float
+        Hertz semi-axis along x, m.
+    film : float
+        Central film in Hertzian units, ``H_c = h_c Rx / a^2``.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    x = np.asarray(x, dtype=float)
+    if x.size < 2 or not film > 0.0:
+        return []
+    dx = _spacing(x) / a
+    error = FILM_ERROR * dx**2 / film
+    if error <= FILM_MESH_ERROR:
+        return []
+    cells = math.ceil(math.sqrt(FILM_ERROR / (MESH_TARGET * film)))
+    need = math.ceil((x[-1] - x[0]) / a * cells) + 1
+    return [f"mesh: dx = a/{1.0 / dx:.3g} for a central film H_c = {film:.3g} (h_c Rx/a^2) "
+            f"gives an estimated discretisation error of the central film of up to "
+            f"{_pct(error)} ({FILM_ERROR:g} dx^2/H_c, second order; limit "
+            f"{_pct(FILM_MESH_ERROR)}); use nx >= {need} (cells_per_a >= {cells}) for about "
+            f"{_pct(MESH_TARGET)}"]
 
 
 def ehl_mesh(x, y, a: float, b: float | None,

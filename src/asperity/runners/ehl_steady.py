@@ -97,7 +97,8 @@ def run(case, progress=None) -> Outcome:
 
 
 def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
-    """Trust checks of an EHL solution: inlet, sides, mesh, hardness.
+    """Trust checks of an EHL solution: inlet, sides, mesh (cells per semi-axis, then the
+    central film's discretisation error), hardness.
 
     Shared by the steady and transient runners (:mod:`asperity.diagnostics`). Where the side
     pressure is small but not negligible (``SIDE_PROBE_PRESSURE`` to ``BOUNDARY_PRESSURE`` of
@@ -117,6 +118,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
     lines += mesh
+    if not mesh:  # enough cells for the Hertz zone: are they fine enough for the film?
+        lines += diagnostics.ehl_film_mesh(x, hz.a, central_film / problem.film_scale)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
