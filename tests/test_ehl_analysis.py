@@ -281,8 +281,8 @@ def test_sides_that_thin_the_film_are_reported_though_their_pressure_is_small():
 def test_mesh_too_coarse_for_the_film_is_reported():
     """The ball-on-disc case on 129 nodes over -4a..1.5a (a/23.3) has its central film 4.0 %
     below that on 513 nodes (an independent solve here); the film-mesh check, which estimates
-    up to 9.5 % by the default mesh's rule (conservative by about 2.4 here), reports it and
-    advises a mesh the check then accepts."""
+    up to 7.6 % by the default mesh's rule with Nijenbanning's film (conservative by about 1.9
+    here), reports it and advises a mesh the check then accepts."""
     from asperity.ehl import solve_steady
 
     coarse = run_case(_mtm(2.4))

@@ -507,10 +507,10 @@ def ehl_film_mesh(x, a: float, film: float) -> list[str]:
     cells_per_a`: ``FILM_ERROR dX^2 / H_c``, second order, ``dX`` in a), above
     ``FILM_MESH_ERROR``.
 
-    The rule was measured on a Newtonian circle at M = 1000 (-17 % at a/32); on two
-    Roelands + Dowson-Higginson balls (M 138 and 313) the error was 0.42-0.45 of the estimate
-    (docs/ehl-robustness.md, "A mesh too coarse for the film"), so the line gives it as an
-    upper estimate.
+    The rule was measured on a Newtonian circle at M = 1000 (-17 % at a/32); with the film
+    formula's film, on two Roelands + Dowson-Higginson balls (M 138 and 313) and the gear
+    case the error was 0.46-0.57 of the estimate (docs/ehl-robustness.md, "A mesh too coarse
+    for the film"), so the line gives it as an upper estimate.
 
     Parameters
     ----------
@@ -536,8 +536,9 @@ def ehl_film_mesh(x, a: float, film: float) -> list[str]:
     cells = math.ceil(math.sqrt(FILM_ERROR / (MESH_TARGET * film)))
     need = math.ceil((x[-1] - x[0]) / a * cells) + 1
     return [f"mesh: dx = a/{1.0 / dx:.3g} for a central film H_c = {film:.3g} (h_c Rx/a^2) "
-            f"gives an estimated discretisation error of the central film of up to "
-            f"{_pct(error)} ({FILM_ERROR:g} dx^2/H_c, second order; limit "
+            f"gives an estimated discretisation error of the central film of "
+            f"{'up to ' + _pct(error) if error < 1.0 else 'more than 100 %'} "
+            f"({FILM_ERROR:g} dx^2/H_c, second order; limit "
             f"{_pct(FILM_MESH_ERROR)}); use nx >= {need} (cells_per_a >= {cells}) for about "
             f"{_pct(MESH_TARGET)}"]
 

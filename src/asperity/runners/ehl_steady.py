@@ -119,7 +119,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
     lines += mesh
     if not mesh:  # enough cells for the Hertz zone: are they fine enough for the film?
-        lines += diagnostics.ehl_film_mesh(x, hz.a, central_film / problem.film_scale)
+        # the film formula's film, as for the default mesh: a starved or unconverged film
+        # would ask for a mesh of the wrong film
+        lines += diagnostics.ehl_film_mesh(x, hz.a, problem.film_estimate() / problem.film_scale)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
