@@ -201,6 +201,44 @@ def test_ehl_film_mesh():
     assert dg.ehl_film_mesh(x, a, 0.0) == []
 
 
+def test_ehl_minimum_film_mesh():
+    """The minimum film's error estimated from its relative second difference, 0.33 s, in
+    each direction: a valley across y whose neighbours are 30 % thicker is reported (9.9 %)
+    with the nodes for 2 % by the dy^2 scaling (and the nx that keeps dy >= 3 dx); one 10 %
+    thicker (3.3 %) is not; a minimum on a side node is not judged across y; a zero film is
+    reported as over 100 %; a line contact is judged along x only."""
+    a = b = 1e-4
+    x = np.linspace(-2 * a, 1.5 * a, 129)
+    y = np.linspace(-2 * b, 2 * b, 41)
+
+    def valley(rise, j=31):  # across y at row j, nearly flat along x (s = 0.001)
+        h = np.full((x.size, y.size), 100e-9)
+        bottom = 50e-9 * (1 + 1e-3 * (np.arange(x.size) - 60) ** 2)
+        h[:, j - 1:j + 2] = np.outer(bottom, [1 + rise, 1, 1 + rise])
+        return h
+
+    lines = dg.ehl_minimum_film_mesh(valley(0.3), x, y, a, b)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and "across y" in lines[0] and "along x" not in lines[0]
+    assert _percent(lines[0], "estimated error") == pytest.approx(0.33 * 0.3, rel=1e-3)
+    need = 8 * int(np.ceil(40 * np.sqrt(0.099 / 0.02) / 8)) + 1  # 89 cells -> 96
+    dy = 4 * b / (need - 1)
+    nx = 8 * int(np.ceil(3.5 * a / (dy / 3) / 8)) + 1
+    assert f"use ny >= {need} with nx >= {nx} (dy >= 3 dx)" in lines[0]
+    assert "y = 1.1 b" in lines[0] and "50 nm" in lines[0]
+    assert dg.ehl_minimum_film_mesh(valley(0.1), x, y, a, b) == []
+    edge = valley(0.3, j=1)
+    edge[:, 0] = 0.5 * edge[:, 1]  # the minimum on the side node, flat along x
+    assert dg.ehl_minimum_film_mesh(edge, x, y, a, b) == []
+    zero = valley(0.3)
+    zero[60, 31] = 0.0
+    assert "over 100 %" in dg.ehl_minimum_film_mesh(zero, x, y, a, b)[0]
+    line = np.full(x.size, 100e-9)
+    line[59:62] = [80e-9, 50e-9, 80e-9]
+    lines = dg.ehl_minimum_film_mesh(line, x, np.array([0.0]), a, None)
+    assert len(lines) == 1 and "along x" in lines[0] and "y =" not in lines[0]
+
+
 def test_ehl_side_film():
     """The side probe's film changes are reported above their limits, with the wider sides
     as the advice; within the limits, or when a probe solve did not converge, nothing."""

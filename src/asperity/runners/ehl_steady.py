@@ -92,6 +92,9 @@ def run(case, progress=None) -> Outcome:
     film = res.central_film if res.converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
     trust += diagnostics.ehl_film_collapse(res.film, estimate)
+    if not any(w.startswith("mesh: the Hertz zone") for w in trust):  # enough cells for it
+        trust += diagnostics.ehl_minimum_film_mesh(res.film, res.x, res.y, hz.a,
+                                                   None if line else hz.b)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust)
 
