@@ -138,6 +138,8 @@ CASES = [
     ("line M=1000 L=10", lambda: _line(1000, 10), "exact"),
     ("line M=50 L=20", lambda: _line(50, 20), "exact"),
     ("line M=100 L=3", lambda: _line(100, 3), "exact"),
+    ("line M=20 L=2", lambda: _line(20, 2), "exact"),
+    ("line M=1000 L=2", lambda: _line(1000, 2), "exact"),
     ("line M=100 L=3 Roelands+DH", lambda: _line_oil(100, 3), "roelands"),
     ("roller 450 kN/m Roelands+DH", _roller, "roelands"),
     ("roller M=10 Roelands+DH", lambda: _roller(10), "roelands"),

@@ -656,8 +656,10 @@ def solve_steady(
         :attr:`LoadTangent.RESIDUAL`) to remove the load error; without one, a grid
         finer than the default mesh gets ``0.01 (dX / dX_default)^3.5``
         (:data:`LINE_GAIN_EXPONENT`: the point update's load answers a shift of the
-        separation the more slowly the finer the mesh, and a larger gain overshoots). A
-        given value is used on every grid, without the tangent.
+        separation the more slowly the finer the mesh, and a larger gain overshoots). When
+        that sequence ends unconverged it is solved again with every converged grid's
+        tangent steering the next (line contacts at L = 2). A given value is used on every
+        grid, without the tangent.
     initial_film : float, optional
         Central film of the Hertzian start, m; default Nijenbanning's (point) or Moes' (line)
         Newtonian central film.
@@ -709,13 +711,49 @@ def solve_steady(
     else:
         h_start = check_positive("initial_film", initial_film) / problem.film_scale
     k_near = near if method == "line" else 0
-    state = None
+    settings = dict(method=method, tol=tol, max_iter=max_iter, refresh=refresh,
+                    load_gain=load_gain, damping=damping, callback=callback,
+                    scale_gain=scale_gain, default_nx=default_nx, near=k_near, h_start=h_start)
     use_tangent = scale_gain and method == "point"
+    state, converged, residual, sweeps, total, history = _sequence(
+        problem, grids, domain, tangents_from="below_default" if use_tangent else None,
+        **settings)
+    if use_tangent and not converged:
+        # the point update's load loop stalled or cycled: a line contact at low L (M 20 to
+        # 1000, L = 2) converges with the tangent of every converged grid steering the next
+        # one; on rows that converge without it (M = 50, L = 20) it can stall, so it is the
+        # fallback (docs/ehl-robustness.md, "Line contacts at L = 2")
+        retry = _sequence(problem, grids, domain, tangents_from="every_grid", **settings)
+        if retry[1] or retry[2] < residual:
+            state, converged, residual, sweeps, _, history = retry
+        total += retry[4]
+    result = _result(state, converged, residual, sweeps, total, history, grids, method,
+                     boundary_friction)
+    if result.inlet_pressure > STARVED_INLET:
+        warnings.warn(
+            f"domain: the inlet at x = {result.x[0] / problem.a:.2f} a lies inside the pressure "
+            f"build-up (the pressure 0.1 a downstream of it is {result.inlet_pressure:.1%} of "
+            "the Hertz pressure), so the p = 0 inlet starves the film; expected x_min further "
+            "upstream (the seed: -2.5 a)", RuntimeWarning, stacklevel=2)
+    return result
+
+
+def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_gain, damping,
+              callback, scale_gain, default_nx, near, h_start, tangents_from):
+    """Solve the grids of a sequence coarse to fine, each from the last one's solution.
+
+    ``tangents_from``: which converged grids also solve at 1 % more load for the
+    :class:`LoadTangent` that steers the next grid's load: ``"below_default"`` the grids
+    whose next grid is the default mesh or finer, ``"every_grid"`` all, None none. Returns
+    (state, converged, residual, sweeps, total sweeps, history) of the finest grid.
+    """
+    line = isinstance(problem, LineContact)
+    state = None
     tangent = None
     total = 0
     for level, (gx, gy) in enumerate(grids):
         x, y = problem.grid(gx, gy, domain)
-        new = (_SteadyLineState if line else EHLState)(problem, x, y, k_near)
+        new = (_SteadyLineState if line else EHLState)(problem, x, y, near)
         new.damping = damping
         if state is None:
             new.hertz_start(h_start)
@@ -730,25 +768,23 @@ def solve_steady(
             callback=callback, sweep_offset=total, tangent=tangent,
         )
         total += sweeps
-        if use_tangent and converged and level + 1 < len(grids) \
-                and grids[level + 1][0] >= default_nx:
-            other = _SteadyLineState(problem, x, y, k_near)
+        wanted = tangents_from == "every_grid" or (
+            tangents_from == "below_default" and level + 1 < len(grids)
+            and grids[level + 1][0] >= default_nx)
+        if wanted and converged and level + 1 < len(grids):
+            other = _SteadyLineState(problem, x, y, near)
             other.interpolate_from(state)
+            # the perturbed solve by the gain alone: steered by the coarser grid's tangent
+            # it would end within tol by that tangent and hand it on (line M = 1000, L = 10
+            # then cycled on its finest grid)
             _, other_residual, extra, _ = _relax(
                 other, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
-                callback=None, tangent=tangent, load_factor=1.0 + LoadTangent.STEP)
+                callback=None, tangent=None if tangents_from == "every_grid" else tangent,
+                load_factor=1.0 + LoadTangent.STEP)
             total += extra
             if other_residual < max(tol, LoadTangent.RESIDUAL):
                 tangent = LoadTangent.between(state, other)
-    result = _result(state, converged, residual, sweeps, total, history, grids, method,
-                     boundary_friction)
-    if result.inlet_pressure > STARVED_INLET:
-        warnings.warn(
-            f"domain: the inlet at x = {result.x[0] / problem.a:.2f} a lies inside the pressure "
-            f"build-up (the pressure 0.1 a downstream of it is {result.inlet_pressure:.1%} of "
-            "the Hertz pressure), so the p = 0 inlet starves the film; expected x_min further "
-            "upstream (the seed: -2.5 a)", RuntimeWarning, stacklevel=2)
-    return result
+    return state, converged, residual, sweeps, total, history
 
 
 def sequencing_levels(nx: int, ny: int) -> int:
