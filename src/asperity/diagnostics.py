@@ -19,7 +19,7 @@ from collections.abc import Iterable
 import numpy as np
 
 from .ehl.formulas import flooded_inlet_distance
-from .ehl.problem import FILM_ERROR, MESH_TARGET
+from .ehl.problem import FILM_ERROR, MESH_TARGET, MIN_CELL_ASPECT
 
 __all__ = [
     "FILL_FRACTION",
@@ -597,10 +597,10 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None) -> list[str]:
             continue
         need = 8 * math.ceil((n - 1) * math.sqrt(min(error, 1.0) / MESH_TARGET) / 8) + 1
         advice = f"n{key} >= {need}"
-        if key == "y" and x.size > 1:  # the x-line relaxation needs dy >= 3 dx
+        if key == "y" and x.size > 1:  # the x-line relaxation needs long cells across
             dy = (y[-1] - y[0]) / (need - 1)
-            nx = 8 * math.ceil((x[-1] - x[0]) / (dy / 3.0) / 8) + 1
-            advice += f" with nx >= {nx} (dy >= 3 dx)" if nx > x.size else ""
+            nx = 8 * math.ceil((x[-1] - x[0]) / (dy / MIN_CELL_ASPECT) / 8) + 1
+            advice += f" with nx >= {nx} (dy >= {MIN_CELL_ASPECT:g} dx)" if nx > x.size else ""
         spacing = semi / _spacing(y if key == "y" else x)
         parts.append(f"{'across y' if key == 'y' else 'along x'} (d{key} = {name}/"
                      f"{spacing:.3g}, the film at the nodes beside it "

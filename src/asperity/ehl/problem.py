@@ -64,6 +64,11 @@ SIDE_PER_INLET = 0.5
 #: (docs/ehl-robustness.md, "Compressible point contacts and long ellipses at large L").
 MAX_CELL_ASPECT = 16.0
 
+#: Least dY/dX of a default point-contact mesh: on nearly square cells the lagged y-couplings
+#: of an Eyring oil's Poiseuille flow made the x-line relaxation diverge (docs/ehl-robustness.md,
+#: "Why square cells failed").
+MIN_CELL_ASPECT = 3.0
+
 
 def _check_common(u1, u2, body1, body2, lubricant):
     u1 = float(u1)
@@ -294,9 +299,9 @@ class PointContact(_Contact):
         """Default mesh (nx, ny) on ``domain`` (default :meth:`default_domain`).
 
         Across ``dY = b/10`` (40 cells on the default domain of an ellipse with ``k >= 1/2``),
-        coarser where needed to keep ``dY >= 3 dX`` (16 cells at least): with cells nearly
-        square the lagged y-couplings of an Eyring lubricant's Poiseuille flow made the x-line
-        relaxation diverge (docs/ehl-robustness.md); finer where needed to keep
+        coarser where needed to keep ``dY >= MIN_CELL_ASPECT dX`` (16 cells at least): with
+        cells nearly square the lagged y-couplings of an Eyring lubricant's Poiseuille flow
+        made the x-line relaxation diverge (docs/ehl-robustness.md); finer where needed to keep
         ``dY <= MAX_CELL_ASPECT dX``: on cells 32 times longer than wide the relaxation
         diverged for long ellipses at large Moes L (k = 5, M = 1000 and 3000, L = 19).
         Along x ``dX = 1/``:meth:`cells_per_a`, refined to ``dX <= b/30`` when ``b < a`` so
@@ -307,7 +312,8 @@ class PointContact(_Contact):
         n = max(self.cells_per_a(), int(2 ** np.ceil(np.log2(30.0 * self.a / self.b))))
         dx = self.a / n
         nx = 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1
-        cells = min(8 * np.ceil((y1 - y0) / (0.8 * self.b)), 8 * np.floor((y1 - y0) / (24 * dx)))
+        cells = min(8 * np.ceil((y1 - y0) / (0.8 * self.b)),
+                    8 * np.floor((y1 - y0) / (8 * MIN_CELL_ASPECT * dx)))
         cells = max(cells, 8 * np.ceil((y1 - y0) / (8 * MAX_CELL_ASPECT * dx)))
         return nx, int(max(cells, 16)) + 1
 
