@@ -90,18 +90,16 @@ def run(case, progress=None) -> Outcome:
     # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
     # the inlet advice of ehl_inlet_length; the formula's film is the better guess then
     film = res.central_film if res.converged else problem.film_estimate()
-    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
+    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film, smooth_film=res.film)
     trust += diagnostics.ehl_film_collapse(res.film, estimate)
-    if not any(w.startswith("mesh: the Hertz zone") for w in trust):  # enough cells for it
-        trust += diagnostics.ehl_minimum_film_mesh(res.film, res.x, res.y, hz.a,
-                                                   None if line else hz.b)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust)
 
 
-def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
+def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None) -> list[str]:
     """Trust checks of an EHL solution: inlet, sides, mesh (cells per semi-axis, then the
-    central film's discretisation error), hardness.
+    discretisation error of the central film and, given the ``smooth_film`` of a steady
+    solution, of its minimum film), hardness.
 
     Shared by the steady and transient runners (:mod:`asperity.diagnostics`). Where the side
     pressure is small but not negligible (``SIDE_PROBE_PRESSURE`` to ``BOUNDARY_PRESSURE`` of
@@ -125,6 +123,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film) -> list[str]:
         # the film formula's film, as for the default mesh: a starved or unconverged film
         # would ask for a mesh of the wrong film
         lines += diagnostics.ehl_film_mesh(x, hz.a, problem.film_estimate() / problem.film_scale)
+        if smooth_film is not None:  # (a rough film's minimum is its asperity contacts)
+            lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
