@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -715,20 +716,20 @@ def solve_steady(
                     load_gain=load_gain, damping=damping, callback=callback,
                     scale_gain=scale_gain, default_nx=default_nx, near=k_near, h_start=h_start)
     use_tangent = scale_gain and method == "point"
-    state, converged, residual, sweeps, total, history = _sequence(
-        problem, grids, domain, tangents_from="below_default" if use_tangent else None,
-        **settings)
-    if use_tangent and not converged:
+    run = _sequence(problem, grids, domain,
+                    tangents_from="below_default" if use_tangent else None, **settings)
+    total = run.total
+    if use_tangent and not run.converged:
         # the point update's load loop stalled or cycled: a line contact at low L (M 20 to
         # 1000, L = 2) converges with the tangent of every converged grid steering the next
         # one; on rows that converge without it (M = 50, L = 20) it can stall, so it is the
         # fallback (docs/ehl-robustness.md, "Line contacts at L = 2")
         retry = _sequence(problem, grids, domain, tangents_from="every_grid", **settings)
-        if retry[1] or retry[2] < residual:
-            state, converged, residual, sweeps, _, history = retry
-        total += retry[4]
-    result = _result(state, converged, residual, sweeps, total, history, grids, method,
-                     boundary_friction)
+        total += retry.total
+        if retry.converged or retry.residual < run.residual:
+            run = retry
+    result = _result(run.state, run.converged, run.residual, run.sweeps, total, run.history,
+                     grids, method, boundary_friction)
     if result.inlet_pressure > STARVED_INLET:
         warnings.warn(
             f"domain: the inlet at x = {result.x[0] / problem.a:.2f} a lies inside the pressure "
@@ -738,14 +739,25 @@ def solve_steady(
     return result
 
 
+class _Sequenced(NamedTuple):
+    """The finest grid of a grid sequence: its state, whether it converged, its residual,
+    sweeps and residual history, and the sweeps of the whole sequence (``total``)."""
+
+    state: EHLState
+    converged: bool
+    residual: float
+    sweeps: int
+    total: int
+    history: np.ndarray
+
+
 def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_gain, damping,
-              callback, scale_gain, default_nx, near, h_start, tangents_from):
+              callback, scale_gain, default_nx, near, h_start, tangents_from) -> _Sequenced:
     """Solve the grids of a sequence coarse to fine, each from the last one's solution.
 
     ``tangents_from``: which converged grids also solve at 1 % more load for the
     :class:`LoadTangent` that steers the next grid's load: ``"below_default"`` the grids
-    whose next grid is the default mesh or finer, ``"every_grid"`` all, None none. Returns
-    (state, converged, residual, sweeps, total sweeps, history) of the finest grid.
+    whose next grid is the default mesh or finer, ``"every_grid"`` all, None none.
     """
     line = isinstance(problem, LineContact)
     state = None
@@ -784,7 +796,7 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             total += extra
             if other_residual < max(tol, LoadTangent.RESIDUAL):
                 tangent = LoadTangent.between(state, other)
-    return state, converged, residual, sweeps, total, history
+    return _Sequenced(state, converged, residual, sweeps, total, history)
 
 
 def sequencing_levels(nx: int, ny: int) -> int:
