@@ -353,6 +353,53 @@ def test_minimum_film_error_estimate_against_finer_meshes():
     assert diagnostics.ehl_minimum_film_mesh(b40.film, b40.x, b40.y, prob.a, prob.b) == []
 
 
+ROLLER = """
+analysis = "ehl-steady"
+title = "Follower roller, water-glycol, 1100 lbf/in, 20 in/s"
+[body1]
+youngs_modulus = "30e6 psi"
+poisson_ratio = 0.3
+[body2]
+youngs_modulus = "30e6 psi"
+poisson_ratio = 0.3
+[contact]
+type = "line"
+radius = "0.4 in"
+load_per_length = "1100 lbf/in"
+[speeds]
+u = "20 in/s"
+xi = 0.1
+[lubricant]
+eta0 = "12 cP"
+alpha = "0.6e-4 1/psi"
+[grid]
+x_min = -1.8
+x_max = 1.5
+"""
+
+
+def test_a_grid_table_with_only_the_domain_keeps_the_regime_mesh():
+    """A user's roller case (M 36, L 3.0) whose [grid] sets only the domain got 129 nodes
+    (a/39) and a central film 4.7 % below the 425-node default mesh of that domain, with a
+    film-mesh warning; it now gets that default mesh, no mesh line, and a central film within
+    2 % of an independent solve on twice the nodes."""
+    from asperity.ehl import solve_steady
+
+    case = load_case(parse_toml(ROLLER))
+    out = run_case(case)
+    prob = case.problem()
+    domain = case.grid.domain(prob.a, None)
+    nx = prob.default_nodes(domain)[0]
+    assert out.converged and out.dataset.x.size == nx
+    assert not [w for w in out.warnings if w.startswith("mesh")], out.warnings
+    fine = solve_steady(prob, nx=2 * nx - 1, domain=domain, max_iter=40_000)
+    assert fine.converged
+    assert abs(out.summary["central_film_thickness_m"] / fine.central_film - 1) < 0.02
+    given = run_case(load_case(parse_toml(ROLLER + "nx = 129\n")))
+    assert given.dataset.x.size == 129
+    assert [w for w in given.warnings if w.startswith("mesh: dx")]
+
+
 def test_mesh_too_coarse_for_the_film_is_reported():
     """The ball-on-disc case on 129 nodes over -4a..1.5a (a/23.3) has its central film 4.0 %
     below that on 513 nodes (an independent solve here); the film-mesh check, which estimates

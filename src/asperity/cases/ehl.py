@@ -292,7 +292,8 @@ class EHLGridSpec(CaseModel):
     """
 
     nx: Annotated[int, Field(ge=9, le=8193)] = 129
-    """Nodes along x (or cells_per_a: nodes per Hertz semi-axis a)."""
+    """Nodes along x (or cells_per_a: nodes per Hertz semi-axis a). A steady case that sets
+    neither nx nor ny gets the mesh its regime asks for on the domain instead of 129 x 65."""
     ny: Annotated[int, Field(ge=1, le=4097)] = 65
     """Nodes along y; 1 for a line contact (or cells_per_b)."""
     x_min: LowerBound = -2.5
@@ -426,6 +427,12 @@ class EHLSteadyCase(EHLCaseBase):
         (:meth:`asperity.ehl.PointContact.default_nodes`)."""
         return "grid" not in self.model_fields_set
 
+    @property
+    def regime_nodes(self) -> bool:
+        """True when no node count is given (no [grid] table, or one that sets only the
+        domain): the mesh is the problem's default mesh on the domain, not 129 x 65 nodes."""
+        return not {"nx", "ny"} & self.grid.model_fields_set
+
     def solve_options(self, problem) -> dict:
         """``nx``, ``ny``, ``domain`` and ``levels`` for :func:`asperity.ehl.solve_steady`
         (None where the solver chooses: the mesh from the regime, see :attr:`regime_mesh`, and
@@ -434,7 +441,7 @@ class EHLSteadyCase(EHLCaseBase):
         levels = self.solver.levels if "levels" in self.solver.model_fields_set else None
         if self.regime_mesh:
             return {"nx": None, "ny": None, "domain": None, "levels": levels}
-        nx, ny = self.grid.nodes(line)
+        nx, ny = (None, None) if self.regime_nodes else self.grid.nodes(line)
         return {"nx": nx, "ny": ny, "levels": levels,
                 "domain": self.grid.domain(problem.a, None if line else problem.b)}
 
@@ -444,8 +451,8 @@ class EHLSteadyCase(EHLCaseBase):
         if line and "ny" in self.grid.model_fields_set and self.grid.ny != 1:
             raise ValueError("expected grid.ny = 1 (or no ny) for a line contact")
         step = 2 ** (self.solver.levels - 1)
-        given = [] if self.regime_mesh else zip(("nx", "ny"), self.grid.nodes(line),
-                                                strict=True)
+        given = [] if self.regime_nodes else zip(("nx", "ny"), self.grid.nodes(line),
+                                                 strict=True)
         for key, n in given:
             if key == "ny" and line:
                 continue
