@@ -50,10 +50,15 @@ class AndersonMixer:
     ----------
     memory : int
         Number m of residual differences in the least-squares fit (>= 1).
+    dot : callable, optional
+        ``dot(u, v)``: the dot product of two iterate-sized vectors as a float. Default: the
+        compiled loop for numpy arrays; vectors of another array library (a GPU's, as in
+        ``benchmarks/ehl_sweep_gpu.py``) need that library's.
     """
 
-    def __init__(self, memory: int):
+    def __init__(self, memory: int, dot=None):
         self.memory = int(memory)
+        self.dot = _dot if dot is None else dot
         self.reset()
 
     def reset(self):
@@ -70,8 +75,9 @@ class AndersonMixer:
         least-squares problem is solved through its m x m normal equations (the vectors are
         long, m is small), whose Gram matrix gains one row of dot products per call.
         """
-        g = np.asarray(g, dtype=float)
-        f = g - np.asarray(x, dtype=float)
+        if self.dot is _dot:
+            x, g = np.asarray(x, dtype=float), np.asarray(g, dtype=float)
+        f = g - x
         if self._last is not None:
             self._d_f.append(f - self._last[0])
             self._d_g.append(g - self._last[1])
@@ -80,14 +86,14 @@ class AndersonMixer:
                 self._d_f.pop(0)
                 self._d_g.pop(0)
                 gram = gram[1:, 1:]
-            row = np.array([_dot(u, self._d_f[-1]) for u in self._d_f])
+            row = np.array([self.dot(u, self._d_f[-1]) for u in self._d_f])
             self._gram = np.empty((row.size, row.size))
             self._gram[:-1, :-1] = gram
             self._gram[-1] = self._gram[:, -1] = row
         self._last = (f, g)
         if not self._d_f:
             return g.copy()
-        rhs = np.array([_dot(u, f) for u in self._d_f])
+        rhs = np.array([self.dot(u, f) for u in self._d_f])
         gamma = np.linalg.lstsq(self._gram, rhs, rcond=1e-12)[0]
         out = g.copy()
         for gk, d_g in zip(gamma, self._d_g, strict=True):

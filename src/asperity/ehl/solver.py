@@ -182,6 +182,11 @@ class EHLState:
             self.edge[:, [0, -1]] = True
 
     @property
+    def film_kernel(self) -> Convolution:
+        """The convolution with the dimensionless film kernel D (``W = D * P``, :meth:`refresh`)."""
+        return self._d_conv
+
+    @property
     def cell_area(self) -> float:
         """Dimensionless cell area dX dY (dX for a line contact)."""
         return self.dX if self.line else self.dX * self.dY
