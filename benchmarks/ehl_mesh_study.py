@@ -101,19 +101,24 @@ def compare_maps(rows):
 
 
 def figure(rows, path, title=None):
-    """The per-node time fraction in contact of every row (mesh or case), side by side;
-    ``title(row)`` gives each panel's title (default: the mesh and its contact percentage)."""
+    """The per-node time fraction in contact of every row (mesh or case), side by side in
+    rows of at most 5 panels; ``title(row)`` gives each panel's title (default: the mesh and
+    its contact percentage)."""
     from asperity.plotting.style import plt
 
     if title is None:
         def title(row):
             return f"{row['mesh']}: {row['contact_percent']:.1f} % of steps"
 
-    fig, axes = plt.subplots(1, len(rows), figsize=(3.2 * len(rows), 3.6), sharey=True,
-                             constrained_layout=True)
+    ncols = min(len(rows), 5)
+    nrows = -(-len(rows) // ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols, 3.6 * nrows), sharex=True,
+                             sharey=True, constrained_layout=True, squeeze=False)
+    for ax in axes.flat[len(rows):]:
+        ax.set_visible(False)
     vmax = max(float(r["frac"].max()) for r in rows)
     t = np.linspace(0, 2 * np.pi, 200)
-    for ax, row in zip(np.atleast_1d(axes), rows, strict=True):
+    for ax, row in zip(axes.flat[:len(rows)], rows, strict=True):
         im = ax.pcolormesh(row["X"], row["Y"], 100 * row["frac"].T, vmin=0, vmax=100 * vmax,
                            cmap="magma_r", shading="nearest")
         ax.plot(np.cos(t), np.sin(t), color="0.5", lw=0.8)
@@ -121,7 +126,9 @@ def figure(rows, path, title=None):
         ax.set_ylim(-1.3, 1.3)
         ax.set_title(title(row), fontsize=9)
         ax.set_xlabel("x / a (entrainment ->)")
-    np.atleast_1d(axes)[0].set_ylabel("y / b")
+        ax.xaxis.set_tick_params(labelbottom=True)
+    for ax in axes[:, 0]:
+        ax.set_ylabel("y / b")
     fig.colorbar(im, ax=axes, label="time in contact, % of counting time")
     fig.savefig(path, dpi=150)
 
