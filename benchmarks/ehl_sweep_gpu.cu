@@ -5,28 +5,37 @@
 // kernels; one thread per row of one colour of the zebra sweep.
 //
 // Fields are (nx, ny) in C order (y fastest), so that the threads of a warp, which hold
-// neighbouring rows j, read neighbouring addresses. The row solve's scratch arrays are laid
-// out the same way: element (i, c, r, s) of thread j at (((i W + c) 2 + r) 2 + s) ny + j.
+// neighbouring rows j, read neighbouring addresses; the row solve's stored rows are laid out
+// the same way (element s of block row i of thread j at (i NS + s) ny + j).
+//
+// The row solve: a colour has ~100 rows, so ~100 threads, each eliminating its row's nodes in
+// sequence; it is bound by memory latency. A direct port that kept the row's block band in
+// global scratch and eliminated it right-looking, as _block_band_solve does, took 17 ms for
+// the two colours of 801 x 201 on an H100 (docs/ehl-transient.md, "The sweep on a GPU").
+// relax_rows assembles each block row in registers when it is eliminated (left-looking: row
+// i takes the updates of pivot rows i - BL .. i - 1 in increasing order, the order in which
+// the right-looking loop applies them, so every entry sees the same operations in the same
+// order), keeps the last BL eliminated rows in registers, stores only what the back
+// substitution needs (inverse pivot, column 0 of the blocks right of it, its u11, the
+// eliminated right-hand side) and loads each row's inputs one row ahead: 3.1 ms.
 
 #define FLUID 0
 #define CAVITATED 1
 #define CONTACT 2
 
 #define F(a, i, j) a[(size_t)(i) * ny + (j)]
-#define M(i, c, r, s) m[((((size_t)(i) * W + (c)) * 2 + (r)) * 2 + (s)) * ny + j]
-#define B(i, r) b[((size_t)(i) * 2 + (r)) * ny + j]
 #define X(i, r) x[((size_t)(i) * 2 + (r)) * ny + j]
 
 struct Params {
-    int nx, ny, kn, bl, bu;
+    int nx, ny, kn;
     double lam, dx, dy, theta, mass, c_el;
 };
 
-// the parameters travel as two small arrays: qi = (nx, ny, kn, bl, bu),
-// qd = (lam, dx, dy, theta, mass, c_el)
+// the parameters travel as two small arrays: qi = (nx, ny, kn), qd = (lam, dx, dy, theta,
+// mass, c_el); the band widths BL, BU of the row solve are compiled in (-DBL=, -DBU=)
 __device__ inline Params params(const int *qi, const double *qd) {
     Params q;
-    q.nx = qi[0]; q.ny = qi[1]; q.kn = qi[2]; q.bl = qi[3]; q.bu = qi[4];
+    q.nx = qi[0]; q.ny = qi[1]; q.kn = qi[2];
     q.lam = qd[0]; q.dx = qd[1]; q.dy = qd[2]; q.theta = qd[3]; q.mass = qd[4]; q.c_el = qd[5];
     return q;
 }
@@ -63,155 +72,6 @@ __device__ void nodal(const double *p, const double *h, const double *ex, const 
     *e = ee;
 }
 
-extern "C" __global__ void relax_rows(
-        double *p, double *h, const double *ex, const double *ey, const double *rho,
-        const double *efar, const double *rhs_t, const double *dex, const double *dey,
-        signed char *kind, const double *f_near, const int *qi, const double *qd,
-        int first, int count,
-        double *m, double *b, double *x, double *dp_row, double *dh_row) {
-    int t = blockIdx.x * blockDim.x + threadIdx.x;
-    if (t >= count) return;
-    const Params q = params(qi, qd);
-    const int j = first + 2 * t;
-    const int nx = q.nx, ny = q.ny, bl = q.bl, bu = q.bu, W = q.bl + q.bu + 1, kn = q.kn;
-    const double dx2 = q.dx * q.dx, dy2 = q.dy * q.dy, inv_dy2 = 1.0 / dy2;
-    const double d0 = -2.0 / dx2 - 2.0 * inv_dy2;
-    const double c_self = -q.c_el * f_near[0];
-    // release of cavitated / contact nodes by the point update at the current iterate
-    for (int i = 1; i < nx - 1; i++) {
-        signed char kd = F(kind, i, j);
-        if (kd == FLUID) continue;
-        double a0, b0, r, e;
-        nodal(p, h, ex, ey, rho, efar, rhs_t, f_near, q, i, j, &a0, &b0, &r, &e);
-        double det = a0 * d0 - b0 * c_self;
-        if (kd == CAVITATED && (r * d0 - b0 * e) / det > 0.0) F(kind, i, j) = FLUID;
-        else if (kd == CONTACT && (a0 * e - c_self * r) / det > 0.0) F(kind, i, j) = FLUID;
-    }
-    int start = 0;
-    for (int pass = 0; pass < 4; pass++) {
-        // assemble block rows start..nx-1 (_assemble_row, without the density's Newton term)
-        for (int i = start; i < nx; i++) {
-            for (int c = 0; c < W; c++)
-                for (int r = 0; r < 2; r++)
-                    for (int s = 0; s < 2; s++) M(i, c, r, s) = 0.0;
-            if (i == 0 || i == nx - 1) {
-                M(i, bl, 0, 0) = 1.0; B(i, 0) = 0.0;
-                M(i, bl, 1, 1) = 1.0; B(i, 1) = F(h, i, j);
-                continue;
-            }
-            double hy = (F(h, i, j + 1) + F(h, i, j - 1)) * inv_dy2;
-            M(i, bl, 1, 1) = d0;
-            M(i, bl + 1, 1, 1) = 1.0 / dx2;
-            M(i, bl - 1, 1, 1) = 1.0 / dx2;
-            for (int k = -kn; k <= kn; k++)
-                if (0 < i + k && i + k < nx - 1) M(i, bl + k, 1, 0) -= q.c_el * f_near[abs(k)];
-            B(i, 1) = F(efar, i, j) - hy;
-            signed char kd = F(kind, i, j);
-            if (kd == CAVITATED) { M(i, bl, 0, 0) = 1.0; B(i, 0) = 0.0; continue; }
-            if (kd == CONTACT) { M(i, bl, 0, 1) = 1.0; B(i, 0) = 0.0; continue; }
-            double ep = F(ex, i, j), eq = F(ey, i, j);
-            double xe = 0.5 * (ep + F(ex, i + 1, j)) / dx2, xw = 0.5 * (ep + F(ex, i - 1, j)) / dx2;
-            double xn = 0.5 * (eq + F(ey, i, j + 1)) / dy2, xs = 0.5 * (eq + F(ey, i, j - 1)) / dy2;
-            double c0, c1, c2;
-            upwind(i, &c0, &c1, &c2);
-            double pp = F(p, i, j);
-            double g = F(dex, i, j) * (F(p, i + 1, j) + F(p, i - 1, j) - 2.0 * pp) / dx2;
-            g += F(dey, i, j) * (F(p, i, j + 1) + F(p, i, j - 1) - 2.0 * pp) / dy2;
-            g *= 0.5 * q.theta;
-            double newton = g < 0.0 ? g : 0.0;
-            M(i, bl, 0, 0) = -q.theta * (xe + xw + xn + xs) + newton;
-            M(i, bl + 1, 0, 0) = q.theta * xe;
-            M(i, bl - 1, 0, 0) = q.theta * xw;
-            M(i, bl, 0, 1) = -q.theta * q.lam * F(rho, i, j) * c0 / q.dx - q.mass * F(rho, i, j);
-            M(i, bl - 1, 0, 1) = q.theta * q.lam * c1 * F(rho, i - 1, j) / q.dx;
-            if (i >= 2) M(i, bl - 2, 0, 1) = -q.theta * q.lam * c2 * F(rho, i - 2, j) / q.dx;
-            double nb = xn * F(p, i, j + 1) + xs * F(p, i, j - 1);
-            B(i, 0) = -q.theta * nb - F(rhs_t, i, j) + newton * pp;
-        }
-        // block elimination from row start (_eliminate)
-        int k0 = start - bl > 0 ? start - bl : 0;
-        for (int k = k0; k < nx; k++) {
-            if (k >= start) {
-                double d00 = M(k, bl, 0, 0), d01 = M(k, bl, 0, 1);
-                double d10 = M(k, bl, 1, 0), d11 = M(k, bl, 1, 1);
-                double inv = 1.0 / (d00 * d11 - d01 * d10);
-                M(k, bl, 0, 0) = d11 * inv; M(k, bl, 0, 1) = -d01 * inv;
-                M(k, bl, 1, 0) = -d10 * inv; M(k, bl, 1, 1) = d00 * inv;
-            }
-            double i00 = M(k, bl, 0, 0), i01 = M(k, bl, 0, 1);
-            double i10 = M(k, bl, 1, 0), i11 = M(k, bl, 1, 1);
-            double b0 = B(k, 0), b1 = B(k, 1);
-            int ilo = k + 1 > start ? k + 1 : start;
-            int ihi = k + bl < nx - 1 ? k + bl : nx - 1;
-            for (int i = ilo; i <= ihi; i++) {
-                int a = k - i + bl;
-                double a00 = M(i, a, 0, 0), a01 = M(i, a, 0, 1);
-                double a10 = M(i, a, 1, 0), a11 = M(i, a, 1, 1);
-                if (a00 == 0.0 && a01 == 0.0 && a10 == 0.0 && a11 == 0.0) continue;
-                double l00 = a00 * i00 + a01 * i10, l01 = a00 * i01 + a01 * i11;
-                double l10 = a10 * i00 + a11 * i10, l11 = a10 * i01 + a11 * i11;
-                double u11 = M(k, bl + 1, 1, 1);
-                M(i, bl + k + 1 - i, 0, 1) -= l01 * u11;
-                M(i, bl + k + 1 - i, 1, 1) -= l11 * u11;
-                int jhi = k + bu < nx - 1 ? k + bu : nx - 1;
-                for (int jj = k + 1; jj <= jhi; jj++) {
-                    int u = jj - k + bl, c = jj - i + bl;
-                    double u00 = M(k, u, 0, 0), u10 = M(k, u, 1, 0);
-                    M(i, c, 0, 0) -= l00 * u00 + l01 * u10;
-                    M(i, c, 1, 0) -= l10 * u00 + l11 * u10;
-                }
-                B(i, 0) -= l00 * b0 + l01 * b1;
-                B(i, 1) -= l10 * b0 + l11 * b1;
-            }
-        }
-        // back substitution (_back_substitute)
-        for (int k = nx - 1; k >= 0; k--) {
-            double s0 = B(k, 0), s1 = B(k, 1);
-            int jhi = k + bu < nx - 1 ? k + bu : nx - 1;
-            for (int jj = k + 1; jj <= jhi; jj++) {
-                int u = jj - k + bl;
-                s0 -= M(k, u, 0, 0) * X(jj, 0);
-                if (jj == k + 1) s1 -= M(k, u, 1, 0) * X(jj, 0) + M(k, u, 1, 1) * X(jj, 1);
-                else s1 -= M(k, u, 1, 0) * X(jj, 0);
-            }
-            X(k, 0) = M(k, bl, 0, 0) * s0 + M(k, bl, 0, 1) * s1;
-            X(k, 1) = M(k, bl, 1, 0) * s0 + M(k, bl, 1, 1) * s1;
-        }
-        // active set (_update_active_set)
-        int moved = nx;
-        for (int i = 1; i < nx - 1; i++) {
-            signed char old = F(kind, i, j), kd = old;
-            if (old == FLUID && X(i, 0) < 0.0) kd = CAVITATED;
-            else if (old != CONTACT && X(i, 1) < 0.0) kd = CONTACT;
-            else if (old == CONTACT && X(i, 0) < 0.0) kd = CAVITATED;
-            F(kind, i, j) = kd;
-            if (kd != old && moved == nx) moved = i;
-        }
-        start = moved;
-        if (start == nx) break;
-    }
-    double dp_max = 0.0, dh_max = 0.0;
-    for (int i = 1; i < nx - 1; i++) {
-        double pn = fmax(X(i, 0), 0.0), hn = fmax(X(i, 1), 0.0);
-        dp_max = fmax(dp_max, fabs(pn - F(p, i, j)));
-        dh_max = fmax(dh_max, fabs(hn - F(h, i, j)));
-        F(p, i, j) = pn;
-        F(h, i, j) = hn;
-    }
-    dp_row[j] = dp_max;
-    dh_row[j] = dh_max;
-}
-
-// ---- the same row solve with a streaming elimination ----
-//
-// relax_rows above is the direct port: the row's block band lives in global scratch and the
-// right-looking elimination reads and writes it many times per node, each access a full
-// memory latency for one of only ~100 threads. relax_rows_streamed assembles each block row
-// in registers when it is eliminated (left-looking: row i takes the updates of pivot rows
-// i - BL .. i - 1 in increasing order, the order in which the right-looking loop applies
-// them, so every entry sees the same operations in the same order) and keeps the last BL
-// eliminated rows in registers; only what the back substitution needs is stored (inverse
-// pivot, column 0 of the blocks right of it, its u11, the eliminated right-hand side).
 
 #ifndef BL
 #define BL 2
@@ -298,8 +158,9 @@ __device__ inline void assemble_block_row(const RowInputs &r, const double *__re
     bb[0] = -q.theta * nb - r.rhs_t + newton * r.p;
 }
 
-// the release of cavitated / contact nodes of relax_rows, at every node of the rows of one
-// colour at once (a node's release reads only its own kind; launched before the rows)
+// the release of cavitated / contact nodes by the point update at the current iterate (the
+// start of _relax_row), at every node of the rows of one colour at once (a node's release
+// reads only its own kind); launched before relax_rows
 extern "C" __global__ void release_nodes(
         const double *__restrict__ p, const double *__restrict__ h,
         const double *__restrict__ ex, const double *__restrict__ ey,
@@ -324,8 +185,9 @@ extern "C" __global__ void release_nodes(
     else if (kd == CONTACT && (a0 * e - c_self * r) / det > 0.0) F(kind, i, j) = FLUID;
 }
 
-// the rows of one colour after release_nodes
-extern "C" __global__ void relax_rows_streamed(
+// the rows of one colour after release_nodes: assembly, elimination, back substitution and
+// active set of _relax_row
+extern "C" __global__ void relax_rows(
         double *__restrict__ p, double *__restrict__ h, const double *__restrict__ ex,
         const double *__restrict__ ey, const double *__restrict__ rho,
         const double *__restrict__ efar, const double *__restrict__ rhs_t,

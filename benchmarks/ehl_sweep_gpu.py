@@ -4,25 +4,24 @@ Issue 17 asks, where a session has a GPU, for a measured CuPy path of the sweep.
 measurement, not a solver option: the x-line relaxation (``asperity.ehl.kernels.line_sweep``:
 zebra rows, block elimination of the 2 x 2 (p, h) blocks, active set), the flow factors
 (``Lubricant.flow_field``), the oscillation damping and the far-field refresh (two FFTs and
-``far_field``) ported to CUDA C (``ehl_sweep_gpu.cu``, one thread per row of a colour) and
-CuPy (``cupy.fft``), with the same operations in the same order.
+``far_field``) in CUDA C (``ehl_sweep_gpu.cu``, one thread per row of a colour) and CuPy
+(``cupy.fft``), with the same operations in the same order. The step around them is the
+library's own ``TimeStepper`` (its set-up of a step, its refresh cycles, convergence test
+and Anderson mixing) on a GPU state.
 
 Two modes:
 
-- ``--export STATE.npz`` (any machine): the state of a new timestep of the seed's C-C gear
-  case at the paper mesh, from the last step of a finished ``holmes-table2-paper`` run
-  (``--result``, its ``result.nc``): pressure and film of that step, the surfaces moved on by
-  one timestep (shifted along x by ``u dt``, the transverse-ground profiles), the explicit
-  part of the theta-scheme from the old level, and the problem's inputs.
-- default: on that state, (1) one sweep, a refresh and the flow factors on the GPU against
-  the CPU kernels (largest differences), (2) 40 sweeps with a refresh every 2 (the paper
-  example's setting) on both, from the same start (largest difference of p at the end and
-  the sweeps' residuals side by side), (3) the medians of the time per sweep and per
-  refresh, CPU with 2 threads and with all cores, GPU with the direct port of the row solve
-  and with the streamed one; the projected time per step at the full run's 26.4 sweeps and
-  13.2 refreshes per step, (4) the step relaxed to convergence by the library's
-  ``TimeStepper.relax`` (refresh cycles, convergence test, Anderson mixing) on the CPU with 2
-  threads and on the GPU: wall time, sweeps, refreshes and the difference of the results.
+- ``--export STATE.npz`` (any machine): a timestep of the seed's C-C gear case at the paper
+  mesh, from the last step of a finished ``holmes-table2-paper`` run (``--result``, its
+  ``result.nc``): pressure, film and roughness of that step, and the roughness one timestep
+  later (the transverse-ground surfaces shifted along x by ``u dt``).
+- default: the step set up by ``TimeStepper.start_step`` from that state, then (1) one
+  refresh, the flow factors and one sweep on the GPU against the CPU kernels (largest
+  differences), (2) the medians of the time per sweep and per refresh, CPU with 2 threads
+  and with all cores, GPU host-timed and with events; the projected time per step at the
+  full run's 26.4 sweeps and 13.2 refreshes per step, (3) the step relaxed to convergence by
+  ``TimeStepper.relax`` on the CPU with 2 threads and on the GPU: wall time, sweeps,
+  refreshes and the difference of the results.
 
 Run: ``python benchmarks/ehl_sweep_gpu.py --export .gpu/state.npz --result
 RUN/cases/0007/result.nc`` here, then ``python benchmarks/ehl_sweep_gpu.py --state
@@ -30,6 +29,7 @@ RUN/cases/0007/result.nc`` here, then ``python benchmarks/ehl_sweep_gpu.py --sta
 """
 
 import argparse
+import sys
 import time
 from pathlib import Path
 
@@ -39,104 +39,77 @@ import numpy as np
 from asperity.ehl.anderson import AndersonMixer
 from asperity.ehl.kernels import CAVITATED, CONTACT, line_sweep
 from asperity.ehl.solver import EHLState
-from asperity.ehl.stepper import StepOptions, TimeStepper, reynolds_operator
+from asperity.ehl.stepper import StepOptions, TimeStepper
+
+sys.path.insert(0, str(Path(__file__).parent))
+from ehl_table2 import gear_case  # noqa: E402
 
 #: The measured full paper run (docs/ehl-transient.md, Cost): sweeps and refreshes per step.
 PAPER_SWEEPS, PAPER_REFRESHES = 26.4, 13.2
 PAPER_STEPS = 4428
 
 
-def gear_problem(xi):
-    """The seed's gear contact (benchmarks/ehl_table2.py)."""
-    import sys
-
-    sys.path.insert(0, str(Path(__file__).parent))
-    from ehl_table2 import gear_case
-
-    return gear_case(xi)
-
-
 def export(result_path, out, xi=0.25):
-    """Write the state of a new timestep (module docstring) to ``out`` (.npz)."""
+    """Write a timestep's state and the next step's roughness (module docstring) to ``out``."""
     import xarray as xr
 
     data = xr.open_dataset(result_path)
-    prob = gear_problem(xi)
+    prob = gear_case(xi)
     x, y = data.x.values, data.y.values
     dt = float(data.attrs["timestep_s"])
-    opts = StepOptions.for_problem(prob, refresh=2)
-    state = EHLState(prob, x, y, opts.implicit_near)
-    state.P = data.pressure.values / prob.p_hertz
-    state.H = data.film.values / prob.film_scale
     z1, z2 = data.surface1.values, data.surface2.values
-    state.roughness = -(z1 + z2) / prob.film_scale
-    state.kind[state.P <= 0.0] = CAVITATED
-    state.kind[state.H <= 0.0] = CONTACT
-    fluid = (state.kind == 0) & ~state.edge
-    state.H0 = float(np.median((state.H - state.film_from_pressure())[fluid]))  # separation
-    state.theta = opts.theta
-    mass = state.lam / (dt * prob.mean_speed / prob.a)
 
     def moved(z, u):  # a transverse-ground surface moved on by u dt along x
         return np.stack([np.interp(x - u * dt, x, z[:, k]) for k in range(y.size)], axis=1)
 
-    ex, ey, rho = state.flow_coefficients()
-    rhs_t = (1.0 - opts.theta) * reynolds_operator(state, ex, ey, rho) + mass * rho * state.H
-    phi = -(moved(z1, prob.u1) + moved(z2, prob.u2)) / prob.film_scale
-    H = state.H + phi - state.roughness
-    np.savez(out, x=x, y=y, xi=xi, dt=dt, P=state.P, H=H, H0=state.H0, kind=state.kind,
-             phi=phi, rhs_t=rhs_t, mass=mass)
-    print(f"state of a new step of {result_path} ({x.size} x {y.size}) written to {out}")
+    np.savez(out, x=x, y=y, xi=xi, dt=dt, p=data.pressure.values, h=data.film.values,
+             phi=-(z1 + z2) / prob.film_scale,
+             phi_next=-(moved(z1, prob.u1) + moved(z2, prob.u2)) / prob.film_scale)
+    print(f"a step of {result_path} ({x.size} x {y.size}) written to {out}")
 
 
-def cpu_state(path):
-    """(state, options, film scale) from an exported state: the CPU reference."""
+def cpu_stepper(path) -> TimeStepper:
+    """The library's stepper with the exported state, its next step set up (the paper
+    example's refresh every 2 sweeps): the CPU reference."""
     d = np.load(path)
-    prob = gear_problem(float(d["xi"]))
+    prob = gear_case(float(d["xi"]))
     opts = StepOptions.for_problem(prob, refresh=2)
-    state = EHLState(prob, d["x"], d["y"], opts.implicit_near)
-    state.damping = opts.damping
-    state.density_newton = False  # as the transient stepper runs (TimeStepper)
-    state.P, state.H, state.kind = d["P"], d["H"], d["kind"]
-    state.H0 = float(d["H0"])
+    stepper = TimeStepper(prob, d["x"], d["y"], opts, float(d["dt"]),
+                          prob.film_estimate() / prob.film_scale)
+    state = stepper.state
+    state.P = d["p"] / prob.p_hertz
+    state.H = d["h"] / prob.film_scale
     state.roughness = d["phi"]
-    state.rhs_t = d["rhs_t"]
-    state.theta, state.mass = opts.theta, float(d["mass"])
-    return state, opts, prob.film_estimate() / prob.film_scale
+    state.kind[state.P <= 0.0] = CAVITATED
+    state.kind[state.H <= 0.0] = CONTACT
+    fluid = (state.kind == 0) & ~state.edge  # the separation from the film's deflection
+    state.H0 = float(np.median((state.H - state.film_from_pressure())[fluid]))
+    stepper.start_step(d["phi_next"])
+    return stepper
 
 
 class GPUState:
     """The fields of an :class:`EHLState` on the GPU (C order) and the CUDA kernels of one
     sweep and one refresh (``ehl_sweep_gpu.cu``)."""
 
-    def __init__(self, state: EHLState, streamed=True):
+    def __init__(self, state: EHLState):
         import cupy as cp
 
         self.cp = cp
-        self.streamed = streamed
         self.nx, self.ny = nx, ny = state.P.shape
         kn = state.f_near.size - 1
-        self.bl, self.bu = max(2, kn), max(1, kn)
-        width = self.bl + self.bu + 1
+        bl, bu = max(2, kn), max(1, kn)  # the row's band (asperity.ehl.kernels._relax_row)
         src = (Path(__file__).parent / "ehl_sweep_gpu.cu").read_text()
-        module = cp.RawModule(code=src, options=("-std=c++17", f"-DBL={self.bl}",
-                                                 f"-DBU={self.bu}"))
-        self.k_relax, self.k_release, self.k_streamed, self.k_flow, self.k_far, self.k_damp = (
-            module.get_function(n) for n in ("relax_rows", "release_nodes",
-                                             "relax_rows_streamed", "flow_field", "far_field",
-                                             "damp"))
+        module = cp.RawModule(code=src, options=("-std=c++17", f"-DBL={bl}", f"-DBU={bu}"))
+        self.k_release, self.k_relax, self.k_flow, self.k_far, self.k_damp = (
+            module.get_function(n) for n in ("release_nodes", "relax_rows", "flow_field",
+                                             "far_field", "damp"))
         prob = state.problem
-        lub = prob.lubricant
-        self.qi = cp.asarray([nx, ny, kn, self.bl, self.bu], dtype=cp.int32)
+        self.qi = cp.asarray([nx, ny, kn], dtype=cp.int32)
         self.qd = cp.asarray([state.lam, state.dX, state.dY, state.theta, state.mass, state.c])
-        roelands = lub.viscosity_model == "roelands"
-        v = ((np.log(lub.viscosity / lub.roelands_kappa), lub.roelands_chi, lub.roelands_z)
-             if roelands else (lub.pressure_viscosity, 0.0, 0.0))
-        gamma, lam = (lub.dh_gamma, lub.dh_lambda) if lub.compressible else (0.0, 0.0)
-        shear = 0.0 if lub.newtonian else abs(prob.sliding_speed) / lub.eyring_stress
-        scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
-        self.ld = cp.asarray([prob.p_hertz, prob.film_scale, scale, scale * prob.p_hertz,
-                              float(roelands), lub.viscosity, *v, gamma, lam, shear])
+        p_unit, h_unit, scale = state.flow_units
+        roelands, *laws = prob.lubricant.flow_law_parameters(prob.sliding_speed)
+        self.ld = cp.asarray([p_unit, h_unit, scale, scale * p_unit, float(roelands), *laws])
         c = cp.ascontiguousarray
         self.problem = prob
         self.cell_area = state.cell_area
@@ -154,9 +127,8 @@ class GPUState:
         self.fft_shape = conv.fft_shape
         self.spectrum = cp.asarray(conv.spectrum)
         self.ex, self.ey, self.rho, self.dex, self.dey = (cp.empty((nx, ny)) for _ in range(5))
-        self.m = cp.empty(nx * width * 4 * ny)
-        self.sdata = cp.empty(nx * (4 + 2 * self.bu + 3) * ny)
-        self.b, self.x = cp.empty(nx * 2 * ny), cp.empty(nx * 2 * ny)
+        self.stored = cp.empty(nx * (4 + 2 * bu + 3) * ny)  # NS of ehl_sweep_gpu.cu per node
+        self.x = cp.empty(nx * 2 * ny)
         self.dp_row, self.dh_row = cp.zeros(ny), cp.zeros(ny)
         self.p_before, self.h_before = cp.empty_like(self.P), cp.empty_like(self.H)
         self.last_change = cp.zeros_like(self.P)
@@ -232,16 +204,12 @@ class GPUState:
             fields = (self.P, self.H, self.ex, self.ey, self.rho, self.efar, self.rhs_t,
                       self.dex, self.dey, self.kind, self.f_near, self.qi, self.qd,
                       np.int32(first), np.int32(count))
-            if self.streamed:
-                nodes = count * (self.nx - 2)
-                self.k_release(((nodes + 127) // 128,), (128,),
-                               (*fields[:7], self.kind, self.f_near, self.qi, self.qd,
-                                np.int32(first), np.int32(count)))
-                self.k_streamed(((count + 31) // 32,), (32,),
-                                (*fields, self.sdata, self.x, self.dp_row, self.dh_row))
-            else:
-                self.k_relax(((count + 31) // 32,), (32,),
-                             (*fields, self.m, self.b, self.x, self.dp_row, self.dh_row))
+            nodes = count * (self.nx - 2)
+            self.k_release(((nodes + 127) // 128,), (128,),
+                           (*fields[:7], self.kind, self.f_near, self.qi, self.qd,
+                            np.int32(first), np.int32(count)))
+            self.k_relax(((count + 31) // 32,), (32,),
+                         (*fields, self.stored, self.x, self.dp_row, self.dh_row))
 
     def shift_separation(self, delta):
         self.H0 += delta
@@ -249,14 +217,17 @@ class GPUState:
 
 
 class GPUStepper(TimeStepper):
-    """The library's :class:`TimeStepper` (its ``relax``: refresh cycles, convergence test,
-    Anderson mixing) on a :class:`GPUState`; only the mixing vector is built with CuPy."""
+    """The library's :class:`TimeStepper` (:meth:`~TimeStepper.relax`: refresh cycles,
+    convergence test, Anderson mixing) with the settings of ``cpu`` on a GPU copy of its
+    state; only the mixing vector is built with CuPy."""
 
-    def __init__(self, state, gpu, options, dt, film_scale):
-        super().__init__(state.problem, state.x, state.y, options, dt, film_scale)
-        self.state = gpu
-        cp = gpu.cp
-        self.mixer = AndersonMixer(options.acceleration, dot=lambda u, v: float(cp.dot(u, v)))
+    def __init__(self, cpu: TimeStepper):
+        super().__init__(cpu.problem, cpu.state.x, cpu.state.y, cpu.options, 1.0, cpu.film_scale)
+        self.mass = cpu.mass
+        self.state = GPUState(cpu.state)
+        cp = self.state.cp
+        self.mixer = AndersonMixer(cpu.options.acceleration,
+                                   dot=lambda u, v: float(cp.dot(u, v)))
 
     def mix_vector(self):
         state, scale, cp = self.state, self.film_scale, self.state.cp
@@ -264,43 +235,10 @@ class GPUStepper(TimeStepper):
                                cp.asarray([state.H0 / scale])])
 
 
-def one_step(path, threads=2):
-    """One timestep relaxed to convergence by ``TimeStepper.relax`` on the CPU (``threads``)
-    and on the GPU from the same state, twice each: wall time of the second, sweeps,
-    refreshes, difference."""
-    numba.set_num_threads(threads)
-    out = {}
-    for name in ("CPU", "GPU", "CPU", "GPU"):  # the second of each timed (warmed up)
-        state, opts, film_scale = cpu_state(path)
-        dt = float(np.load(path)["dt"])
-        if name == "CPU":
-            stepper = TimeStepper(state.problem, state.x, state.y, opts, dt, film_scale)
-            stepper.state = state
-            sync = None
-        else:
-            gpu = GPUState(state)
-            stepper = GPUStepper(state, gpu, opts, dt, film_scale)
-            sync = gpu.cp.cuda.Device().synchronize
-        t = time.perf_counter()
-        report = stepper.relax()
-        if sync is not None:
-            sync()
-        wall = time.perf_counter() - t
-        P = stepper.state.P if name == "CPU" else gpu.cp.asnumpy(stepper.state.P)
-        out[name] = (wall, report, P)
-    print(f"\none timestep relaxed to convergence (TimeStepper.relax, tol {opts.tol:g}, "
-          f"refresh {opts.refresh}, Anderson {opts.acceleration}):")
-    for name, (wall, report, _) in out.items():
-        label = f"{name}, {threads} threads" if name == "CPU" else "GPU, streamed"
-        print(f"{label:>16}: {wall:.3f} s, {report.sweeps} sweeps, {report.refreshes} "
-              f"refreshes, converged {report.converged}, residual {report.residual:.1e}")
-    d_p = float(np.abs(out["GPU"][2] - out["CPU"][2]).max())
-    print(f"max|P_gpu - P_cpu| at the converged step {d_p:.1e} p_h; time ratio CPU/GPU "
-          f"{out['CPU'][0] / out['GPU'][0]:.1f}")
-
-
-def compare_one(state, gpu):
+def compare_one(path):
     """Largest differences of one refresh, flow-factor evaluation and sweep, GPU vs CPU."""
+    state = cpu_stepper(path).state
+    gpu = GPUState(state)
     cp = gpu.cp
     state.refresh()
     gpu.refresh()
@@ -315,9 +253,8 @@ def compare_one(state, gpu):
                             state.dY, state.theta, state.mass, state.c, state.f_near, kind,
                             dex, dey, None)
     gpu.derivatives = True
-    damping, gpu.damping = gpu.damping, 1.0
+    gpu.damping = 1.0  # the bare line sweep
     dp_g, dh_g = gpu.sweep()
-    gpu.damping = damping
     d_p = float(np.abs(cp.asnumpy(gpu.P) - P).max())
     d_h = float(np.abs(cp.asnumpy(gpu.H) - H).max() / np.abs(H).max())
     d_kind = int((cp.asnumpy(gpu.kind) != kind).sum())
@@ -326,37 +263,10 @@ def compare_one(state, gpu):
     print(f"one line sweep (changes: CPU max|dP| {dp_c:.3e}, max|dH| {dh_c:.3e}; GPU "
           f"{dp_g:.3e}, {dh_g:.3e}): max|P_gpu - P_cpu| {d_p:.1e} p_h, film rel. {d_h:.1e}, "
           f"active-set differences {d_kind} nodes")
-    return max(d_p, d_h)
-
-
-def relax_both(state, gpu, opts, film_scale, sweeps=40):
-    """The same refresh cycles (refresh every ``opts.refresh`` sweeps, load shift, damping)
-    on both from the same start; per-sweep residuals and the end difference."""
-    cp = gpu.cp
-    target = state.problem.load_integral
-    area = state.cell_area
-    rows = []
-    state.start_iteration()
-    for k in range(sweeps):
-        if k % opts.refresh == 0:
-            state.refresh()
-            gpu.refresh()
-        dp_c, dh_c = state.sweep("line")
-        dp_g, dh_g = gpu.sweep()
-        err_c = (state.load() - target) / target
-        err_g = (float(gpu.P.sum()) * area - target) / target
-        state.shift_separation(opts.load_gain * err_c)
-        gpu.shift_separation(opts.load_gain * err_g)
-        rows.append((max(dp_c, dh_c / film_scale, abs(err_c)),
-                     max(dp_g, dh_g / film_scale, abs(err_g))))
-    d_p = float(np.abs(cp.asnumpy(gpu.P) - state.P).max())
-    print(f"{sweeps} sweeps, refresh every {opts.refresh}: residual CPU / GPU at sweeps "
-          + ", ".join(f"{k + 1}: {c:.2e}/{g:.2e}" for k, (c, g) in enumerate(rows)
-                      if k in (0, 4, 9, 19, sweeps - 1))
-          + f"; max|P_gpu - P_cpu| at the end {d_p:.1e} p_h")
 
 
 def median_time(fn, repeats=15, sync=None):
+    """Median wall seconds of ``fn()`` (followed by ``sync()``)."""
     times = []
     for _ in range(repeats):
         t = time.perf_counter()
@@ -367,9 +277,10 @@ def median_time(fn, repeats=15, sync=None):
     return float(np.median(times))
 
 
-def timings(state, gpu, direct):
-    """Median seconds per sweep and per refresh: CPU at 2 threads and all, GPU (``direct``:
-    the direct port of the row solve)."""
+def timings(path):
+    """Median seconds per sweep and per refresh: CPU at 2 threads and all, GPU."""
+    state = cpu_stepper(path).state
+    gpu = GPUState(state)
     rows = {}
     for threads in sorted({2, numba.config.NUMBA_NUM_THREADS}):
         numba.set_num_threads(threads)
@@ -378,13 +289,10 @@ def timings(state, gpu, direct):
         rows[f"CPU, {threads} threads"] = (median_time(lambda: state.sweep("line")),
                                            median_time(state.refresh))
     sync = gpu.cp.cuda.Device().synchronize
-    for name, g in (("GPU, direct port", direct), ("GPU, streamed", gpu)):
-        g.refresh()
-        g.sweep()
-        rows[name] = (median_time(g.sweep, 50, sync), median_time(g.refresh, 50, sync))
-    # the parts of the GPU sweep
-    start = gpu.cp.cuda.Event()
-    end = gpu.cp.cuda.Event()
+    gpu.refresh()
+    gpu.sweep()
+    rows["GPU"] = (median_time(gpu.sweep, 50, sync), median_time(gpu.refresh, 50, sync))
+    start, end = gpu.cp.cuda.Event(), gpu.cp.cuda.Event()
 
     def event_time(fn, repeats=50):
         out = []
@@ -397,43 +305,65 @@ def timings(state, gpu, direct):
         return float(np.median(out))
 
     parts = {"flow factors": event_time(lambda: gpu.flow(True)),
-             "row solves (streamed)": event_time(gpu.rows),
-             "row solves (direct port)": event_time(direct.rows),
+             "row solves": event_time(gpu.rows),
              "refresh (FFTs, far field, edges)": event_time(gpu.refresh)}
     nodes = state.P.size
-    print(f"\n{'':>22} {'ms/sweep':>9} {'ms/refresh':>11} {'ns/node/sweep':>14} "
+    print(f"\n{'':>16} {'ms/sweep':>9} {'ms/refresh':>11} {'ns/node/sweep':>14} "
           f"{'s/step (26.4 sw, 13.2 refr)':>28} {'paper case, min':>16}")
     base = None
     for name, (ts, tr) in rows.items():
         step = PAPER_SWEEPS * ts + PAPER_REFRESHES * tr
         base = base or step
-        print(f"{name:>22} {1e3 * ts:9.2f} {1e3 * tr:11.2f} {1e9 * ts / nodes:14.1f} "
+        print(f"{name:>16} {1e3 * ts:9.2f} {1e3 * tr:11.2f} {1e9 * ts / nodes:14.1f} "
               f"{step:28.3f} {PAPER_STEPS * step / 60:16.1f}  (x{base / step:.1f})")
     print("GPU parts (events, ms): " + ", ".join(f"{k} {1e3 * v:.3f}" for k, v in parts.items()))
     print("Projected step: the full run's mean sweeps and refreshes per step at these unit "
-          "costs (Anderson mixing and the load sum not counted; on the CPU they add ~10 %).")
+          "costs (Anderson mixing and the load sum not counted).")
+
+
+def one_step(path, threads=2):
+    """The step relaxed to convergence by ``TimeStepper.relax`` on the CPU (``threads``) and
+    on the GPU from the same state, twice each: wall time of the second, sweeps, refreshes,
+    difference."""
+    numba.set_num_threads(threads)
+    out = {}
+    for name in ("CPU", "GPU", "CPU", "GPU"):  # the second of each timed (warmed up)
+        stepper = cpu_stepper(path)
+        sync = None
+        if name == "GPU":
+            stepper = GPUStepper(stepper)
+            sync = stepper.state.cp.cuda.Device().synchronize
+        t = time.perf_counter()
+        report = stepper.relax()
+        if sync is not None:
+            sync()
+        wall = time.perf_counter() - t
+        P = stepper.state.P if name == "CPU" else stepper.state.cp.asnumpy(stepper.state.P)
+        out[name] = (wall, report, P)
+    opts = stepper.options
+    print(f"\nthe step relaxed to convergence (TimeStepper.relax, tol {opts.tol:g}, "
+          f"refresh {opts.refresh}, Anderson {opts.acceleration}):")
+    for name, (wall, report, _) in out.items():
+        label = f"CPU, {threads} threads" if name == "CPU" else "GPU"
+        print(f"{label:>16}: {wall:.3f} s, {report.sweeps} sweeps, {report.refreshes} "
+              f"refreshes, converged {report.converged}, residual {report.residual:.1e}")
+    d_p = float(np.abs(out["GPU"][2] - out["CPU"][2]).max())
+    print(f"max|P_gpu - P_cpu| at the converged step {d_p:.1e} p_h; time ratio CPU/GPU "
+          f"{out['CPU'][0] / out['GPU'][0]:.1f}")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--export", help="write the state of a new step here (.npz)")
+    parser.add_argument("--export", help="write a step's state here (.npz)")
     parser.add_argument("--result", help="result.nc of a finished 801 x 201 C-C run (export)")
     parser.add_argument("--state", default=".gpu/state.npz")
     args = parser.parse_args()
     if args.export:
         export(args.result, args.export)
         return
-    state, opts, film_scale = cpu_state(args.state)
-    print(f"{state.P.shape[0]} x {state.P.shape[1]} nodes, {numba.config.NUMBA_NUM_THREADS} "
-          "CPU threads available")
-    for streamed in (False, True):
-        print("GPU row solve:", "streamed elimination" if streamed else "direct port")
-        state, opts, film_scale = cpu_state(args.state)
-        compare_one(state, GPUState(state, streamed))
-    state, opts, film_scale = cpu_state(args.state)
-    gpu = GPUState(state)
-    relax_both(state, gpu, opts, film_scale)
-    timings(state, gpu, GPUState(state, streamed=False))
+    print(f"{numba.config.NUMBA_NUM_THREADS} CPU threads available")
+    compare_one(args.state)
+    timings(args.state)
     one_step(args.state)
 
 

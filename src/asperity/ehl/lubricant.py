@@ -427,6 +427,21 @@ class Lubricant:
         h = np.asarray(h, order=order)
         sizes = (1, 1, 1, slopes, slopes, slopes and density_slope)
         out = [np.empty(p.shape if size else 0, order=order) for size in sizes]
+        flat = [a.ravel(order=order) for a in (p, h, *out)]
+        p_unit, h_unit, scale = (float(u) for u in units)
+        _flow_field(*flat[:2], (p_unit, h_unit, scale, scale * p_unit),
+                    *self.flow_law_parameters(sliding_speed), *flat[2:5], slopes, *flat[5:])
+        return tuple(out[:(6 if density_slope else 5) if slopes else 3])
+
+    def flow_law_parameters(self, sliding_speed: float) -> tuple:
+        """The laws of :meth:`flow_field` as numbers: ``(roelands, eta0, v1, v2, v3, gamma,
+        lam, shear)``.
+
+        ``roelands`` whether the viscosity is Roelands' (``v1 = ln(eta0/kappa)``, ``v2 =
+        chi``, ``v3 = Z``) or Barus' (``v1 = alpha``); ``gamma, lam`` Dowson-Higginson's
+        constants (0 incompressible); ``shear = |du|/tau0`` (0 Newtonian). For another
+        implementation of the same laws (``benchmarks/ehl_sweep_gpu.cu``).
+        """
         roelands = self.viscosity_model == "roelands"
         if roelands:
             v1 = math.log(self.viscosity / self.roelands_kappa)
@@ -435,11 +450,7 @@ class Lubricant:
             v1, v2, v3 = self.pressure_viscosity, 0.0, 0.0
         gamma, lam = (self.dh_gamma, self.dh_lambda) if self.compressible else (0.0, 0.0)
         shear = 0.0 if self.newtonian else abs(float(sliding_speed)) / self.eyring_stress
-        flat = [a.ravel(order=order) for a in (p, h, *out)]
-        p_unit, h_unit, scale = (float(u) for u in units)
-        _flow_field(*flat[:2], (p_unit, h_unit, scale, scale * p_unit), roelands,
-                    self.viscosity, v1, v2, v3, gamma, lam, shear, *flat[2:5], slopes, *flat[5:])
-        return tuple(out[:(6 if density_slope else 5) if slopes else 3])
+        return roelands, self.viscosity, v1, v2, v3, gamma, lam, shear
 
 
 def eyring_flow_factors(h, eta, rho, sliding_speed, tau0=None):

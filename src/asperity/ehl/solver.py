@@ -253,11 +253,17 @@ class EHLState:
         :meth:`asperity.ehl.lubricant.Lubricant.flow_field`, which takes the dimensionless
         fields and scales its results in its one pass over the nodes)."""
         prob = self.problem
-        lub = prob.lubricant
-        scale = 12.0 * lub.viscosity * prob.rx**3 / prob.a**6
-        return lub.flow_field(self.P, self.H, prob.sliding_speed, slopes=slopes,
-                              units=(prob.p_hertz, prob.film_scale, scale),
-                              density_slope=slopes)
+        return prob.lubricant.flow_field(self.P, self.H, prob.sliding_speed, slopes=slopes,
+                                         units=self.flow_units, density_slope=slopes)
+
+    @property
+    def flow_units(self) -> tuple[float, float, float]:
+        """The ``units`` of :meth:`Lubricant.flow_field` for the dimensionless fields: the
+        Hertz pressure, the film scale ``a^2/Rx`` and ``12 eta0 Rx^3 / a^6`` on the flow
+        factors (which makes them the dimensionless ``eps``)."""
+        prob = self.problem
+        return (prob.p_hertz, prob.film_scale,
+                12.0 * prob.lubricant.viscosity * prob.rx**3 / prob.a**6)
 
     def sweep(self, method: str):
         """One relaxation sweep (``"point"`` or ``"line"``); returns max |dP|, max |dH|.

@@ -200,13 +200,20 @@ class TimeStepper:
         self.mixer = AndersonMixer(options.acceleration) if options.acceleration else None
 
     def advance(self, phi) -> StepReport:
-        """One timestep to the dimensionless roughness ``phi`` of level n+1.
-
-        The explicit part of the theta-scheme comes from level n (the current state), then
-        the film moves with the surfaces (``H += phi - phi^n``, which keeps the deflection
-        equation's source consistent) and the step is relaxed (:meth:`relax`). The last
-        separation shift also moves the h = 0 contact nodes; they are put back to 0.
+        """One timestep to the dimensionless roughness ``phi`` of level n+1: the step set up
+        (:meth:`start_step`) and relaxed (:meth:`relax`). The last separation shift also
+        moves the h = 0 contact nodes; they are put back to 0.
         """
+        self.start_step(phi)
+        report = self.relax()
+        np.maximum(self.state.H, 0.0, out=self.state.H)
+        return report
+
+    def start_step(self, phi):
+        """Set up the step to the roughness ``phi`` of level n+1 from the current state
+        (level n): the explicit part of the theta-scheme, then the film moved with the
+        surfaces (``H += phi - phi^n``, which keeps the deflection equation's source
+        consistent)."""
         state = self.state
         ex, ey, rho = state.flow_coefficients()
         theta = self.options.theta
@@ -216,9 +223,6 @@ class TimeStepper:
             + self.mass * rho * state.H
         state.H += phi - state.roughness
         state.roughness = phi
-        report = self.relax()
-        np.maximum(state.H, 0.0, out=state.H)
-        return report
 
     def relax(self) -> StepReport:
         """Relax the current step to convergence by refresh cycles.
