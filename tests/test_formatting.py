@@ -114,6 +114,17 @@ def test_summary_rows_label_format_and_skip_lists():
     assert by_key["max_pressure_pa"].unit == "Pa"
 
 
+def test_a_quantity_given_twice_is_one_row():
+    """A transient run's summary has the contact time as a fraction and in percent; the CLI
+    and the report showed "contact time ... 0.4 %" twice. Different values stay two rows."""
+    rows = summary_rows({"contact_time_fraction": 0.004, "max_pressure_pa": 9.56e8,
+                         "contact_time_percent": 0.4})
+    assert [(r.label, r.text) for r in rows] == [("contact time", "0.4 %"),
+                                                 ("maximum pressure", "956 MPa")]
+    rows = summary_rows({"contact_time_fraction": 0.004, "contact_time_percent": 0.5})
+    assert [r.text for r in rows] == ["0.4 %", "0.5 %"]
+
+
 def test_unit_labels():
     assert unit_label("m2") == "m²"
     assert unit_label("ms-1") == "1/ms"

@@ -330,7 +330,8 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
 
     Values of keys ending in ``fraction`` are shown in percent. A value whose magnitude is at
     most :data:`NOISE` times the largest of the summary's values in the same unit is round-off
-    and shown as zero (``3.3e-13 N`` beside a load of 48 kN).
+    and shown as zero (``3.3e-13 N`` beside a load of 48 kN). A second key that reads the same
+    (label and value: ``contact_time_fraction`` beside ``contact_time_percent``) is shown once.
 
     Parameters
     ----------
@@ -350,12 +351,15 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
         unit = describe_key(key)[1]
         scale[unit] = max(scale.get(unit, 0.0), abs(value))
     rows = []
+    shown = set()
     for key, value in summary.items():
         if isinstance(value, dict | list | tuple) or value is None:
             continue
         label, unit = describe_key(key)
         text = format_summary_value(key, value, scale=scale.get(unit, 0.0), imperial=imperial)
-        rows.append(SummaryRow(key, label, unit_label(unit), text))
+        if (label, text) not in shown:
+            shown.add((label, text))
+            rows.append(SummaryRow(key, label, unit_label(unit), text))
     return rows
 
 
