@@ -95,3 +95,26 @@ def test_bad_transient_case_names_the_key(old, new, field):
     with pytest.raises(InputError) as exc:
         load_case(CASE.replace(old, new))
     assert str(exc.value).startswith(field), str(exc.value)
+
+
+def test_contact_map_without_contact_says_so():
+    """A run without contact drew an empty map with a 0..1e-9 colour scale; it now says that
+    there was no contact (and a run with contact keeps its scale)."""
+    from types import SimpleNamespace
+
+    from asperity.ehl import Lubricant, PointContact
+    from asperity.materials import STEEL
+    from asperity.plotting.ehl_transient import plot_contact_rate
+
+    problem = PointContact(0.0125, 0.0125, 15.0, 0.1, 0.1, STEEL, STEEL,
+                           Lubricant(viscosity=0.25, pressure_viscosity=20e-9))
+    x = np.linspace(-2.5, 1.5, 33) * problem.a
+    y = np.linspace(-2.0, 2.0, 17) * problem.b
+    none = SimpleNamespace(x=x, y=y, contact_count_rate=np.zeros((33, 17)))
+    fig = plot_contact_rate(none, problem)
+    assert len(fig.axes) == 1  # no colour bar
+    assert any("no contact" in t.get_text() for t in fig.axes[0].texts)
+    some = SimpleNamespace(x=x, y=y, contact_count_rate=np.zeros((33, 17)))
+    some.contact_count_rate[16, 8] = 3.0
+    fig = plot_contact_rate(some, problem)
+    assert len(fig.axes) == 2 and not fig.axes[0].texts

@@ -13,14 +13,22 @@ __all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
 
 def plot_contact_rate(result, problem):
     """Contours of the contact count rate Q/ms over x/a, y/a with the Hertz ellipse heavy
-    (Figs. 4-8)."""
+    (Figs. 4-8); without contact in the counting period, the words instead of an empty
+    scale."""
     xa, ya = result.x / problem.a, result.y / problem.a
     fig, ax = _map_figure(xa, ya)
     X, Y = np.meshgrid(xa, ya, indexing="ij")
     q = result.contact_count_rate
-    levels = MaxNLocator(10).tick_values(0.0, max(q.max(), 1e-9))
-    cs = ax.contourf(X, Y, q, levels=levels, cmap="Greys")
-    fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)", shrink=0.9)
+    if q.max() > 0.0:
+        levels = MaxNLocator(10).tick_values(0.0, q.max())
+        cs = ax.contourf(X, Y, q, levels=levels, cmap="Greys")
+        fig.colorbar(cs, ax=ax, label="contact count rate Q (1/ms)", shrink=0.9)
+    else:
+        ax.set_xlim(xa[0], xa[-1])
+        ax.set_ylim(ya[0], ya[-1])
+        ax.text(0.5, 0.5, "no contact in the counting period", transform=ax.transAxes,
+                ha="center", va="center", fontsize=9,
+                bbox={"facecolor": "white", "edgecolor": "0.6"})
     hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a, label="Hertz contact")
     ax.set_xlabel("x / a  (entrainment ->)")
     ax.set_ylabel("y / a")
