@@ -12,7 +12,7 @@ import xarray as xr
 
 from asperity.ehl.checkpoint import Checkpointer
 from asperity.errors import InputError
-from asperity.sweep import load_study, run_one, run_study
+from asperity.sweep import load_study, local_cluster, run_one, run_study
 
 BASE = """
 analysis = "normal"
@@ -99,14 +99,21 @@ def test_study_report_plots_results_against_the_axes_and_lists_cases(cross_study
     assert "6 of 6 cases done" in html
 
 
-def test_dask_two_workers_match_serial(tmp_path):
-    from dask.distributed import Client, LocalCluster
+def test_dask_two_workers_match_serial_and_share_the_cores(tmp_path):
+    """The local cluster of the command line: same numbers as a serial run, and each of two
+    workers on two cores runs numba on one thread, not two."""
+    from dask.distributed import Client
 
     study = _study(tmp_path, AXES)
     serial = run_study(study, tmp_path / "serial")
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster, Client(cluster) as client:
+    with local_cluster(2, cores=2) as cluster, Client(cluster) as client:
         parallel = run_study(study, tmp_path / "dask", client=client)
+
+        def pools():
+            import numba
+            return numba.config.NUMBA_NUM_THREADS, numba.get_num_threads()
+
+        assert set(client.run(pools).values()) == {(1, 1)}
     for key in ("max_pressure_pa", "contact_area_m2", "approach_m"):
         np.testing.assert_allclose(parallel[key], serial[key], rtol=1e-12)
 

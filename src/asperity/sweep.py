@@ -46,7 +46,8 @@ from .formatting import cf_units, describe_key
 from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
 
-__all__ = ["Study", "combine", "load_study", "run_one", "run_study"]
+__all__ = ["THREAD_VARIABLES", "Study", "combine", "load_study", "local_cluster", "run_one",
+           "run_study"]
 
 
 @dataclass(frozen=True)
@@ -235,6 +236,30 @@ def _status(folder: Path) -> dict | None:
         return json.loads((folder / "status.json").read_text(encoding="utf-8"))
     except (FileNotFoundError, json.JSONDecodeError):
         return None
+
+
+#: Environment variables that size the thread pools of numba, OpenMP and the BLAS libraries.
+THREAD_VARIABLES = ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS",
+                    "MKL_NUM_THREADS")
+
+
+def local_cluster(workers: int, cores: int | None = None):
+    """A Dask ``LocalCluster`` of ``workers`` single-threaded worker processes whose compiled
+    kernels share the machine's ``cores`` (default all) instead of each taking them all.
+
+    Each worker starts with its numba, OpenMP and BLAS thread pools at
+    ``max(1, cores // workers)`` (:data:`THREAD_VARIABLES`, set before the worker imports
+    them). Without that, two workers on two cores ran their parallel sweeps on two threads
+    each: four busy threads on two cores.
+    """
+    import os
+
+    from dask.distributed import LocalCluster
+
+    cores = (os.cpu_count() or 1) if cores is None else cores
+    threads = str(max(1, cores // workers))
+    return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                        dashboard_address=None, env=dict.fromkeys(THREAD_VARIABLES, threads))
 
 
 def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> xr.Dataset:

@@ -356,7 +356,7 @@ def sweep(
     import logging
 
     from ..report import study_status
-    from ..sweep import load_study, run_study
+    from ..sweep import load_study, local_cluster, run_study
     from .progress import progress_bar
 
     logging.getLogger("distributed").setLevel(logging.ERROR)
@@ -366,14 +366,13 @@ def sweep(
         if serial:
             ds = run_study(spec, out, progress=progress)
         else:
-            from dask.distributed import Client, LocalCluster
+            from dask.distributed import Client
 
             if scheduler:
                 with Client(scheduler) as client:
                     ds = run_study(spec, out, client=client, progress=progress)
             else:
-                with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, Client(cluster) as client:
+                with local_cluster(workers) as cluster, Client(cluster) as client:
                     ds = run_study(spec, out, client=client, progress=progress)
     _, line = study_status(ds)
     console.print(f"wrote {out / 'study.nc'}: {line} (report: {out / 'report.html'})",
