@@ -152,8 +152,9 @@ class StepHistory:
     ----------
     record : dict of ndarray
         Per step: ``max_pressure`` (Pa), ``min_film`` (m), ``sweeps``, ``refreshes`` (far-field
-        FFT refreshes), ``residuals``, ``step_converged``, ``load_errors``; NaN, 0 or False for
-        steps not done.
+        FFT refreshes), ``residuals``, ``step_converged``, ``load_errors``,
+        ``refresh_intervals`` (sweeps between refreshes at the step's end); NaN, 0 or False
+        for steps not done.
     centre : dict of ndarray
         ``centre_pressure``, ``centre_film``, ``centre_surface1``, ``centre_surface2`` along
         y = 0 at the snapshot steps, shape ``(len(snapshot_steps), nx)``.
@@ -166,7 +167,8 @@ class StepHistory:
                        "refreshes": np.zeros(steps, dtype=np.int64),
                        "residuals": np.full(steps, np.nan),
                        "step_converged": np.zeros(steps, dtype=bool),
-                       "load_errors": np.full(steps, np.nan)}
+                       "load_errors": np.full(steps, np.nan),
+                       "refresh_intervals": np.zeros(steps, dtype=np.int64)}
         self.centre = {name: np.full((self.snapshot_steps.size, nx), np.nan) for name in
                        ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
 
@@ -181,6 +183,7 @@ class StepHistory:
         self.record["residuals"][n] = report.residual
         self.record["step_converged"][n] = report.converged
         self.record["load_errors"][n] = report.load_error
+        self.record["refresh_intervals"][n] = report.refresh
 
     def wants_snapshot(self, step: int) -> bool:
         """Whether the centre line of step ``step`` is kept."""
@@ -198,7 +201,7 @@ class StepHistory:
 
     def restore(self, arrays):
         """Set the records from :meth:`arrays` output; a checkpoint without the refresh
-        counts (written before they were recorded) leaves them at 0."""
+        counts or intervals (written before they were recorded) leaves them at 0."""
         for name, values in (*self.record.items(), *self.centre.items()):
             if name in arrays:
                 values[...] = arrays[name]
