@@ -37,6 +37,9 @@ def _paths(data, prefix=()):
 def mutated_cases(draw):
     name = draw(st.sampled_from([e.name for e in list_examples() if not e.long_running]))
     case = copy.deepcopy(parse_toml(example_text(name)))
+    if case.get("analysis") == "ehl-transient":  # also where the example leaves them out
+        case.setdefault("grid", {})
+        case.setdefault("time", {})
     if isinstance(case.get("grid"), dict):  # small grids, so that valid cases really run
         case["grid"].update(nx=16, ny=16)
     if isinstance(case.get("time"), dict):  # and few time steps

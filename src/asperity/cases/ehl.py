@@ -333,6 +333,12 @@ class EHLGridSpec(CaseModel):
             data[nodes_key] = min(round(span * cells), 10**6) + 1
         return data
 
+    @property
+    def nodes_given(self) -> bool:
+        """True when the table sets the mesh (``nx``, ``ny``, ``cells_per_a`` or
+        ``cells_per_b``); otherwise the analysis chooses it for the contact."""
+        return bool({"nx", "ny"} & self.model_fields_set)
+
     def nodes(self, line: bool) -> tuple[int, int]:
         """(nx, ny) of the solve; ny = 1 for a line contact."""
         return self.nx, 1 if line else self.ny
@@ -431,7 +437,7 @@ class EHLSteadyCase(EHLCaseBase):
     def regime_nodes(self) -> bool:
         """True when no node count is given (no [grid] table, or one that sets only the
         domain): the mesh is the problem's default mesh on the domain, not 129 x 65 nodes."""
-        return not {"nx", "ny"} & self.grid.model_fields_set
+        return not self.grid.nodes_given
 
     def solve_options(self, problem) -> dict:
         """``nx``, ``ny``, ``domain`` and ``levels`` for :func:`asperity.ehl.solve_steady`

@@ -30,6 +30,7 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..ehl.transient import FEATURE_CELLS_ACROSS, FEATURE_CELLS_ALONG, default_warmup_steps
 from ..errors import InputError
 from ..surfaces.recipe import build_surface
 from .ehl import EHLCaseBase, EHLGridSpec
@@ -77,8 +78,9 @@ class MovingSurfaceSpec(SurfaceKeys):
     half_width: Quantity("length", gt=0) | None = None
     """Radius of the dent or bump, half-width along x of the ridge (kind = "feature")."""
     lead: Quantity("length", ge=0) | None = None
-    """Distance of the feature's centre upstream of the inlet at the start (default: its
-    half-width, so that it enters at once)."""
+    """Distance of the feature's centre upstream of the inlet at the start of the run (default:
+    its half-width plus the distance the surface travels in the warm-up, so that it enters
+    when counting starts)."""
 
     @model_validator(mode="after")
     def _required(self):
@@ -87,12 +89,20 @@ class MovingSurfaceSpec(SurfaceKeys):
                          "feature": ("feature", "amplitude", "half_width")})
         return self
 
-    def build(self, length: float, spacing: float, y: np.ndarray, dx: float):
+    def feature_lead(self, warmup_travel: float = 0.0) -> float:
+        """Distance (m) of the feature's centre upstream of the inlet at the start of the run:
+        ``lead``, or by default the half-width plus ``warmup_travel``, the distance the surface
+        moves in the warm-up."""
+        return self.half_width + warmup_travel if self.lead is None else self.lead
+
+    def build(self, length: float, spacing: float, y: np.ndarray, dx: float,
+              warmup_travel: float = 0.0):
         """The surface (Profile, Topography or None), at least ``length`` m long along x.
 
         Built by :func:`asperity.surfaces.recipe.build_surface` on cells of ``spacing`` m;
         ``dx`` is the mesh spacing (of ``lowpass``), ``y`` the mesh's cell centres across x (of
         a dent, a bump or a transverse waviness). None for a smooth surface without waviness.
+        A feature is placed by :meth:`feature_lead` of ``warmup_travel`` (m).
         """
         if self.kind == "smooth" and self.waviness is None:
             return None
@@ -100,20 +110,27 @@ class MovingSurfaceSpec(SurfaceKeys):
         if self.kind == "feature":
             # the surface enters the inlet end first: its last cell centre arrives at t = 0
             end = (np.ceil(length / spacing) - 0.5) * spacing
-            lead = self.half_width if self.lead is None else self.lead
-            changes["position"] = max(end - lead, 0.0)
+            changes["position"] = max(end - self.feature_lead(warmup_travel), 0.0)
         return build_surface(surface_recipe(self, **changes), length, spacing, y=y)
 
 
 class TimeSpec(CaseModel):
-    """``[time]``: ``counting_steps`` after ``warmup_steps`` (default: until the slower rough
-    surface has crossed the domain); ``dt`` (default the seed's dx / (2 u_max)); ``snapshots``
-    centre-line snapshots spread over the counting period (Figs. 3, 10)."""
+    """``[time]``: ``counting_steps`` after ``warmup_steps``; ``dt`` (default the seed's
+    dx / (2 u_max)); ``snapshots`` centre-line snapshots spread over the counting period
+    (Figs. 3, 10).
 
-    counting_steps: Annotated[int, Field(ge=1, le=100_000)] = 200
-    """Time steps over which contacts and films are counted."""
+    The defaults follow the surfaces (:meth:`EHLTransientCase.steps`): rough surfaces warm up
+    until the slower one has crossed the domain (the seed) and count 200 steps; a single
+    feature (dent, bump, ridge) enters when counting starts and is counted until it, and the
+    film change it makes, have crossed the domain.
+    """
+
+    counting_steps: Annotated[int, Field(ge=1, le=100_000)] | None = None
+    """Time steps over which contacts and films are counted (default 200, or with a feature
+    the steps of its passage through the domain)."""
     warmup_steps: Annotated[int, Field(ge=0, le=100_000)] | None = None
-    """Steps before counting (default: until the slower rough surface has crossed the domain)."""
+    """Steps before counting (default: until the slower rough surface has crossed the domain;
+    a feature does not count as rough here)."""
     dt: Quantity("time", gt=0) | None = None
     """Time step (default the seed's dx / (2 u_max))."""
     snapshots: Annotated[int, Field(ge=1, le=50)] = 4
@@ -160,7 +177,9 @@ class EHLTransientCase(EHLCaseBase):
     long_running: bool = False
     """Marks a case that runs for many minutes (listed as such by asperity examples)."""
     grid: EHLGridSpec = EHLGridSpec()
-    """Mesh and domain (in Hertz semi-axes)."""
+    """Mesh and domain (in Hertz semi-axes). Without a [grid] table the domain follows the
+    contact (inlet from Hamrock-Dowson's fully flooded distance) and without node counts the
+    mesh follows the film and the surfaces' features (:meth:`mesh`)."""
     surface1: MovingSurfaceSpec = MovingSurfaceSpec()
     """Roughness of surface 1."""
     surface2: MovingSurfaceSpec = MovingSurfaceSpec()
@@ -172,14 +191,109 @@ class EHLTransientCase(EHLCaseBase):
     paper_contact_time_percent: Annotated[float, Field(ge=0, le=100)] | None = None
     """Published percentage of time with contact, compared in the report."""
 
+    def feature_spacing(self) -> tuple[float | None, float | None]:
+        """Largest mesh spacing (m) along x and across y that the surfaces' features ask for
+        (None: no feature): a dent's, bump's or ridge's half-width over
+        :data:`~asperity.ehl.transient.FEATURE_CELLS_ALONG` along x and (dent, bump)
+        :data:`~asperity.ehl.transient.FEATURE_CELLS_ACROSS` across; a waviness's wavelength
+        over twice ``FEATURE_CELLS_ALONG`` along its direction."""
+        along, across = [], []
+        for spec in (self.surface1, self.surface2):
+            if spec.kind == "feature":
+                along.append(spec.half_width / FEATURE_CELLS_ALONG)
+                if spec.feature != "ridge":
+                    across.append(spec.half_width / FEATURE_CELLS_ACROSS)
+            if spec.waviness is not None:
+                wave = spec.waviness
+                (along if wave.direction == "x" else across).append(
+                    wave.wavelength / (2 * FEATURE_CELLS_ALONG))
+        return min(along, default=None), min(across, default=None)
+
+    def mesh(self, problem) -> tuple[int, int, tuple]:
+        """``(nx, ny, domain)`` of the run, domain in m.
+
+        The domain is the [grid] table's, or without one the problem's
+        :meth:`~asperity.ehl.PointContact.default_domain`. The nodes are the table's, or
+        without ``nx``/``ny`` the problem's
+        :meth:`~asperity.ehl.PointContact.default_nodes` with the spacing the features ask
+        for (:meth:`feature_spacing`): the steady default mesh where there is no feature.
+        """
+        line = self.contact.line
+        if "grid" in self.model_fields_set:
+            domain = self.grid.domain(problem.a, None if line else problem.b)
+        else:
+            domain = problem.default_domain()
+        if self.grid.nodes_given:
+            nx, ny = self.grid.nodes(line)
+        else:
+            max_dx, max_dy = self.feature_spacing()
+            nx, ny = problem.default_nodes(domain, max_dx=max_dx, max_dy=max_dy)
+        return nx, ny, domain
+
+    def steps(self, problem, x: np.ndarray, dt: float) -> tuple[int, int]:
+        """``(warmup_steps, counting_steps)`` on the mesh ``x`` (m) with timestep ``dt`` (s).
+
+        Given values are kept. By default the warm-up lasts until the slower surface with
+        roughness (not a single feature) has crossed the domain
+        (:func:`asperity.ehl.transient.default_warmup_steps`; 0 without one), and counting
+        lasts 200 steps, or with a feature until the slowest feature and the film change it
+        makes have crossed the domain: its trailing edge over the length of the domain plus
+        its distance upstream at the start of counting, at the lesser of its surface's speed
+        and the mean speed (with sliding the film change travels at the mean speed;
+        tests/test_ehl_features.py).
+        """
+        surfaces = ((self.surface1, problem.u1), (self.surface2, problem.u2))
+        warmup = self.time.warmup_steps
+        if warmup is None:
+            rough = [u for spec, u in surfaces
+                     if spec.kind not in ("smooth", "feature") or spec.waviness is not None]
+            warmup = default_warmup_steps(x, rough, dt)
+        counting = self.time.counting_steps
+        if counting is None:
+            passages = []
+            for spec, u in surfaces:
+                if spec.kind == "feature":
+                    travel = u * warmup * dt
+                    upstream = spec.feature_lead(travel) - travel
+                    distance = x[-1] - x[0] + upstream + spec.half_width
+                    passages.append(int(np.ceil(distance / (min(u, problem.mean_speed) * dt))))
+            counting = max(passages, default=200)
+        return warmup, counting
+
+    def surfaces(self, problem, x: np.ndarray, y: np.ndarray, warmup: int, total: int,
+                 dt: float):
+        """The two surfaces (Profile, Topography or None) of a run of ``total`` steps of
+        ``dt`` s on the mesh ``x``, ``y`` (m): long enough to feed the whole run (at least the
+        built-in profiles' own 5 mm, so that short runs use the standard realisation) and
+        sampled at a quarter of the mesh spacing (0.5 um at most); a feature placed by
+        :meth:`MovingSurfaceSpec.feature_lead` to enter when counting starts after ``warmup``
+        steps."""
+        dx = x[1] - x[0]
+        spacing = min(0.5e-6, dx / 4)
+        out = []
+        for spec, u in ((self.surface1, problem.u1), (self.surface2, problem.u2)):
+            length = max(5e-3, abs(u) * dt * total + (x[-1] - x[0]) + 20 * dx)
+            travel = abs(u) * dt * warmup
+            if spec.kind == "feature":
+                length = max(length, spec.feature_lead(travel) + 2 * spec.half_width)
+            out.append(spec.build(length, spacing, y, dx, warmup_travel=travel))
+        return out
+
     @model_validator(mode="after")
     def _consistent(self):
         line = self.contact.line
         if line and "ny" in self.grid.model_fields_set and self.grid.ny != 1:
             raise ValueError("expected grid.ny = 1 (or no ny) for a line contact")
-        nx, ny = self.grid.nodes(line)
+        try:
+            problem = self.problem()
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
+        nx, ny, _ = self.mesh(problem)
         if nx * ny > 801 * 201 * 4:
-            raise ValueError(f"expected at most {801 * 201 * 4} nodes, got {nx * ny}")
+            chosen = "" if self.grid.nodes_given else (
+                f" (the default mesh {nx} x {ny} for the contact's film and the surfaces' "
+                "features; set grid.nx and grid.ny)")
+            raise ValueError(f"expected at most {801 * 201 * 4} nodes, got {nx * ny}{chosen}")
         u1, u2 = self.speeds.surface_speeds()
         for k, (spec, u) in enumerate(((self.surface1, u1), (self.surface2, u2)), start=1):
             rough = spec.kind != "smooth" or spec.waviness is not None
@@ -192,8 +306,4 @@ class EHLTransientCase(EHLCaseBase):
             if line and spec.waviness is not None and spec.waviness.direction == "y":
                 raise ValueError(f"expected no transverse waviness on surface{k} of a line "
                                  "contact")
-        try:
-            self.problem()
-        except InputError as exc:
-            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
         return self

@@ -295,7 +295,8 @@ class PointContact(_Contact):
         half_y = block * math.ceil(half_y / block - 1e-9)
         return (-inlet * self.a, OUTLET * self.a), (-half_y, half_y)
 
-    def default_nodes(self, domain=None) -> tuple[int, int]:
+    def default_nodes(self, domain=None, *, max_dx: float | None = None,
+                      max_dy: float | None = None) -> tuple[int, int]:
         """Default mesh (nx, ny) on ``domain`` (default :meth:`default_domain`).
 
         Across ``dY = b/10`` (40 cells on the default domain of an ellipse with ``k >= 1/2``),
@@ -304,15 +305,26 @@ class PointContact(_Contact):
         made the x-line relaxation diverge (docs/ehl-robustness.md); finer where needed to keep
         ``dY <= MAX_CELL_ASPECT dX``: on cells 32 times longer than wide the relaxation
         diverged for long ellipses at large Moes L (k = 5, M = 1000 and 3000, L = 19).
-        Along x ``dX = 1/``:meth:`cells_per_a`, refined to ``dX <= b/30`` when ``b < a`` so
-        that both hold. ``nx - 1`` and ``ny - 1`` are multiples of 8.
+        Along x ``dX = 1/n`` with ``n`` the power of two of :meth:`cells_per_a`, refined to
+        ``dX <= b/30`` when ``b < a`` so that both hold. ``nx - 1`` and ``ny - 1`` are
+        multiples of 8.
+
+        ``max_dx`` and ``max_dy`` (m) are spacings a surface feature asks for (a transient
+        run's dent, bump or waviness: :meth:`asperity.cases.EHLTransientCase.feature_spacing`):
+        ``n`` is raised to ``dX <= max_dx`` and to ``MIN_CELL_ASPECT dX <= max_dy``, and
+        ``dY <= max_dy`` (the transient relaxation needs the same cell shape: a bump through
+        a ball-on-disc contact failed on cells with ``dY = 2 dX`` at ``a/64``,
+        docs/ehl-transient.md, "The default mesh of a transient case").
         """
         (x0, x1), (y0, y1) = _check_domain(
             self.default_domain() if domain is None else domain, self.a, self.b)
-        n = max(self.cells_per_a(), int(2 ** np.ceil(np.log2(30.0 * self.a / self.b))))
-        dx = self.a / n
+        need = max(self.cells_per_a(), 30.0 * self.a / self.b,
+                   self.a / max_dx if max_dx else 1.0,
+                   MIN_CELL_ASPECT * self.a / max_dy if max_dy else 1.0)
+        dx = self.a / int(2 ** np.ceil(np.log2(need)))
         nx = 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1
-        cells = min(8 * np.ceil((y1 - y0) / (0.8 * self.b)),
+        dy = min(0.1 * self.b, max_dy) if max_dy else 0.1 * self.b
+        cells = min(8 * np.ceil((y1 - y0) / (8 * dy)),
                     8 * np.floor((y1 - y0) / (8 * MIN_CELL_ASPECT * dx)))
         cells = max(cells, 8 * np.ceil((y1 - y0) / (8 * MAX_CELL_ASPECT * dx)))
         return nx, int(max(cells, 16)) + 1
@@ -404,12 +416,15 @@ class LineContact(_Contact):
         the seed's -2.5a..1.5a when the fully flooded inlet lies within 2.5 a."""
         return (-self.inlet_extent() * self.a, OUTLET * self.a), (0.0, 0.0)
 
-    def default_nodes(self, domain=None) -> tuple[int, int]:
-        """Default mesh (nx, 1) on ``domain``: ``dX = 1/``:meth:`cells_per_a`, ``nx - 1`` a
-        multiple of 8."""
+    def default_nodes(self, domain=None, *, max_dx: float | None = None,
+                      max_dy: float | None = None) -> tuple[int, int]:
+        """Default mesh (nx, 1) on ``domain``: ``dX = 1/``:meth:`cells_per_a`, refined by
+        powers of two to ``dx <= max_dx`` (m; a ridge's, as for a point contact), ``nx - 1``
+        a multiple of 8; ``max_dy`` is not used."""
         (x0, x1), _ = _check_domain(
             self.default_domain() if domain is None else domain, self.a, None)
-        dx = self.a / self.cells_per_a()
+        need = max(self.cells_per_a(), self.a / max_dx if max_dx else 1.0)
+        dx = self.a / int(2 ** np.ceil(np.log2(need)))
         return 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1, 1
 
     def grid(self, nx: int, ny: int = 1, domain=None):

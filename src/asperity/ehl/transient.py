@@ -39,7 +39,7 @@ the deflection equation as its 5-point Laplacian and the Dirichlet edge films.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -54,7 +54,16 @@ from .solver import solve_steady
 from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
 from .stepper import StepOptions, TimeStepper
 
-__all__ = ["TransientResult", "default_warmup_steps", "solve_transient"]
+__all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "TransientResult",
+           "default_warmup_steps", "solve_transient"]
+
+#: Mesh cells per half-width of a single feature along x (the rolling direction) and across
+#: y that a case's default mesh gives it (:meth:`asperity.ehl.PointContact.default_nodes`
+#: with :meth:`asperity.cases.EHLTransientCase.feature_spacing`); a waviness gets twice as
+#: many along its direction per wavelength. Measured on a bump through a ball-on-disc
+#: contact (docs/ehl-transient.md, "The default mesh of a transient case").
+FEATURE_CELLS_ALONG = 8
+FEATURE_CELLS_ACROSS = 3
 
 class MovingSurface:
     """A rough surface entering the domain at the inlet and moving along +x at ``speed``.
@@ -154,9 +163,11 @@ class TransientResult(SolverResult):
         Steps at which the centre line was recorded.
     centre_pressure, centre_film, centre_surface1, centre_surface2 : ndarray
         p, h, z1, z2 along y = 0 at those steps, shape ``(len(snapshot_steps), x.size)``.
-    sweeps, refreshes, residuals, step_converged, load_errors : ndarray
+    sweeps, refreshes, residuals, step_converged, load_errors, refresh_intervals : ndarray
         Per step: relaxation sweeps, far-field FFT refreshes, final residual, convergence flag,
-        relative load error.
+        relative load error, sweeps between refreshes the step ended with (below the one set
+        from a step that had to be relaxed again:
+        :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -199,6 +210,7 @@ class TransientResult(SolverResult):
     residuals: np.ndarray
     step_converged: np.ndarray
     load_errors: np.ndarray
+    refresh_intervals: np.ndarray
     iterations: int
     converged: bool
     residual: float
@@ -288,8 +300,8 @@ def solve_transient(
     roughness1=None,
     roughness2=None,
     *,
-    nx: int = 129,
-    ny: int = 65,
+    nx: int | None = None,
+    ny: int | None = None,
     domain=None,
     dt: float | None = None,
     counting_steps: int = 200,
@@ -322,8 +334,11 @@ def solve_transient(
     roughness1, roughness2 : Profile, Topography or None
         Heights of each surface (metal below); a profile varies along x and is extruded across
         y (transverse ground). None: smooth. A line contact takes profiles only.
-    nx, ny : int
+    nx, ny : int, optional
         Nodes along x and y (``ny`` ignored for a line contact); the seed's mesh is 801 x 201.
+        Default ``problem.default_nodes(domain)``, the steady default mesh (the surfaces'
+        features are not looked at: a case file's ``[surface]`` tables are,
+        :meth:`asperity.cases.EHLTransientCase.mesh`).
     domain : ((x0, x1), (y0, y1)), optional
         In m; default ``problem.default_domain()``.
     dt : float, optional
@@ -347,10 +362,14 @@ def solve_transient(
         Per-step convergence: max |dP|, max |dH| relative to the estimated central film, and
         the relative load error below ``tol`` on the first sweep after a far-field refresh.
     max_iter : int
-        Sweep limit per step; a step reaching it is recorded as not converged (the old
-        spelling ``max_sweeps`` is accepted with a DeprecationWarning).
+        Sweep limit per relaxation of a step; a step reaching it is recorded as not converged
+        (the old spelling ``max_sweeps`` is accepted with a DeprecationWarning). With
+        ``refresh > 1`` such a step is first relaxed again from its start with a refresh at
+        every sweep (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take twice
+        as many.
     refresh : int
-        Sweeps between FFT refreshes of the far field and the edge films.
+        Sweeps between FFT refreshes of the far field and the edge films; 1 from the first
+        step that does not converge with it (``refresh_intervals`` of the result).
     acceleration : int, optional
         Memory of the Anderson acceleration of the refresh cycles
         (:class:`~asperity.ehl.anderson.AndersonMixer`); 0 switches it off. Default 3 with
@@ -397,6 +416,10 @@ def solve_transient(
     line = isinstance(problem, LineContact)
     counting_steps = check_int("counting_steps", counting_steps, 1)
     checkpoint_every = check_int("checkpoint_every", checkpoint_every, 1)
+    if nx is None or (ny is None and not line):
+        default = problem.default_nodes(domain)
+        nx = default[0] if nx is None else nx
+        ny = default[1] if ny is None else ny
     if line:
         ny = 1
     x, y = problem.grid(nx, ny, domain)
@@ -461,6 +484,9 @@ def solve_transient(
         steady_hc = float(arrays["steady_central_film"])
         stats.restore(arrays)
         history.restore(arrays)
+        interval = int(history.record["refresh_intervals"][start - 1]) if start else 0
+        if 0 < interval < opts.refresh:  # a step before the checkpoint was relaxed again
+            stepper.options = replace(opts, refresh=interval)
     else:
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,

@@ -24,7 +24,6 @@ from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
-from ..ehl.transient import default_warmup_steps
 from ..results import Comparison, Outcome, variable, write_netcdf
 from .ehl_steady import ehl_warnings
 
@@ -32,18 +31,6 @@ __all__ = ["CHECKPOINTS", "run"]
 
 #: This runner takes ``workdir`` and ``resume`` (see :func:`asperity.runners.run_case`).
 CHECKPOINTS = True
-
-
-def _surfaces(case, problem, x, y, total_steps, dt):
-    """The two surfaces, long enough to feed the whole run, sampled finer than the mesh."""
-    dx = x[1] - x[0]
-    spacing = min(0.5e-6, dx / 4)
-    out = []
-    for spec, u in ((case.surface1, problem.u1), (case.surface2, problem.u2)):
-        # at least the built-in profiles' own 5 mm, so short runs use the standard realisation
-        length = max(5e-3, abs(u) * dt * total_steps + (x[-1] - x[0]) + 20 * dx)
-        out.append(spec.build(length, spacing, y, dx))
-    return out
 
 
 def _dataset(case, problem, res) -> xr.Dataset:
@@ -71,6 +58,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "sweeps": variable("step", res.sweeps, "1", "relaxation sweeps per step"),
         "step_converged": variable("step", res.step_converged.astype("i1"), "1",
                                    "step converged (1) or not (0)"),
+        "refresh_interval": variable("step", res.refresh_intervals, "1",
+                                     "relaxation sweeps between far-field refreshes"),
         "film_counts": variable("film_bin", res.film_counts, "1",
                                 "film thickness histogram over the counting period"),
         "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
@@ -115,18 +104,13 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     """Run the transient case; checkpoint into ``workdir`` when given."""
     problem = case.problem()
     line = isinstance(problem, LineContact)
-    nx, ny = case.grid.nodes(line)
-    domain = case.grid.domain(problem.a, None if line else problem.b)
+    nx, ny, domain = case.mesh(problem)
     x, y = problem.grid(nx, ny, domain)
     u_max = max(abs(problem.u1), abs(problem.u2))
     dt = case.time.dt if case.time.dt is not None else 0.5 * (x[1] - x[0]) / u_max
-    warmup = case.time.warmup_steps
-    if warmup is None:  # the solver's rule, needed here for the snapshot steps
-        rough = [u for spec, u in ((case.surface1, problem.u1), (case.surface2, problem.u2))
-                 if spec.kind != "smooth" or spec.waviness is not None]
-        warmup = default_warmup_steps(x, rough, dt)
-    total = warmup + case.time.counting_steps
-    rough1, rough2 = _surfaces(case, problem, x, y, total, dt)
+    warmup, counting = case.steps(problem, x, dt)
+    total = warmup + counting
+    rough1, rough2 = case.surfaces(problem, x, y, warmup, total, dt)
     snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
     checkpoint = None if workdir is None else Path(workdir) / "checkpoint.npz"
 
@@ -143,7 +127,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
         res = solve_transient(
             problem, rough1, rough2, nx=nx, ny=ny, domain=domain, dt=dt,
-            counting_steps=case.time.counting_steps, warmup_steps=warmup,
+            counting_steps=counting, warmup_steps=warmup,
             theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
             max_iter=case.solver.max_sweeps, refresh=case.solver.refresh,
             acceleration=case.solver.acceleration, damping=case.solver.damping,
@@ -170,6 +154,12 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         notes.append(f"{bad} of {res.steps_done} steps did not reach the tolerance "
                      f"{case.solver.tolerance:g} within {case.solver.max_sweeps} sweeps; the "
                      "statistics include them.")
+    lowered = np.flatnonzero((res.refresh_intervals[:res.steps_done] > 0)
+                             & (res.refresh_intervals[:res.steps_done] < case.solver.refresh))
+    if lowered.size:
+        notes.append(f"Step {lowered[0] + 1} did not converge with the far field refreshed every "
+                     f"{case.solver.refresh} sweeps; it and the later steps were relaxed with a "
+                     "refresh at every sweep (the sweeps of both tries are counted).")
     from ..plotting import ehl_transient as plots
 
     last = res.snapshot_steps.size - 1
@@ -188,12 +178,13 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, res.steady_central_film)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps)
-    trust += _roughness_warnings(case, problem, x, y, total, dt, (rough1, rough2))
+    trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
+    trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
                    converged=res.converged, notes=notes, warnings=trust)
 
 
-def _roughness_warnings(case, problem, x, y, total, dt, surfaces) -> list[str]:
+def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> list[str]:
     """Roughness the mesh cannot resolve, or that ``lowpass`` removed, per surface."""
     dx = x[1] - x[0]
     specs = (case.surface1, case.surface2)
@@ -201,7 +192,7 @@ def _roughness_warnings(case, problem, x, y, total, dt, surfaces) -> list[str]:
     if any(spec.lowpass > 0 for spec in specs):
         unfiltered = {f"surface{k}": spec.model_copy(update={"lowpass": 0.0})
                       for k, spec in enumerate(specs, 1)}
-        raw = _surfaces(case.model_copy(update=unfiltered), problem, x, y, total, dt)
+        raw = case.model_copy(update=unfiltered).surfaces(problem, x, y, warmup, total, dt)
     lines = []
     for k, (spec, surf, before) in enumerate(zip(specs, surfaces, raw, strict=True), 1):
         if surf is None:
@@ -212,4 +203,30 @@ def _roughness_warnings(case, problem, x, y, total, dt, surfaces) -> list[str]:
         else:
             lines += diagnostics.unresolved_roughness(f"surface{k}", surf.z,
                                                       surf.x[1] - surf.x[0], dx)
+    return lines
+
+
+def _feature_warnings(case, problem, x, y, warmup, total, dt) -> list[str]:
+    """A single feature the mesh does not resolve, or whose passage through the Hertz zone
+    the counting period does not cover."""
+    dx = x[1] - x[0]
+    dy = y[1] - y[0] if y.size > 1 else None
+    lines = []
+    for k, (spec, u) in enumerate(((case.surface1, problem.u1), (case.surface2, problem.u2)),
+                                  start=1):
+        label = f"surface{k}"
+        if spec.waviness is not None:
+            along = spec.waviness.direction == "x"
+            lines += diagnostics.unresolved_feature(
+                label, "waviness half-wavelength", spec.waviness.wavelength / 2,
+                dx if along else None, None if along else dy)
+        if spec.kind != "feature":
+            continue
+        lines += diagnostics.unresolved_feature(
+            label, f"{spec.feature} half-width", spec.half_width, dx,
+            None if spec.feature == "ridge" else dy)
+        start = x[0] - spec.feature_lead(u * warmup * dt) + u * warmup * dt
+        lines += diagnostics.feature_passage(label, spec.feature, start,
+                                             start + u * (total - warmup) * dt, problem.a,
+                                             u * dt, warmup, total - warmup)
     return lines

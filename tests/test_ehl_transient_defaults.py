@@ -1,0 +1,200 @@
+"""Default mesh and time steps of a transient case written without [grid] or [time].
+
+docs/ehl-transient.md, "The default mesh of a transient case": the mesh follows the film
+(as a steady case's does) and a single feature (10 cells per half-width along x, 5 across on
+the bump example); a feature enters when counting starts and is counted until it has crossed
+the domain. A mesh or counting period chosen in the case file that misses the feature is
+reported with the setting that would not.
+"""
+
+import numpy as np
+import pytest
+import tomllib
+
+from asperity import diagnostics
+from asperity.cases import load_case
+from asperity.ehl import Lubricant, PointContact
+from asperity.ehl.transient import solve_transient
+from asperity.errors import InputError
+from asperity.examples import example_text
+from asperity.materials import Material
+from asperity.runners import run_case
+
+STEEL = Material(210e9, 0.3)
+
+
+def _bump(**changes):
+    """The bump example with tables replaced or added (``{"grid": {...}}``)."""
+    data = tomllib.loads(example_text("bump-ball-on-disc"))
+    for table, keys in changes.items():
+        data[table] = {**data.get(table, {}), **keys}
+    return load_case(data)
+
+
+def _run_setup(case):
+    problem = case.problem()
+    nx, ny, domain = case.mesh(problem)
+    x, y = problem.grid(nx, ny, domain)
+    dt = 0.5 * (x[1] - x[0]) / max(problem.u1, problem.u2)
+    warmup, counting = case.steps(problem, x, dt)
+    return problem, x, y, dt, warmup, counting
+
+
+def test_without_a_feature_the_mesh_is_the_steady_default_mesh():
+    """A transient case without [grid] node counts and without a feature runs on the mesh its
+    steady case would: the film's spacing along x (the gear case's H_c = 0.105 asks for a/64:
+    5 dX^2/H_c is 4.6 % at a/32 against the 2 % aimed at), b/10 across within
+    3 dX <= dY <= 16 dX. The former fixed 129 x 65 (a/32) is what a thin film got and what
+    the film-mesh check rejected."""
+    case = _bump(surface2={"kind": "smooth"})
+    problem = case.problem()
+    nx, ny, domain = case.mesh(problem)
+    assert (nx, ny) == problem.default_nodes(domain)
+    film = problem.film_estimate() / problem.film_scale
+    x, y = problem.grid(nx, ny, domain)
+    assert diagnostics.ehl_film_mesh(x, problem.a, film) == []
+    assert diagnostics.ehl_film_mesh(problem.grid(129, 65, domain)[0], problem.a, film) != []
+    gear = PointContact(0.0191, 0.151, 962.0, 28.125, 21.875, STEEL, STEEL,
+                        Lubricant(0.005, 11.1e-9, eyring_stress=10e6))
+    gx, gy = gear.grid(*gear.default_nodes())
+    assert gear.a / (gx[1] - gx[0]) == pytest.approx(64)
+
+
+def test_feature_spacing_refines_the_default_mesh_keeping_the_cell_shape():
+    """dX <= w/8, dY <= w/3 for a bump of half-width w, and dY >= 3 dX (on flatter cells the
+    relaxation of the bump case failed); the mesh without the feature is coarser."""
+    case = _bump()
+    problem = case.problem()
+    nx, ny, domain = case.mesh(problem)
+    x, y = problem.grid(nx, ny, domain)
+    dx, dy = x[1] - x[0], y[1] - y[0]
+    w = case.surface2.half_width
+    assert w / dx >= 8 and w / dy >= 3 - 0.2     # the cells come in blocks of 8
+    assert dy >= 3 * dx
+    assert nx * ny > np.prod(problem.default_nodes(domain))
+
+
+def test_bump_without_grid_or_time_is_resolved_and_counted_through():
+    case = _bump()
+    problem, x, y, dt, warmup, counting = _run_setup(case)
+    w = case.surface2.half_width
+    assert warmup == 0
+    u = problem.u2
+    start = x[0] - case.surface2.feature_lead()
+    assert start == pytest.approx(x[0] - w)          # enters at once
+    end = start + u * counting * dt
+    assert end >= x[-1] + w                         # and has left the domain at the end
+    assert diagnostics.feature_passage("surface2", "bump", start, end, problem.a, u * dt,
+                                       warmup, counting) == []
+    assert diagnostics.unresolved_feature("surface2", "bump half-width", w, x[1] - x[0],
+                                          y[1] - y[0]) == []
+
+
+def test_short_counting_period_is_reported_with_the_steps_that_cover_it():
+    case = _bump(time={"counting_steps": 400})
+    problem, x, y, dt, warmup, counting = _run_setup(case)
+    u = problem.u2
+    start = x[0] - case.surface2.feature_lead()
+
+    def passage(steps):
+        return diagnostics.feature_passage("surface2", "bump", start, start + u * steps * dt,
+                                           problem.a, u * dt, warmup, steps)
+
+    (line,) = passage(counting)
+    needed = int(line.split("time.counting_steps >= ")[1].split()[0])
+    assert needed > counting
+    assert passage(needed) == []
+    assert passage(needed - 2) != []
+
+
+def test_rough_surface_and_feature_warm_up_then_the_feature_enters():
+    """Roughness on surface 1 warms up as the seed's does; the bump on surface 2 is placed to
+    enter when counting starts, not to pass during the warm-up."""
+    case = _bump(surface1={"kind": "builtin", "profile": "C"})
+    problem, x, y, dt, warmup, counting = _run_setup(case)
+    assert warmup == int(np.ceil((x[-1] - x[0]) / (problem.u1 * dt) - 1e-9))
+    travel = problem.u2 * warmup * dt
+    assert case.surface2.feature_lead(travel) - travel == pytest.approx(
+        case.surface2.half_width)
+
+
+def test_a_coarse_mesh_for_the_feature_is_reported():
+    w = 20e-6
+    (line,) = diagnostics.unresolved_feature("surface2", "bump half-width", w, w / 3, w)
+    assert "along x" in line and "along y" in line and "nx" in line and "ny" in line
+    assert diagnostics.unresolved_feature("surface2", "ridge half-width", w, w / 5) == []
+
+
+def test_a_feature_too_small_for_the_node_limit_asks_for_a_mesh():
+    with pytest.raises(InputError, match="grid.nx"):
+        _bump(surface2={"half_width": "0.5 um"})
+
+
+def test_feature_case_runs_with_default_mesh_and_steps():
+    """A ridge through the dent examples' ball-on-disc contact in rolling, no [grid] or [time]:
+    the contact's own domain (inlet at 3.5 a) at a/32 (the film and the ridge ask for no
+    more), every step converged, the ridge's whole passage counted, no warning about it."""
+    case = load_case({
+        "analysis": "ehl-transient", "reduced_modulus": "230.8 GPa",
+        "contact": {"type": "point", "rx": "12.5 mm", "ry": "12.5 mm", "load": "15 N"},
+        "speeds": {"u": "0.1 m/s", "xi": 0.0},
+        "lubricant": {"eta0": "0.25 Pa s", "alpha": "20 1/GPa", "viscosity_model": "barus",
+                      "density_model": "incompressible"},
+        "surface1": {"kind": "feature", "feature": "ridge", "amplitude": "0.1 um",
+                     "half_width": "32 um"}})
+    outcome = run_case(case)
+    data = outcome.dataset
+    a = outcome.summary["hertz_a_m"]
+    x = data["x"].values
+    assert x[0] == pytest.approx(-3.5 * a, rel=0.02) and x[1] - x[0] <= a / 32
+    assert data.attrs["warmup_steps"] == 0 and outcome.converged
+    assert not [w for w in outcome.warnings if "ridge" in w]
+    # the ridge passed through the Hertz zone: the largest pressure rose above the smooth
+    # contact's, and is back to it at the end
+    p_max = data["max_pressure"].values
+    assert p_max.max() > 1.1 * p_max[0]
+    assert p_max[-1] == pytest.approx(p_max[0], rel=0.01)
+
+
+@pytest.fixture(scope="module")
+def smooth_fine():
+    """The bump example's contact in rolling, smooth, on 129 x 129 nodes (a/32 x b/32): with
+    a refresh every 3 sweeps its steady solution diverged at step 6 (docs/ehl-transient.md)."""
+    problem = _bump(speeds={"xi": 0.0}).problem()
+    return problem, problem.default_domain()
+
+
+def test_a_step_that_diverges_is_relaxed_again_with_a_refresh_every_sweep(smooth_fine):
+    problem, domain = smooth_fine
+    res = solve_transient(problem, nx=129, ny=129, domain=domain, warmup_steps=0,
+                          counting_steps=10, max_iter=100)
+    assert res.converged and np.all(res.step_converged)
+    lowered = np.flatnonzero(res.refresh_intervals == 1)
+    assert lowered.size and np.all(res.refresh_intervals[:lowered[0]] == 3)
+    assert np.all(res.refresh_intervals[lowered[0]:] == 1)
+    assert res.sweeps[lowered[0]] > 100                 # both tries counted
+    # smooth surfaces: the solution stays the steady one
+    assert res.max_pressure[-1] == pytest.approx(res.max_pressure[0], rel=1e-3)
+
+
+def test_resume_after_the_refresh_was_lowered_is_bit_identical(tmp_path, smooth_fine):
+    problem, domain = smooth_fine
+    args = dict(nx=129, ny=129, domain=domain, warmup_steps=0, counting_steps=10, max_iter=100)
+    whole = solve_transient(problem, **args)
+    first = int(np.flatnonzero(whole.refresh_intervals == 1)[0]) + 1
+    path = tmp_path / "run.npz"
+
+    class Killed(Exception):
+        pass
+
+    def kill(step, residual):
+        if step == first + 2:
+            raise Killed
+
+    with pytest.raises(Killed):
+        solve_transient(problem, checkpoint=path, checkpoint_every=first + 1, callback=kill,
+                        **args)
+    resumed = solve_transient(problem, checkpoint=path, checkpoint_every=first + 1,
+                              resume=True, **args)
+    for name in ("pressure", "film", "sweeps", "refresh_intervals", "max_pressure"):
+        np.testing.assert_array_equal(getattr(resumed, name), getattr(whole, name))
