@@ -38,8 +38,7 @@ def run(case, nx: int, ny: int) -> dict:
     dt = 0.5 * (x[1] - x[0]) / max(problem.u1, problem.u2)
     warmup, counting = case.steps(problem, x, dt)
     surfaces = case.surfaces(problem, x, y, warmup, warmup + counting, dt)
-    spec, u = next((s, v) for s, v in ((case.surface1, problem.u1), (case.surface2, problem.u2))
-                   if s.kind == "feature")
+    _, spec, start, step = case.feature_tracks(problem, x, dt, warmup)[0]
     steps = np.arange(warmup + 1, warmup + counting + 1)
     start = time.perf_counter()
     res = solve_transient(problem, *surfaces, nx=nx, ny=ny, domain=domain, dt=dt,
@@ -47,8 +46,7 @@ def run(case, nx: int, ny: int) -> dict:
     wall = time.perf_counter() - start
     a = problem.a
     inside = np.abs(res.x) < a
-    t = res.snapshot_steps * dt
-    centre = x[0] - spec.feature_lead(u * warmup * dt) + u * t   # the feature's centre
+    centre = start + res.snapshot_steps * step   # the feature's centre
     film_at_0 = np.array([np.interp(0.0, res.x, h) for h in res.centre_film])
     return {"dx": x[1] - x[0], "dy": y[1] - y[0] if y.size > 1 else np.nan,
             "half_width": spec.half_width,

@@ -118,3 +118,21 @@ def test_contact_map_without_contact_says_so():
     some.contact_count_rate[16, 8] = 3.0
     fig = plot_contact_rate(some, problem)
     assert len(fig.axes) == 2 and not fig.axes[0].texts
+
+
+def test_surfaces_are_drawn_facing_each_other():
+    """A bump on surface 2 points up at surface 1, a bump on surface 1 down at surface 2 (the
+    seed's "contact configuration"; drawn the other way a bump looked like a dent)."""
+    import matplotlib.pyplot as plt
+
+    from asperity.plotting.ehl_transient import surfaces_below
+
+    x = np.linspace(-2.0, 2.0, 81)
+    bump = 0.05e-6 * np.exp(-(x / 0.2) ** 2)
+    fig, ax = plt.subplots()
+    surfaces_below(ax, x, np.full_like(x, 0.1), bump, bump)
+    upper, lower = (line.get_ydata() for line in ax.get_lines())
+    plt.close(fig)
+    assert upper.mean() > lower.mean()
+    assert np.argmin(upper) == np.argmax(lower) == 40
+    assert upper[40] < upper[0] and lower[40] > lower[0]

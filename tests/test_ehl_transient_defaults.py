@@ -154,6 +154,9 @@ def test_feature_case_runs_with_default_mesh_and_steps():
     p_max = data["max_pressure"].values
     assert p_max.max() > 1.1 * p_max[0]
     assert p_max[-1] == pytest.approx(p_max[0], rel=0.01)
+    # the centre-line figure shows the ridge at the centre: one snapshot has it at x = 0
+    crest = x[np.argmax(data["centre_surface1"].values, axis=1)]
+    assert np.min(np.abs(crest)) <= x[1] - x[0]
 
 
 @pytest.fixture(scope="module")

@@ -260,6 +260,18 @@ class EHLTransientCase(EHLCaseBase):
             counting = max(passages, default=200)
         return warmup, counting
 
+    def feature_tracks(self, problem, x: np.ndarray, dt: float, warmup: int) -> list:
+        """``(label, spec, start, step)`` per single-feature surface: its centre's position
+        (m) at the start of the run and the distance (m) it moves per step, placed as
+        :meth:`surfaces` places it (the centre at step k is ``start + k step``)."""
+        tracks = []
+        for k, (spec, u) in enumerate(((self.surface1, problem.u1), (self.surface2, problem.u2)),
+                                      start=1):
+            if spec.kind == "feature":
+                tracks.append((f"surface{k}", spec,
+                               x[0] - spec.feature_lead(u * warmup * dt), u * dt))
+        return tracks
+
     def surfaces(self, problem, x: np.ndarray, y: np.ndarray, warmup: int, total: int,
                  dt: float):
         """The two surfaces (Profile, Topography or None) of a run of ``total`` steps of

@@ -74,9 +74,11 @@ def plot_centre_line(result, problem, index=-1, offset=None):
 def surfaces_below(ax, x, film_um, z1, z2, offset=None):
     """Draw surfaces 1 and 2 (heights in m) below the film on ``ax``, offset for clarity.
 
-    Surface 1 at ``-gap + z1``, surface 2 mirrored at ``-2 gap - z2`` (facing it, as in the
-    seed's Figs. 3 and 10), ``gap`` (um) 1.5 times the larger relief unless given; the y
-    limits leave room for the film over ``|x| <= 1`` (x in units of a).
+    In their contact configuration, offset for clarity (the seed's Figs. 3 and 10): surface 1
+    above, mirrored at ``-gap - z1`` so that its asperities point down, surface 2 below at
+    ``-2 gap + z2``, its asperities pointing up at surface 1; ``gap`` (um) 1.5 times the
+    larger relief unless given. The y limits leave room for the film over ``|x| <= 1`` (x in
+    units of a).
     """
     inside = np.abs(x) <= 1.0
     h_contact = max(float(np.nanmax(film_um[inside])) if inside.any() else 0.0, 0.25)
@@ -84,8 +86,8 @@ def surfaces_below(ax, x, film_um, z1, z2, offset=None):
     z2 = z2 * 1e6
     relief = max(float(np.ptp(z1)), float(np.ptp(z2)), h_contact)
     gap = offset if offset is not None else 1.5 * relief
-    ax.plot(x, -gap + z1, color="tab:gray", lw=0.8)
-    ax.plot(x, -2.0 * gap - z2, color="tab:gray", lw=0.8)
+    ax.plot(x, -gap - z1, color="tab:gray", lw=0.8)
+    ax.plot(x, -2.0 * gap + z2, color="tab:gray", lw=0.8)
     ax.set_ylim(-2.0 * gap - 1.2 * relief, 3.0 * h_contact)
     ax.set_ylabel("film; surfaces below, offset (um)")
 

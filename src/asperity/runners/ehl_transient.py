@@ -112,6 +112,12 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     total = warmup + counting
     rough1, rough2 = case.surfaces(problem, x, y, warmup, total, dt)
     snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
+    shown = snaps[-1]  # the centre-line figure's step: the last, or a feature at x = 0
+    tracks = case.feature_tracks(problem, x, dt, warmup)
+    if tracks:
+        _, _, start, step = tracks[0]
+        shown = int(np.clip(np.rint(-start / step), warmup + 1, total))
+        snaps = np.union1d(snaps, [shown])
     checkpoint = None if workdir is None else Path(workdir) / "checkpoint.npz"
 
     def callback(step, residual):
@@ -162,13 +168,14 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
                      "refresh at every sweep (the sweeps of both tries are counted).")
     from ..plotting import ehl_transient as plots
 
-    last = res.snapshot_steps.size - 1
+    shown_index = int(np.flatnonzero(res.snapshot_steps == shown)[0])
     rate_plot = plots.plot_contact_rate_line if line else plots.plot_contact_rate
     figures = {
         "contact_count_rate": (lambda: rate_plot(res, problem),
                                "Contact count rate Q per ms over the contact (Figs. 4-8)."),
-        "centre_line": (lambda: plots.plot_centre_line(res, problem, last),
-                        "Pressure and film on y = 0 with the two surfaces below (Fig. 3)."),
+        "centre_line": (lambda: plots.plot_centre_line(res, problem, shown_index),
+                        "Pressure and film on y = 0 with the two surfaces below (Fig. 3)"
+                        + (", the feature at the centre." if shown != snaps[-1] else ".")),
         "film_histogram": (lambda: plots.plot_film_histogram(res),
                            "Film thickness distribution over the counting period."),
     }
@@ -212,21 +219,17 @@ def _feature_warnings(case, problem, x, y, warmup, total, dt) -> list[str]:
     dx = x[1] - x[0]
     dy = y[1] - y[0] if y.size > 1 else None
     lines = []
-    for k, (spec, u) in enumerate(((case.surface1, problem.u1), (case.surface2, problem.u2)),
-                                  start=1):
-        label = f"surface{k}"
+    for k, spec in enumerate((case.surface1, case.surface2), start=1):
         if spec.waviness is not None:
             along = spec.waviness.direction == "x"
             lines += diagnostics.unresolved_feature(
-                label, "waviness half-wavelength", spec.waviness.wavelength / 2,
+                f"surface{k}", "waviness half-wavelength", spec.waviness.wavelength / 2,
                 dx if along else None, None if along else dy)
-        if spec.kind != "feature":
-            continue
+    for label, spec, start, step in case.feature_tracks(problem, x, dt, warmup):
         lines += diagnostics.unresolved_feature(
             label, f"{spec.feature} half-width", spec.half_width, dx,
             None if spec.feature == "ridge" else dy)
-        start = x[0] - spec.feature_lead(u * warmup * dt) + u * warmup * dt
-        lines += diagnostics.feature_passage(label, spec.feature, start,
-                                             start + u * (total - warmup) * dt, problem.a,
-                                             u * dt, warmup, total - warmup)
+        lines += diagnostics.feature_passage(label, spec.feature, start + warmup * step,
+                                             start + total * step, problem.a, step, warmup,
+                                             total - warmup)
     return lines
