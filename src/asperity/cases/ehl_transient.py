@@ -242,21 +242,19 @@ class EHLTransientCase(EHLCaseBase):
         and the mean speed (with sliding the film change travels at the mean speed;
         tests/test_ehl_features.py).
         """
-        surfaces = ((self.surface1, problem.u1), (self.surface2, problem.u2))
         warmup = self.time.warmup_steps
         if warmup is None:
-            rough = [u for spec, u in surfaces
+            rough = [u for spec, u in ((self.surface1, problem.u1), (self.surface2, problem.u2))
                      if spec.kind not in ("smooth", "feature") or spec.waviness is not None]
             warmup = default_warmup_steps(x, rough, dt)
         counting = self.time.counting_steps
         if counting is None:
             passages = []
-            for spec, u in surfaces:
-                if spec.kind == "feature":
-                    travel = u * warmup * dt
-                    upstream = spec.feature_lead(travel) - travel
-                    distance = x[-1] - x[0] + upstream + spec.half_width
-                    passages.append(int(np.ceil(distance / (min(u, problem.mean_speed) * dt))))
+            for _, spec, start, step in self.feature_tracks(problem, x, dt, warmup):
+                # from the centre's place when counting starts until the trailing edge has left
+                distance = x[-1] + spec.half_width - (start + warmup * step)
+                passages.append(int(np.ceil(distance / (min(step / dt, problem.mean_speed)
+                                                        * dt))))
             counting = max(passages, default=200)
         return warmup, counting
 

@@ -218,14 +218,15 @@ class TimeStepper:
         """
         self.start_step(phi)
         state = self.state
-        before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy())
+        retry = self.options.refresh > 1
+        before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy()) if retry else None
         report = self.relax()
-        if not report.converged and self.options.refresh > 1:
+        if retry and not report.converged:
             state.P, state.H, state.H0, state.kind = before
             self.options = replace(self.options, refresh=1)
-            retry = self.relax()
-            report = retry._replace(sweeps=report.sweeps + retry.sweeps,
-                                    refreshes=report.refreshes + retry.refreshes)
+            again = self.relax()
+            report = again._replace(sweeps=report.sweeps + again.sweeps,
+                                    refreshes=report.refreshes + again.refreshes)
         np.maximum(self.state.H, 0.0, out=self.state.H)
         return report
 

@@ -113,10 +113,10 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     rough1, rough2 = case.surfaces(problem, x, y, warmup, total, dt)
     snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
     shown = snaps[-1]  # the centre-line figure's step: the last, or a feature at x = 0
-    tracks = case.feature_tracks(problem, x, dt, warmup)
-    if tracks:
-        _, _, start, step = tracks[0]
-        shown = int(np.clip(np.rint(-start / step), warmup + 1, total))
+    centred = [int(np.rint(-start / step))
+               for _, _, start, step in case.feature_tracks(problem, x, dt, warmup)]
+    if centred and warmup < centred[0] <= total:
+        shown = centred[0]
         snaps = np.union1d(snaps, [shown])
     checkpoint = None if workdir is None else Path(workdir) / "checkpoint.npz"
 
@@ -220,11 +220,12 @@ def _feature_warnings(case, problem, x, y, warmup, total, dt) -> list[str]:
     dy = y[1] - y[0] if y.size > 1 else None
     lines = []
     for k, spec in enumerate((case.surface1, case.surface2), start=1):
-        if spec.waviness is not None:
+        if spec.waviness is not None:  # a sine along its direction, judged as x is
             along = spec.waviness.direction == "x"
             lines += diagnostics.unresolved_feature(
                 f"surface{k}", "waviness half-wavelength", spec.waviness.wavelength / 2,
-                dx if along else None, None if along else dy)
+                dx if along else None, None if along else dy,
+                min_across=diagnostics.FEATURE_MIN_CELLS_ALONG)
     for label, spec, start, step in case.feature_tracks(problem, x, dt, warmup):
         lines += diagnostics.unresolved_feature(
             label, f"{spec.feature} half-width", spec.half_width, dx,
