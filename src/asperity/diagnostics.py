@@ -725,8 +725,10 @@ def lowpass_removed(label: str, raw, filtered, cutoff: float) -> list[str]:
             "the mesh and lower lowpass to keep that roughness"]
 
 
-#: Fewest mesh cells per half-width of a single surface feature along x and across y (per
-#: half-wavelength of a waviness) before the mesh is reported coarse for it. The bump of
+#: Fewest mesh cells per half-width of a single surface feature along x and across y before
+#: the mesh is reported coarse for it (a waviness: per half-wavelength, the x limit in its
+#: direction; at 3.2 nodes per wavelength across the seed's transverse waviness was too
+#: coarse, docs/ehl-transient.md, "Paper conclusions at the reduced resolution"). The bump of
 #: docs/ehl-transient.md ("The default mesh of a transient case") at 5.1 cells along x had
 #: its film and largest pressure 1.1-1.9 % off those at 20.4 (second order: about 3 % at 4
 #: cells), and at 1.6 cells across within 0.8 % of those at 3.2.
@@ -759,17 +761,22 @@ def unresolved_feature(label: str, what: str, size: float, dx: float, dy: float 
     """
     coarse = []
     if dx is not None and size / dx < min_along:
-        coarse.append(("x", size / dx, min_along, dx, "nx"))
+        coarse.append(("x", size / dx, min_along, dx))
     if dy is not None and size / dy < min_across:
-        coarse.append(("y", size / dy, min_across, dy, "ny"))
+        coarse.append(("y", size / dy, min_across, dy))
     if not coarse:
         return []
     spans = " and ".join(f"{cells:.2g} cells of {step * 1e6:.3g} um along {axis} (limit "
-                         f"{limit:g})" for axis, cells, limit, step, _ in coarse)
-    keys = " and ".join(f"{key} for {2 * limit:g} cells" for _, _, limit, _, key in coarse)
+                         f"{limit:g})" for axis, cells, limit, step in coarse)
+    # twice the limit, and across y with dx <= dy / MIN_CELL_ASPECT (flatter cells fail)
+    target = {axis: size / (2 * limit) for axis, _, limit, _ in coarse}
+    if "y" in target:
+        target["x"] = min(target.get("x", np.inf), target["y"] / MIN_CELL_ASPECT,
+                          dx if dx is not None else np.inf)
+    advice = " and ".join(f"d{axis} <= {value * 1e6:.3g} um" for axis, value in target.items())
     return [f"{label}: the {what} {size * 1e6:.3g} um spans {spans}, so the film and pressure "
-            f"it causes depend on the mesh; raise {keys} (or leave out [grid] nx, ny: the "
-            "default mesh follows the feature)"]
+            f"it causes depend on the mesh; set nx, ny for {advice} (or leave out [grid] nx, "
+            "ny: the default mesh follows the feature)"]
 
 
 def feature_passage(label: str, feature: str, start: float, end: float, a: float,
