@@ -65,7 +65,7 @@ def _amplitude_ratio(M, L, nabla, nx=151):
     """A_d/A_i of one-sided waviness: film amplitude at X = 0 over one period (Venner 1997)."""
     prob = moes_line(M, L)
     domain = ((-3.0 * prob.a, 1.5 * prob.a), (0.0, 0.0))
-    st = solve_steady(prob, nx=nx, domain=domain, tol=1e-7, max_iter=50000)
+    st = solve_steady(prob, nx=nx, domain=domain, tol=1e-5, max_iter=50000)  # the step's tol
     wavelength = nabla * prob.a * L**0.5 / M**0.75
     amplitude = 0.05 * st.central_film
     dt = 0.5 * 4.5 * prob.a / (nx - 1) / prob.u1
