@@ -38,15 +38,15 @@ def run(case, nx: int, ny: int) -> dict:
     dt = 0.5 * (x[1] - x[0]) / max(problem.u1, problem.u2)
     warmup, counting = case.steps(problem, x, dt)
     surfaces = case.surfaces(problem, x, y, warmup, warmup + counting, dt)
-    _, spec, start, step = case.feature_tracks(problem, x, dt, warmup)[0]
+    _, spec, lead, travel = case.feature_tracks(problem, x, dt, warmup)[0]
     steps = np.arange(warmup + 1, warmup + counting + 1)
-    start = time.perf_counter()
+    clock = time.perf_counter()
     res = solve_transient(problem, *surfaces, nx=nx, ny=ny, domain=domain, dt=dt,
                           warmup_steps=warmup, counting_steps=counting, snapshot_steps=steps)
-    wall = time.perf_counter() - start
+    wall = time.perf_counter() - clock
     a = problem.a
     inside = np.abs(res.x) < a
-    centre = start + res.snapshot_steps * step   # the feature's centre
+    centre = lead + res.snapshot_steps * travel   # the feature's centre
     film_at_0 = np.array([np.interp(0.0, res.x, h) for h in res.centre_film])
     return {"dx": x[1] - x[0], "dy": y[1] - y[0] if y.size > 1 else np.nan,
             "half_width": spec.half_width,

@@ -193,11 +193,31 @@ def test_a_step_that_diverges_is_relaxed_again_with_a_refresh_every_sweep(smooth
     assert res.max_pressure[-1] == pytest.approx(res.max_pressure[0], rel=1e-3)
 
 
-def test_resume_after_the_refresh_was_lowered_is_bit_identical(tmp_path, smooth_fine):
+def test_a_step_that_fails_with_a_refresh_every_sweep_is_relaxed_again_with_half_the_gain(
+        smooth_fine):
+    # a load gain 32 times the default makes the load loop overshoot: step 4 does not
+    # converge in 100 sweeps; with half the gain it does, and so do the later steps
     problem, domain = smooth_fine
-    args = dict(nx=129, ny=129, domain=domain, warmup_steps=0, counting_steps=10, max_iter=100)
+    res = solve_transient(problem, nx=129, ny=129, domain=domain, warmup_steps=0,
+                          counting_steps=10, max_iter=100, refresh=1, load_gain=4.8)
+    assert res.converged and np.all(res.step_converged)
+    halved = np.flatnonzero(res.load_gains < 4.8)
+    assert halved.size and np.all(res.load_gains[halved[0]:] == 2.4)
+    assert np.all(res.load_gains[:halved[0]] == 4.8)
+    assert res.sweeps[halved[0]] > 100                  # both tries counted
+    assert res.max_pressure[-1] == pytest.approx(res.max_pressure[0], rel=1e-3)
+
+
+@pytest.mark.parametrize("settings, lowered", [
+    ({}, "refresh_intervals"), ({"refresh": 1, "load_gain": 4.8}, "load_gains")])
+def test_resume_after_the_settings_were_lowered_is_bit_identical(tmp_path, smooth_fine,
+                                                                  settings, lowered):
+    problem, domain = smooth_fine
+    args = dict(nx=129, ny=129, domain=domain, warmup_steps=0, counting_steps=10, max_iter=100,
+                **settings)
     whole = solve_transient(problem, **args)
-    first = int(np.flatnonzero(whole.refresh_intervals == 1)[0]) + 1
+    values = getattr(whole, lowered)
+    first = int(np.flatnonzero(values < values[0])[0]) + 1
     path = tmp_path / "run.npz"
 
     class Killed(Exception):
@@ -212,5 +232,22 @@ def test_resume_after_the_refresh_was_lowered_is_bit_identical(tmp_path, smooth_
                         **args)
     resumed = solve_transient(problem, checkpoint=path, checkpoint_every=first + 1,
                               resume=True, **args)
-    for name in ("pressure", "film", "sweeps", "refresh_intervals", "max_pressure"):
+    for name in ("pressure", "film", "sweeps", lowered, "max_pressure"):
         np.testing.assert_array_equal(getattr(resumed, name), getattr(whole, name))
+
+
+def test_report_names_the_step_whose_load_gain_was_halved(tmp_path):
+    """A case's ``[solver] load_gain`` too large for the smooth contact on 129 x 129 nodes: the
+    report names the first step relaxed again with half of it, and result.nc carries the gain
+    of every step."""
+    case = _bump(surface2={"kind": "smooth"}, speeds={"xi": 0.0},
+                 grid={"nx": 129, "ny": 129},
+                 time={"warmup_steps": 0, "counting_steps": 10},
+                 solver={"refresh": 1, "max_sweeps": 100, "load_gain": 4.8})
+    outcome = run_case(case, workdir=tmp_path)
+    gains = outcome.dataset["load_gain"].values
+    first = int(np.flatnonzero(gains < 4.8)[0])
+    assert outcome.converged and np.all(gains[first:] == 2.4)
+    assert [n for n in outcome.notes
+            if n.startswith(f"Step {first + 1} did not converge with the load gain 4.8")
+            and "with 2.4" in n]

@@ -141,10 +141,10 @@ class TransientSolverSpec(CaseModel):
     """``[solver]``: per-step options of :func:`asperity.ehl.solve_transient`: tolerance and
     sweep limit per step, far-field refresh interval, the memory of the Anderson acceleration
     of the refresh cycles (0: off; default 3 with line relaxation, off with the point update),
-    relaxation method, time-scheme weight
-    ``theta``, the oscillation ``damping`` of the nodal update, the film below which a node
-    counts as in contact (``contact_film``; default the tolerance times the central film) and
-    the checkpoint interval."""
+    relaxation method, time-scheme weight ``theta``, the oscillation ``damping`` of the nodal
+    update, the ``load_gain``, the film below which a node counts as in contact
+    (``contact_film``; default the tolerance times the central film) and the checkpoint
+    interval."""
 
     tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-4
     """Relative convergence tolerance per time step."""
@@ -161,6 +161,9 @@ class TransientSolverSpec(CaseModel):
     """Weight of the time scheme (0.5 Crank-Nicolson, 1 implicit Euler)."""
     damping: Annotated[float, Field(gt=0, le=1.0)] = 0.7
     """Oscillation damping of the nodal update."""
+    load_gain: Annotated[float, Field(gt=0, le=10.0)] | None = None
+    """Separation shift per sweep per relative load error (default 0.15 min(1, b/a) for a point
+    contact, 0.03 for a line contact); halved for a step that does not converge."""
     contact_film: Quantity("length", ge=0) | None = None
     """Film below which a node counts as in contact (default the tolerance times the central film).
     """

@@ -126,8 +126,8 @@ class StepReport(NamedTuple):
 
     ``sweeps`` and ``refreshes`` count the finest-grid relaxation sweeps and the far-field
     FFT refreshes the step took (a retried step's included); ``load_error`` is the relative
-    load error after the last sweep; ``refresh`` the sweeps between refreshes the step ended
-    with (:meth:`TimeStepper.advance`).
+    load error after the last sweep; ``refresh`` and ``load_gain`` the sweeps between
+    refreshes and the load gain the step ended with (:meth:`TimeStepper.advance`).
     """
 
     converged: bool
@@ -136,6 +136,7 @@ class StepReport(NamedTuple):
     refreshes: int
     load_error: float
     refresh: int
+    load_gain: float
 
 
 def reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
@@ -188,6 +189,9 @@ class TimeStepper:
         :meth:`advance`.
     """
 
+    #: Most halvings of the load gain for steps that do not converge (:meth:`advance`).
+    GAIN_HALVINGS = 2
+
     def __init__(self, problem, x, y, options: StepOptions, dt: float, film_scale: float):
         self.problem = problem
         self.options = options
@@ -200,35 +204,60 @@ class TimeStepper:
         self.mass = self.state.lam / (dt * problem.mean_speed / problem.a)
         self.film_scale = film_scale
         self.mixer = AndersonMixer(options.acceleration) if options.acceleration else None
+        #: Times the load gain has been halved for a step that did not converge.
+        self.halvings = 0
 
     def advance(self, phi) -> StepReport:
         """One timestep to the dimensionless roughness ``phi`` of level n+1: the step set up
         (:meth:`start_step`) and relaxed (:meth:`relax`). The last separation shift also
         moves the h = 0 contact nodes; they are put back to 0.
 
-        A step that does not converge with the far field refreshed every ``refresh > 1``
-        sweeps is relaxed again from its start with a refresh at every sweep, and so are the
-        later steps (``options.refresh`` becomes 1). The separation shifted at every sweep
-        against a far field lagged over several sweeps can grow into an oscillation of the
-        load and of the pressure at the outlet constriction on fine meshes: a smooth
-        ball-on-disc contact (Moes M = 208, L = 9.5) diverged from its steady solution at
-        a/64 x b/32 and a/128 x b/44 with a refresh every 3 sweeps and converged in 3-9
-        sweeps per step with one at every sweep (docs/ehl-transient.md, "The default mesh
-        of a transient case").
+        A step that does not converge is relaxed again from its start with safer settings,
+        which the later steps keep: first with the far field refreshed at every sweep (when
+        ``refresh > 1``), then with the load gain halved, at most ``GAIN_HALVINGS`` times.
+        The separation shifted at every sweep against a far field lagged over several
+        sweeps can grow into an oscillation of the load and of the pressure at the outlet
+        constriction on fine meshes: a smooth ball-on-disc contact (Moes M = 208, L = 9.5)
+        diverged from its steady solution at a/64 x b/32 and a/128 x b/44 with a refresh
+        every 3 sweeps and converged in 3-9 sweeps per step with one at every sweep; the same
+        contact with a bump diverged on cells of a/128 by 3.2 a/128 at step 736 of 1843 with
+        a refresh at every sweep and the gain 0.15, and converged at every step with 0.075
+        (docs/ehl-transient.md, "The default mesh and time steps of a transient case").
         """
         self.start_step(phi)
         state = self.state
-        retry = self.options.refresh > 1
-        before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy()) if retry else None
+        before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy()) \
+            if self.can_retry else None
         report = self.relax()
-        if retry and not report.converged:
-            state.P, state.H, state.H0, state.kind = before
-            self.options = replace(self.options, refresh=1)
+        while not report.converged and self.can_retry:
+            state.P, state.H, state.H0, state.kind = (before[0].copy(), before[1].copy(),
+                                                      before[2], before[3].copy())
+            if self.options.refresh > 1:
+                self.options = replace(self.options, refresh=1)
+            else:
+                self.options = replace(self.options, load_gain=self.options.load_gain / 2)
+                self.halvings += 1
             again = self.relax()
             report = again._replace(sweeps=report.sweeps + again.sweeps,
                                     refreshes=report.refreshes + again.refreshes)
         np.maximum(self.state.H, 0.0, out=self.state.H)
         return report
+
+    def resume_settings(self, refresh: int, load_gain: float):
+        """Take up the refresh interval and load gain a checkpointed step ended with
+        (:class:`StepReport`); 0 or NaN (a checkpoint written before they were recorded)
+        leaves the option as it is."""
+        if 0 < refresh < self.options.refresh:
+            self.options = replace(self.options, refresh=refresh)
+        if np.isfinite(load_gain) and load_gain < self.options.load_gain:
+            self.halvings = round(np.log2(self.options.load_gain / load_gain))
+            self.options = replace(self.options, load_gain=load_gain)
+
+    @property
+    def can_retry(self) -> bool:
+        """Whether a step that fails can be relaxed again with safer settings
+        (:meth:`advance`)."""
+        return self.options.refresh > 1 or self.halvings < self.GAIN_HALVINGS
 
     def start_step(self, phi):
         """Set up the step to the roughness ``phi`` of level n+1 from the current state
@@ -275,7 +304,7 @@ class TimeStepper:
 
         def report(converged, residual):
             return StepReport(converged, residual, sweeps, state.refreshes - refreshes_before,
-                              load_err, refresh)
+                              load_err, refresh, opts.load_gain)
 
         while sweeps < max_sweeps:
             if sweeps >= max_sweeps // 4:

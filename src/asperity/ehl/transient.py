@@ -39,7 +39,7 @@ the deflection equation as its 5-point Laplacian and the Dirichlet edge films.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -163,10 +163,12 @@ class TransientResult(SolverResult):
         Steps at which the centre line was recorded.
     centre_pressure, centre_film, centre_surface1, centre_surface2 : ndarray
         p, h, z1, z2 along y = 0 at those steps, shape ``(len(snapshot_steps), x.size)``.
-    sweeps, refreshes, residuals, step_converged, load_errors, refresh_intervals : ndarray
+    sweeps, refreshes, residuals, step_converged, load_errors : ndarray
         Per step: relaxation sweeps, far-field FFT refreshes, final residual, convergence flag,
-        relative load error, sweeps between refreshes the step ended with (below the one set
-        from a step that had to be relaxed again:
+        relative load error.
+    refresh_intervals, load_gains : ndarray
+        Per step: sweeps between far-field refreshes and load gain the step ended with (below
+        the ones set from a step that had to be relaxed again:
         :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
     iterations : int
         Relaxation sweeps over all steps.
@@ -211,6 +213,7 @@ class TransientResult(SolverResult):
     step_converged: np.ndarray
     load_errors: np.ndarray
     refresh_intervals: np.ndarray
+    load_gains: np.ndarray
     iterations: int
     converged: bool
     residual: float
@@ -363,10 +366,11 @@ def solve_transient(
         the relative load error below ``tol`` on the first sweep after a far-field refresh.
     max_iter : int
         Sweep limit per relaxation of a step; a step reaching it is recorded as not converged
-        (the old spelling ``max_sweeps`` is accepted with a DeprecationWarning). With
-        ``refresh > 1`` such a step is first relaxed again from its start with a refresh at
-        every sweep (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take twice
-        as many.
+        (the old spelling ``max_sweeps`` is accepted with a DeprecationWarning). Such a step
+        is first relaxed again from its start with a refresh at every sweep (when
+        ``refresh > 1``) and then with the load gain halved, up to twice
+        (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take four times as
+        many.
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films; 1 from the first
         step that does not converge with it (``refresh_intervals`` of the result).
@@ -484,9 +488,9 @@ def solve_transient(
         steady_hc = float(arrays["steady_central_film"])
         stats.restore(arrays)
         history.restore(arrays)
-        interval = int(history.record["refresh_intervals"][start - 1]) if start else 0
-        if 0 < interval < opts.refresh:  # a step before the checkpoint was relaxed again
-            stepper.options = replace(opts, refresh=interval)
+        if start:  # the settings a step before the checkpoint was relaxed again with
+            stepper.resume_settings(int(history.record["refresh_intervals"][start - 1]),
+                                    float(history.record["load_gains"][start - 1]))
     else:
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,

@@ -24,6 +24,7 @@ from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
+from ..ehl.stepper import StepOptions
 from ..results import Comparison, Outcome, variable, write_netcdf
 from .ehl_steady import ehl_warnings
 
@@ -60,6 +61,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
                                    "step converged (1) or not (0)"),
         "refresh_interval": variable("step", res.refresh_intervals, "1",
                                      "relaxation sweeps between far-field refreshes"),
+        "load_gain": variable("step", res.load_gains, "1",
+                              "separation shift per sweep per relative load error"),
         "film_counts": variable("film_bin", res.film_counts, "1",
                                 "film thickness histogram over the counting period"),
         "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
@@ -137,6 +140,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             theta=case.solver.theta, method=case.solver.method, tol=case.solver.tolerance,
             max_iter=case.solver.max_sweeps, refresh=case.solver.refresh,
             acceleration=case.solver.acceleration, damping=case.solver.damping,
+            load_gain=case.solver.load_gain,
             contact_film=case.solver.contact_film,
             snapshot_steps=snaps, checkpoint=checkpoint,
             checkpoint_every=case.solver.checkpoint_every, resume=resume, callback=callback)
@@ -160,12 +164,20 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         notes.append(f"{bad} of {res.steps_done} steps did not reach the tolerance "
                      f"{case.solver.tolerance:g} within {case.solver.max_sweeps} sweeps; the "
                      "statistics include them.")
-    lowered = np.flatnonzero((res.refresh_intervals[:res.steps_done] > 0)
-                             & (res.refresh_intervals[:res.steps_done] < case.solver.refresh))
+    done = slice(0, res.steps_done)
+    lowered = np.flatnonzero((res.refresh_intervals[done] > 0)
+                             & (res.refresh_intervals[done] < case.solver.refresh))
     if lowered.size:
         notes.append(f"Step {lowered[0] + 1} did not converge with the far field refreshed every "
                      f"{case.solver.refresh} sweeps; it and the later steps were relaxed with a "
-                     "refresh at every sweep (the sweeps of both tries are counted).")
+                     "refresh at every sweep (the sweeps of all tries are counted).")
+    gain = StepOptions.for_problem(problem, method=case.solver.method,
+                                   load_gain=case.solver.load_gain).load_gain
+    halved = np.flatnonzero(res.load_gains[done] < gain)
+    if halved.size:
+        notes.append(f"Step {halved[0] + 1} did not converge with the load gain "
+                     f"{gain:.3g}; it and the later steps were relaxed with "
+                     f"{res.load_gains[res.steps_done - 1]:.3g}.")
     from ..plotting import ehl_transient as plots
 
     shown_index = int(np.flatnonzero(res.snapshot_steps == shown)[0])
