@@ -250,4 +250,4 @@ def test_report_names_the_step_whose_load_gain_was_halved(tmp_path):
     assert outcome.converged and np.all(gains[first:] == 2.4)
     assert [n for n in outcome.notes
             if n.startswith(f"Step {first + 1} did not converge with the load gain 4.8")
-            and "with 2.4" in n]
+            and "relaxed with 2.4" in n and "it converged" in n]

@@ -383,7 +383,8 @@ def solve_transient(
     load_gain : float, optional
         Separation shift per sweep per relative load error; default ``0.15 min(1, b/a)``
         (point contact: 0.15 for the gear case, 0.0375 at a/b = 4 where 0.15 diverged) and
-        0.03 (line contact).
+        0.03 (line contact); halved, at most twice, from the first step that does not
+        converge with a refresh at every sweep (``load_gains`` of the result).
     damping : float
         Factor on the change of p and h at nodes whose change alternates in sign from sweep to
         sweep (:meth:`asperity.ehl.solver.EHLState.sweep`); 1 switches it off. Rough surfaces

@@ -81,6 +81,13 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "hertz_a_m": a, "converged": int(res.converged)})
 
 
+def _outcome(res, step: int) -> str:
+    """How the step (0-based) that lowered a solver setting ended, for the report's note."""
+    ended = "converged" if res.step_converged[step] else "still did not converge"
+    return (f" (the sweeps of all tries are counted: {res.sweeps[step]}; with the lowered "
+            f"setting it {ended})")
+
+
 def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
     """Statistics so far, from the checkpoint file (for the streamed result.nc)."""
     try:
@@ -170,14 +177,18 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     if lowered.size:
         notes.append(f"Step {lowered[0] + 1} did not converge with the far field refreshed every "
                      f"{case.solver.refresh} sweeps; it and the later steps were relaxed with a "
-                     "refresh at every sweep (the sweeps of all tries are counted).")
+                     f"refresh at every sweep{_outcome(res, lowered[0])}.")
     gain = StepOptions.for_problem(problem, method=case.solver.method,
                                    load_gain=case.solver.load_gain).load_gain
     halved = np.flatnonzero(res.load_gains[done] < gain)
     if halved.size:
-        notes.append(f"Step {halved[0] + 1} did not converge with the load gain "
-                     f"{gain:.3g}; it and the later steps were relaxed with "
-                     f"{res.load_gains[res.steps_done - 1]:.3g}.")
+        first, last = halved[0], res.load_gains[res.steps_done - 1]
+        later = np.flatnonzero(res.load_gains[done] == last)[0]
+        notes.append(f"Step {first + 1} did not converge with the load gain {gain:.3g}; it and "
+                     f"the later steps were relaxed with {res.load_gains[first]:.3g}"
+                     f"{_outcome(res, first)}"
+                     + (f", and from step {later + 1} on with {last:.3g}" if later > first else "")
+                     + ".")
     from ..plotting import ehl_transient as plots
 
     shown_index = int(np.flatnonzero(res.snapshot_steps == shown)[0])
