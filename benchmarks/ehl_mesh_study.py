@@ -133,7 +133,7 @@ def figure(rows, path, title=None):
     fig.savefig(path, dpi=150)
 
 
-#: (header, width, text of a row) of the contact statistics shared with ehl_table2_paper.py
+#: (header, width, text of a row) of the contact statistics shared with ehl_paper_study.py
 LOCATION_COLUMNS = [
     ("area/Hertz", 10, lambda r: f"{r['area_fraction']:.4f}"),
     ("max Q/ms", 8, lambda r: f"{r['max_q']:.0f}"),
