@@ -70,6 +70,10 @@ class StepOptions:
         Separation shift per sweep per relative load error.
     damping : float
         Factor on the change at nodes oscillating from sweep to sweep; 1 off.
+    density_newton : bool
+        Whether the row solve keeps the density's Newton term
+        (:meth:`asperity.ehl.solver.EHLState._sweep`); off by default, the density lagged
+        (:meth:`TimeStepper.advance` switches it on for a step that fails without it).
     """
 
     method: str
@@ -81,6 +85,7 @@ class StepOptions:
     acceleration: int
     load_gain: float
     damping: float
+    density_newton: bool = False
 
     @classmethod
     def for_problem(cls, problem, *, method=None, theta=0.5, near=2, tol=1e-4, max_sweeps=400,
@@ -126,8 +131,9 @@ class StepReport(NamedTuple):
 
     ``sweeps`` and ``refreshes`` count the finest-grid relaxation sweeps and the far-field
     FFT refreshes the step took (a retried step's included); ``load_error`` is the relative
-    load error after the last sweep; ``refresh`` and ``load_gain`` the sweeps between
-    refreshes and the load gain the step ended with (:meth:`TimeStepper.advance`).
+    load error after the last sweep; ``refresh``, ``load_gain`` and ``density_newton`` the
+    sweeps between refreshes, the load gain and whether the density's Newton term was kept,
+    as the step ended (:meth:`TimeStepper.advance`).
     """
 
     converged: bool
@@ -137,6 +143,7 @@ class StepReport(NamedTuple):
     load_error: float
     refresh: int
     load_gain: float
+    density_newton: bool
 
 
 def reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
@@ -197,10 +204,6 @@ class TimeStepper:
         self.options = options
         self.state = EHLState(problem, x, y, options.implicit_near)
         self.state.damping = options.damping
-        # the density's Newton term left the sweeps per step of the gear case as they were
-        # and made the narrow contact (a/b = 4) of the aspect-ratio study diverge at step 420
-        # (docs/ehl-transient.md, Cost): the transient row solve lags the density
-        self.state.density_newton = False
         self.mass = self.state.lam / (dt * problem.mean_speed / problem.a)
         self.film_scale = film_scale
         self.mixer = AndersonMixer(options.acceleration) if options.acceleration else None
@@ -214,7 +217,8 @@ class TimeStepper:
 
         A step that does not converge is relaxed again from its start with safer settings,
         which the later steps keep: first with the far field refreshed at every sweep (when
-        ``refresh > 1``), then with the load gain halved, at most ``GAIN_HALVINGS`` times.
+        ``refresh > 1``), then, for a compressible lubricant, with the density's Newton term
+        in the row solve, then with the load gain halved, at most ``GAIN_HALVINGS`` times.
         The separation shifted at every sweep against a far field lagged over several
         sweeps can grow into an oscillation of the load and of the pressure at the outlet
         constriction on fine meshes: a smooth ball-on-disc contact (Moes M = 208, L = 9.5)
@@ -223,6 +227,14 @@ class TimeStepper:
         contact with a bump diverged on cells of a/128 by 3.2 a/128 at step 736 of 1843 with
         a refresh at every sweep and the gain 0.15, and converged at every step with 0.075
         (docs/ehl-transient.md, "The default mesh and time steps of a transient case").
+
+        The density is lagged by default: its Newton term left the sweeps per step of the
+        gear case as they were and made the narrow contact (a/b = 4) of the aspect-ratio
+        study fail from step 420 on. Where the oil's compressibility weighs more it is the
+        lagged density that fails: a ridge entering a ball-bearing contact (Moes M = 1947,
+        L = 18.5) set off an oscillation of the active set that grew 2-2.5 times per sweep
+        at every setting of refresh and gain, and converged in 4 sweeps per step with the
+        term (docs/ehl-transient.md).
         """
         self.start_step(phi)
         state = self.state
@@ -234,6 +246,8 @@ class TimeStepper:
                                                       before[2], before[3].copy())
             if self.options.refresh > 1:
                 self.options = replace(self.options, refresh=1)
+            elif self.can_add_density_term:
+                self.options = replace(self.options, density_newton=True)
             else:
                 self.options = replace(self.options, load_gain=self.options.load_gain / 2)
                 self.halvings += 1
@@ -243,12 +257,14 @@ class TimeStepper:
         np.maximum(self.state.H, 0.0, out=self.state.H)
         return report
 
-    def resume_settings(self, refresh: int, load_gain: float):
-        """Take up the refresh interval and load gain a checkpointed step ended with
-        (:class:`StepReport`); 0 or NaN (a checkpoint written before they were recorded)
-        leaves the option as it is."""
+    def resume_settings(self, refresh: int, load_gain: float, density_newton: bool = False):
+        """Take up the refresh interval, load gain and density term a checkpointed step ended
+        with (:class:`StepReport`); 0, NaN or False (a checkpoint written before they were
+        recorded) leaves the option as it is."""
         if 0 < refresh < self.options.refresh:
             self.options = replace(self.options, refresh=refresh)
+        if density_newton:
+            self.options = replace(self.options, density_newton=True)
         if np.isfinite(load_gain) and load_gain < self.options.load_gain:
             self.halvings = round(np.log2(self.options.load_gain / load_gain))
             self.options = replace(self.options, load_gain=load_gain)
@@ -257,7 +273,16 @@ class TimeStepper:
     def can_retry(self) -> bool:
         """Whether a step that fails can be relaxed again with safer settings
         (:meth:`advance`)."""
-        return self.options.refresh > 1 or self.halvings < self.GAIN_HALVINGS
+        return (self.options.refresh > 1 or self.can_add_density_term
+                or self.halvings < self.GAIN_HALVINGS)
+
+    @property
+    def can_add_density_term(self) -> bool:
+        """Whether the row solve lags a density that varies with pressure (a compressible
+        lubricant and the x-line relaxation), so that a failing step can be relaxed again
+        with the density's Newton term."""
+        return (not self.options.density_newton and self.options.method == "line"
+                and self.problem.lubricant.compressible)
 
     def start_step(self, phi):
         """Set up the step to the roughness ``phi`` of level n+1 from the current state
@@ -294,6 +319,7 @@ class TimeStepper:
         tol, max_sweeps, refresh = opts.tol, opts.max_sweeps, opts.refresh
         target = state.problem.load_integral
         refreshes_before = state.refreshes
+        state.density_newton = opts.density_newton
         state.start_iteration()
         state.lag_derivatives = True
         if mixer is not None:
@@ -304,7 +330,7 @@ class TimeStepper:
 
         def report(converged, residual):
             return StepReport(converged, residual, sweeps, state.refreshes - refreshes_before,
-                              load_err, refresh, opts.load_gain)
+                              load_err, refresh, opts.load_gain, opts.density_newton)
 
         while sweeps < max_sweeps:
             if sweeps >= max_sweeps // 4:

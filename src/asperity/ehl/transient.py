@@ -166,10 +166,10 @@ class TransientResult(SolverResult):
     sweeps, refreshes, residuals, step_converged, load_errors : ndarray
         Per step: relaxation sweeps, far-field FFT refreshes, final residual, convergence flag,
         relative load error.
-    refresh_intervals, load_gains : ndarray
-        Per step: sweeps between far-field refreshes and load gain the step ended with (below
-        the ones set from a step that had to be relaxed again:
-        :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
+    refresh_intervals, load_gains, density_newton : ndarray
+        Per step: sweeps between far-field refreshes, load gain and whether the row solve kept
+        the density's Newton term, as the step ended (changed from a step that had to be
+        relaxed again: :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -214,6 +214,7 @@ class TransientResult(SolverResult):
     load_errors: np.ndarray
     refresh_intervals: np.ndarray
     load_gains: np.ndarray
+    density_newton: np.ndarray
     iterations: int
     converged: bool
     residual: float
@@ -368,8 +369,9 @@ def solve_transient(
         Sweep limit per relaxation of a step; a step reaching it is recorded as not converged
         (the old spelling ``max_sweeps`` is accepted with a DeprecationWarning). Such a step
         is first relaxed again from its start with a refresh at every sweep (when
-        ``refresh > 1``) and then with the load gain halved, up to twice
-        (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take four times as
+        ``refresh > 1``), then with the density's Newton term (compressible lubricant) and
+        then with the load gain halved, up to twice
+        (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take five times as
         many.
     refresh : int
         Sweeps between FFT refreshes of the far field and the edge films; 1 from the first
@@ -384,7 +386,9 @@ def solve_transient(
         Separation shift per sweep per relative load error; default ``0.15 min(1, b/a)``
         (point contact: 0.15 for the gear case, 0.0375 at a/b = 4 where 0.15 diverged) and
         0.03 (line contact); halved, at most twice, from the first step that does not
-        converge with a refresh at every sweep (``load_gains`` of the result).
+        converge with a refresh at every sweep and (compressible lubricant, x-line
+        relaxation) the density's Newton term in the row solve (``load_gains`` and
+        ``density_newton`` of the result).
     damping : float
         Factor on the change of p and h at nodes whose change alternates in sign from sweep to
         sweep (:meth:`asperity.ehl.solver.EHLState.sweep`); 1 switches it off. Rough surfaces
@@ -491,7 +495,8 @@ def solve_transient(
         history.restore(arrays)
         if start:  # the settings a step before the checkpoint was relaxed again with
             stepper.resume_settings(int(history.record["refresh_intervals"][start - 1]),
-                                    float(history.record["load_gains"][start - 1]))
+                                    float(history.record["load_gains"][start - 1]),
+                                    bool(history.record["density_newton"][start - 1]))
     else:
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,

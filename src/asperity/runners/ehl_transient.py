@@ -63,6 +63,9 @@ def _dataset(case, problem, res) -> xr.Dataset:
                                      "relaxation sweeps between far-field refreshes"),
         "load_gain": variable("step", res.load_gains, "1",
                               "separation shift per sweep per relative load error"),
+        "density_newton": variable("step", res.density_newton.astype("i1"), "1",
+                                   "row solve with the density's Newton term (1) or the "
+                                   "density lagged (0)"),
         "film_counts": variable("film_bin", res.film_counts, "1",
                                 "film thickness histogram over the counting period"),
         "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
@@ -82,9 +85,9 @@ def _dataset(case, problem, res) -> xr.Dataset:
 
 
 def _outcome(res, step: int) -> str:
-    """How the step (0-based) that lowered a solver setting ended, for the report's note."""
+    """How the step (0-based) that changed a solver setting ended, for the report's note."""
     ended = "converged" if res.step_converged[step] else "still did not converge"
-    return (f" (the sweeps of all tries are counted: {res.sweeps[step]}; with the lowered "
+    return (f" (the sweeps of all tries are counted: {res.sweeps[step]}; with the changed "
             f"setting it {ended})")
 
 
@@ -178,6 +181,11 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         notes.append(f"Step {lowered[0] + 1} did not converge with the far field refreshed every "
                      f"{case.solver.refresh} sweeps; it and the later steps were relaxed with a "
                      f"refresh at every sweep{_outcome(res, lowered[0])}.")
+    added = np.flatnonzero(res.density_newton[done])
+    if added.size:
+        notes.append(f"Step {added[0] + 1} did not converge with the density lagged in the row "
+                     "solve; it and the later steps were relaxed with the density's Newton "
+                     f"term{_outcome(res, added[0])}.")
     gain = StepOptions.for_problem(problem, method=case.solver.method,
                                    load_gain=case.solver.load_gain).load_gain
     halved = np.flatnonzero(res.load_gains[done] < gain)
