@@ -1,4 +1,4 @@
-"""A single dent through a circular EHL contact: where its film disturbance travels.
+"""A single dent or groove through a circular EHL contact: where its film disturbance travels.
 
 Literature (docs/ehl-robustness.md, "Single features"): in pure rolling a dent is carried
 through the contact with its surface, locally deformed (partly flattened) but in place, so
@@ -12,13 +12,16 @@ The argument: where the viscosity is high the Poiseuille flow vanishes and the R
 equation reduces to transport, ``d(rho h)/dt + u d(rho h)/dx = 0``: the film pattern formed
 in the inlet is carried at the mean speed ``u``, whatever the surfaces do.
 
-Checked on a coarse mesh (81 x 17 nodes, dx = a/16), along the centre line within 0.5 a of
-the centre: the speed of the largest film increase (the dent's mark in the film) against the
-dent's speed ``u1`` and the mean speed ``u``, and its position against the dent's.
+A transverse groove (a straight dent across the rolling direction, the line-contact case of
+Venner & Lubrecht 1994) does the same on the centre line. Checked on a coarse mesh (81 x 17
+nodes, dx = a/16), along the centre line within 0.5 a of the centre: the speed of the largest
+film increase (the feature's mark in the film) against the feature's speed ``u1`` and the mean
+speed ``u``, and its position against the feature's.
 """
 
 import numpy as np
 import pytest
+import tomllib
 
 from asperity.cases import load_case
 from asperity.ehl import Lubricant, PointContact, solve_steady
@@ -42,8 +45,9 @@ def _ball(xi):
                         Lubricant(0.25, 2e-8, viscosity_model="barus", compressible=False))
 
 
-def _run(xi, nx=81, ny=17, contact=_ball):
-    """The dent (depth hc/2, radius 0.3 a) on surface 1 across the whole domain."""
+def _run(xi, kind="dent", nx=81, ny=17, contact=_ball):
+    """The dent or groove (depth hc/2, radius or half-width 0.3 a) on surface 1 across the
+    whole domain."""
     prob = contact(xi)
     a = prob.a
     domain = prob.default_domain()
@@ -56,7 +60,7 @@ def _run(xi, nx=81, ny=17, contact=_ball):
     length = prob.u1 * dt * steps + 4 * width
     spacing = dx / 4
     end = (np.ceil(length / spacing) - 0.5) * spacing
-    dent = feature_surface("dent", length, spacing, amplitude=depth, half_width=width,
+    dent = feature_surface(kind, length, spacing, amplitude=depth, half_width=width,
                            position=end - width, y=y)
     steady = solve_steady(prob, nx=nx, ny=ny, domain=domain)
     res = solve_transient(prob, dent, None, nx=nx, ny=ny, domain=domain, warmup_steps=0,
@@ -67,9 +71,13 @@ def _run(xi, nx=81, ny=17, contact=_ball):
     return prob, res, steady, t, centre, depth
 
 
-@pytest.fixture(scope="module", params=[0.0, -0.5], ids=["rolling", "sliding xi=-0.5"])
+@pytest.fixture(scope="module", params=[("dent", 0.0), ("dent", -0.5), ("groove", 0.0),
+                                        ("groove", -0.5)],
+                ids=["dent rolling", "dent sliding xi=-0.5", "groove rolling",
+                     "groove sliding xi=-0.5"])
 def dent_run(request):
-    return request.param, _run(request.param)
+    kind, xi = request.param
+    return kind, xi, _run(xi, kind)
 
 
 def _disturbance(prob, res, steady, depth):
@@ -88,10 +96,10 @@ def _disturbance(prob, res, steady, depth):
 
 
 def test_dent_runs_with_default_settings(dent_run):
-    xi, (prob, res, steady, t, centre, depth) = dent_run
+    kind, xi, (prob, res, steady, t, centre, depth) = dent_run
     assert steady.converged and res.converged
     assert np.all(res.step_converged)
-    print(f"\ndent xi = {xi}: {res.steps} steps, {res.sweeps.mean():.1f} sweeps per step "
+    print(f"\n{kind} xi = {xi}: {res.steps} steps, {res.sweeps.mean():.1f} sweeps per step "
           f"(max {res.sweeps.max()})")
 
 
@@ -99,13 +107,13 @@ def test_film_disturbance_speed(dent_run):
     """Rolling: the film increase moves at u (10 %) and sits on the dent (0.1 a on average).
     Sliding at xi = -0.5 (dent on the slower surface, u1 = 0.75 u): it moves at the mean
     speed u (15 %), not with the dent (u/u1 = 1.33), and runs ahead of it."""
-    xi, (prob, res, steady, t, centre, depth) = dent_run
+    kind, xi, (prob, res, steady, t, centre, depth) = dent_run
     pos, peak = _disturbance(prob, res, steady, depth)
     ok = np.isfinite(pos)
     assert ok.sum() >= 5
     speed = np.polyfit(t[ok], pos[ok], 1)[0]
-    print(f"\nxi = {xi}: disturbance speed {speed / prob.mean_speed:.3f} u, dent "
-          f"{prob.u1 / prob.mean_speed:.3f} u; peak {peak[ok].max() / depth:.2f} x dent depth")
+    print(f"\n{kind} xi = {xi}: disturbance speed {speed / prob.mean_speed:.3f} u, {kind} "
+          f"{prob.u1 / prob.mean_speed:.3f} u; peak {peak[ok].max() / depth:.2f} x its depth")
     if xi == 0.0:
         assert speed == pytest.approx(prob.mean_speed, rel=0.10)
         assert np.mean(np.abs(pos[ok] - centre[ok])) < 0.1 * prob.a
@@ -119,7 +127,7 @@ def test_film_disturbance_speed(dent_run):
 def test_dent_partly_flattened_in_rolling(dent_run):
     """In the Hertz zone the film over the dent deepens by less than the dent's depth (the
     pressure drop over the dent lifts its floor) but by a sizeable part of it."""
-    xi, (prob, res, steady, t, centre, depth) = dent_run
+    kind, xi, (prob, res, steady, t, centre, depth) = dent_run
     if xi != 0.0:
         pytest.skip("rolling only")
     pos, peak = _disturbance(prob, res, steady, depth)
@@ -129,8 +137,8 @@ def test_dent_partly_flattened_in_rolling(dent_run):
 
 
 def test_feature_shapes():
-    """Cap of peak 1, zero at and beyond the half-width; dent below, bump above, ridge along
-    x only."""
+    """Cap of peak 1, zero at and beyond the half-width; dent and groove below, bump and ridge
+    above, ridge and groove along x only."""
     np.testing.assert_allclose(feature_shape([0.0, 0.5, 1.0, 2.0], 1.0), [1.0, 0.5, 0.0, 0.0],
                                atol=1e-15)
     y = np.linspace(-1e-4, 1e-4, 21)
@@ -140,7 +148,11 @@ def test_feature_shapes():
                            position=5e-4, y=y)
     ridge = feature_surface("ridge", 1e-3, 1e-5, amplitude=1e-7, half_width=5e-5,
                             position=5e-4)
+    groove = feature_surface("groove", 1e-3, 1e-5, amplitude=1e-7, half_width=5e-5,
+                             position=5e-4)
     assert isinstance(dent, Topography) and isinstance(ridge, Profile)
+    assert isinstance(groove, Profile)
+    np.testing.assert_array_equal(groove.z, -ridge.z)
     assert dent.z.min() == pytest.approx(-1e-7, rel=0.05) and dent.z.max() == 0.0
     np.testing.assert_allclose(bump.z, -dent.z)
     np.testing.assert_allclose(ridge.z, bump.z[:, 10])  # y = 0 row through the centre
@@ -184,3 +196,25 @@ def test_example_case_places_the_dent_upstream_of_the_inlet(name):
     assert surf.z[i, j] == pytest.approx(-case.surface1.amplitude, rel=0.05)
     assert surf.x[-1] - surf.x[i] == pytest.approx(case.surface1.half_width, abs=spacing)
     assert y[j] == pytest.approx(0.0, abs=y[1] - y[0])
+
+
+@pytest.mark.parametrize("feature, accepted", [("groove", True), ("ridge", True),
+                                               ("dent", False), ("bump", False)])
+def test_a_line_contact_takes_the_straight_features_only(feature, accepted):
+    """A groove or a ridge runs across the whole width of a line contact; a dent or a bump
+    needs a point contact, and the case file says which features a line contact takes."""
+    data = tomllib.loads(example_text("holmes-rough-AA-line"))
+    data["surface1"] = {"kind": "feature", "feature": feature, "amplitude": "0.2 um",
+                        "half_width": "30 um"}
+    if not accepted:
+        with pytest.raises(InputError, match='"ridge" or "groove"'):
+            load_case(data)
+        return
+    case = load_case(data)
+    prob = case.problem()
+    x, y = prob.grid(*case.grid.nodes(True), case.grid.domain(prob.a, None))
+    surf = case.surface1.build(2e-3, (x[1] - x[0]) / 4, y, x[1] - x[0])
+    assert isinstance(surf, Profile)
+    sign = -1.0 if feature == "groove" else 1.0
+    assert sign * surf.z[np.argmax(np.abs(surf.z))] == pytest.approx(0.2e-6, rel=0.02)
+    assert case.feature_spacing()[1] is None          # nothing across y to resolve

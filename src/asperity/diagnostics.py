@@ -788,7 +788,7 @@ def feature_passage(label: str, feature: str, start: float, end: float, a: float
     label : str
         The surface, e.g. ``"surface1"``.
     feature : str
-        ``"dent"``, ``"bump"`` or ``"ridge"``.
+        ``"dent"``, ``"bump"``, ``"ridge"`` or ``"groove"``.
     start, end : float
         Position (m) of the feature's centre when counting starts and at the last step.
     a : float

@@ -32,6 +32,7 @@ from pydantic import Field, model_validator
 
 from ..ehl.transient import FEATURE_CELLS_ACROSS, FEATURE_CELLS_ALONG, default_warmup_steps
 from ..errors import InputError
+from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import build_surface
 from .ehl import EHLCaseBase, EHLGridSpec
 from .fields import CaseModel, Quantity
@@ -49,10 +50,10 @@ class MovingSurfaceSpec(SurfaceKeys):
     ``self-affine`` (``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
     ``short_cutoff``, ``seed``); ``file`` (a measured profile: ``path``, ``spacing`` when the
     file has no x column, and the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``,
-    ``resample``); ``feature``
-    (one ``feature`` "dent", "bump" or "ridge" of ``amplitude`` and ``half_width`` on a smooth
-    surface, its centre ``lead`` upstream of the inlet at the start: the probes of Venner &
-    Lubrecht, Kaneta, Ai & Cheng; :mod:`asperity.surfaces.features`). Profiles vary
+    ``resample``); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
+    ``amplitude`` and ``half_width`` on a smooth surface, its centre ``lead`` upstream of the
+    inlet at the start: the probes of Venner & Lubrecht, Kaneta, Ai & Cheng;
+    :mod:`asperity.surfaces.features`). Profiles vary
     along x (the rolling direction) and are extruded across y. ``scale`` multiplies the
     heights (the seed's sqrt(2) x C); ``lowpass`` removes wavelengths shorter than that many
     mesh spacings (ISO Gaussian filter) when the mesh cannot resolve them; ``waviness`` adds a
@@ -63,20 +64,21 @@ class MovingSurfaceSpec(SurfaceKeys):
     kind: Literal["smooth", "builtin", "ground", "gaussian", "self-affine", "file",
                   "feature"] = "smooth"
     """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian", "self-affine",
-    "file" or "feature" (a single dent, bump or ridge)."""
+    "file" or "feature" (a single dent, bump, ridge or groove)."""
     scale: Annotated[float, Field(ge=0, le=100)] = 1.0
     """Factor on the heights (the seed's sqrt(2) x C)."""
     lowpass: Annotated[float, Field(ge=0, le=100)] = 0.0
     """Remove wavelengths shorter than this many mesh spacings (ISO Gaussian filter; 0: off)."""
     waviness: WavinessSpec | None = None
     """A sinusoidal waviness along y (transverse) or x."""
-    feature: Literal["dent", "bump", "ridge"] | None = None
+    feature: Literal["dent", "bump", "ridge", "groove"] | None = None
     """Single feature (kind = "feature"): a circular "dent" or "bump" centred on y = 0, or a
-    straight "ridge" across the rolling direction."""
+    straight "ridge" or "groove" across the rolling direction."""
     amplitude: Quantity("length", gt=0) | None = None
-    """Depth of the dent or height of the bump or ridge (kind = "feature")."""
+    """Depth of the dent or groove, height of the bump or ridge (kind = "feature")."""
     half_width: Quantity("length", gt=0) | None = None
-    """Radius of the dent or bump, half-width along x of the ridge (kind = "feature")."""
+    """Radius of the dent or bump, half-width along x of the ridge or groove (kind =
+    "feature")."""
     lead: Quantity("length", ge=0) | None = None
     """Distance of the feature's centre upstream of the inlet at the start of the run (default:
     its half-width plus the distance the surface travels in the warm-up, so that it enters
@@ -121,7 +123,7 @@ class TimeSpec(CaseModel):
 
     The defaults follow the surfaces (:meth:`EHLTransientCase.steps`): rough surfaces warm up
     until the slower one has crossed the domain (the seed) and count 200 steps; a single
-    feature (dent, bump, ridge) enters when counting starts and is counted until it, and the
+    feature (dent, bump, ridge, groove) enters when counting starts and is counted until it, and the
     film change it makes, have crossed the domain.
     """
 
@@ -196,7 +198,7 @@ class EHLTransientCase(EHLCaseBase):
 
     def feature_spacing(self) -> tuple[float | None, float | None]:
         """Largest mesh spacing (m) along x and across y that the surfaces' features ask for
-        (None: no feature): a dent's, bump's or ridge's half-width over
+        (None: no feature): a feature's half-width over
         :data:`~asperity.ehl.transient.FEATURE_CELLS_ALONG` along x and (dent, bump)
         :data:`~asperity.ehl.transient.FEATURE_CELLS_ACROSS` across; a waviness's wavelength
         over twice ``FEATURE_CELLS_ALONG`` along its direction."""
@@ -204,7 +206,7 @@ class EHLTransientCase(EHLCaseBase):
         for spec in (self.surface1, self.surface2):
             if spec.kind == "feature":
                 along.append(spec.half_width / FEATURE_CELLS_ALONG)
-                if spec.feature != "ridge":
+                if spec.feature not in STRAIGHT_FEATURES:
                     across.append(spec.half_width / FEATURE_CELLS_ACROSS)
             if spec.waviness is not None:
                 wave = spec.waviness
@@ -313,9 +315,9 @@ class EHLTransientCase(EHLCaseBase):
             if rough and not u > 0:
                 raise ValueError(f"expected a positive speed of surface {k} (set by speeds.u "
                                  "and speeds.xi) to carry its roughness in from the inlet")
-            if line and spec.kind == "feature" and spec.feature != "ridge":
-                raise ValueError(f"expected feature = \"ridge\" on surface{k} of a line "
-                                 "contact (a dent or a bump needs a point contact)")
+            if line and spec.kind == "feature" and spec.feature not in STRAIGHT_FEATURES:
+                raise ValueError(f"expected feature = \"ridge\" or \"groove\" on surface{k} "
+                                 "of a line contact (a dent or a bump needs a point contact)")
             if line and spec.waviness is not None and spec.waviness.direction == "y":
                 raise ValueError(f"expected no transverse waviness on surface{k} of a line "
                                  "contact")

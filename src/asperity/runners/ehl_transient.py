@@ -26,6 +26,7 @@ from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
 from ..ehl.stepper import StepOptions
 from ..results import Comparison, Outcome, variable, write_netcdf
+from ..surfaces.features import STRAIGHT_FEATURES
 from .ehl_steady import ehl_warnings
 
 __all__ = ["CHECKPOINTS", "run"]
@@ -260,7 +261,7 @@ def _feature_warnings(case, problem, x, y, warmup, total, dt) -> list[str]:
     for label, spec, start, step in case.feature_tracks(problem, x, dt, warmup):
         lines += diagnostics.unresolved_feature(
             label, f"{spec.feature} half-width", spec.half_width, dx,
-            None if spec.feature == "ridge" else dy)
+            None if spec.feature in STRAIGHT_FEATURES else dy)
         lines += diagnostics.feature_passage(label, spec.feature, start + warmup * step,
                                              start + total * step, problem.a, step, warmup,
                                              total - warmup)

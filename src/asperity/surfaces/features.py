@@ -1,4 +1,5 @@
-"""Single surface features: a dent, a bump or a transverse ridge on an otherwise smooth surface.
+"""Single surface features: a dent, a bump, or a transverse ridge or groove on an otherwise
+smooth surface.
 
 The classic probes of transient EHL (Venner & Lubrecht 1994; Kaneta et al. 1996; Ai & Cheng
 1994): one feature carried through the contact on one surface shows how the film deforms a
@@ -10,8 +11,8 @@ Shape: a smooth cosine-squared cap of half-width ``w`` (zero slope at its edge),
     z(r) = A cos^2(pi r / (2 w))  for r < w,  0 elsewhere,
 
 with ``r`` the distance from the feature's centre (dent, bump: circular) or its distance along
-x (ridge: straight, across the rolling direction). A dent has ``A = -depth`` (metal removed),
-a bump and a ridge ``A = height``.
+x (ridge, groove: straight, across the rolling direction). A dent and a groove have
+``A = -depth`` (metal removed), a bump and a ridge ``A = height``.
 
 References
 ----------
@@ -30,10 +31,15 @@ import numpy as np
 from ..errors import InputError, check_positive
 from .topography import Profile, Topography, cell_centres
 
-__all__ = ["FEATURE_KINDS", "feature_shape", "feature_surface"]
+__all__ = ["FEATURE_KINDS", "STRAIGHT_FEATURES", "feature_shape", "feature_surface"]
 
 #: Kinds of single feature.
-FEATURE_KINDS = ("dent", "bump", "ridge")
+FEATURE_KINDS = ("dent", "bump", "ridge", "groove")
+#: The features that are straight across the rolling direction (a :class:`Profile`, which a
+#: line contact can take); the others are circular.
+STRAIGHT_FEATURES = ("ridge", "groove")
+#: The features below the surface (metal removed).
+_HOLLOWS = ("dent", "groove")
 
 
 def feature_shape(r, half_width: float) -> np.ndarray:
@@ -49,15 +55,16 @@ def feature_surface(kind: str, length: float, spacing: float, *, amplitude: floa
 
     Parameters
     ----------
-    kind : {"dent", "bump", "ridge"}
-        A circular dent (heights ``-amplitude``), a circular bump (``+amplitude``) or a
-        straight ridge across the rolling direction (``+amplitude``).
+    kind : {"dent", "bump", "ridge", "groove"}
+        A circular dent (heights ``-amplitude``), a circular bump (``+amplitude``), or a
+        straight ridge (``+amplitude``) or groove (``-amplitude``) across the rolling
+        direction.
     length, spacing : float
         Extent and spacing of the surface along x (m); non-periodic.
     amplitude : float
-        Depth of a dent or height of a bump or ridge, m (> 0).
+        Depth of a dent or groove, or height of a bump or ridge, m (> 0).
     half_width : float
-        Radius (dent, bump) or half-width along x (ridge) of the cap, m.
+        Radius (dent, bump) or half-width along x (ridge, groove) of the cap, m.
     position : float
         Surface coordinate of the feature's centre along x, m (``0 <= position <= length``).
     y : array_like, optional
@@ -67,8 +74,8 @@ def feature_surface(kind: str, length: float, spacing: float, *, amplitude: floa
     Returns
     -------
     Profile or Topography
-        A ridge is a :class:`Profile` (extruded across y by the solvers); a dent or a bump a
-        :class:`Topography` on ``x`` by ``y``.
+        A ridge or a groove is a :class:`Profile` (extruded across y by the solvers); a dent
+        or a bump a :class:`Topography` on ``x`` by ``y``.
     """
     if kind not in FEATURE_KINDS:
         raise InputError("kind", " or ".join(f'"{k}"' for k in FEATURE_KINDS), kind)
@@ -80,11 +87,11 @@ def feature_surface(kind: str, length: float, spacing: float, *, amplitude: floa
         raise InputError("position", f"a surface coordinate between 0 and {length:.4g} m",
                          position)
     x = cell_centres(int(np.ceil(length / spacing)), spacing)
-    if kind == "ridge":
-        return Profile(x, amplitude * feature_shape(x - position, half_width))
+    height = -amplitude if kind in _HOLLOWS else amplitude
+    if kind in STRAIGHT_FEATURES:
+        return Profile(x, height * feature_shape(x - position, half_width))
     if y is None:
         raise InputError("y", f"positions across the rolling direction for a {kind}")
     y = np.asarray(y, dtype=float)
     r = np.hypot(x[:, None] - position, y[None, :])
-    sign = -1.0 if kind == "dent" else 1.0
-    return Topography(x, y, sign * amplitude * feature_shape(r, half_width))
+    return Topography(x, y, height * feature_shape(r, half_width))

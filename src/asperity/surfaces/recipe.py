@@ -19,7 +19,8 @@ Kinds and the parameters they use:
 - ``builtin``: ``profile`` "A", "B" or "C" (:func:`~.ground.builtin_profile`)
 - ``file``: ``path``, ``file_spacing`` (a file without coordinates) and ``read_options``
   (:func:`~.io.read_surface`)
-- ``feature``: ``feature`` "dent", "bump" or "ridge", ``amplitude``, ``half_width``, ``position``
+- ``feature``: ``feature`` "dent", "bump", "ridge" or "groove", ``amplitude``, ``half_width``,
+  ``position``
   (:func:`~.features.feature_surface`)
 - ``turned``: ``feed``, ``nose_radius``, ``end_relief_angle`` (:func:`~.machining.turned_profile`);
   with ``natural_frequency`` the tool vibrates (:func:`~.machining.turned_profile_dynamic`:
