@@ -40,7 +40,7 @@ from .nodal import centre_line as _centre_line
 from .nodal import upwind_difference
 from .problem import LineContact, PointContact
 
-__all__ = ["EHLState", "SteadyResult", "solve_steady"]
+__all__ = ["EHLState", "LineContactState", "SteadyResult", "solve_steady"]
 
 #: Smooth pressure (over p_hertz) 0.1 a downstream of the inlet above which the inlet lies in
 #: the pressure build-up: on the gear case an inlet at -1.4a gives 1.1 % and a central film
@@ -299,7 +299,7 @@ class EHLState:
         (fewer sweeps as well as cheaper ones on rough surfaces); otherwise at every sweep
         (more robust where a node keeps changing state). The density's term matters for a
         compressible oil and a thick film (the lagged density's factor of
-        :class:`_SteadyLineState`, which gives the point update of a line contact its own
+        :class:`LineContactState`, which gives the point update of a line contact its own
         form of the term): without it the ball bearing and the circular contact at M = 1000,
         L = 19 of docs/ehl-robustness.md ("Compressible point contacts and long ellipses at
         large L") diverged.
@@ -348,8 +348,8 @@ class EHLState:
         self.kind[self.P <= 0] = 1
 
 
-class _SteadyLineState(EHLState):
-    """The steady line contact's point update with the density's pressure derivative.
+class LineContactState(EHLState):
+    """A line contact's point update with the density's pressure derivative.
 
     :meth:`EHLState.sweep` evaluates the density ``rho(p)`` once per sweep, so the point
     update solves the Reynolds row for ``h`` at a lagged density. Where the Couette flow
@@ -370,15 +370,21 @@ class _SteadyLineState(EHLState):
     update): ``rho(p) h ~ (rho* + s) h - s h*``, ``s = h* rho' |D0| / C0``, where ``*``
     marks the values at the start of the sweep (``rho'`` analytic, from
     :meth:`~asperity.ehl.lubricant.Lubricant.flow_field`). The compiled sweep
-    (:func:`asperity.ehl.kernels.point_sweep`) receives ``rho* + s`` as the density and the
-    upwind difference (:func:`~asperity.ehl.nodal.upwind_difference`) of ``s h*`` in the
-    explicit term ``rhs_t``, so that the two cancel
-    when ``h = h*``: the converged solution is that of :class:`EHLState`. An incompressible
-    oil has ``s = 0`` and the same update. For steady solves (``theta = 1``, ``mass = 0``).
+    (:func:`asperity.ehl.kernels.point_sweep`) receives ``rho* + s`` as the density, and the
+    explicit term ``rhs_t`` receives what ``s h*`` contributes to the wedge and time terms,
+    ``theta lam U(s h*) / dX + mass s h*`` (``U`` the upwind difference,
+    :func:`~asperity.ehl.nodal.upwind_difference`), so that the two cancel when ``h = h*``:
+    the converged solution is that of :class:`EHLState`, steady (``theta = 1``,
+    ``mass = 0``) or a timestep. An incompressible oil has ``s = 0`` and the same update;
+    with ``density_newton`` off the density is lagged as in :class:`EHLState`. The transient
+    stepper keeps it off unless a step fails without it
+    (:meth:`asperity.ehl.stepper.TimeStepper.advance`): a lightly loaded roller (M = 5.3,
+    L = 21) went from its steady solution to a pressure oscillating by 2-3 p_h at step 5
+    with the density lagged, and converges with the term.
     """
 
     def _sweep(self, method: str):
-        if method != "point":
+        if method != "point" or not self.density_newton:
             return super()._sweep(method)
         # rho' at the current pressure (the flow factors' slopes stay lagged as in EHLState)
         ex, ey, rho, *slopes = self.flow_coefficients(slopes=True)
@@ -388,7 +394,8 @@ class _SteadyLineState(EHLState):
         stiff = (2.0 / self.dX**2) / (-self.c * self.f_near[0])
         s = slopes[2] * self.H * stiff
         s[self.P <= 0.0] = 0.0
-        rhs_t = self.rhs_t + self.lam / self.dX * upwind_difference(s * self.H)
+        rhs_t = (self.rhs_t + self.theta * self.lam / self.dX * upwind_difference(s * self.H)
+                 + self.mass * s * self.H)
         return point_sweep(
             self.P, self.H, ex, ey, np.asfortranarray(rho + s), self.efar,
             np.asfortranarray(rhs_t), self.lam, self.dX, self.dY, self.theta, self.mass,
@@ -777,7 +784,7 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
     total = 0
     for level, (gx, gy) in enumerate(grids):
         x, y = problem.grid(gx, gy, domain)
-        new = (_SteadyLineState if line else EHLState)(problem, x, y, near)
+        new = (LineContactState if line else EHLState)(problem, x, y, near)
         new.damping = damping
         if state is None:
             new.hertz_start(h_start)
@@ -796,7 +803,7 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             tangents_from == "below_default" and level + 1 < len(grids)
             and grids[level + 1][0] >= default_nx)
         if wanted and converged and level + 1 < len(grids):
-            other = _SteadyLineState(problem, x, y, near)
+            other = LineContactState(problem, x, y, near)
             other.interpolate_from(state)
             # the perturbed solve by the gain alone: steered by the coarser grid's tangent
             # it would end within tol by that tangent and hand it on (line M = 1000, L = 10

@@ -26,7 +26,8 @@ from ..errors import InputError, check_int, check_positive
 from .anderson import AndersonMixer
 from .kernels import CAVITATED, CONTACT
 from .nodal import upwind_difference
-from .solver import EHLState, check_contact_and_method, check_damping
+from .problem import LineContact
+from .solver import EHLState, LineContactState, check_contact_and_method, check_damping
 
 __all__ = ["DIVERGED", "MIX_BELOW", "StepOptions", "StepReport", "TimeStepper",
            "reynolds_operator"]
@@ -71,9 +72,11 @@ class StepOptions:
     damping : float
         Factor on the change at nodes oscillating from sweep to sweep; 1 off.
     density_newton : bool
-        Whether the row solve keeps the density's Newton term
-        (:meth:`asperity.ehl.solver.EHLState._sweep`); off by default, the density lagged
-        (:meth:`TimeStepper.advance` switches it on for a step that fails without it).
+        Whether the update keeps the density's pressure derivative (the x-line row solve's
+        Newton term, :meth:`asperity.ehl.solver.EHLState._sweep`, or the linearised density
+        of a line contact's point update, :class:`~asperity.ehl.solver.LineContactState`);
+        off by default, the density lagged (:meth:`TimeStepper.advance` switches it on for a
+        step that fails without it).
     """
 
     method: str
@@ -202,7 +205,8 @@ class TimeStepper:
     def __init__(self, problem, x, y, options: StepOptions, dt: float, film_scale: float):
         self.problem = problem
         self.options = options
-        self.state = EHLState(problem, x, y, options.implicit_near)
+        state = LineContactState if isinstance(problem, LineContact) else EHLState
+        self.state = state(problem, x, y, options.implicit_near)
         self.state.damping = options.damping
         self.mass = self.state.lam / (dt * problem.mean_speed / problem.a)
         self.film_scale = film_scale
@@ -278,10 +282,12 @@ class TimeStepper:
 
     @property
     def can_add_density_term(self) -> bool:
-        """Whether the row solve lags a density that varies with pressure (a compressible
-        lubricant and the x-line relaxation), so that a failing step can be relaxed again
-        with the density's Newton term."""
-        return (not self.options.density_newton and self.options.method == "line"
+        """Whether the update lags a density that varies with pressure and has a form with
+        its pressure derivative (a compressible lubricant; the x-line relaxation, or the
+        point update of a line contact, :class:`~asperity.ehl.solver.LineContactState`), so
+        that a failing step can be relaxed again with it."""
+        has_term = self.options.method == "line" or isinstance(self.problem, LineContact)
+        return (not self.options.density_newton and has_term
                 and self.problem.lubricant.compressible)
 
     def start_step(self, phi):
