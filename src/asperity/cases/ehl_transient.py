@@ -165,7 +165,8 @@ class TransientSolverSpec(CaseModel):
     """Oscillation damping of the nodal update."""
     load_gain: Annotated[float, Field(gt=0, le=10.0)] | None = None
     """Separation shift per sweep per relative load error (default 0.15 min(1, b/a) for a point
-    contact, 0.03 for a line contact); halved for a step that does not converge."""
+    contact, 0.03 for a line contact); halved for a step that does not converge with a refresh
+    at every sweep and the density's pressure derivative."""
     contact_film: Quantity("length", ge=0) | None = None
     """Film below which a node counts as in contact (default the tolerance times the central film).
     """
