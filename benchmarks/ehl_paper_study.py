@@ -17,7 +17,6 @@ Run: ``python benchmarks/ehl_paper_study.py holmes-table2-paper OUT [--figure ta
 """
 
 import argparse
-import json
 import sys
 from pathlib import Path
 
@@ -30,7 +29,7 @@ from ehl_mesh_study import (  # noqa: E402
     print_table,
 )
 
-from asperity.sweep import load_study  # noqa: E402
+from asperity.sweep import case_status, load_study  # noqa: E402
 
 PAPER_KEY = "paper_contact_time_percent"
 
@@ -38,8 +37,7 @@ PAPER_KEY = "paper_contact_time_percent"
 def finished(folder: Path) -> bool:
     """Whether a case folder holds a finished run (a running case streams a partial
     result.nc, which is not read)."""
-    status = folder / "status.json"
-    return status.exists() and json.loads(status.read_text())["state"] == "done"
+    return (case_status(folder) or {}).get("state") == "done"
 
 
 def rows(name: str, out: Path):

@@ -46,8 +46,8 @@ from .formatting import cf_units, describe_key
 from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
 
-__all__ = ["THREAD_VARIABLES", "Study", "combine", "load_study", "local_cluster", "run_one",
-           "run_study"]
+__all__ = ["THREAD_VARIABLES", "Study", "case_status", "combine", "load_study", "local_cluster",
+           "run_one", "run_study"]
 
 
 @dataclass(frozen=True)
@@ -231,7 +231,10 @@ def run_one(case: dict, folder: str) -> dict:
     return status
 
 
-def _status(folder: Path) -> dict | None:
+def case_status(folder: str | Path) -> dict | None:
+    """The ``status.json`` of a study's case folder (its ``state``: running, done, failed),
+    or None where there is none yet."""
+    folder = Path(folder)
     try:
         return json.loads((folder / "status.json").read_text(encoding="utf-8"))
     except (FileNotFoundError, json.JSONDecodeError):
@@ -278,7 +281,7 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
     """
     out = Path(out)
     todo = [(cid, case) for cid, case, _ in study.cases
-            if (_status(out / "cases" / cid) or {}).get("state") != "done"]
+            if (case_status(out / "cases" / cid) or {}).get("state") != "done"]
     total, done = len(study.cases), len(study.cases) - len(todo)
     if progress:
         progress(done, total, f"{study.title}: {done} of {total} cases done")
@@ -338,7 +341,8 @@ def _coordinate(values: list):
 def combine(study: Study, out: str | Path) -> xr.Dataset:
     """Gather every case's scalars into one Dataset with the axes as dimensions."""
     out = Path(out)
-    statuses = [_status(out / "cases" / cid) or {"state": "missing"} for cid, _, _ in study.cases]
+    statuses = [case_status(out / "cases" / cid) or {"state": "missing"}
+                for cid, _, _ in study.cases]
     keys: list[str] = []
     for s in statuses:
         for k, v in (s.get("summary") or {}).items():
