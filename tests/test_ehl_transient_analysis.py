@@ -120,6 +120,26 @@ def test_contact_map_without_contact_says_so():
     assert len(fig.axes) == 2 and "no contact" not in fig.axes[0].get_title()
 
 
+def test_line_contact_rate_without_contact_says_so():
+    """A line contact's run without contact drew a flat line on a -0.04..0.04 scale; it now
+    says that there was no contact, on a scale from 0."""
+    from types import SimpleNamespace
+
+    from asperity.ehl import LineContact, Lubricant
+    from asperity.materials import STEEL
+    from asperity.plotting.ehl_transient import plot_contact_rate_line
+
+    problem = LineContact(0.0045, 1e5, 6.0, 6.0, STEEL, STEEL, Lubricant(0.04, 2e-8))
+    x = np.linspace(-2.5, 1.5, 33) * problem.a
+    none = SimpleNamespace(x=x, contact_count_rate=np.zeros((33, 1)))
+    ax = plot_contact_rate_line(none, problem).axes[0]
+    assert "no contact" in ax.get_title() and ax.get_ylim()[0] == 0.0
+    some = SimpleNamespace(x=x, contact_count_rate=np.zeros((33, 1)))
+    some.contact_count_rate[16, 0] = 3.0
+    ax = plot_contact_rate_line(some, problem).axes[0]
+    assert "no contact" not in ax.get_title()
+
+
 def test_surfaces_are_drawn_facing_each_other():
     """A bump on surface 2 points up at surface 1, a bump on surface 1 down at surface 2 (the
     seed's "contact configuration"; drawn the other way a bump looked like a dent)."""

@@ -38,10 +38,16 @@ def plot_contact_rate(result, problem):
 
 
 def plot_contact_rate_line(result, problem):
-    """Contact count rate Q/ms along x/a for a line contact, the Hertz width shaded."""
+    """Contact count rate Q/ms along x/a for a line contact, the Hertz width shaded; without
+    contact in the counting period, the words as the title and a scale from 0 (not one
+    centred on a flat zero line)."""
     fig, ax = new_figure()
     ax.axvspan(-1.0, 1.0, color="0.92", label="Hertz contact")
-    ax.plot(result.x / problem.a, result.contact_count_rate[:, 0], color="black", lw=1.5)
+    q = result.contact_count_rate[:, 0]
+    ax.plot(result.x / problem.a, q, color="black", lw=1.5)
+    if not q.max() > 0.0:
+        ax.set_ylim(0.0, 1.0)
+        ax.set_title("no contact in the counting period", fontsize=9)
     ax.set_xlabel("x / a")
     ax.set_ylabel("contact count rate Q (1/ms)")
     ax.legend(loc="upper left", fontsize=8)
