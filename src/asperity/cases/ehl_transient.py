@@ -153,7 +153,8 @@ class TransientSolverSpec(CaseModel):
     max_sweeps: Annotated[int, Field(ge=1, le=100_000)] = 400
     """Sweep limit per time step."""
     refresh: Annotated[int, Field(ge=1, le=1000)] = 3
-    """Sweeps between refreshes of the far-field deflection."""
+    """Sweeps between refreshes of the far-field deflection at the start of a timestep (every
+    sweep once the step's residual is below 0.3)."""
     acceleration: Annotated[int, Field(ge=0, le=20)] | None = None
     """Memory of the Anderson acceleration of the refresh cycles (0: off; default 3 with line
     relaxation)."""

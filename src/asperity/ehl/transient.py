@@ -167,9 +167,9 @@ class TransientResult(SolverResult):
         Per step: relaxation sweeps, far-field FFT refreshes, final residual, convergence flag,
         relative load error.
     refresh_intervals, load_gains, density_newton : ndarray
-        Per step: sweeps between far-field refreshes, load gain and whether the row solve kept
-        the density's Newton term, as the step ended (changed from a step that had to be
-        relaxed again: :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
+        Per step: sweeps between far-field refreshes at the start of the step, load gain and
+        whether the row solve kept the density's Newton term, as the step ended (changed from
+        a step that had to be relaxed again: :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -374,8 +374,10 @@ def solve_transient(
         (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take five times as
         many.
     refresh : int
-        Sweeps between FFT refreshes of the far field and the edge films; 1 from the first
-        step that does not converge with it (``refresh_intervals`` of the result).
+        Sweeps between FFT refreshes of the far field and the edge films at the start of a
+        step, until a refresh cycle ends below a residual of
+        :data:`~asperity.ehl.stepper.REFRESH_EVERY_SWEEP_BELOW`; then at every sweep. 1 from
+        the first step that does not converge with it (``refresh_intervals`` of the result).
     acceleration : int, optional
         Memory of the Anderson acceleration of the refresh cycles
         (:class:`~asperity.ehl.anderson.AndersonMixer`); 0 switches it off. Default 3 with

@@ -61,7 +61,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "step_converged": variable("step", res.step_converged.astype("i1"), "1",
                                    "step converged (1) or not (0)"),
         "refresh_interval": variable("step", res.refresh_intervals, "1",
-                                     "relaxation sweeps between far-field refreshes"),
+                                     "relaxation sweeps between far-field refreshes "
+                                     "at the start of the step"),
         "load_gain": variable("step", res.load_gains, "1",
                               "separation shift per sweep per relative load error"),
         "density_newton": variable("step", res.density_newton.astype("i1"), "1",
