@@ -388,9 +388,9 @@ def solve_transient(
         Separation shift per sweep per relative load error; default ``0.15 min(1, b/a)``
         (point contact: 0.15 for the gear case, 0.0375 at a/b = 4 where 0.15 diverged) and
         0.03 (line contact); halved, at most twice, from the first step that does not
-        converge with a refresh at every sweep and (compressible lubricant, x-line
-        relaxation) the density's Newton term in the row solve (``load_gains`` and
-        ``density_newton`` of the result).
+        converge with a refresh at every sweep and (compressible lubricant) the density's
+        pressure derivative in the update (``load_gains`` and ``density_newton`` of the
+        result).
     damping : float
         Factor on the change of p and h at nodes whose change alternates in sign from sweep to
         sweep (:meth:`asperity.ehl.solver.EHLState.sweep`); 1 switches it off. Rough surfaces
