@@ -86,11 +86,56 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "hertz_a_m": a, "converged": int(res.converged)})
 
 
-def _outcome(res, step: int) -> str:
-    """How the step (0-based) that changed a solver setting ended, for the report's note."""
+def _outcome(res, step: int, settings: int = 1) -> str:
+    """How the step (0-based) that changed ``settings`` solver settings ended, for the
+    report's note."""
     ended = "converged" if res.step_converged[step] else "still did not converge"
-    return (f" (the sweeps of all tries are counted: {res.sweeps[step]}; with the changed "
-            f"setting it {ended})")
+    changed = "the changed setting" if settings == 1 else "the changed settings"
+    return (f" (the sweeps of all tries are counted: {res.sweeps[step]}; with {changed} it "
+            f"{ended})")
+
+
+def _listed(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def _fallback_notes(case, problem, res) -> list[str]:
+    """One note per step at which the stepper changed a setting (:meth:`TimeStepper.advance`):
+    the settings it failed with, those it and the later steps were relaxed with, and how it
+    ended; a step that changed several settings (a retry that failed again) gets one note."""
+    done = slice(0, res.steps_done)
+    options = StepOptions.for_problem(problem, method=case.solver.method,
+                                      load_gain=case.solver.load_gain)
+    update = "row solve" if options.method == "line" else "point update"
+    changes = []  # (first step, the setting it failed with, the setting after)
+    lowered = np.flatnonzero((res.refresh_intervals[done] > 0)
+                             & (res.refresh_intervals[done] < case.solver.refresh))
+    if lowered.size:
+        changes.append((lowered[0], f"the far field refreshed every {case.solver.refresh} "
+                        "sweeps", "a refresh at every sweep"))
+    added = np.flatnonzero(res.density_newton[done])
+    if added.size:
+        changes.append((added[0], f"the density lagged in the {update}",
+                        "the density's Newton term"))
+    halved = np.flatnonzero(res.load_gains[done] < options.load_gain)
+    if halved.size:
+        changes.append((halved[0], f"the load gain {options.load_gain:.3g}",
+                        f"the load gain {res.load_gains[halved[0]]:.3g}"))
+    notes = []
+    for step in sorted({change[0] for change in changes}):
+        these = [change for change in changes if change[0] == step]
+        before = _listed([change[1] for change in these])
+        after = _listed([change[2] for change in these])
+        notes.append(f"Step {step + 1} did not converge with {before}; it and the later steps "
+                     f"were relaxed with {after}{_outcome(res, step, len(these))}.")
+    if halved.size:
+        last = res.load_gains[res.steps_done - 1]
+        again = np.flatnonzero(res.load_gains[done] == last)[0]
+        if again > halved[0]:
+            notes.append(f"From step {again + 1} on the load gain was halved again, to "
+                         f"{last:.3g}.")
+    return notes
 
 
 def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
@@ -176,29 +221,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         notes.append(f"{bad} of {res.steps_done} steps did not reach the tolerance "
                      f"{case.solver.tolerance:g} within {case.solver.max_sweeps} sweeps; the "
                      "statistics include them.")
-    done = slice(0, res.steps_done)
-    lowered = np.flatnonzero((res.refresh_intervals[done] > 0)
-                             & (res.refresh_intervals[done] < case.solver.refresh))
-    if lowered.size:
-        notes.append(f"Step {lowered[0] + 1} did not converge with the far field refreshed every "
-                     f"{case.solver.refresh} sweeps; it and the later steps were relaxed with a "
-                     f"refresh at every sweep{_outcome(res, lowered[0])}.")
-    added = np.flatnonzero(res.density_newton[done])
-    if added.size:
-        notes.append(f"Step {added[0] + 1} did not converge with the density lagged in the row "
-                     "solve; it and the later steps were relaxed with the density's Newton "
-                     f"term{_outcome(res, added[0])}.")
-    gain = StepOptions.for_problem(problem, method=case.solver.method,
-                                   load_gain=case.solver.load_gain).load_gain
-    halved = np.flatnonzero(res.load_gains[done] < gain)
-    if halved.size:
-        first, last = halved[0], res.load_gains[res.steps_done - 1]
-        later = np.flatnonzero(res.load_gains[done] == last)[0]
-        notes.append(f"Step {first + 1} did not converge with the load gain {gain:.3g}; it and "
-                     f"the later steps were relaxed with {res.load_gains[first]:.3g}"
-                     f"{_outcome(res, first)}"
-                     + (f", and from step {later + 1} on with {last:.3g}" if later > first else "")
-                     + ".")
+    notes += _fallback_notes(case, problem, res)
     from ..plotting import ehl_transient as plots
 
     shown_index = int(np.flatnonzero(res.snapshot_steps == shown)[0])
