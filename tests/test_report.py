@@ -211,3 +211,83 @@ def test_comparison_differences_as_people_read_them(value, reference, shown):
         Comparison("load", value, reference, "closed form", "N", 1e-2)])
     html = render_report("t", {"analysis": "normal"}, outcome, {})
     assert shown in html
+
+
+def _parameter(html, key):
+    match = re.search(rf"<code>{re.escape(key)}</code></td><td class=l>([^<]*)<", html)
+    return match.group(1) if match else None
+
+
+def test_parameters_show_the_mesh_and_domain_the_run_chose(tmp_path):
+    """A transient line contact without a [grid] table: the report gives the mesh and domain
+    it ran on (not the schema's 129 x 65 on -2.5..1.5 "m"), leaves out the y bounds a line
+    contact does not use, and names the Dowson-Higginson lambda by its case key with its
+    unit (it showed as ``lubricant.lambda_`` without one)."""
+    path = tmp_path / "cam.toml"
+    path.write_text('''analysis = "ehl-transient"
+title = "Roller follower on a cam nose"
+reduced_modulus = "231 GPa"
+[contact]
+type = "line"
+radius = "7.5 mm"
+load_per_length = "250 kN/m"
+[speeds]
+u = "4 m/s"
+xi = 0.1
+[lubricant]
+eta0 = "9 mPa s"
+alpha = "15 1/GPa"
+[surface1]
+kind = "feature"
+feature = "ridge"
+amplitude = "0.2 um"
+half_width = "20 um"
+[time]
+counting_steps = 5
+''')
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    html = (out / "report.html").read_text()
+    nx = xr.open_dataset(out / "result.nc").sizes["x"]
+    assert nx != 129
+    assert _parameter(html, "grid.nx") == f"{nx} (chosen for the contact)"
+    assert _parameter(html, "grid.ny") == "1 (chosen for the contact)"
+    assert re.fullmatch(r"-\d+(\.\d+)? Hertz semi-axes \(chosen for the contact\)",
+                        _parameter(html, "grid.x_min"))
+    assert _parameter(html, "grid.y_min") is None and _parameter(html, "grid.y_max") is None
+    assert _parameter(html, "lubricant.lambda") == "1.68 1/GPa"
+    assert "lambda_" not in html
+
+
+def test_parameters_show_a_given_domain_in_hertz_semi_axes(tmp_path):
+    """A steady point contact whose [grid] table sets only the domain: the bounds as given
+    (numbers in Hertz semi-axes, a length as a length), the nodes as chosen."""
+    path = tmp_path / "ball.toml"
+    path.write_text('''analysis = "ehl-steady"
+reduced_modulus = "220 GPa"
+[contact]
+rx = "10 mm"
+ry = "10 mm"
+load = "20 N"
+[speeds]
+u = "1 m/s"
+[lubricant]
+eta0 = "0.04 Pa s"
+alpha = "20 1/GPa"
+viscosity_model = "barus"
+density_model = "incompressible"
+[grid]
+x_min = -3
+x_max = "0.5 mm"
+''')
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    html = (out / "report.html").read_text()
+    data = xr.open_dataset(out / "result.nc")
+    assert _parameter(html, "grid.x_min") == "-3 Hertz semi-axes"
+    assert _parameter(html, "grid.x_max") == "0.5 mm"
+    assert _parameter(html, "grid.y_min") == "-2 Hertz semi-axes"
+    assert _parameter(html, "grid.nx") == f"{data.sizes['x']} (chosen for the contact)"
+    assert _parameter(html, "grid.ny") == f"{data.sizes['y']} (chosen for the contact)"

@@ -157,25 +157,41 @@ def _flatten(data, prefix: str = ""):
             yield path, value
 
 
-def _parameters_table(case: dict, imperial: bool = False) -> str:
-    """The case's keys and values, quantities in readable units (SI as validated)."""
-    from .cases import ANALYSES
-    from .cases.keys import field_units
+def _parameters_table(case: dict, imperial: bool = False, chosen: dict | None = None) -> str:
+    """The case's keys and values, quantities in readable units (SI as validated); the values
+    in ``chosen`` (:attr:`Outcome.chosen`) replace the case's defaults, marked as chosen.
 
+    A key that takes a number or a quantity (an EHL domain bound) shows a number in Hertz
+    semi-axes, as the case file means it. A key chosen as None does not apply to the run and
+    is left out.
+    """
+    from .cases import ANALYSES
+    from .cases.keys import case_keys
+
+    chosen = chosen or {}
     model = ANALYSES.get(case.get("analysis"))
-    units = field_units(model) if model is not None else {}
+    keys = {k.key: k for k in case_keys(model)} if model is not None else {}
     rows = []
     for key, value in _flatten(case):
         if key in ("title", "description", "source"):
             continue
-        unit = units.get(re.sub(r"\[\d+\]", "[]", key), "")
+        spec = keys.get(re.sub(r"\[\d+\]", "[]", key))
+        unit = spec.unit if spec is not None else ""
+        mark = ""
+        if key in chosen:
+            if chosen[key] is None:
+                continue
+            value, mark = chosen[key], " (chosen for the contact)"
 
         def shown(v, unit=unit):
             if unit == "rad":  # case angles (pressure angle, force direction) in degrees
                 return f"{format_number(math.degrees(v))} deg"
             return format_quantity(v, unit, imperial=imperial)
 
-        if isinstance(value, list | tuple):
+        if spec is not None and spec.type == "number or quantity" \
+                and isinstance(value, int | float):
+            text = f"{format_number(value)} Hertz semi-axes"
+        elif isinstance(value, list | tuple):
             text = ", ".join(shown(v) if isinstance(v, int | float) and not isinstance(v, bool)
                              else str(v) for v in value)
         elif isinstance(value, float) or (isinstance(value, int) and unit):
@@ -185,7 +201,7 @@ def _parameters_table(case: dict, imperial: bool = False) -> str:
         else:
             text = str(value)
         rows.append(f"<tr><td class=l><code>{html.escape(key)}</code></td>"
-                    f"<td class=l>{html.escape(text)}</td></tr>")
+                    f"<td class=l>{html.escape(text + mark)}</td></tr>")
     return ("<table><tr><th class=l>key</th><th class=l>value</th></tr>"
             f"{''.join(rows)}</table>")
 
@@ -261,7 +277,7 @@ def render_report(title: str, case: dict, outcome: Outcome, files: dict,
 <h2>Comparison with references</h2>{_comparison_table(outcome.comparisons, imperial)}
 {extra_html}
 <h2>Figures</h2>{_figures(outcome, files)}
-<h2>Case parameters ({units})</h2>{_parameters_table(case, imperial)}
+<h2>Case parameters ({units})</h2>{_parameters_table(case, imperial, outcome.chosen)}
 <p class=info>Written by asperity. Files: {', '.join(html.escape(Path(p).name)
                                              for p in files.values())}.</p>
 </body></html>

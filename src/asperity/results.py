@@ -76,6 +76,11 @@ class Outcome:
     case : pydantic model, optional
         The validated case the outcome came from (set by :func:`asperity.runners.run_case`);
         its title and parameters head the report.
+    chosen : dict
+        Dotted case key -> the value the run used where the analysis chose it instead of the
+        case's default (an EHL mesh and domain chosen for the contact: ``grid.nx``,
+        ``grid.x_min`` in Hertz semi-axes, ...); the report's parameters show these. None: the
+        key does not apply to the run (a line contact's y bounds), left out of the report.
     """
 
     dataset: xr.Dataset
@@ -86,6 +91,7 @@ class Outcome:
     notes: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
     case: object = None
+    chosen: dict = field(default_factory=dict)
 
     def write(self, out_dir: str | Path, figures: bool = True, *, imperial: bool = False) -> dict:
         """Write what ``asperity run`` writes: result.nc, summary.json, figures, report.html.
@@ -102,7 +108,8 @@ class Outcome:
 
         files = write_outcome(self, out_dir, figures=figures)
         title = getattr(self.case, "title", None) or self.dataset.attrs.get("title", "asperity")
-        case = {} if self.case is None else self.case.model_dump(mode="json", exclude_none=True)
+        case = {} if self.case is None else self.case.model_dump(mode="json", exclude_none=True,
+                                                                  by_alias=True)
         files["report"] = write_report(title, case, self, files, Path(out_dir) / "report.html",
                                        imperial=imperial)
         return files

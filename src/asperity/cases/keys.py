@@ -18,7 +18,7 @@ from pydantic.fields import FieldInfo
 
 from ..units import DIMENSIONS
 
-__all__ = ["CaseKey", "case_keys", "field_units"]
+__all__ = ["CaseKey", "case_keys"]
 
 _NAMES = {str: "text", int: "integer", float: "number", bool: "true/false"}
 
@@ -174,17 +174,3 @@ def case_keys(model: type[BaseModel], prefix: str = "") -> list[CaseKey]:
             keys += case_keys(table, key + ("[]." if is_list else "."))
     unique = {k.key: k for k in keys}  # a table reached through two unions once
     return list(unique.values())
-
-
-def field_units(model: type[BaseModel]) -> dict[str, str]:
-    """Dotted key -> SI unit of every quantity of a case model (list entries as ``key[]``).
-
-    Parameters
-    ----------
-    model : type of pydantic.BaseModel
-
-    Returns
-    -------
-    dict
-    """
-    return {k.key: k.unit for k in case_keys(model) if k.unit}

@@ -19,7 +19,7 @@ from ..ehl.sides import side_probe
 from ..references import ehl_steady_comparisons, film_formulas, lubricant_laws
 from ..results import Outcome, variable
 
-__all__ = ["ehl_warnings", "run"]
+__all__ = ["chosen_mesh", "ehl_warnings", "run"]
 
 def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
@@ -93,7 +93,29 @@ def run(case, progress=None) -> Outcome:
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film, smooth_film=res.film)
     trust += diagnostics.ehl_film_collapse(res.film, estimate)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=trust)
+                   warnings=trust, chosen=chosen_mesh(case, problem, res.x, res.y))
+
+
+def chosen_mesh(case, problem, x, y) -> dict:
+    """The mesh and domain an EHL run chose for the contact, as case keys
+    (:attr:`asperity.results.Outcome.chosen`): ``grid.nx``, ``grid.ny`` where the case gives
+    no node count, the domain bounds in Hertz semi-axes where it has no [grid] table; a line
+    contact's ``grid.ny`` is 1 and its y bounds do not apply (None)."""
+    line = isinstance(problem, LineContact)
+    chosen = {}
+    if not case.grid.nodes_given:
+        chosen.update({"grid.nx": int(x.size), "grid.ny": int(y.size)})
+    elif line:
+        chosen["grid.ny"] = 1
+    if line:
+        chosen.update({"grid.y_min": None, "grid.y_max": None})
+    if "grid" not in case.model_fields_set:
+        chosen.update({"grid.x_min": float(x[0] / problem.a),
+                       "grid.x_max": float(x[-1] / problem.a)})
+        if not line:
+            chosen.update({"grid.y_min": float(y[0] / problem.b),
+                           "grid.y_max": float(y[-1] / problem.b)})
+    return chosen
 
 
 def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None) -> list[str]:

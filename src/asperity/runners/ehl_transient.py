@@ -27,7 +27,7 @@ from ..ehl.statistics import count_rate
 from ..ehl.stepper import StepOptions
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
-from .ehl_steady import ehl_warnings
+from .ehl_steady import chosen_mesh, ehl_warnings
 
 __all__ = ["CHECKPOINTS", "run"]
 
@@ -244,7 +244,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
     trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
-                   converged=res.converged, notes=notes, warnings=trust)
+                   converged=res.converged, notes=notes, warnings=trust,
+                   chosen=chosen_mesh(case, problem, x, y))
 
 
 def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> list[str]:
