@@ -291,3 +291,17 @@ x_max = "0.5 mm"
     assert _parameter(html, "grid.y_min") == "-2 Hertz semi-axes"
     assert _parameter(html, "grid.nx") == f"{data.sizes['x']} (chosen for the contact)"
     assert _parameter(html, "grid.ny") == f"{data.sizes['y']} (chosen for the contact)"
+
+
+def test_plain_numbers_of_a_case_show_their_unit():
+    """A gear case's speed (rad/s, given as rpm), temperature (deg C) and thermal constants
+    are plain numbers in the case model; the report gives their units (they showed as bare
+    numbers, the speed as 227.2 where the case file said 2170 rpm)."""
+    case = {"analysis": "gear", "operation": {"torque": 302.0, "speed": 227.2,
+                                               "bulk_temperature": 90.0},
+            "thermal": {"conductivity": [45.0, 45.0], "specific_heat": [460.0, 460.0]}}
+    html = render_report("t", case, _outcome(), {})
+    assert _parameter(html, "operation.speed") == "227.2 rad/s"
+    assert _parameter(html, "operation.bulk_temperature") == "90 °C"
+    assert _parameter(html, "thermal.conductivity") == "45 W/(m K), 45 W/(m K)"
+    assert _parameter(html, "thermal.specific_heat") == "460 J/(kg K), 460 J/(kg K)"

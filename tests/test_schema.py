@@ -45,6 +45,9 @@ def test_every_key_has_a_type_and_a_meaning(analysis):
     ("tangential", "loading.moment", "N*m", "0"),
     ("tangential", "pressure.regions[].size", "m", "-"),
     ("surface", "surface.natural_frequency", "Hz", "-"),
+    ("gear", "operation.speed", "rad/s", "required"),             # plain numbers with a unit
+    ("gear", "operation.bulk_temperature", "°C", "90"),
+    ("gear", "thermal.conductivity", "W/(m*K)", "[45, 45]"),
 ])
 def test_units_and_defaults_of_some_keys(analysis, key, unit, default):
     keys = {k.key: k for k in case_keys(ANALYSES[analysis])}

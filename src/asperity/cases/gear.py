@@ -122,9 +122,10 @@ class OperationSpec(CaseModel):
 
     torque: Quantity("moment", gt=0)
     """Pinion torque."""
-    speed: Annotated[float, Field(gt=0)]
+    speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s"})]
     """Pinion speed: "2170 rpm" or "2170 1/min"; a plain number or "227 1/s" is rad/s."""
-    bulk_temperature: Annotated[float, Field(gt=-100, lt=1000)] = 90.0
+    bulk_temperature: Annotated[float, Field(gt=-100, lt=1000,
+                                             json_schema_extra={"unit": "°C"})] = 90.0
     """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
@@ -157,16 +158,19 @@ class FrictionSpec(CaseModel):
         return self
 
 
+#: A positive value of pinion and wheel.
+_Pair = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]]
+
+
 class ThermalSpec(CaseModel):
     """``[thermal]``: conductivity (W/(m K)), density (kg/m^3) and specific heat (J/(kg K)) of
     pinion and wheel (default steel: 45, 7850, 460), and the heat-source ``profile``."""
 
-    conductivity: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (45, 45)
+    conductivity: _Pair = Field((45, 45), json_schema_extra={"unit": "W/(m*K)"})
     """Thermal conductivity [pinion, wheel] in W/(m K)."""
-    density: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (7850, 7850)
+    density: _Pair = Field((7850, 7850), json_schema_extra={"unit": "kg/m^3"})
     """Density [pinion, wheel] in kg/m^3."""
-    specific_heat: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = (
-        460, 460)
+    specific_heat: _Pair = Field((460, 460), json_schema_extra={"unit": "J/(kg*K)"})
     """Specific heat [pinion, wheel] in J/(kg K)."""
     profile: Literal["semi-elliptic", "uniform"] = "semi-elliptic"
     """Heat-source profile of the flash temperature: "semi-elliptic" or "uniform"."""

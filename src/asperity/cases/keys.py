@@ -63,12 +63,14 @@ def _strip_optional(annotation):
 
 def _extra(annotation, info: FieldInfo | None = None) -> dict:
     """The JSON-schema extra of a field or of its Annotated metadata (``dimension``, and a
-    ``type`` text where the value is more than a quantity)."""
+    ``type`` text where the value is more than a quantity; or the ``unit`` a plain number is
+    given in, such as a temperature in deg C)."""
     extras = [info.json_schema_extra] if info is not None else []
     if typing.get_origin(annotation) is typing.Annotated:
         extras += [m.json_schema_extra for m in typing.get_args(annotation)[1:]
                    if isinstance(m, FieldInfo)]
-    return next((e for e in extras if isinstance(e, dict) and "dimension" in e), {})
+    return next((e for e in extras if isinstance(e, dict) and ("dimension" in e or "unit" in e)),
+                {})
 
 
 def _dimension(annotation, info: FieldInfo | None = None) -> str | None:
@@ -86,7 +88,13 @@ def _models(annotation) -> list[type[BaseModel]]:
 
 
 def _describe_type(annotation, info: FieldInfo | None) -> tuple[str, str]:
-    """(type text, SI unit) of a field annotation."""
+    """(type text, SI unit) of a field annotation; a plain number's ``unit`` extra is its
+    unit."""
+    number_unit = _extra(annotation, info).get("unit")
+    if number_unit is not None:
+        base = typing.get_args(annotation)[0] \
+            if typing.get_origin(annotation) is typing.Annotated else annotation
+        return _describe_type(base, None)[0], number_unit
     dimension = _dimension(annotation, info)
     if dimension is not None:
         unit = DIMENSIONS[dimension]
