@@ -369,3 +369,22 @@ def test_a_thick_film_line_contact_gets_the_density_term_in_its_point_update():
     assert added.size and np.all(res.density_newton[added[0]:])
     assert np.all(res.load_gains == res.load_gains[0])   # not halved: the term was enough
     assert res.max_pressure[-1] == pytest.approx(res.max_pressure[0], rel=1e-3)
+
+
+def test_report_says_when_the_steady_start_did_not_converge(tmp_path, monkeypatch):
+    """A steady start cut short (5 sweeps instead of 20000, as the seed-mesh a/b = 1 and 4
+    runs ended theirs unconverged): the run goes on, every step converges, the run counts as
+    not converged, and the report says why (it said "0 of N steps did not reach the
+    tolerance"); the inlet and mesh advice use the formula's film, not the unconverged one."""
+    import asperity.ehl.transient as transient
+
+    real = transient.solve_steady
+    monkeypatch.setattr(transient, "solve_steady",
+                        lambda *args, **kw: real(*args, **{**kw, "max_iter": 5}))
+    case = _bump(surface2={"kind": "smooth"}, speeds={"xi": 0.0}, grid={"nx": 65, "ny": 33},
+                 time={"warmup_steps": 20, "counting_steps": 5})
+    outcome = run_case(case, workdir=tmp_path)
+    data = outcome.dataset
+    assert data["step_converged"].values.all() and not outcome.converged
+    assert any(n.startswith("The smooth steady start did not converge") for n in outcome.notes)
+    assert not any("steps did not reach the tolerance" in n for n in outcome.notes)

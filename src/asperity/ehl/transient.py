@@ -178,6 +178,9 @@ class TransientResult(SolverResult):
         Largest final residual of any step.
     steady_central_film : float
         Central film of the smooth steady start, m.
+    steady_converged : bool
+        Whether the smooth steady start converged (a run goes on from an unconverged one: its
+        steps relax the state to the transient solution, but ``converged`` is then False).
     method, theta
         Relaxation and time-scheme weight used.
     """
@@ -219,6 +222,7 @@ class TransientResult(SolverResult):
     converged: bool
     residual: float
     steady_central_film: float
+    steady_converged: bool
     method: str
     theta: float
 
@@ -561,6 +565,7 @@ def solve_transient(
         snapshot_steps=snaps, iterations=int(record["sweeps"].sum()),
         converged=bool(steady_converged and steps_done == total and done.all()),
         residual=float(np.nanmax(record["residuals"])) if steps_done else float("nan"),
-        steady_central_film=steady_hc, method=opts.method, theta=opts.theta,
+        steady_central_film=steady_hc, steady_converged=steady_converged, method=opts.method,
+        theta=opts.theta,
         **history.arrays(),
     )
