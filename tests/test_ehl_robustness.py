@@ -312,3 +312,25 @@ def test_default_sides_follow_a_long_inlet():
     assert abs(res.minimum_film / wide.minimum_film - 1) < 0.01
     gear = _gear()
     assert gear.default_domain()[1][1] == pytest.approx(2 * gear.b)
+
+
+@pytest.mark.slow
+def test_point_contact_on_a_mesh_three_times_finer_than_the_default_converges():
+    """The circular contact of the seed's aspect-ratio study (a/b = 1, M = 174, L = 6.9) on the
+    seed's 801 x 201 mesh, three times finer along x than its default 257 x 41: with the load
+    gain 0.05 of the coarser grids its finest grid cycled at residual 0.1-0.7 for 20000 sweeps
+    and its film drifted to 986 nm; with the gain scaled by dX / dX_default (0.016) it
+    converges (6271 sweeps, 163 s) to the film of 401 x 101 (408.2 nm), where 0.05 converged
+    (docs/ehl-robustness.md)."""
+    from asperity.cases import load_case
+    from asperity.sweep import load_study
+
+    case = load_case(dict((cid, c) for cid, c, _ in
+                          load_study("holmes-aspect-ratio-paper").cases)["0001"])
+    prob = case.problem()
+    nx, ny, domain = case.mesh(prob)
+    assert (nx, ny) == (801, 201) and prob.default_nodes(domain) == (257, 41)
+    half = solve_steady(prob, nx=401, ny=101, domain=domain, levels=3, near=2)
+    fine = solve_steady(prob, nx=nx, ny=ny, domain=domain, levels=4, near=2, max_iter=20000)
+    assert half.converged and fine.converged
+    assert fine.central_film == pytest.approx(half.central_film, rel=0.01)
