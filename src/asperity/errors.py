@@ -31,6 +31,7 @@ class InputError(ValueError):
         self.field = field
         self.expected = expected
         self.got = got
+        self.problem = problem
         msg = f"{field}: {problem or 'expected ' + expected}"
         if got is not None:
             msg += f", got {_short(got)}"

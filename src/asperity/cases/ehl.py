@@ -276,8 +276,11 @@ def _domain_bound(lo: float, hi: float):
                                               "type": "number or quantity"})]
 
 
-LowerBound = _domain_bound(-100.0, -1.0)
-UpperBound = _domain_bound(1.0, 100.0)
+#: Farthest domain bound from the contact's centre, in Hertz semi-axes (a number or a length).
+MAX_BOUND = 100.0
+
+LowerBound = _domain_bound(-MAX_BOUND, -1.0)
+UpperBound = _domain_bound(1.0, MAX_BOUND)
 
 
 class EHLGridSpec(CaseModel):
@@ -363,6 +366,9 @@ class EHLGridSpec(CaseModel):
             edge = -semi_axis if lower else semi_axis
             raise InputError(f"grid.{key}", f"a bound outside the Hertz contact, "
                              f"{'below' if lower else 'above'} {edge:.4g} m", value)
+        if abs(metres) > MAX_BOUND * semi_axis:  # as for a bound given in semi-axes
+            raise InputError(f"grid.{key}", f"a bound within {MAX_BOUND:g} Hertz semi-axes "
+                             f"({MAX_BOUND * semi_axis:.4g} m) of the centre", value)
         return metres
 
 

@@ -124,8 +124,14 @@ def _key(part) -> str:
 
 
 def first_error(exc: ValidationError, prefix: str = "") -> InputError:
-    """Turn pydantic's first validation error into one :class:`InputError` line."""
+    """Turn pydantic's first validation error into one :class:`InputError` line; an
+    :class:`InputError` raised by a validator (one that checks a key against the rest of the
+    case, such as a domain bound against the Hertz semi-axes) keeps the key it names."""
     err = exc.errors(include_url=False)[0]
+    raised = err.get("ctx", {}).get("error")
+    if isinstance(raised, InputError):
+        field = ".".join(p for p in (prefix, raised.field) if p)
+        return InputError(field, raised.expected, raised.got, problem=raised.problem)
     loc = ".".join(_key(p) for p in err["loc"] if not str(p).startswith("function-"))
     field = ".".join(p for p in (prefix, loc) if p) or "case"
     if err["type"] in _PROBLEMS:
