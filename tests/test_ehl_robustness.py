@@ -254,6 +254,24 @@ def test_default_domain_and_mesh_follow_the_regime():
     assert ny > 41
 
 
+@pytest.mark.parametrize("half_width", np.linspace(1.5, 5.0, 15))
+def test_default_mesh_passes_its_own_mesh_check_on_a_users_domain(half_width):
+    """The default mesh on a domain of the user's width (a steel ball on glass, M = 25,
+    L = 6.9, y = +-2.6 b): the cells across were rounded down to a multiple of 8 under the
+    dY >= 3 dX bound, giving b/dy = 9.2, and the mesh check (diagnostics.ehl_mesh, limit
+    10 per semi-axis) warned about the mesh asperity had chosen. It stays quiet now, and the
+    cells keep dY >= 3 dX."""
+    from asperity import diagnostics
+    from asperity.ehl.problem import MIN_CELL_ASPECT
+
+    prob = _point(25, 6.9)
+    domain = ((-3.7 * prob.a, 3.0 * prob.a), (-half_width * prob.b, half_width * prob.b))
+    nx, ny = prob.default_nodes(domain)
+    x, y = prob.grid(nx, ny, domain)
+    assert diagnostics.ehl_mesh(x, y, prob.a, prob.b) == []
+    assert y[1] - y[0] >= MIN_CELL_ASPECT * (x[1] - x[0]) * (1 - 1e-9)
+
+
 def test_case_file_without_grid_uses_the_regime_defaults():
     """The slow ball example has no [grid] table: it runs on the regime's mesh and converges;
     the same case on the former default grid table (129 x 65) is what failed."""

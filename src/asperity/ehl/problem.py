@@ -306,8 +306,10 @@ class PointContact(_Contact):
         ``dY <= MAX_CELL_ASPECT dX``: on cells 32 times longer than wide the relaxation
         diverged for long ellipses at large Moes L (k = 5, M = 1000 and 3000, L = 19).
         Along x ``dX = 1/n`` with ``n`` the power of two of :meth:`cells_per_a`, refined to
-        ``dX <= b/30`` when ``b < a`` so that both hold. ``nx - 1`` and ``ny - 1`` are
-        multiples of 8.
+        ``dX <= b/30`` when ``b < a`` so that both hold. ``nx - 1`` is a multiple of 8, and
+        ``ny - 1`` too where one fits between ``dY <= b/10`` and ``dY >= 3 dX``, else a
+        multiple of 4 or 2 (the mesh check, :func:`asperity.diagnostics.ehl_mesh`, wants
+        ``b/dY >= 10``).
 
         ``max_dx`` and ``max_dy`` (m) are spacings a surface feature asks for (a transient
         run's dent, bump or waviness: :meth:`asperity.cases.EHLTransientCase.feature_spacing`):
@@ -324,8 +326,13 @@ class PointContact(_Contact):
         dx = self.a / int(2 ** np.ceil(np.log2(need)))
         nx = 8 * int(np.ceil((x1 - x0) / (8 * dx))) + 1
         dy = min(0.1 * self.b, max_dy) if max_dy else 0.1 * self.b
-        cells = min(8 * np.ceil((y1 - y0) / (8 * dy)),
-                    8 * np.floor((y1 - y0) / (8 * MIN_CELL_ASPECT * dx)))
+        widest = (y1 - y0) / (MIN_CELL_ASPECT * dx)  # most cells with dY >= 3 dX
+        # a multiple of 8 (grid sequencing) with dY <= dy where one fits under that bound,
+        # else of 4 or 2: a 5.2 b wide domain at dX = b/32 has room for 52-55 cells only, and
+        # the 48 taken before gave b/dy = 9.2, which the mesh check then warned about
+        cells = next((m * np.ceil((y1 - y0) / (m * dy)) for m in (8, 4, 2)
+                      if m * np.ceil((y1 - y0) / (m * dy)) <= widest),
+                     8 * np.floor(widest / 8))
         cells = max(cells, 8 * np.ceil((y1 - y0) / (8 * MAX_CELL_ASPECT * dx)))
         return nx, int(max(cells, 16)) + 1
 
