@@ -182,6 +182,27 @@ def test_not_converged_is_reported():
     assert any("did not converge" in n for n in out.notes)
 
 
+def test_unconverged_run_on_square_cells_says_which_ny_to_use():
+    """A point contact that does not converge on cells shorter across y than 3 dx (here dy =
+    dx / 2) gets a note naming the largest grid.ny with dy >= 3 dx at its nx, after the
+    solver has tried the y-line sweeps too; on the default cells it gets no such note."""
+    import re
+
+    data = _example("holmes-smooth-point", grid={"nx": 33, "ny": 257},
+                    solver={"levels": 1, "max_sweeps": 10})
+    out = run_case(load_case(data))
+    assert not out.converged
+    advice = [n for n in out.notes if "grid.ny <=" in n]
+    assert len(advice) == 1 and "y-line sweeps" in advice[0]
+    ny = int(re.search(r"grid.ny <= (\d+)", advice[0]).group(1))
+    x, y = out.dataset["x"].values, out.dataset["y"].values
+    dx, width = x[1] - x[0], y[-1] - y[0]
+    assert width / (ny - 1) >= 3 * dx > width / ny  # the largest such ny
+    data = _example("holmes-smooth-point", grid={"nx": 33, "ny": 17},
+                    solver={"levels": 1, "max_sweeps": 10})
+    assert not any("grid.ny <=" in n for n in run_case(load_case(data)).notes)
+
+
 def test_xi_study_sweeps_the_slide_roll_ratio():
     from asperity.sweep import load_study
 

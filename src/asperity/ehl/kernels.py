@@ -21,12 +21,15 @@ deflection refreshed by FFT. A node whose coupled update gives p < 0 is cavitate
 h from the deflection equation); one that gives h < 0 is in contact (h = 0, p from the
 deflection equation, Holmes et al. Eq. 8).
 
-Two sweeps are provided: the seed's point update (:func:`point_sweep`) and a zebra x-line
+Three sweeps are provided: the seed's point update (:func:`point_sweep`), a zebra x-line
 update (:func:`line_sweep`, rows solved in parallel threads) that solves every ``y = const``
 row of nodes at once, with the Reynolds x-couplings, the deflection Laplacian in x and the
 ``|k| <= K`` near-field pressure coefficients along x implicit, by block elimination of its
-2 x 2 (p_i, h_i) blocks. :func:`damp_oscillations` damps a sweep's oscillating changes and
-:func:`far_field` evaluates ``efar`` at a far-field refresh.
+2 x 2 (p_i, h_i) blocks, and a y-line update (:func:`column_sweep`) that solves every
+``x = const`` column with the y-couplings implicit, for cells that are not long across the
+entrainment direction (docs/ehl-robustness.md, "Square cells").
+:func:`damp_oscillations` damps a sweep's oscillating changes and :func:`far_field` evaluates
+``efar`` at a far-field refresh.
 """
 
 from __future__ import annotations
@@ -533,3 +536,116 @@ def far_field(w, p, source, c_el, f_near, dx2, dy2, two_d, efar):
                 if i + k < nx:
                     near += f_near[k] * p[i + k, j]
             efar[i, j] = source[i, j] + c_el * (efar[i, j] - near)
+
+
+@numba.njit(cache=True)
+def _assemble_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
+                     f_near, i, kind, m, b, deps_x, deps_y, start=0):
+    """Assemble block rows ``start..ny-1`` of the block-tridiagonal system of column i (the
+    nodes ``(i, j)``, j = 0..ny-1; layout of :func:`_block_band_solve` with one block either
+    side): the Reynolds y-couplings and the deflection Laplacian in y implicit, the x-terms
+    (the upwind wedge, the Reynolds and Laplacian x-neighbours and the near-field
+    coefficients ``f_{k,0}``, ``k != 0``) at the current iterate as in :func:`point_sweep`."""
+    nx, ny = p.shape
+    dx2, dy2, inv_dy2, d0 = _spacing(ny, dx, dy)
+    c_self = -c_el * f_near[0]
+    m[start:] = 0.0
+    for j in range(start, ny):
+        if j == 0 or j == ny - 1:
+            m[j, 1, 0, 0] = 1.0
+            b[j, 0] = 0.0
+            m[j, 1, 1, 1] = 1.0
+            b[j, 1] = h[i, j]
+            continue
+        a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy,
+                                           theta, mass, c_el, f_near, i, j)
+        # deflection row: (h_N + h_S)/dY^2 + D0 h_P + C0 p_P = E^ + (h_N + h_S)/dY^2
+        m[j, 1, 1, 1] = d0
+        m[j, 2, 1, 1] = inv_dy2
+        m[j, 0, 1, 1] = inv_dy2
+        m[j, 1, 1, 0] = c_self
+        b[j, 1] = e + (h[i, j + 1] + h[i, j - 1]) * inv_dy2
+        if kind[i, j] == CAVITATED:
+            m[j, 1, 0, 0] = 1.0
+            b[j, 0] = 0.0
+            continue
+        if kind[i, j] == CONTACT:
+            m[j, 1, 0, 1] = 1.0
+            b[j, 0] = 0.0
+            continue
+        xe, xw, xn, xs = _faces(eps_x, eps_y, i, j, dx2, dy2)
+        newton = _newton(p, deps_x, deps_y, i, j, dx2, dy2, theta)
+        m[j, 1, 0, 0] = a0 + newton
+        m[j, 2, 0, 0] = theta * xn
+        m[j, 0, 0, 0] = theta * xs
+        m[j, 1, 0, 1] = b0
+        b[j, 0] = r + theta * (xn * p[i, j + 1] + xs * p[i, j - 1]) + newton * p[i, j]
+
+
+@numba.njit(cache=True)
+def _relax_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
+                  f_near, kind, deps_x, deps_y, i):
+    """Solve column i for all its (p, h) at once with an active set, as :func:`_relax_row`
+    does a row; returns its largest change of p and of h."""
+    nx, ny = p.shape
+    m = np.empty((ny, 3, 2, 2))
+    b = np.empty((ny, 2))
+    x = np.empty((ny, 2))
+    d0 = _spacing(ny, dx, dy)[3]
+    c_self = -c_el * f_near[0]
+    col_kind = kind[i, :]
+    for j in range(1, ny - 1):
+        if col_kind[j] == FLUID:
+            continue
+        a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy,
+                                           theta, mass, c_el, f_near, i, j)
+        det = a0 * d0 - b0 * c_self
+        if col_kind[j] == CAVITATED and (r * d0 - b0 * e) / det > 0.0:
+            col_kind[j] = FLUID
+        elif col_kind[j] == CONTACT and (a0 * e - c_self * r) / det > 0.0:
+            col_kind[j] = FLUID
+    start = 0
+    for _ in range(4):
+        _assemble_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
+                         f_near, i, kind, m, b, deps_x, deps_y, start)
+        _block_band_solve(m, b, 1, 1, x, start)
+        start = _update_active_set(col_kind, x)
+        if start == ny:
+            break
+    dp_max = 0.0
+    dh_max = 0.0
+    for j in range(1, ny - 1):
+        pn = max(x[j, 0], 0.0)
+        hn = max(x[j, 1], 0.0)
+        dp_max = max(dp_max, abs(pn - p[i, j]))
+        dh_max = max(dh_max, abs(hn - h[i, j]))
+        p[i, j] = pn
+        h[i, j] = hn
+    return dp_max, dh_max
+
+
+@numba.njit(cache=True, parallel=True)
+def column_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
+                 kind, deps_x, deps_y):
+    """One sweep of y-line relaxation: columns i = const in ``max(3, K + 1)`` colours
+    (``K = f_near.size - 1``), each solved for all its (p, h) at once with an active set
+    (:func:`_relax_column`).
+
+    A column reads the columns up to two nodes upstream (the second-order upwind wedge) and
+    ``K`` either side (``f_near``), so the columns of one colour are independent and are
+    solved in parallel; the result does not depend on the number of threads. Returns the
+    largest change of p and of h.
+    """
+    nx, ny = p.shape
+    colours = max(3, f_near.size)
+    dp_col = np.zeros(nx)
+    dh_col = np.zeros(nx)
+    for colour in range(colours):
+        first = 1 + colour
+        count = max(0, (nx - 2 - first) // colours + 1)
+        for t in numba.prange(count):
+            i = first + colours * t
+            dp_col[i], dh_col[i] = _relax_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx,
+                                                 dy, theta, mass, c_el, f_near, kind, deps_x,
+                                                 deps_y, i)
+    return dp_col.max(), dh_col.max()
