@@ -203,6 +203,27 @@ def test_unconverged_run_on_square_cells_says_which_ny_to_use():
     assert not any("grid.ny <=" in n for n in run_case(load_case(data)).notes)
 
 
+def test_run_rescued_by_y_line_sweeps_says_so():
+    """The a/b = 4 ellipse on 129 x 129 nodes (dy = dx/4), where the x-line relaxation alone
+    does not converge in 3000 sweeps (tests/test_ehl_robustness.py): the run converges by
+    the solver's second try with y-line sweeps, and the report says so and which grid.ny
+    would converge directly."""
+    data = {"analysis": "ehl-steady", "title": "a/b = 4 on a square node count",
+            "reduced_modulus": "227 GPa",
+            "contact": {"type": "point", "rx": "19.1 mm", "ry": "2.3003 mm",
+                        "load": "128.51 N"},
+            "speeds": {"u": "25 m/s", "xi": 0.25},
+            "lubricant": {"eta0": "0.005 Pa s", "alpha": "11.1 1/GPa"},
+            "grid": {"nx": 129, "ny": 129, "x_min": -2.5, "x_max": 1.5, "y_min": -2.0,
+                     "y_max": 2.0},
+            "solver": {"max_sweeps": 3000}}
+    out = run_case(load_case(data))
+    assert out.converged
+    advice = [n for n in out.notes if "grid.ny <=" in n]
+    assert len(advice) == 1 and "second solve with a y-line sweep" in advice[0]
+    assert "0.25 dx across" in advice[0]
+
+
 def test_xi_study_sweeps_the_slide_roll_ratio():
     from asperity.sweep import load_study
 

@@ -86,7 +86,8 @@ def run(case, progress=None) -> Outcome:
     if not res.converged:
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
                      f"(residual {res.residual:.2e}); the numbers above are not trustworthy.")
-        notes += _cell_advice(res, line)
+    if not line and (res.y_lines or not res.converged):
+        notes += _cell_advice(res)
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
         "moes_central_film_m"))
     # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
@@ -98,22 +99,25 @@ def run(case, progress=None) -> Outcome:
                    warnings=trust, chosen=chosen_mesh(case, problem, res.x, res.y))
 
 
-def _cell_advice(res, line: bool) -> list[str]:
-    """What to change when a point contact did not converge on cells shorter across y than
-    ``Y_LINES_BELOW`` times their length (:data:`asperity.ehl.solver.Y_LINES_BELOW`; the
-    solver has then tried the y-line sweeps too)."""
-    if line or res.y.size < 2:
-        return []
+def _cell_advice(res) -> list[str]:
+    """What to change for a point contact on cells shorter across y than ``Y_LINES_BELOW``
+    times their length (:data:`asperity.ehl.solver.Y_LINES_BELOW`) that did not converge, or
+    converged only in the solver's second try with y-line sweeps."""
     dx, dy = res.x[1] - res.x[0], res.y[1] - res.y[0]
     if dy >= Y_LINES_BELOW * dx:
         return []
     ny = 1 + int((res.y[-1] - res.y[0]) / (Y_LINES_BELOW * dx))
+    if res.converged:
+        outcome = (f"the x-line relaxation did not converge and the solution is that of a "
+                   f"second solve with a y-line sweep after every x-line sweep ({res.sweeps} "
+                   "sweeps on the finest grid)")
+    else:
+        outcome = "neither the x-line relaxation nor the y-line sweeps tried after it converged"
     return [f"The cells are {dy / dx:.2g} dx across (dy = {dy * 1e6:.3g} um, dx = "
             f"{dx * 1e6:.3g} um): on such cells the rows couple as strongly as the nodes "
-            "along them, and neither the x-line relaxation nor the y-line sweeps tried after it "
-            f"converged. The relaxation converges best on cells with dy >= {Y_LINES_BELOW:g} "
-            f"dx: use grid.ny <= {ny} with this nx, or leave out grid.nx and grid.ny so that "
-            "the mesh follows the contact."]
+            f"along them, and {outcome}. The relaxation converges best, and fastest, on cells "
+            f"with dy >= {Y_LINES_BELOW:g} dx: use grid.ny <= {ny} with this nx, or leave out "
+            "grid.nx and grid.ny so that the mesh follows the contact."]
 
 
 def chosen_mesh(case, problem, x, y) -> dict:
