@@ -114,10 +114,11 @@ def _cell_advice(res) -> list[str]:
     else:
         outcome = "neither the x-line relaxation nor the y-line sweeps tried after it converged"
     return [f"The cells are {dy / dx:.2g} dx across (dy = {dy * 1e6:.3g} um, dx = "
-            f"{dx * 1e6:.3g} um): on such cells the rows couple as strongly as the nodes "
-            f"along them, and {outcome}. The relaxation converges best, and fastest, on cells "
-            f"with dy >= {Y_LINES_BELOW:g} dx: use grid.ny <= {ny} with this nx, or leave out "
-            "grid.nx and grid.ny so that the mesh follows the contact."]
+            f"{dx * 1e6:.3g} um): on such cells the rows couple at least as strongly as the "
+            f"nodes along them, and {outcome}. The relaxation converges best, and fastest, on "
+            f"cells with dy >= {Y_LINES_BELOW:g} dx: grid.ny <= {ny} with this nx (for more "
+            "nodes across, raise nx with ny), or leave out grid.nx and grid.ny so that the "
+            "mesh follows the contact."]
 
 
 def chosen_mesh(case, problem, x, y) -> dict:
