@@ -387,6 +387,35 @@ def _update_active_set(row_kind, x):
     return first
 
 
+@numba.njit(cache=True, inline="always")
+def _released(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
+              i, j, state, d0, c_self):
+    """The state of a cavitated or contact node (i, j) after the release test of the line
+    updates: fluid where the point update of Eq. 7 at the current iterate gives p > 0
+    (cavitated) or h > 0 (contact), else unchanged."""
+    a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy,
+                                       theta, mass, c_el, f_near, i, j)
+    det = a0 * d0 - b0 * c_self
+    if state == CAVITATED and (r * d0 - b0 * e) / det > 0.0:
+        return FLUID
+    if state == CONTACT and (a0 * e - c_self * r) / det > 0.0:
+        return FLUID
+    return state
+
+
+@numba.njit(cache=True, inline="always")
+def _store(p, h, i, j, x, k):
+    """Write block k of a line solution ``x`` (p, h; negative values as 0) into node (i, j);
+    return the changes |dp|, |dh|."""
+    pn = max(x[k, 0], 0.0)
+    hn = max(x[k, 1], 0.0)
+    dp = abs(pn - p[i, j])
+    dh = abs(hn - h[i, j])
+    p[i, j] = pn
+    h[i, j] = hn
+    return dp, dh
+
+
 @numba.njit(cache=True)
 def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el, f_near,
                kind, deps_x, deps_y, drho, j):
@@ -405,17 +434,10 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
     d0 = _spacing(ny, dx, dy)[3]
     c_self = -c_el * f_near[0]
     row_kind = kind[:, j]
-    # release of cavitated / contact nodes by the point update at the current iterate
     for i in range(1, nx - 1):
-        if row_kind[i] == FLUID:
-            continue
-        a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy,
-                                           theta, mass, c_el, f_near, i, j)
-        det = a0 * d0 - b0 * c_self
-        if row_kind[i] == CAVITATED and (r * d0 - b0 * e) / det > 0.0:
-            row_kind[i] = FLUID
-        elif row_kind[i] == CONTACT and (a0 * e - c_self * r) / det > 0.0:
-            row_kind[i] = FLUID
+        if row_kind[i] != FLUID:
+            row_kind[i] = _released(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta,
+                                    mass, c_el, f_near, i, j, row_kind[i], d0, c_self)
     start = 0
     for _ in range(4):
         _assemble_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
@@ -427,12 +449,9 @@ def _relax_row(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
     dp_max = 0.0
     dh_max = 0.0
     for i in range(1, nx - 1):
-        pn = max(x[i, 0], 0.0)
-        hn = max(x[i, 1], 0.0)
-        dp_max = max(dp_max, abs(pn - p[i, j]))
-        dh_max = max(dh_max, abs(hn - h[i, j]))
-        p[i, j] = pn
-        h[i, j] = hn
+        dp, dh = _store(p, h, i, j, x, i)
+        dp_max = max(dp_max, dp)
+        dh_max = max(dh_max, dh)
     return dp_max, dh_max
 
 
@@ -595,15 +614,9 @@ def _relax_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
     c_self = -c_el * f_near[0]
     col_kind = kind[i, :]
     for j in range(1, ny - 1):
-        if col_kind[j] == FLUID:
-            continue
-        a0, b0, r, e = _nodal_coefficients(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy,
-                                           theta, mass, c_el, f_near, i, j)
-        det = a0 * d0 - b0 * c_self
-        if col_kind[j] == CAVITATED and (r * d0 - b0 * e) / det > 0.0:
-            col_kind[j] = FLUID
-        elif col_kind[j] == CONTACT and (a0 * e - c_self * r) / det > 0.0:
-            col_kind[j] = FLUID
+        if col_kind[j] != FLUID:
+            col_kind[j] = _released(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta,
+                                    mass, c_el, f_near, i, j, col_kind[j], d0, c_self)
     start = 0
     for _ in range(4):
         _assemble_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c_el,
@@ -615,12 +628,9 @@ def _relax_column(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass
     dp_max = 0.0
     dh_max = 0.0
     for j in range(1, ny - 1):
-        pn = max(x[j, 0], 0.0)
-        hn = max(x[j, 1], 0.0)
-        dp_max = max(dp_max, abs(pn - p[i, j]))
-        dh_max = max(dh_max, abs(hn - h[i, j]))
-        p[i, j] = pn
-        h[i, j] = hn
+        dp, dh = _store(p, h, i, j, x, j)
+        dp_max = max(dp_max, dp)
+        dh_max = max(dh_max, dh)
     return dp_max, dh_max
 
 
