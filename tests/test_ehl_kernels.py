@@ -118,6 +118,22 @@ def test_a_y_line_sweep_leaves_a_converged_state_unchanged():
     s.P, s.H = p, h  # the x-line sweep from there: converged by the same measure
     assert max(s.sweep("line")) < 1e-8
     assert s.P.max() > 0.5  # a loaded contact, not a trivial state
+    # a sweep that did nothing would pass the above: a column of the first colour (solved
+    # first, its neighbours at the converged state) knocked off by 2 % in p and 1 % in h at
+    # its fluid nodes is put back by one column sweep (Newton terms off, so the column's
+    # equations are those of the fixed point exactly)
+    colours = max(3, s.f_near.size)
+    i = 1 + colours * int(np.argmin(np.abs(s.X[1::colours])))
+    fluid = (s.P[i] > 0.0) & ~s.edge[i]
+    assert fluid.sum() >= 5
+    s.P, s.H = p.copy(), h.copy()
+    s.P[i, fluid] *= 1.02
+    s.H[i, fluid] *= 1.01
+    assert np.abs(s.P - p).max() > 1e-3
+    zero = np.zeros_like(dex)
+    column_sweep(s.P, s.H, ex, ey, rho, s.efar, s.rhs_t, s.lam, s.dX, s.dY, s.theta, s.mass,
+                 s.c, s.f_near, s.kind, zero, zero)
+    assert np.abs(s.P - p).max() < 1e-8 and np.abs(s.H - h).max() < 1e-8
 
 
 def test_density_newton_term_is_the_wedge_derivative(rough_state):
