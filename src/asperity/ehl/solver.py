@@ -873,15 +873,17 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
     return _Sequenced(state, converged, residual, sweeps, total, history)
 
 
-def sequencing_levels(nx: int, ny: int) -> int:
-    """Grid-sequencing levels of a default mesh (and of a line contact's given mesh): halve
-    (at most 3 times) while the coarsest grid keeps at least 33 nodes along x and 17 across
-    (``ny = 1``: a line contact); on 9 nodes across (dY = b/2) the gear case's coarsest grid
-    did not converge."""
+def sequencing_levels(nx: int, ny: int, min_nx: int = 33) -> int:
+    """Grid-sequencing levels of a mesh: halve (at most 3 times) while the coarsest grid keeps
+    at least ``min_nx`` nodes along x and 17 across (``ny = 1``: a line contact).
+
+    33 along x for a default mesh (and a line contact's given mesh); the transient runs'
+    steady start on the user's own mesh takes 17 (:func:`asperity.ehl.solve_transient`). On
+    9 nodes across (dY = b/2) the gear case's coarsest grid did not converge."""
     levels = 1
     while levels < 4:
         f = 2**levels
-        if (nx - 1) % f or (nx - 1) // f + 1 < 33:
+        if (nx - 1) % f or (nx - 1) // f + 1 < min_nx:
             break
         if ny > 1 and ((ny - 1) % f or (ny - 1) // f + 1 < 17):
             break

@@ -50,7 +50,7 @@ from .checkpoint import Checkpointer, fingerprint
 from .kernels import CAVITATED, CONTACT
 from .nodal import centre_line
 from .problem import LineContact
-from .solver import solve_steady
+from .solver import sequencing_levels, solve_steady
 from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
 from .stepper import StepOptions, TimeStepper
 
@@ -289,19 +289,6 @@ def default_warmup_steps(x, rough_speeds, dt: float) -> int:
     return int(np.ceil(max(crossing) / dt - 1e-9)) if crossing else 0
 
 
-def _levels(nx, ny, line):
-    """Grid-sequencing levels for the steady start: halve while the coarse grid keeps >= 17."""
-    levels = 1
-    while levels < 4:
-        f = 2 ** levels
-        if (nx - 1) % f or (nx - 1) // f + 1 < 17:
-            break
-        if not line and ((ny - 1) % f or (ny - 1) // f + 1 < 17):
-            break
-        levels += 1
-    return levels
-
-
 @renamed_keywords(max_sweeps="max_iter")
 def solve_transient(
     problem,
@@ -506,7 +493,7 @@ def solve_transient(
     else:
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,
-                                  levels=_levels(nx, ny, line), near=opts.near,
+                                  levels=sequencing_levels(nx, ny, min_nx=17), near=opts.near,
                                   tol=min(opts.tol, 1e-5), max_iter=20000)
         if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
             raise InputError("steady", f"a steady solution on the same {nx} x {ny} grid")
