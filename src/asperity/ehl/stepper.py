@@ -29,8 +29,8 @@ from .nodal import upwind_difference
 from .problem import LineContact
 from .solver import EHLState, LineContactState, check_contact_and_method, check_damping
 
-__all__ = ["DIVERGED", "MIX_BELOW", "REFRESH_EVERY_SWEEP_BELOW", "StepOptions", "StepReport",
-           "TimeStepper", "reynolds_operator"]
+__all__ = ["DIVERGED", "MIX_BELOW", "REFRESH_EVERY_SWEEP_BELOW", "UNDAMPED_BELOW", "StepOptions",
+           "StepReport", "TimeStepper", "reynolds_operator"]
 
 #: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
 DIVERGED = 1e3
@@ -48,6 +48,10 @@ MIX_BELOW = 1e-2
 #: 26.0 to 16.5 (261 x 57) and from 20.3 to 14.8 (seed spacing, 571 x 201), the refreshes
 #: from 9.6 to 12.7 and 10.6 to 12.8 (docs/ehl-transient.md, "Cost").
 REFRESH_EVERY_SWEEP_BELOW = 0.3
+
+#: Residual of a refresh cycle below which the rest of the step relaxes without the
+#: oscillation damping (``StepOptions.damping``).
+UNDAMPED_BELOW = 1e-2
 
 
 @dataclass(frozen=True)
@@ -342,6 +346,7 @@ class TimeStepper:
         refreshes_before = state.refreshes
         state.density_newton = opts.density_newton
         state.start_iteration()
+        state.damping = opts.damping
         state.lag_derivatives = True
         if mixer is not None:
             mixer.reset()
@@ -374,6 +379,8 @@ class TimeStepper:
                 return report(True, residual)
             if residual < REFRESH_EVERY_SWEEP_BELOW:
                 interval = 1
+            if residual < UNDAMPED_BELOW:
+                state.damping = 1.0
             if mixer is not None:
                 if residual < MIX_BELOW:
                     self.set_mixed(mixer.mix(start, self.mix_vector()))
