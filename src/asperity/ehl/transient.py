@@ -384,8 +384,9 @@ def solve_transient(
         result).
     damping : float
         Factor on the change of p and h at nodes whose change alternates in sign from sweep to
-        sweep (:meth:`asperity.ehl.solver.EHLState.sweep`); 1 switches it off. Rough surfaces
-        need it (docs/ehl-transient.md).
+        sweep (:meth:`asperity.ehl.solver.EHLState.sweep`), until a refresh cycle of the step
+        ends below :data:`asperity.ehl.stepper.UNDAMPED_BELOW`; 1 switches it off. Rough
+        surfaces need it (docs/ehl-transient.md).
     contact_film : float, optional
         Film (m) at or below which a node counts as in contact in the statistics; default
         ``tol`` times the estimated central film (a film the iteration cannot tell from 0).
