@@ -227,7 +227,6 @@ class TimeStepper:
         self.options = options
         state = LineContactState if isinstance(problem, LineContact) else EHLState
         self.state = state(problem, x, y, options.implicit_near)
-        self.state.damping = options.damping
         self.mass = self.state.lam / (dt * problem.mean_speed / problem.a)
         self.film_scale = film_scale
         self.mixer = AndersonMixer(options.acceleration) if options.acceleration else None
