@@ -462,3 +462,38 @@ def test_mesh_too_coarse_for_the_film_is_reported():
     data = parse_toml(MTM.replace("nx = 129", f"nx = {advised}"))
     data["grid"].update(ny=97, y_min=-2.4, y_max=2.4)
     assert not [w for w in run_case(load_case(data)).warnings if w.startswith("mesh")]
+
+
+def _rig(**tables):
+    """A user's traction-rig case in inch-pound units: a 3/4 in steel ball on a steel disc,
+    10 lbf, 50 in/s, xi = 0.1, 20 cP oil with alpha = 1.6e-4 1/psi (p_h 1.07 GPa, M = 202,
+    L = 11.6)."""
+    data = {"analysis": "ehl-steady", "title": "3/4 in ball on disc, 10 lbf",
+            "body1": {"youngs_modulus": "30e6 psi", "poisson_ratio": 0.3},
+            "body2": {"youngs_modulus": "30e6 psi", "poisson_ratio": 0.3},
+            "contact": {"type": "point", "rx": "0.375 in", "ry": "0.375 in", "load": "10 lbf"},
+            "speeds": {"u": "50 in/s", "xi": 0.1},
+            "lubricant": {"eta0": "20 cP", "alpha": "1.6e-4 1/psi"}}
+    for table, keys in tables.items():
+        data[table] = {**data.get(table, {}), **keys}
+    return run_case(load_case(data))
+
+
+def test_newtonian_friction_is_reported_as_no_traction():
+    """A Newtonian film's wall stress eta du/h at a pressure-raised viscosity: on the rig case
+    (p_h = 1.07 GPa, alpha p_h = 25, so eta rises about e^25-fold) its friction coefficient is
+    hundreds (686 on 161 x 161 nodes), more than any dry contact; the report says so and
+    names lubricant.tau0. With an Eyring stress of 10 MPa the wall stress
+    tau0 asinh(eta du/(tau0 h)) grows only with the logarithm of the Newtonian stress: at the
+    centre eta du/h ~ 1e15 Pa (eta0 e^25 = 1.4e9 Pa s, du = 0.127 m/s, h = 130 nm), so
+    tau ~ tau0 ln(2e8) ~ 0.2 GPa against p ~ 1 GPa there, and less where the pressure and
+    viscosity are lower: a traction coefficient of a few hundredths to 0.2, and no warning."""
+    newtonian = _rig()
+    mu = newtonian.summary["friction_coefficient"]
+    assert mu > 10.0
+    assert sum(w.startswith("lubricant.tau0:") for w in newtonian.warnings) == 1
+    eyring = _rig(lubricant={"tau0": "10 MPa"})
+    mu_e = eyring.summary["friction_coefficient"]
+    assert 0.03 < mu_e < 0.2
+    assert not any(w.startswith("lubricant.tau0:") for w in eyring.warnings)
+

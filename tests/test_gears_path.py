@@ -272,3 +272,21 @@ def test_flash_temperature_at_a_path_point_by_blok_load_route():
     assert res.flash_temperature[0] == pytest.approx(theta, rel=1e-9)
     kappa = 45.0 / (7850.0 * 460.0)
     assert res.peclet[0] == pytest.approx(min(u1, u2) * a / (2 * kappa), rel=1e-10)
+
+
+def test_newtonian_gear_friction_is_reported():
+    """The small gear case with smooth flanks (Ra 0.05 um, so the film carries the load at
+    every point: lambda above the full-film limit) and without its Eyring stress: the
+    Newtonian wall stress eta du/h at the pressure-raised viscosity gives a mean friction
+    coefficient far above a dry contact's, and the report names lubricant.tau0; with
+    tau0 = 5 MPa it does not. (With the case's Ra 0.3 um every point is in boundary
+    lubrication, the friction is the boundary 0.1 and the EHL value does not enter.)"""
+    from asperity.runners import run_case
+
+    smooth = GEAR_CASE.replace('ra = "0.3 um"', 'ra = "0.05 um"')
+    newtonian = run_case(load_case(smooth.replace('tau0 = "5 MPa"\n', "")))
+    assert newtonian.summary["mean_friction_coefficient"] > 1.0
+    assert sum(w.startswith("lubricant.tau0:") for w in newtonian.warnings) == 1
+    eyring = run_case(load_case(smooth))
+    assert eyring.summary["mean_friction_coefficient"] < 0.1
+    assert not any(w.startswith("lubricant.tau0:") for w in eyring.warnings)

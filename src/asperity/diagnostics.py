@@ -35,6 +35,7 @@ __all__ = [
     "UNRESOLVED_WAVELENGTH_CELLS",
     "UNRESOLVED_RMS_SHARE",
     "LOWPASS_RMS_SHARE",
+    "NEWTONIAN_TRACTION_LIMIT",
     "above_hardness",
     "contact_at_grid_edge",
     "contact_resolution",
@@ -49,6 +50,7 @@ __all__ = [
     "feature_passage",
     "side_pressure",
     "lowpass_removed",
+    "newtonian_traction",
     "periodic_contact",
     "unconverged_steps",
     "unresolved_feature",
@@ -62,6 +64,11 @@ FILL_FRACTION = 0.9
 PATCH_PERIOD_FRACTION = 0.5
 #: Fewest cells across the smallest semi-axis of a contact (dry or the EHL Hertz zone).
 MIN_CELLS_PER_SEMI_AXIS = 10
+#: Friction coefficient of a Newtonian EHL film above which it is reported as no traction: the
+#: solvers' default boundary friction of dry nodes. A film that transmits more shear than a dry
+#: contact does is the Newtonian stress eta du / h, unbounded as the pressure raises eta,
+#: not a lubricated traction, which the oil's limiting shear stress keeps lower.
+NEWTONIAN_TRACTION_LIMIT = 0.1
 #: EHL pressure, as a fraction of the Hertz pressure, allowed near an inlet or side boundary.
 BOUNDARY_PRESSURE = 0.01
 #: Width of the band next to an EHL boundary, in semi-axes, where that pressure is measured.
@@ -474,6 +481,35 @@ def ehl_side_film(probe, b: float) -> list[str]:
             f"(steady smooth solutions on {probe.nodes[0]} x {probe.nodes[1]} nodes; limits "
             f"{_pct(SIDE_FILM_CHANGE)} and {_pct(SIDE_CENTRAL_CHANGE)}); the side leakage is "
             f"cut off; use y_min <= {w0 / b:.2g} b and y_max >= {w1 / b:.2g} b"]
+
+
+def newtonian_traction(mu: float, newtonian: bool) -> list[str]:
+    """A Newtonian film's friction coefficient above ``NEWTONIAN_TRACTION_LIMIT``.
+
+    The wall shear stress of a Newtonian film, ``eta du / h``, grows with the viscosity
+    without bound, and at EHL pressures the viscosity is raised by orders of magnitude: the
+    friction coefficient is then not a traction. The Eyring law (``lubricant.tau0``) limits
+    it (:func:`asperity.ehl.friction_coefficient`).
+
+    Parameters
+    ----------
+    mu : float
+        Friction coefficient of the solution.
+    newtonian : bool
+        Whether the lubricant is Newtonian (no Eyring stress).
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    if not newtonian or not abs(mu) > NEWTONIAN_TRACTION_LIMIT:
+        return []
+    return [f"lubricant.tau0: the friction coefficient {abs(mu):.3g} is that of a Newtonian "
+            "film, whose shear stress eta du/h grows without bound with the pressure-raised "
+            f"viscosity; it is more than a dry contact's {NEWTONIAN_TRACTION_LIMIT:g} and not a "
+            "traction. Set lubricant.tau0 (the Eyring stress; the seed's gear oil has 10 MPa) "
+            "for the traction coefficient"]
 
 
 def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:

@@ -94,7 +94,10 @@ def run(case, progress=None) -> Outcome:
     # the inlet advice of ehl_inlet_length; the formula's film is the better guess then
     film = res.central_film if res.converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film, smooth_film=res.film)
-    trust += diagnostics.ehl_film_collapse(res.film, estimate)
+    collapse = diagnostics.ehl_film_collapse(res.film, estimate)
+    trust += collapse
+    if not collapse:  # a collapsed film's friction is the collapse's, not the Newtonian law's
+        trust += diagnostics.newtonian_traction(res.friction_coefficient, lub.newtonian)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust, chosen=chosen_mesh(case, problem, res.x, res.y))
 

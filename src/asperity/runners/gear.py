@@ -14,6 +14,7 @@ import time
 import numpy as np
 import xarray as xr
 
+from .. import diagnostics
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness
@@ -194,8 +195,10 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
             "Friction coefficient (EHL traction and with the boundary share) and Blok's flash "
             "temperature and the contact temperature along the path."),
     }
+    trust = list(result.warnings) + diagnostics.newtonian_traction(
+        summary["mean_friction_coefficient"], case.lubricant.lubricant().newtonian)
     return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
-                   notes=notes, warnings=list(result.warnings))
+                   notes=notes, warnings=trust)
 
 
 def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, str]:
