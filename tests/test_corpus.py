@@ -129,6 +129,13 @@ COMMANDS = [
      "error: --spacing"),
     ("generate-one-point", _generate("--out", "{tmp}/s.npy", "--spacing", "1 mm"), 2,
      "error: --length"),
+    # 10 um on a 0.1 um profile: exp(-(q beta)^2 / 4) underflows at every wavevector (was NaN)
+    ("generate-correlation-longer-than-surface",
+     _generate("--out", "{tmp}/s.npy", "--length", "0.1 um", "--spacing", "0.01 um"), 2,
+     "error: --correlation-length"),
+    ("generate-cutoff-longer-than-surface",
+     ["surface", "generate", "self-affine", "--rms", "1 um", "--cutoff", "2 mm", "--rolloff",
+      "3 mm", "--out", "{tmp}/s.npy"], 2, "error: --cutoff"),
     ("generate-unknown-kind", ["surface", "generate", "fractal", "--out", "{tmp}/s.npy"], 2,
      "error: KIND"),
     ("generate-unwritable", _generate("--out", "/proc/asperity/s.npy"), 2, "error: "),

@@ -355,7 +355,11 @@ def generate(
             _length(waviness_wavelength, "--waviness-wavelength"),
             _length(waviness_amplitude, "--waviness-amplitude"), waviness_direction))
     y = None if W is None else s.cell_centres(max(2, round(W / h)), h)
-    surface = build_surface(recipe, L, h, width=W, y=y)
+    try:
+        surface = build_surface(recipe, L, h, width=W, y=y)
+    except InputError as exc:  # the recipe's field as the option that set it
+        raise InputError(_OPTIONS.get(exc.field, exc.field), exc.expected, exc.got,
+                         problem=exc.problem) from None
     if W is not None and isinstance(surface, s.Profile):
         surface = surface.extrude(y)
     s.write_surface(surface, out)

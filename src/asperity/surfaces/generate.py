@@ -87,9 +87,19 @@ def _gaussian_spectrum(qs, lengths, acf: str):
     return (1.0 + s2) ** (-(len(qs) + 1) / 2.0)
 
 
-def _scaled(spectrum: np.ndarray, rms: float) -> np.ndarray:
+def _scaled(spectrum: np.ndarray, rms: float, field: str) -> np.ndarray:
+    """Amplitudes ``sqrt(spectrum)`` (mean removed) scaled to an expected rms height ``rms``.
+
+    ``field`` names the input that shaped the spectrum, for the error when no wavelength the
+    grid holds carries power (a Gaussian correlation length many times the surface's length
+    makes ``exp(-(q beta)^2 / 4)`` underflow at every nonzero wavevector).
+    """
     spectrum = spectrum.copy()
     spectrum.flat[0] = 0.0
+    if not spectrum.mean() > 0.0:
+        raise InputError(field, "a length the surface can hold: no wavelength between the grid "
+                         "spacing and the surface's length carries power (make it shorter "
+                         "than the surface)")
     return np.sqrt(spectrum) * (rms / np.sqrt(spectrum.mean()))
 
 
@@ -127,7 +137,8 @@ def gaussian_profile(length, spacing, rms, correlation_length, *, acf="gaussian"
     rms = check_positive("rms", rms)
     ell = check_positive("correlation_length", correlation_length)
     (q,) = _wavevectors((n,), (h,))
-    z = _filter_noise(_scaled(_gaussian_spectrum([q], [ell], acf), rms), seed)
+    amplitude = _scaled(_gaussian_spectrum([q], [ell], acf), rms, "correlation_length")
+    z = _filter_noise(amplitude, seed)
     profile = Profile(cell_centres(n, h), z, periodic=True)
     return _exact(profile, rms) if exact else profile
 
@@ -159,7 +170,8 @@ def gaussian_topography(size, spacing, rms, correlation_length, *, acf="gaussian
     rms = check_positive("rms", rms)
     ells = _pair(correlation_length, "correlation_length")
     qx, qy = _wavevectors((nx, ny), (dx, dy))
-    z = _filter_noise(_scaled(_gaussian_spectrum([qx, qy], ells, acf), rms), seed)
+    amplitude = _scaled(_gaussian_spectrum([qx, qy], ells, acf), rms, "correlation_length")
+    z = _filter_noise(amplitude, seed)
     topography = Topography(cell_centres(nx, dx), cell_centres(ny, dy), z, periodic=True)
     return _exact(topography, rms) if exact else topography
 
@@ -187,7 +199,7 @@ def _self_affine(shape, spacings, hurst, rms_height, rms_slope, rolloff, cutoff,
     spectrum = np.where(q <= q_s * (1 + 1e-12), np.maximum(q, q_r) ** exponent, 0.0)
     spectrum.flat[0] = 0.0
     if rms_height is not None:
-        amp = _scaled(spectrum, check_positive("rms_height", rms_height))
+        amp = _scaled(spectrum, check_positive("rms_height", rms_height), "short_cutoff")
     else:
         # Expected mean-square forward-difference slope, the quantity Rdq / Sdq measure.
         gain = sum(_difference_gain2(c, d) for c, d in zip(qs, spacings, strict=True))
