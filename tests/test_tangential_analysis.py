@@ -325,3 +325,67 @@ def test_lp_on_the_books_combined_case_2_warns_why():
     assert not out.converged
     assert any(w.startswith("method lp: no trial rigid motion") for w in out.warnings)
     assert any("Why: method lp" in n for n in out.notes)
+
+
+def _ball(force="30 N", **tables):
+    """A user's 10 mm steel ball on a steel flat, 200 N, mu = 0.3 (a = 186.6 um,
+    p0 = 2.742 GPa; Cattaneo-Mindlin: delta = 3 mu N (2 - nu) / (16 G a)
+    [1 - (1 - Q / mu N)^(2/3)], the relative shift of the two bodies)."""
+    data = {"analysis": "tangential", "title": "10 mm ball", "mu": 0.3,
+            "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+            "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+            "pressure": {"source": "hertz", "load": "200 N", "rx": "5 mm"},
+            "loading": {"force": force}}
+    for table, keys in tables.items():
+        data[table] = {**data.get(table, {}), **keys}
+    return run_case(load_case(data))
+
+
+def _mindlin_shift(q, mu=0.3, n=200.0, e=210e9, nu=0.3, radius=5e-3):
+    g = e / (2 * (1 + nu))
+    a = (3 * n * radius * 2 * (1 - nu**2) / (4 * e)) ** (1 / 3)  # two equal bodies
+    return 2 * 3 * mu * n * (2 - nu) / (16 * g * a) * (1 - (1 - q / (mu * n)) ** (2 / 3))
+
+
+def test_a_small_force_shows_its_shift_not_the_rotation_round_off():
+    """Q = 0.5 N (Q / mu N = 0.0083): the round-off twist of a force-only solve (7e-14 rad)
+    put its centre of rotation 2e5 m away, and the summary then showed the 14 nm shift as
+    round-off of that length: "shift 0 m". The motion is a translation (no centre); the shift
+    is Mindlin's, 14.12 nm, within 1 %."""
+    from asperity.formatting import summary_rows
+
+    out = _ball("0.5 N")
+    assert "center_of_rotation_x_m" not in out.summary
+    assert out.summary["shift_x_m"] == pytest.approx(_mindlin_shift(0.5), rel=0.01)
+    row = next(r for r in summary_rows(out.summary) if r.key == "shift_x_m")
+    assert row.text.endswith("nm") and not row.text.startswith("0")
+
+
+def test_a_bare_direction_beyond_two_pi_is_refused():
+    """loading.direction = 90 (meant in degrees) was 90 rad, 116.6 deg, silently."""
+    with pytest.raises(InputError, match=r"loading\.direction: expected an angle with its unit"):
+        _ball(loading={"direction": 90})
+    assert _ball(loading={"direction": "90 deg"}).summary["shift_y_m"] == pytest.approx(
+        _mindlin_shift(30.0), rel=0.01)
+
+
+def test_the_fretting_loop_is_drawn_with_signed_shifts():
+    """A Masing cycle to +-0.9 mu N: on the unloading branch (force from +54 N to -54 N) the
+    shift falls monotonically from +delta_max to -delta_max (Mindlin-Deresiewicz). The figure
+    drew |shift| signed by the force, which mirrored the points between the reversal and the
+    zero crossing of the shift (+165 nm drawn at -0.165 um)."""
+    from asperity.contact import hertz_point
+    from asperity.contact.load_path import proportional_path, tangential_load_path
+    from asperity.plotting.tangential import compliance_curves
+
+    steel = Material(210e9, 0.3)
+    hz = hertz_point(200.0, 5e-3, 5e-3, steel, steel)
+    x = np.linspace(-1.05 * hz.a, 1.05 * hz.a, 48)
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    path = tangential_load_path(hz.pressure(X, Y), x, x, 0.3, steel, steel,
+                                proportional_path((54.0, 0.0), steps=12, cycle=True))
+    shift, force = compliance_curves(path).axes[0].lines[0].get_data()
+    top, bottom = int(np.argmax(force)), int(np.argmin(force))
+    assert top < bottom and shift[top] > 0 > shift[bottom]
+    assert np.all(np.diff(shift[top:bottom + 1]) < 0)
+    assert shift[top] * 1e-6 == pytest.approx(_mindlin_shift(54.0), rel=0.01)  # um

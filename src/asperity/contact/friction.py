@@ -31,6 +31,7 @@ __all__ = [
     "Constraints",
     "FrictionProblem",
     "RegionLoad",
+    "TRANSLATION_BELOW",
     "TangentialResult",
     "contact_regions",
     "friction_capacity",
@@ -329,10 +330,18 @@ def load_centroid(pressure, x, y) -> np.ndarray:
     return np.array([np.dot(p.sum(axis=1), x), np.dot(p.sum(axis=0), y)]) / total
 
 
+#: Rotation, as the displacement ``|w| L`` it gives over the contact size, relative to the
+#: shift, below which a motion is a translation: its centre of rotation would lie more than a
+#: million contact sizes away, where the round-off rotation of a solve without a moment puts
+#: it (7e-14 rad against a 14 nm shift put it 2e5 m away and hid the shift in the summary).
+TRANSLATION_BELOW = 1e-6
+
+
 def rotation_centre(yv, prob: FrictionProblem):
-    """Zero of W = (y0 - w Y, y1 + w X), w = y2 / L, in absolute coordinates."""
+    """Zero of W = (y0 - w Y, y1 + w X), w = y2 / L, in absolute coordinates; NaN for a
+    translation (``|w| L <= TRANSLATION_BELOW |(y0, y1)|``)."""
     w = yv[2] / prob.cons.L
-    if abs(w) * prob.cons.L <= 1e-12 * np.hypot(yv[0], yv[1]) or w == 0.0:
+    if abs(w) * prob.cons.L <= TRANSLATION_BELOW * np.hypot(yv[0], yv[1]) or w == 0.0:
         return np.full(2, np.nan)
     return prob.centre + np.array([-yv[1] / w, yv[0] / w])
 

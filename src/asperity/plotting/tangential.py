@@ -59,14 +59,25 @@ def traction_map(result, x, y, title="Tangential traction", arrows=16):
         ax.plot([], [], "k--", lw=1.2, label="stick/slip border")
     ax.plot([], [], marker=r"$\rightarrow$", ls="none", color="0.3", ms=10,
             label="traction direction")
-    if np.all(np.isfinite(result.centre_of_rotation)):
-        ax.plot(*(result.centre_of_rotation * MM), "r+", ms=10, mew=2,
-                label="centre of rotation")
+    _mark_centre(ax, result.centre_of_rotation, x, y)
     fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=4,
                fontsize=8, frameon=False)
     ax.set(xlabel="x (mm)", ylabel="y (mm)", aspect="equal")
     ax.set_title(title, fontsize=10)
     return fig
+
+
+def _mark_centre(ax, centre, x, y):
+    """The centre of rotation as a cross where it lies on the map, else named in a corner
+    (a centre far away, nearly a translation, would otherwise set the axis limits)."""
+    if not np.all(np.isfinite(centre)):
+        return
+    cx, cy = centre * MM
+    if x[0] * MM <= cx <= x[-1] * MM and y[0] * MM <= cy <= y[-1] * MM:
+        ax.plot(cx, cy, "r+", ms=10, mew=2, label="centre of rotation")
+    else:
+        ax.text(0.02, 0.98, f"centre of rotation off the map: ({cx:.3g}, {cy:.3g}) mm",
+                transform=ax.transAxes, va="top", fontsize=8, color="r")
 
 
 def slip_progression(path, x, y, title="Progression of slip"):
@@ -111,11 +122,12 @@ def compliance_curves(path, title="Compliance"):
     fig, axes = new_figure(4.8 * len(panels), 4.0, ncols=len(panels), squeeze=False)
     for ax, panel in zip(axes[0], panels, strict=True):
         if panel == "force":
-            sign = np.sign(path.loads[:, 0] + path.loads[:, 1])
-            sign = np.where(sign == 0, 1, sign)
-            ax.plot(np.hypot(*path.shift.T) * sign * 1e6, force * sign, "o-",
-                    label="load steps")
-            ax.set(xlabel="rigid shift (um)", ylabel="tangential force (N)")
+            # components along the largest force: a reversed cycle's shift and force change
+            # sign at different steps, which signs taken from the force alone would mirror
+            e = path.loads[np.argmax(force), :2] / max(force.max(), np.finfo(float).tiny)
+            ax.plot(path.shift @ e * 1e6, path.loads[:, :2] @ e, "o-", label="load steps")
+            ax.set(xlabel="rigid shift along the largest force (um)",
+                   ylabel="tangential force along it (N)")
         else:
             ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-", label="load steps")
             ax.set(xlabel="twist (mrad)", ylabel="twisting moment (N m)")
