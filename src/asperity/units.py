@@ -77,7 +77,22 @@ def to_si(value, dimension: str, field: str) -> float:
         raise InputError(field, f"a number or a string like '1.0 {si_unit}'", value)
     if not math.isfinite(result):
         raise InputError(field, "a finite number", value)
+    if dimension == "angle" and abs(result) > 2.0 * math.pi and _is_bare(value):
+        # a bare 90 meant in degrees would be 90 rad = 116.6 deg, silently
+        raise InputError(field, "an angle with its unit ('90 deg') or at most 2 pi radians as a "
+                         "bare number", value)
     return result
+
+
+def _is_bare(value) -> bool:
+    """Whether a case-file value is a number without a unit (``90``, ``"90"``)."""
+    if isinstance(value, int | float):
+        return True
+    try:
+        float(value)
+    except ValueError:
+        return False
+    return True
 
 
 def _parse(text: str, si_unit: str, field: str) -> float:
