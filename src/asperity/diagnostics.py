@@ -36,7 +36,9 @@ __all__ = [
     "UNRESOLVED_RMS_SHARE",
     "LOWPASS_RMS_SHARE",
     "NEWTONIAN_TRACTION_LIMIT",
+    "COARSE_FILE_FACTOR",
     "above_hardness",
+    "coarse_roughness_file",
     "contact_at_grid_edge",
     "contact_resolution",
     "ehl_inlet",
@@ -920,3 +922,52 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
             "not the surface, sets the asperity size and the real contact area and asperity "
             f"pressures depend on the mesh; use cells <= {correlation_length / 4 * 1e6:.2g} um "
             "and check that the answer no longer moves"]
+
+
+#: Sampling interval of a measured roughness file, in grid spacings, above which the file is
+#: reported too coarse for the grid: beyond it most of the grid's cells get heights that the
+#: spline invents between measured points (smooth hills), not measured roughness.
+COARSE_FILE_FACTOR = 2.0
+
+
+def coarse_roughness_file(label: str, spacing, x, y,
+                          factor: float = COARSE_FILE_FACTOR) -> list[str]:
+    """A measured roughness file sampled more coarsely than the contact grid.
+
+    Between the file's points the grid gets spline-interpolated heights: smooth hills as wide
+    as the sampling interval, without the roughness the instrument did not record, so the
+    real contact area and the asperity pressures are those of a smoother surface.
+
+    Parameters
+    ----------
+    label : str
+        The table, e.g. ``"roughness"``; the line names its ``path``.
+    spacing : sequence of float
+        The file's sampling interval along x (and along y for a topography), m.
+    x, y : ndarray
+        Cell-centre coordinates of the grid, m.
+    factor : float
+        Largest acceptable ratio of the file's interval to the grid spacing.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    coarse = []
+    for axis, h, coord in zip("xy", spacing, (x, y), strict=False):
+        d = _spacing(coord)
+        if h > factor * d:
+            cells = math.floor(np.asarray(coord).size * d * factor / h + 1e-9)
+            coarse.append((axis, h, d, max(cells, 1)))
+    if not coarse:
+        return []
+    found = " and ".join(f"{h * 1e6:.3g} um apart along {axis}, {h / d:.3g} times the grid's "
+                         f"d{axis} = {d * 1e6:.3g} um" for axis, h, d, _ in coarse)
+    finer = " and ".join(f"<= {factor * d * 1e6:.3g} um along {axis}" for axis, _, d, _ in coarse)
+    grid = " and ".join(f"grid.n{axis} <= {cells} (d{axis} >= {h / factor * 1e6:.3g} um)"
+                        for axis, h, _, cells in coarse)
+    return [f"{label}.path: the file's points are {found} (limit {factor:g}); between them the "
+            "grid gets spline-interpolated heights, smooth hills instead of measured roughness, "
+            "so the real contact area and pressures are those of a smoother surface; use a "
+            f"file sampled at {finer}, or a coarser grid: {grid}"]

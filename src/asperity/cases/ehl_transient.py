@@ -36,12 +36,12 @@ from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import build_surface
 from .ehl import EHLCaseBase, EHLGridSpec
 from .fields import CaseModel, Quantity
-from .roughness import SurfaceKeys, WavinessSpec, surface_recipe
+from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
 
 __all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
 
 
-class MovingSurfaceSpec(SurfaceKeys):
+class MovingSurfaceSpec(FormKeys, SurfaceKeys):
     """``[surface1]``/``[surface2]``: the roughness a surface carries into the contact.
 
     ``kind``: ``smooth``; ``builtin`` (``profile`` "A", "B" or "C": the synthetic stand-ins of
@@ -49,8 +49,10 @@ class MovingSurfaceSpec(SurfaceKeys):
     ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``acf``, ``seed``);
     ``self-affine`` (``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
     ``short_cutoff``, ``seed``); ``file`` (a measured profile: ``path``, ``spacing`` when the
-    file has no x column, and the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``,
-    ``resample``); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
+    file has no x column, the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``,
+    ``resample``, and ``form_degree``: the least-squares form removed, default 1, its mean
+    line, as in a contact case's ``[roughness]``, so that the scan's offset and tilt do not
+    enter the inlet); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
     ``amplitude`` and ``half_width`` on a smooth surface, its centre ``lead`` upstream of the
     inlet at the start: the probes of Venner & Lubrecht, Kaneta, Ai & Cheng;
     :mod:`asperity.surfaces.features`). Profiles vary
@@ -58,7 +60,8 @@ class MovingSurfaceSpec(SurfaceKeys):
     heights (the seed's sqrt(2) x C); ``lowpass`` removes wavelengths shorter than that many
     mesh spacings (ISO Gaussian filter) when the mesh cannot resolve them; ``waviness`` adds a
     sinusoid along y (transverse waviness) or x. The surface keys are those of
-    :class:`~asperity.cases.roughness.SurfaceKeys`.
+    :class:`~asperity.cases.roughness.SurfaceKeys` and
+    :class:`~asperity.cases.roughness.FormKeys`.
     """
 
     kind: Literal["smooth", "builtin", "ground", "gaussian", "self-affine", "file",

@@ -2,21 +2,33 @@
 
 The surface is evaluated on the case's grid (cell centres) and its heights are subtracted from
 the undeformed gap (peaks close the gap). Generated surfaces are periodic over the grid and
-reproducible from ``seed``.
+reproducible from ``seed``. A measured file (``kind = "file"``) is referred to its
+least-squares mean line or plane (``form_degree``, default 1), its positions are taken from
+its own start, and a grid longer than the file is refused (:func:`roughness_on_grid`).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from pathlib import Path
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, ValidationError, field_validator, model_validator
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface
+from ..errors import InputError
+from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface, build_surface_record
+from ..surfaces.topography import Profile
 from .fields import CaseModel, Quantity, existing_file
 
-__all__ = ["MeasuredFile", "RoughnessSpec", "SurfaceKeys", "WavinessSpec", "length_unit",
-           "measured_file", "surface_heights", "surface_recipe", "undeformed_gap"]
+__all__ = ["DEFAULT_FORM_DEGREE", "FormKeys", "GridRoughness", "KIND_KEYS", "MeasuredFile",
+           "RoughnessSpec", "SurfaceKeys", "WavinessSpec", "length_unit", "measured_file",
+           "roughness_on_grid", "surface_heights", "surface_recipe", "undeformed_gap"]
+
+#: Degree of the least-squares form removed from a measured file by default (its mean line or
+#: plane: the offset and tilt of an unlevelled scan), as ``asperity surface stats`` does.
+DEFAULT_FORM_DEGREE = 1
 
 
 def measured_file(cls, value, info):
@@ -89,6 +101,17 @@ class WavinessSpec(CaseModel):
     """Direction along which the waviness varies."""
 
 
+class FormKeys(CaseModel):
+    """The form removed from a measured file before a contact or an EHL run uses it, shared by
+    ``[roughness]`` and ``[surface1]``/``[surface2]`` (a surface analysis has its own,
+    ``[evaluation] form_degree``)."""
+
+    form_degree: Annotated[int, Field(ge=0, le=9)] | None = None
+    """Degree of the least-squares form removed from a measured file before use (default 1: its
+    mean line or plane, the offset and tilt of the scan; 0: the mean only; 2: also a
+    curvature)."""
+
+
 class SurfaceKeys(MeasuredFile):
     """The keys of a surface shared by every table that names one: ``[roughness]``,
     ``[surface1]``/``[surface2]`` (transient EHL, gears) and ``[surface]`` (surface analysis).
@@ -136,22 +159,46 @@ class SurfaceKeys(MeasuredFile):
 
     _path = field_validator("path")(measured_file)
 
-    def check_kind(self, need: dict) -> None:
+    def check_kind(self, need: dict, uses: dict | None = None) -> None:
         """Refuse a missing key that ``need[kind]`` names, reading keys of a measured file for
-        another kind, and a self-affine surface without exactly one of rms or rms_slope."""
+        another kind, a key that ``uses[kind]`` (when given) does not list, and a self-affine
+        surface without exactly one of rms or rms_slope."""
         for key in need.get(self.kind, ()):
             if getattr(self, key) is None:
                 raise ValueError(f"expected {key} for kind = \"{self.kind}\"")
         if self.kind != "file":
-            for key in MeasuredFile.model_fields:
-                if getattr(self, key) is not None:
-                    raise ValueError(f"expected no {key} for kind = \"{self.kind}\" (it is "
-                                     "for a measured file)")
+            for key in (*MeasuredFile.model_fields, *FormKeys.model_fields):
+                if getattr(self, key, None) is not None:
+                    raise _key_error(key, f"expected no {key} for kind = \"{self.kind}\" (it is "
+                                          "for a measured file)", getattr(self, key))
+        if uses is not None:  # in declaration order: the first is reported
+            for key in (*SurfaceKeys.model_fields, *FormKeys.model_fields):
+                value = getattr(self, key, None)
+                if key != "kind" and key not in uses[self.kind] and value is not None:
+                    raise _key_error(key, f"expected no {key} for kind = \"{self.kind}\" "
+                                          "(unused by that kind)", value)
         if self.kind == "self-affine" and (self.rms is None) == (self.rms_slope is None):
             raise ValueError("expected exactly one of rms or rms_slope for a self-affine surface")
 
 
-class RoughnessSpec(SurfaceKeys):
+def _key_error(key: str, message: str, value) -> ValidationError:
+    """A validation error located at ``key`` of the table, so that its line names the key."""
+    detail = InitErrorDetails(type=PydanticCustomError("value_error", message), loc=(key,),
+                              input=value)
+    return ValidationError.from_exception_data("case", [detail])
+
+
+#: The surface keys each kind of ``[roughness]`` uses (``scale`` and ``waviness`` apply to all).
+KIND_KEYS = {
+    "gaussian": {"rms", "correlation_length", "correlation_length_y", "acf", "seed"},
+    "self-affine": {"hurst", "rms", "rms_slope", "rolloff_wavelength", "short_cutoff", "seed"},
+    "ground": {"ra", "correlation_length", "run_in", "seed"},
+    "builtin": {"profile"},
+    "file": {"path", "spacing", "form_degree", *MeasuredFile.model_fields},
+}
+
+
+class RoughnessSpec(FormKeys, SurfaceKeys):
     """Which surface: ``kind`` and its parameters (unused ones must be left out).
 
     - ``gaussian``: ``rms``, ``correlation_length`` (or ``correlation_length_y`` too), ``acf``
@@ -161,11 +208,13 @@ class RoughnessSpec(SurfaceKeys):
       ``run_in`` (0 fresh .. <1 strongly run-in)
     - ``builtin``: ``profile`` "A", "B" or "C" (synthetic stand-ins of the mixed-EHL seed)
     - ``file``: ``path`` (text, npy, npz, or an instrument format; relative to the case file, or
-      ``builtin:NAME`` for shipped data), ``spacing`` if the file has no coordinates, and the
-      reading keys of :class:`MeasuredFile` (``unit``, ``x_unit``, ``z_unit``, ``missing``,
-      ``resample``)
-    All kinds take ``scale`` (multiplies the heights), ``seed`` and an optional ``waviness``.
-    The keys are those of :class:`SurfaceKeys`.
+      ``builtin:NAME`` for shipped data), ``spacing`` if the file has no coordinates (refused
+      for one that has), ``form_degree`` (default 1: the file's least-squares mean line or
+      plane is removed), and the reading keys of :class:`MeasuredFile` (``unit``, ``x_unit``,
+      ``z_unit``, ``missing``, ``resample``)
+    All kinds take ``scale`` (multiplies the heights) and an optional ``waviness``; a key the
+    kind does not use is refused (:data:`KIND_KEYS`). The keys are those of
+    :class:`SurfaceKeys` and :class:`FormKeys`.
     """
 
     kind: Literal["gaussian", "self-affine", "ground", "builtin", "file"]
@@ -179,7 +228,8 @@ class RoughnessSpec(SurfaceKeys):
     @model_validator(mode="after")
     def _required(self):
         self.check_kind({"gaussian": ("rms", "correlation_length"), "self-affine": ("hurst",),
-                         "ground": ("ra",), "builtin": ("profile",), "file": ("path",)})
+                         "ground": ("ra",), "builtin": ("profile",), "file": ("path",)},
+                        KIND_KEYS)
         return self
 
 
@@ -188,13 +238,15 @@ def surface_recipe(spec: CaseModel, **changes) -> SurfaceRecipe:
     ``[surface]``): its keys named as :class:`~asperity.surfaces.recipe.SurfaceRecipe` fields,
     the file reading keys of a :class:`MeasuredFile`, its waviness, then ``changes``.
 
-    Keys left out (None) take the recipe's defaults, which are the generators' defaults.
+    Keys left out (None) take the recipe's defaults, which are the generators' defaults; a
+    measured file's ``form_degree`` defaults to :data:`DEFAULT_FORM_DEGREE`.
     """
     fields = type(spec).model_fields
     values = {name: getattr(spec, name) for name in SurfaceRecipe.__dataclass_fields__
               if name in fields and name != "waviness" and getattr(spec, name) is not None}
     if spec.kind == "file":
         values["file_spacing"] = spec.spacing
+        values.setdefault("form_degree", DEFAULT_FORM_DEGREE)
         if isinstance(spec, MeasuredFile):
             values["read_options"] = spec.read_options()
     wavy = getattr(spec, "waviness", None)
@@ -203,16 +255,64 @@ def surface_recipe(spec: CaseModel, **changes) -> SurfaceRecipe:
     return SurfaceRecipe(**{**values, **changes})
 
 
-def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
-    """Heights (m) of the specified surface at the cell centres ``x`` by ``y``.
+@dataclass(frozen=True)
+class GridRoughness:
+    """A ``[roughness]`` table's heights on a case grid, with what a measured file needs said.
 
-    A gaussian or self-affine surface is generated over the grid (periodic), a ground, built-in
-    or measured profile is sampled at ``x`` and repeated across ``y``; ``scale`` multiplies the
-    heights with the waviness.
+    Attributes
+    ----------
+    heights : ndarray
+        Heights (m) at the cell centres, ``[ix, iy]``.
+    file_spacing : tuple of float or None
+        A measured file's own sampling interval along x (and y for a topography), m; None for
+        the other kinds.
+    notes : tuple of str
+        What was done to a measured file: the form removed, where its positions start, what
+        the reader assumed.
+    warnings : tuple of str
+        The reader's reasons to doubt the file (heights implausible in metres).
     """
-    from .. import surfaces as s
 
+    heights: np.ndarray
+    file_spacing: tuple[float, ...] | None = None
+    notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+
+
+def roughness_on_grid(spec: RoughnessSpec, x, y, label: str = "roughness") -> GridRoughness:
+    """The specified surface at the cell centres ``x`` by ``y`` (m).
+
+    A gaussian or self-affine surface is generated over the grid (periodic), a ground or
+    built-in profile is sampled at ``x`` and repeated across ``y``. A measured file is read,
+    referred to its least-squares form (``form_degree``), and sampled (cubic spline) at the
+    cell centres measured from its start: the grid's lower edge lies a whole number of
+    sampling intervals before its first point, less than one (a file starting at x = 12.5 mm
+    is used from there); cells within half an interval past its last point take that point's
+    height. A profile is repeated across ``y``. ``scale`` multiplies the heights with the
+    waviness.
+
+    Parameters
+    ----------
+    spec : RoughnessSpec
+    x, y : array_like
+        Cell-centre coordinates, m.
+    label : str
+        The table's place in the case (``"roughness"``, ``"pressure.roughness"``), which errors,
+        notes and warnings name.
+
+    Returns
+    -------
+    GridRoughness
+
+    Raises
+    ------
+    InputError
+        The file cannot be read as the keys say (naming ``label.path`` or the key), or the grid
+        is longer than a non-periodic file (naming ``grid.x_extent`` or ``grid.y_extent``).
+    """
     x, y = np.asarray(x, float), np.asarray(y, float)
+    if spec.kind == "file":
+        return _measured_on_grid(spec, x, y, label)
     dx = x[1] - x[0]
     dy = y[1] - y[0] if len(y) > 1 else dx
     length, spacing = len(x) * dx, (dx, dy)
@@ -221,28 +321,109 @@ def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
     ys = y - y[0] + dy / 2
     surf = build_surface(surface_recipe(spec, scale=1.0), length, spacing, width=len(y) * dy,
                          y=ys)
-    z = _on_grid(surf, x - x[0] + dx / 2, ys, s)
-    return spec.scale * z
+    return GridRoughness(spec.scale * _on_grid(surf, x - x[0] + dx / 2, ys))
 
 
-def undeformed_gap(rx: float, ry: float, x, y, roughness: RoughnessSpec | None = None):
+def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
+    """Heights (m) of the specified surface at the cell centres ``x`` by ``y``: the heights of
+    :func:`roughness_on_grid`."""
+    return roughness_on_grid(spec, x, y).heights
+
+
+def undeformed_gap(rx: float, ry: float, x, y, heights=None):
     """Gap (m) of an ellipsoid on a flat at the cell centres: ``x^2/(2 rx) + y^2/(2 ry)``
-    (none for ``rx = inf``, a flat punch or a nominally flat interface) minus the heights of
-    ``roughness`` (peaks close the gap)."""
+    (none for ``rx = inf``, a flat punch or a nominally flat interface) minus the roughness
+    ``heights`` (m, ``[ix, iy]``; peaks close the gap)."""
     X, Y = np.meshgrid(np.asarray(x, float), np.asarray(y, float), indexing="ij")
     gap = np.zeros_like(X)
     if np.isfinite(rx):
         gap += X**2 / (2 * rx) + Y**2 / (2 * ry)
-    if roughness is not None:
-        gap -= surface_heights(roughness, x, y)
+    if heights is not None:
+        gap -= heights
     return gap
 
 
-def _on_grid(surf, xs, ys, s) -> np.ndarray:
-    """Heights on the grid, sampled by spline unless the surface already has its shape."""
-    if isinstance(surf, s.Profile):
-        line = surf.z if surf.z.shape == xs.shape else surf.sample(xs)
-        return np.repeat(line[:, None], len(ys), axis=1)
-    if surf.z.shape == (len(xs), len(ys)):
+def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
+    """A measured file's heights on the grid, with its notes and warnings."""
+    dx = x[1] - x[0]
+    dy = y[1] - y[0] if len(y) > 1 else dx
+    ys = y - y[0] + dy / 2
+    try:
+        built = build_surface_record(surface_recipe(spec, scale=1.0), 0.0, (dx, dy), y=ys)
+    except InputError as exc:
+        raise _file_error(exc, spec, label) from None
+    name = Path(spec.path).name
+    surf, read = built.surface, built.reading.surface
+    xs = _from_start(surf.x, len(x), dx, surf.periodic, "x", f"{label}.path ({name})")
+    notes = [f"{label}.path ({name}): {note}" for note in built.reading.notes]
+    notes.append(f"{label}.path ({name}): {built.form.describe()}")
+    origin = _file_origin(read.x)
+    if origin != 0.0:
+        notes.append(f"{label}.path ({name}): positions taken from the file's start: its x = "
+                     f"{_length(origin)} lies at the grid's lower edge")
+    if isinstance(surf, Profile):
+        z = _on_grid(surf, xs, ys)
+    else:
+        z = _on_grid(surf, xs, _from_start(surf.y, len(y), dy, surf.periodic, "y",
+                                           f"{label}.path ({name})"))
+    return GridRoughness(spec.scale * z, tuple(float(h) for h in np.atleast_1d(read.spacing)),
+                         tuple(notes), tuple(f"{label}.path: {w}" for w in built.reading.warnings))
+
+
+def _length(value: float) -> str:
+    """A length in um below a millimetre, else in mm."""
+    return f"{value * 1e6:.4g} um" if abs(value) < 1e-3 else f"{value * 1e3:.4g} mm"
+
+
+def _file_origin(coord: np.ndarray) -> float:
+    """Where the grid's lower edge lies on the file's axis: a whole number of sampling
+    intervals, so that the file's first point lies within the grid's first interval (a file
+    whose positions start at 0, or at half an interval as those of a file without positions
+    do, is used from 0)."""
+    h = coord[1] - coord[0]
+    return float(h * np.floor(coord[0] / h + 1e-6))
+
+
+def _from_start(coord: np.ndarray, n: int, d: float, periodic: bool, axis: str,
+                source: str) -> np.ndarray:
+    """Cell centres of ``n`` cells of ``d`` from :func:`_file_origin`. Unless the file is
+    periodic, a centre before its first point (by less than one sampling interval) or within
+    half an interval past its last point takes that point's height; one further is refused."""
+    h = coord[1] - coord[0]
+    origin = _file_origin(coord)
+    centres = origin + d * (np.arange(n) + 0.5)
+    if periodic:
+        return centres
+    end = coord[-1] + h / 2
+    if centres[-1] > end + 1e-9 * h:
+        most = (end - origin) / (1.0 - 0.5 / n)
+        raise InputError(f"grid.{axis}_extent", f"at most {_length(most)}, so that the grid "
+                         f"lies within {source}: the file is {_length(coord.size * h)} long "
+                         f"along {axis} ({coord.size} points {_length(h)} apart), the grid "
+                         f"{_length(n * d)}; shorten grid.{axis}_extent or use a longer file")
+    return np.clip(centres, coord[0], coord[-1])
+
+
+def _file_error(exc: InputError, spec: RoughnessSpec, label: str) -> InputError:
+    """A reading error located at the table's key, or at its path (naming where in the file)."""
+    if exc.field in type(spec).model_fields:
+        return InputError(f"{label}.{exc.field}", exc.expected, exc.got)
+    where = exc.field.removeprefix(str(spec.path)).lstrip(":").strip()
+    return InputError(f"{label}.path", exc.expected + (f" (at {where})" if where else ""),
+                      exc.got)
+
+
+def _same(coord: np.ndarray, points: np.ndarray) -> bool:
+    """True when ``points`` are the surface's own positions (no interpolation needed)."""
+    return coord.shape == points.shape and np.allclose(
+        coord, points, rtol=0.0, atol=1e-6 * abs(points[1] - points[0]) if points.size > 1 else 0)
+
+
+def _on_grid(surf, xs, ys) -> np.ndarray:
+    """Heights on the grid, sampled by spline unless the surface has its points there."""
+    if isinstance(surf, Profile):
+        line = surf.z if _same(surf.x, xs) else surf.sample(xs)
+        return np.repeat(np.asarray(line)[:, None], len(ys), axis=1)
+    if _same(surf.x, xs) and _same(surf.y, ys):
         return np.array(surf.z)
     return surf.sample(xs, ys)

@@ -6,7 +6,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.roughness import undeformed_gap
+from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..references import cite
 from ..results import Comparison, Outcome, variable
@@ -23,7 +23,8 @@ def run(case, progress=None) -> Outcome:
     """Solve the case's normal contact; compare with Hertz when the surfaces are smooth."""
     x, y = case.grid.coordinates()
     body1, body2 = case.body1.material(), case.body2.material()
-    gap0 = undeformed_gap(*case.geometry.radii(), x, y, case.roughness)
+    rough = None if case.roughness is None else roughness_on_grid(case.roughness, x, y)
+    gap0 = undeformed_gap(*case.geometry.radii(), x, y, None if rough is None else rough.heights)
     callback = None
     if progress is not None:
         def callback(iteration, residual):
@@ -100,13 +101,15 @@ def run(case, progress=None) -> Outcome:
     notes = [] if res.converged else [
         f"The solver did not converge in {res.iterations} iterations "
         f"(residual {res.residual:.2e}); the numbers above are not trustworthy."]
+    if rough is not None:
+        notes += rough.notes
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=_warnings(case, res, x, y, body1, body2))
+                   warnings=_warnings(case, res, x, y, body1, body2, rough))
 
 
-def _warnings(case, res, x, y, body1, body2) -> list[str]:
-    """Trust checks: domain, mesh, roughness on the mesh and hardness
-    (:mod:`asperity.diagnostics`)."""
+def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
+    """Trust checks: domain, mesh, roughness on the mesh (a measured file: its sampling and
+    the reader's doubts) and hardness (:mod:`asperity.diagnostics`)."""
     size = None
     if case.grid.periodic:
         lines = diagnostics.periodic_contact(res.contact, x, y)
@@ -125,4 +128,7 @@ def _warnings(case, res, x, y, body1, body2) -> list[str]:
             ell = GROUND_CORRELATION_LENGTH
         if ell is not None:
             lines += diagnostics.roughness_resolution("roughness", ell, x, y)
+    if on_grid is not None and on_grid.file_spacing is not None:
+        lines += [*on_grid.warnings,
+                  *diagnostics.coarse_roughness_file("roughness", on_grid.file_spacing, x, y)]
     return lines + diagnostics.above_hardness(res.pressure, [("body1", body1), ("body2", body2)])

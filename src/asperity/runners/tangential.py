@@ -17,7 +17,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.roughness import undeformed_gap
+from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact.load_path import proportional_path, tangential_load_path
 from ..errors import InputError
@@ -38,9 +38,9 @@ _PER_BODY_NOTE = (
 class _Field:
     """Pressure (Pa) and friction coefficient on the grid, with what built them."""
 
-    def __init__(self, x, y, pressure, mu, hertz=None, normal=None):
+    def __init__(self, x, y, pressure, mu, hertz=None, normal=None, roughness=None):
         self.x, self.y, self.pressure, self.mu = x, y, pressure, mu
-        self.hertz, self.normal = hertz, normal
+        self.hertz, self.normal, self.roughness = hertz, normal, roughness
 
     @property
     def cell_area(self):
@@ -61,9 +61,11 @@ def _hertz_field(case, body1, body2):
                                             " m about the origin)")
     X, Y = np.meshgrid(x, y, indexing="ij")
     if spec.source == "normal":
-        gap = undeformed_gap(rx, ry, x, y, spec.roughness)
+        rough = None if spec.roughness is None else roughness_on_grid(
+            spec.roughness, x, y, "pressure.roughness")
+        gap = undeformed_gap(rx, ry, x, y, None if rough is None else rough.heights)
         res = solve_normal(gap, x, y, body1, body2, load=spec.load, tol=spec.normal_tolerance)
-        return _Field(x, y, res.pressure, np.full(X.shape, case.mu), h, res)
+        return _Field(x, y, res.pressure, np.full(X.shape, case.mu), h, res, rough)
     p = h.pressure(X, Y)
     total = p.sum() * (x[1] - x[0]) * (y[1] - y[0])
     if not total > 0:
@@ -231,6 +233,15 @@ def _figures(case, fld, res, path):
     return figs
 
 
+def _file_warnings(fld) -> list[str]:
+    """A measured roughness file's doubts: the reader's, and sampling coarser than the grid."""
+    rough = fld.roughness
+    if rough is None or rough.file_spacing is None:
+        return []
+    return [*rough.warnings, *diagnostics.coarse_roughness_file(
+        "pressure.roughness", rough.file_spacing, fld.x, fld.y)]
+
+
 def _path_summary(path):
     out = {"path_steps": len(path.loads), "path_gross_slip_step": int(path.gross_slip_step),
            "path_iterations": int(path.iterations), "path_converged": bool(path.converged)}
@@ -245,7 +256,7 @@ def run(case, progress=None) -> Outcome:
     identical = (body1.youngs_modulus, body1.poisson_ratio) == (body2.youngs_modulus,
                                                                body2.poisson_ratio)
     fld = _field(case, body1, body2)
-    notes = []
+    notes = [] if fld.roughness is None else list(fld.roughness.notes)
     if fld.normal is not None and not fld.normal.converged:
         notes.append(f"The normal-contact solve did not converge in {fld.normal.iterations} "
                      "iterations; the pressure, and everything below, is not trustworthy.")
@@ -317,6 +328,7 @@ def run(case, progress=None) -> Outcome:
     trust = (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
              if case.pressure.source == "normal" else [])
     trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
+    trust += _file_warnings(fld)
     trust += diagnostics.above_hardness(fld.pressure, [("body1", body1), ("body2", body2)])
     if res.reason and not res.converged:  # the solver's own account of its failure (lp)
         trust.append(res.reason)

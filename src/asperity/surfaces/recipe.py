@@ -17,8 +17,11 @@ Kinds and the parameters they use:
 - ``ground``: ``ra``, ``correlation_length`` (default 15 um), ``run_in``, ``seed``
   (:func:`~.ground.transverse_ground_profile`)
 - ``builtin``: ``profile`` "A", "B" or "C" (:func:`~.ground.builtin_profile`)
-- ``file``: ``path``, ``file_spacing`` (a file without coordinates) and ``read_options``
-  (:func:`~.io.read_surface`)
+- ``file``: ``path``, ``file_spacing`` (a file without coordinates; refused for a file that
+  gives its own positions), ``read_options`` (:func:`~.io.read_measured`) and ``form_degree``
+  (the least-squares polynomial of that degree removed after reading,
+  :func:`~.form.remove_form`: 1 the mean line or plane, 0 the mean only; None keeps the heights
+  as read)
 - ``feature``: ``feature`` "dent", "bump", "ridge" or "groove", ``amplitude``, ``half_width``,
   ``position``
   (:func:`~.features.feature_surface`)
@@ -26,6 +29,9 @@ Kinds and the parameters they use:
   with ``natural_frequency`` the tool vibrates (:func:`~.machining.turned_profile_dynamic`:
   ``depth_of_cut``, ``cutting_speed``, ``workpiece_diameter``, ``mass``, ``damping_ratio``,
   ``seed``)
+
+:func:`build_surface_record` also returns what was read and removed (a
+:class:`SurfaceBuild`), for the notes of a run.
 
 Every kind then takes, in this order: ``lowpass_wavelength`` (the cut-off of an ISO 16610-21
 Gaussian filter applied to a profile), ``scale`` (a factor on the heights) and ``waviness`` (a
@@ -38,8 +44,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..errors import InputError
 from .features import feature_surface
 from .filters import gaussian_filter
+from .form import remove_form
 from .generate import (
     add_waviness,
     gaussian_profile,
@@ -48,11 +56,12 @@ from .generate import (
     self_affine_topography,
 )
 from .ground import builtin_profile, transverse_ground_profile
-from .io import read_surface
+from .io import Reading, read_measured
 from .machining import turned_profile, turned_profile_dynamic
 from .topography import Profile, Topography, cell_centres
 
-__all__ = ["KINDS", "SurfaceRecipe", "Waviness", "build_surface"]
+__all__ = ["KINDS", "FormRemoval", "SurfaceBuild", "SurfaceRecipe", "Waviness", "build_surface",
+           "build_surface_record", "level"]
 
 #: The kinds of surface :func:`build_surface` makes.
 KINDS = ("smooth", "gaussian", "self-affine", "ground", "builtin", "file", "feature", "turned")
@@ -89,6 +98,7 @@ class SurfaceRecipe:
     path: str | None = None
     file_spacing: float | None = None
     read_options: dict = field(default_factory=dict)
+    form_degree: int | None = None
     feature: str | None = None
     amplitude: float | None = None
     half_width: float | None = None
@@ -110,6 +120,121 @@ class SurfaceRecipe:
     def __post_init__(self):
         if self.kind not in KINDS:
             raise ValueError(f"unknown surface kind {self.kind!r}; expected one of {KINDS}")
+
+
+@dataclass(frozen=True)
+class FormRemoval:
+    """The least-squares form removed from a measured surface (:func:`level`), SI units.
+
+    Attributes
+    ----------
+    degree : int
+        Degree of the polynomial removed (0: the mean only).
+    offset : float
+        Mean height of the surface as read, m (always removed).
+    tilt : tuple of float
+        Slope of the least-squares line (a profile: along x) or plane (along x, along y) of
+        the heights as read, rad; removed when ``degree >= 1`` and the surface is not periodic.
+    form_height : float
+        Peak-to-valley height of the removed form, m.
+    periodic : bool
+        A periodic surface has no form: only its mean is removed.
+    """
+
+    degree: int
+    offset: float
+    tilt: tuple[float, ...]
+    form_height: float
+    periodic: bool = False
+
+    def describe(self) -> str:
+        """What was removed, in words (heights in um to 0.1 nm, tilts in mrad to 0.1 urad)."""
+        tilts = " and ".join(f"{round(t * 1e3, 4) + 0.0:.3g} mrad along {axis}"
+                             for t, axis in zip(self.tilt, "xy", strict=False))
+        offset = f"offset {round(self.offset * 1e6, 4) + 0.0:.4g} um"
+        if self.periodic:
+            return (f"its mean height was removed ({offset}; a periodic file has no form, so "
+                    f"its tilt of {tilts} is kept)")
+        if self.degree == 0:
+            return (f"its mean height was removed (form_degree = 0: {offset}); its tilt of "
+                    f"{tilts} is kept")
+        if self.degree == 1:
+            shape = "line" if len(self.tilt) == 1 else "plane"
+            return (f"its least-squares mean {shape} was removed (form_degree = 1): {offset}, "
+                    f"tilt {tilts}")
+        return (f"its least-squares polynomial of degree {self.degree} was removed "
+                f"(form_degree = {self.degree}): {offset}, tilt {tilts}, form "
+                f"{self.form_height * 1e6:.4g} um peak-to-valley")
+
+
+@dataclass(frozen=True)
+class SurfaceBuild:
+    """A built surface with what was read and removed on the way (:func:`build_surface_record`).
+
+    Attributes
+    ----------
+    surface : Profile or Topography
+        The surface, as :func:`build_surface` returns it.
+    reading : Reading or None
+        A measured file's reading (its notes and warnings); None for other kinds.
+    form : FormRemoval or None
+        The form removed from a measured file; None when none was (other kinds, or
+        ``form_degree`` None).
+    """
+
+    surface: Profile | Topography
+    reading: Reading | None = None
+    form: FormRemoval | None = None
+
+
+def _tilt(surface) -> tuple[float, ...]:
+    """Slopes of the least-squares line or plane of the heights (on a full grid the x and y
+    terms are orthogonal, so each is the slope of the mean heights along its axis)."""
+    z = np.asarray(surface.z, dtype=float)
+    coords = (surface.x,) if isinstance(surface, Profile) else (surface.x, surface.y)
+    slopes = []
+    for axis, coord in enumerate(coords):
+        c = np.asarray(coord, dtype=float) - np.mean(coord)
+        mean = z if z.ndim == 1 else z.mean(axis=1 - axis)
+        slopes.append(float(c @ mean / (c @ c)))
+    return tuple(slopes)
+
+
+def level(surface, degree: int) -> tuple[Profile | Topography, FormRemoval]:
+    """A measured surface referred to its least-squares form, and what was removed.
+
+    Parameters
+    ----------
+    surface : Profile or Topography
+    degree : int
+        Degree of the form (:func:`~.form.remove_form`): 0 the mean, 1 the mean line or plane.
+
+    Returns
+    -------
+    (Profile or Topography, FormRemoval)
+    """
+    levelled = remove_form(surface, degree)
+    z = np.asarray(surface.z, dtype=float)
+    form = z - np.asarray(levelled.z)
+    return levelled, FormRemoval(degree, float(z.mean()), _tilt(surface), float(np.ptp(form)),
+                                 bool(surface.periodic))
+
+
+def _measured(recipe: SurfaceRecipe) -> SurfaceBuild:
+    """The recipe's file, read, checked against ``file_spacing`` and levelled."""
+    reading = read_measured(recipe.path, recipe.file_spacing, **recipe.read_options)
+    surface = reading.surface
+    if recipe.file_spacing is not None:
+        own = np.atleast_1d(surface.spacing)
+        if not np.allclose(own, np.broadcast_to(recipe.file_spacing, own.shape), rtol=1e-6):
+            apart = " by ".join(f"{h * 1e6:.4g} um" for h in own)
+            raise InputError("spacing", f"no spacing for a file that gives its own positions "
+                             f"(its points are {apart} apart); leave spacing out",
+                             recipe.file_spacing)
+    if recipe.form_degree is None:
+        return SurfaceBuild(surface, reading)
+    levelled, form = level(surface, recipe.form_degree)
+    return SurfaceBuild(levelled, reading, form)
 
 
 def _made(recipe: SurfaceRecipe, length: float, spacing, width, y):
@@ -138,8 +263,6 @@ def _made(recipe: SurfaceRecipe, length: float, spacing, width, y):
                                          seed=recipe.seed, **ell)
     if kind == "builtin":
         return builtin_profile(recipe.profile, length=length, spacing=h)
-    if kind == "file":
-        return read_surface(recipe.path, recipe.file_spacing, **recipe.read_options)
     if kind == "feature":
         return feature_surface(recipe.feature, length, h, amplitude=recipe.amplitude,
                                half_width=recipe.half_width, position=recipe.position, y=y)
@@ -153,6 +276,46 @@ def _made(recipe: SurfaceRecipe, length: float, spacing, width, y):
             damping_ratio=recipe.damping_ratio, mass=recipe.mass, seed=recipe.seed).profile
     n = int(np.ceil(length / h))
     return Profile(cell_centres(n, h), np.zeros(n), periodic=True)
+
+
+def _finished(recipe: SurfaceRecipe, surf, y):
+    """The low-pass filter, scale and waviness of the recipe applied to ``surf``."""
+    if isinstance(surf, Profile):
+        z = np.asarray(surf.z)
+        if recipe.lowpass_wavelength:
+            z = gaussian_filter(z, surf.x, recipe.lowpass_wavelength, periodic=surf.periodic)
+        if recipe.scale != 1.0 or recipe.lowpass_wavelength:
+            surf = surf.with_heights(recipe.scale * z)
+    elif recipe.scale != 1.0:
+        surf = surf.with_heights(recipe.scale * np.asarray(surf.z))
+    if recipe.waviness is not None:
+        w = recipe.waviness
+        if isinstance(surf, Profile) and w.direction == "y" and y is not None:
+            surf = surf.extrude(y)
+        surf = add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
+    return surf
+
+
+def build_surface_record(recipe: SurfaceRecipe, length: float, spacing, *,
+                         width: float | None = None, y=None) -> SurfaceBuild:
+    """The surface a recipe describes (:func:`build_surface`), with a measured file's reading
+    and the form removed from it.
+
+    Parameters
+    ----------
+    recipe : SurfaceRecipe
+    length, spacing, width, y
+        As :func:`build_surface`.
+
+    Returns
+    -------
+    SurfaceBuild
+    """
+    if recipe.kind == "file":
+        made = _measured(recipe)
+    else:
+        made = SurfaceBuild(_made(recipe, length, spacing, width, y))
+    return SurfaceBuild(_finished(recipe, made.surface, y), made.reading, made.form)
 
 
 def build_surface(recipe: SurfaceRecipe, length: float, spacing, *, width: float | None = None,
@@ -179,18 +342,4 @@ def build_surface(recipe: SurfaceRecipe, length: float, spacing, *, width: float
     Profile or Topography
         Profiles vary along x; the caller extrudes them where it needs a topography.
     """
-    surf = _made(recipe, length, spacing, width, y)
-    if isinstance(surf, Profile):
-        z = np.asarray(surf.z)
-        if recipe.lowpass_wavelength:
-            z = gaussian_filter(z, surf.x, recipe.lowpass_wavelength, periodic=surf.periodic)
-        if recipe.scale != 1.0 or recipe.lowpass_wavelength:
-            surf = surf.with_heights(recipe.scale * z)
-    elif recipe.scale != 1.0:
-        surf = surf.with_heights(recipe.scale * np.asarray(surf.z))
-    if recipe.waviness is not None:
-        w = recipe.waviness
-        if isinstance(surf, Profile) and w.direction == "y" and y is not None:
-            surf = surf.extrude(y)
-        surf = add_waviness(surf, w.wavelength, w.amplitude, direction=w.direction)
-    return surf
+    return build_surface_record(recipe, length, spacing, width=width, y=y).surface
