@@ -272,6 +272,8 @@ class EvaluationSpec(CaseModel):
       evaluation length.
     - ``window``: length of the windows of the roughness along a turned workpiece (Seireg
       Fig. 4.2); default about a twentieth of the length, in whole feeds.
+    - ``form_degree``: degree of the least-squares polynomial removed as form before the
+      parameters (default 1, a line or plane; 2 for a cylinder or ball).
     """
 
     cutoff: Quantity("length", gt=0) | None = None
@@ -283,6 +285,9 @@ class EvaluationSpec(CaseModel):
     window: Quantity("length", gt=0) | None = None
     """Window length of the roughness along a turned workpiece (Seireg Fig. 4.2; default about a
     twentieth of the length)."""
+    form_degree: Annotated[int, Field(ge=0, le=9)] | None = None
+    """Degree of the least-squares polynomial removed as form (default 1, a line or plane; 2 for
+    a cylinder or ball)."""
 
 
 class SurfaceCase(CaseHeader):

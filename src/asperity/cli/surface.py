@@ -143,8 +143,13 @@ def _texture_json(file: Path, reading, texture) -> dict:
             "kind": "profile" if surface.z.ndim == 1 else "topography",
             "points": list(surface.z.shape), "spacing_m": spacing, "periodic": surface.periodic,
             "filled_points": reading.filled, "filters": filters, "parameters": groups,
-            "notes": [*reading.notes, *texture.notes],
-            "warnings": [*reading.warnings, *texture.warnings]}
+            "notes": [*reading.notes, *texture.notes], "warnings": _warnings(reading, texture)}
+
+
+def _warnings(reading, texture) -> list[str]:
+    """The reader's warnings, a doubt on the units when the rms slope is implausible, and the
+    texture evaluation's warnings."""
+    return [*reading.warnings, *reading.slope_warnings(*texture.rms_slope), *texture.warnings]
 
 
 def _texture_tables(file: Path, reading, texture) -> list[Table]:
@@ -391,11 +396,13 @@ def plot(
     from ..surfaces.texture import evaluate_texture
 
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
+    warnings = list(reading.warnings)
     if spectrum:
         fig = plot_spectrum(reading.surface, title=f"Power spectral density: {file.name}")
     else:
         texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
                                    form_degree=form_degree, exclude=reading.excluded)
+        warnings = _warnings(reading, texture)
         fig = plot_texture(texture, title=file.name)
     try:
         fig.savefig(out, dpi=150)
@@ -403,6 +410,6 @@ def plot(
         raise InputError("--out", "a writable figure file (.png, .pdf, .svg)", str(err)) from err
     finally:
         plt.close(fig)
-    for line in reading.warnings:
+    for line in warnings:
         typer.echo(f"warning: {line}", err=True)
     typer.echo(f"wrote {out}")

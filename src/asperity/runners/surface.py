@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import xarray as xr
@@ -93,6 +93,8 @@ def _generated(spec):
     try:
         reading = read_measured(spec.path, spec.spacing, **spec.read_options())
     except InputError as exc:
+        if exc.field == "spacing":
+            raise InputError("surface.spacing", exc.expected, exc.got) from None
         if not exc.field.startswith(str(spec.path)):
             raise
         where = exc.field.removeprefix(str(spec.path)).lstrip(":").strip()
@@ -141,20 +143,36 @@ def _surfaces(spec, progress) -> tuple[dict, list]:
     return made, turned
 
 
-def _texture(case, surface, summary, notes, warnings, figures, exclude=None):
-    """The ISO texture evaluation of ``surface`` as ``asperity surface stats`` shows it:
-    summary keys ``iso_<name>`` (unit-suffixed), its notes, and the ``texture`` figure."""
-    from ..plotting.surfaces import plot_texture
-    from ..surfaces.texture import evaluate_texture, suffixed
+def _iso_texture(case, surface, exclude):
+    """The ISO texture evaluation of ``surface`` as ``asperity surface stats`` makes it, or None
+    and the warning saying why it could not be made."""
+    from ..surfaces.texture import evaluate_texture
 
+    degree = case.evaluation.form_degree
     try:
-        texture = evaluate_texture(surface, case.evaluation.cutoff, exclude=exclude)
+        return evaluate_texture(surface, case.evaluation.cutoff, exclude=exclude,
+                                form_degree=1 if degree is None else degree), None
     except InputError as exc:
-        warnings.append(f"ISO texture parameters: not evaluated ({exc}); give "
-                        "evaluation.cutoff that the surface holds")
-        return
+        return None, (f"ISO texture parameters: not evaluated ({exc}); give evaluation.cutoff "
+                      "that the surface holds")
+
+
+def _iso_headline(spec, evaluation, texture) -> bool:
+    """Whether the main parameters (``ra_m`` ...) are the ISO roughness profile's: those of a
+    measured profile evaluated without this analysis' own cut-off or sampling length, so that
+    they are the numbers ``asperity surface stats`` gives, not those of the unfiltered trace."""
+    return (spec.kind == "file" and texture is not None and "R" in texture.groups
+            and evaluation.cutoff is None and evaluation.sampling_length is None)
+
+
+def _texture(case, texture, summary, notes, warnings, figures):
+    """The ISO texture evaluation in the outcome: summary keys ``iso_<name>`` (unit-suffixed),
+    its notes and warnings, and the ``texture`` figure."""
+    from ..plotting.surfaces import plot_texture
+    from ..surfaces.texture import suffixed
+
     fam = texture.families
-    if isinstance(surface, s.Profile):
+    if isinstance(texture.surface, s.Profile):
         summary.update(iso_cutoff_m=fam.cutoff, iso_sampling_lengths=fam.sampling_lengths)
         if fam.lambda_s is not None:
             summary["iso_lambda_s_m"] = fam.lambda_s
@@ -208,9 +226,12 @@ def _evaluate(surface, evaluation) -> _Evaluated:
     """Parameters, waviness/roughness split, spectrum and correlation length of a surface.
 
     The spectrum is that of the whole (primary) surface; the parameters and the correlation
-    length are those of the evaluated roughness profile when a cut-off is given.
+    length are those of the evaluated roughness profile when a cut-off is given, after the
+    form of ``evaluation.form_degree`` is removed when it is given.
     """
     spectrum = s.power_spectrum(surface, window=None if surface.periodic else "hann")
+    if evaluation.form_degree is not None:
+        surface = s.remove_form(surface, evaluation.form_degree)
     primary = s.roughness_parameters(surface)
     if isinstance(surface, s.Topography):
         for key in ("cutoff", "sampling_length"):
@@ -460,7 +481,14 @@ def run(case, progress=None) -> Outcome:
     if spec.kind == "file":
         reading = surfaces[spec.labels()[0]]
         surfaces[spec.labels()[0]] = reading.surface
+    first = next(iter(surfaces))
+    texture, failed = _iso_texture(case, surfaces[first],
+                                   None if reading is None else reading.excluded)
     evaluated = {label: _evaluate(surf, case.evaluation) for label, surf in surfaces.items()}
+    iso = _iso_headline(spec, case.evaluation, texture)
+    if iso:
+        evaluated[first] = replace(evaluated[first], parameters={
+            name: texture.groups["R"][name] for name in evaluated[first].parameters})
     summary = _summary(spec, surfaces, evaluated)
     comparisons = _reference_ra(spec, surfaces, evaluated)
     along, window, notes = None, None, []
@@ -476,7 +504,13 @@ def run(case, progress=None) -> Outcome:
             notes.append(_DYNAMIC)
     if spec.kind == "builtin":
         notes.append(_SYNTHETIC)
-    if case.evaluation.cutoff is None and spec.kind not in ("builtin", "turned"):
+    if iso:
+        notes.append("The ra_m, rq_m, ... keys are those of the ISO 4287 roughness profile (the "
+                     f"ISO 4288 cut-off, {texture.families.cutoff * 1e3:g} mm, mean of the "
+                     "sampling lengths), as asperity surface stats gives them; the iso_* keys "
+                     "hold every group. Give evaluation.cutoff or sampling_length for this "
+                     "analysis' own Gaussian split instead.")
+    elif case.evaluation.cutoff is None and spec.kind not in ("builtin", "turned"):
         notes.append("Without evaluation.cutoff the ra_m, rq_m, ... (sa_m, ...) keys are of the "
                      "unfiltered surface (heights from the least-squares line/plane); the iso_* "
                      "keys are of the ISO roughness profile (cut-off by ISO 4288) or of the "
@@ -492,6 +526,10 @@ def run(case, progress=None) -> Outcome:
         notes.append(f"File read as {reading.style}.")
         notes.extend(f"Reading: {note}." for note in reading.notes)
         warnings.extend(reading.warnings)
-    _texture(case, next(iter(surfaces.values())), summary, notes, warnings, figures,
-             None if reading is None else reading.excluded)
+        if texture is not None:
+            warnings.extend(reading.slope_warnings(*texture.rms_slope))
+    if texture is None:
+        warnings.append(failed)
+    else:
+        _texture(case, texture, summary, notes, warnings, figures)
     return Outcome(dataset, summary, figures, comparisons, notes=notes, warnings=warnings)

@@ -8,13 +8,16 @@ removed too (both the areal Gaussian filter of ISO 16610-61,
 S-L surface, without one the S-F surface; the output says which.
 
 Spatial parameters (ISO 25178-2 clause 4.3) from the autocorrelation function (ACF) of the
-scale-limited surface, zero-padded so that lags wrap nowhere:
+scale-limited surface, zero-padded so that lags wrap nowhere (circular when periodic), from the
+lag at which it falls to s = 0.2 along each direction (1 degree steps; the ACF interpolated
+along the direction by ``scipy.ndimage.map_coordinates`` out to half the field, the crossing
+interpolated linearly between the bracketing lags:
+:func:`~asperity.surfaces.parameters.acf_decay_lengths`):
 
-- Sal: the shortest lag at which the ACF falls to s = 0.2;
-- Str (texture aspect ratio): Sal divided by the longest such lag over all directions, from 0
-  for a strong lay to 1 for an isotropic texture. Along each direction (1 degree steps) the ACF
-  is interpolated (``scipy.ndimage.map_coordinates``) out to half the field; a direction that
-  does not decay within it counts with that length, so Str is then an upper bound (noted).
+- Sal: the shortest of those lags (NaN when the ACF decays along no direction);
+- Str (texture aspect ratio): Sal divided by the longest, from 0 for a strong lay to 1 for an
+  isotropic texture; a direction that does not decay within half the field counts with that
+  length, so Str is then an upper bound.
 
 Std (texture direction, clause 4.3.3): the angular power spectrum -- the power of the
 Hann-windowed surface summed over wavevectors in 0.5 degree sectors -- has its maximum at the
@@ -31,14 +34,13 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.fft
-from scipy.ndimage import map_coordinates
 
 from ..errors import InputError
 from .cutoffs import lambda_s_for
 from .filters import areal_gaussian_filter
 from .form import remove_form
 from .material_ratio import rk_parameters, section_height_difference, volume_parameters
-from .parameters import _autocorrelation, autocorrelation_length, roughness_parameters
+from .parameters import acf_decay_lengths, roughness_parameters
 from .profiles import height_moments
 from .topography import Topography
 
@@ -113,7 +115,8 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
                      topography.y.size * topography.spacing[1])
         if l_filter > extent:
             raise InputError("cutoff", f"an L-filter nesting index within the field "
-                             f"({extent:.4g} m)", l_filter)
+                             f"({extent:.4g} m; a plain number is metres: give the unit, e.g. "
+                             "\"80 um\")", f"{l_filter:.4g} m")
         long = areal_gaussian_filter(surface.z, x, y, l_filter, periodic=periodic)
         limited = surface.with_heights(surface.z - long)
         notes.append(f"L-filter {l_filter * 1e3:.4g} mm (areal Gaussian, first-moment end "
@@ -123,35 +126,21 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
     return AreaFamilies(surface, limited, s_filter, l_filter, tuple(notes))
 
 
-def _acf(z: np.ndarray) -> np.ndarray:
-    """Normalised, zero-padded autocorrelation with lag (0, 0) at the centre."""
-    return scipy.fft.fftshift(_autocorrelation(z - z.mean(), periodic=False))
+def _decay(topography: Topography, threshold: float) -> tuple[float, float, bool]:
+    """Sal, Str and whether the ACF decays along every direction (module docstring)."""
+    lengths = acf_decay_lengths(topography, threshold=threshold)[1]
+    decayed = bool(np.isfinite(lengths).all())
+    if not np.isfinite(lengths).any():
+        return math.nan, math.nan, False
+    reach = 0.5 * min(n * h for n, h in zip(topography.shape, topography.spacing, strict=True))
+    lengths = np.where(np.isfinite(lengths), lengths, reach)
+    return float(lengths.min()), float(lengths.min() / lengths.max()), decayed
 
 
 def texture_aspect_ratio(topography: Topography, threshold=ACF_THRESHOLD) -> tuple[float, bool]:
     """Str (module docstring) and whether it is exact (False: an upper bound)."""
-    z = topography.z
-    acf = _acf(z)
-    (nx, ny), (hx, hy) = z.shape, topography.spacing
-    reach = 0.5 * min(nx * hx, ny * hy)
-    step = min(hx, hy) / 2
-    r = np.arange(0.0, reach, step)
-    lengths = []
-    decayed_everywhere = True
-    for angle in np.radians(np.arange(0.0, 180.0, 1.0)):
-        ix = nx + r * math.cos(angle) / hx
-        iy = ny + r * math.sin(angle) / hy
-        ray = map_coordinates(acf, [ix, iy], order=1)
-        below = np.flatnonzero(ray <= threshold)
-        if below.size == 0:
-            lengths.append(reach)
-            decayed_everywhere = False
-            continue
-        k = below[0]
-        frac = (ray[k - 1] - threshold) / (ray[k - 1] - ray[k]) if k else 0.0
-        lengths.append((k - 1 + frac) * step if k else 0.0)
-    lengths = np.array(lengths)
-    return float(lengths.min() / lengths.max()), decayed_everywhere
+    _, ratio, decayed = _decay(topography, threshold)
+    return ratio, decayed
 
 
 def texture_direction(topography: Topography) -> float:
@@ -199,13 +188,12 @@ def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str
     """
     surface = families.scale_limited
     slopes = roughness_parameters(surface)
-    str_value, _ = texture_aspect_ratio(surface)
+    sal, str_value, _ = _decay(surface, ACF_THRESHOLD)
     z = surface.z if exclude is None else surface.z[~np.asarray(exclude, bool)]
     return {
         "height": height_moments(z, "S"),
         "hybrid": {"Sdq": slopes["Sdq"], "Sdr": slopes["Sdr"]},
-        "spatial": {"Sal": autocorrelation_length(surface, threshold=ACF_THRESHOLD),
-                    "Str": str_value, "Std": texture_direction(surface)},
+        "spatial": {"Sal": sal, "Str": str_value, "Std": texture_direction(surface)},
         "functional": {**rk_parameters(z, "S"), "Sdc": section_height_difference(z)},
         "volume": volume_parameters(z),
     }

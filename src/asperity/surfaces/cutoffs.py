@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["CUTOFFS", "LAMBDA_S", "cutoff_for_ra", "lambda_s_for"]
+__all__ = ["CUTOFFS", "LAMBDA_S", "cutoff_for_ra", "lambda_s_for", "largest_spacing"]
 
 #: ISO 4288 Table 1: (upper Ra bound in m, cut-off in m), Ra ranges open below, closed above.
 CUTOFFS = ((0.02e-6, 0.08e-3), (0.1e-6, 0.25e-3), (2e-6, 0.8e-3), (10e-6, 2.5e-3),
@@ -38,6 +38,13 @@ def cutoff_for_ra(ra: float) -> float:
     return next(cut for upper, cut in CUTOFFS if ra <= upper)
 
 
+def largest_spacing(cutoff: float) -> tuple[float, float] | None:
+    """ISO 3274 Table 1's lambda_s and largest sampling spacing (m) for ``cutoff``, or None for
+    a cut-off outside the table."""
+    match = next((key for key in LAMBDA_S if np.isclose(key, cutoff, rtol=1e-6)), None)
+    return None if match is None else LAMBDA_S[match]
+
+
 def lambda_s_for(cutoff: float, spacing: float) -> tuple[float | None, str]:
     """ISO 3274's lambda_s for ``cutoff`` when the sampling ``spacing`` allows it.
 
@@ -50,12 +57,13 @@ def lambda_s_for(cutoff: float, spacing: float) -> tuple[float | None, str]:
     reason : str
         One line saying which and why.
     """
-    match = next((key for key in LAMBDA_S if np.isclose(key, cutoff, rtol=1e-6)), None)
-    if match is None:
+    row = largest_spacing(cutoff)
+    if row is None:
         return None, (f"no lambda_s: the cut-off {cutoff * 1e3:.4g} mm is not one of ISO "
                       "3274's (0.08, 0.25, 0.8, 2.5, 8 mm)")
-    lam, largest = LAMBDA_S[match]
+    lam, largest = row
     if spacing > largest * (1 + 1e-9):
         return None, (f"no lambda_s: the spacing {spacing * 1e6:.4g} um is coarser than the "
                       f"{largest * 1e6:g} um ISO 3274 allows for lambda_s = {lam * 1e6:g} um")
-    return lam, f"lambda_s = {lam * 1e6:g} um (ISO 3274 Table 1 for lambda_c = {match * 1e3:g} mm)"
+    return lam, (f"lambda_s = {lam * 1e6:g} um (ISO 3274 Table 1 for lambda_c = "
+                 f"{cutoff * 1e3:g} mm)")

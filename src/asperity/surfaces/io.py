@@ -7,8 +7,10 @@ Formats (chosen by the file's suffix):
   block, columns and units from column names (``x_um``, ``Height [nm]``) and header keys
   (``Unit: um``, ``Value units``, ``Width``, ``Z scale``), missing-value markers (``NaN``,
   ``BAD``, ``***``). Without a unit, numbers are metres, with a warning when that is
-  implausible (:data:`PLAUSIBLE_HEIGHT`). An x column rounded to its printed precision is taken
-  as uniform (with a note); a non-uniform one is resampled by cubic spline on request.
+  implausible (:data:`PLAUSIBLE_HEIGHT`); a surface longer than :data:`PLAUSIBLE_LENGTH` is
+  warned about whatever its unit came from, naming where (:attr:`Reading.units`). An x column
+  rounded to its printed precision is taken as uniform (with a note); a non-uniform one is
+  resampled by cubic spline on request.
 - ``.npy``: a 1-D array of heights or a 2-D height matrix (needs a spacing).
 - ``.npz``: arrays ``z`` and optionally ``x``, ``y``, ``periodic`` (what :func:`write_surface`
   writes); without ``x`` a spacing is needed.
@@ -17,8 +19,9 @@ Formats (chosen by the file's suffix):
   (``pip install 'asperity[instruments]'``), converted to metres.
 
 Missing points are refused, or filled on request (:mod:`asperity.surfaces.missing`). Without
-coordinates in the file, positions are the cell centres ``(i + 1/2) * spacing``. The rules are
-written out for users in docs/surfaces.md.
+coordinates in the file, positions are the cell centres ``(i + 1/2) * spacing``; a spacing given
+coarser than :data:`MAX_SPACING` is refused (a plain number is metres: ``--spacing 1`` is a
+metre). The rules are written out for users in docs/surfaces.md.
 """
 
 from __future__ import annotations
@@ -36,14 +39,36 @@ from .readers.text import read_table
 from .readers.units import parse_length
 from .topography import Profile, Topography
 
-__all__ = ["PLAUSIBLE_HEIGHT", "PLAUSIBLE_LENGTH", "TEXT_SUFFIXES", "Reading", "read_measured",
-           "read_surface", "write_surface"]
+__all__ = ["MAX_SPACING", "PLAUSIBLE_HEIGHT", "PLAUSIBLE_LENGTH", "PLAUSIBLE_SLOPE",
+           "TEXT_SUFFIXES", "Reading", "read_measured", "read_surface", "unit_name",
+           "write_surface"]
 
 TEXT_SUFFIXES = (".txt", ".csv", ".dat", ".asc", ".xyz")
-#: Peak-to-valley height (m) and profile length (m) above which numbers read without a unit are
-#: taken to be in another unit than metres, and a warning says so.
+#: Peak-to-valley height (m) above which heights read without a unit are taken to be in another
+#: unit than metres, and the length (m) of a profile or side of a topography above which its x
+#: unit, wherever it came from, is doubted: a warning says so.
 PLAUSIBLE_HEIGHT = 1e-2
 PLAUSIBLE_LENGTH = 1.0
+#: RMS slope (Rdq, Sdq) above which the units are doubted (:meth:`Reading.slope_warnings`): a
+#: mean slope angle of 45 degrees, steeper than machined surfaces are and beyond the
+#: small-slope assumption of the half-space contact models.
+PLAUSIBLE_SLOPE = 1.0
+#: Coarsest grid spacing (m) accepted from the user: two spacings per cut-off of ISO 4288's
+#: longest, 8 mm (the coarsest sampling a profile can be filtered at).
+MAX_SPACING = 4e-3
+#: Metres per unit -> the unit's name, and the unit 1000 times smaller.
+_UNIT_NAMES = {1.0: "m", 1e-3: "mm", 1e-6: "um", 1e-9: "nm", 1e-10: "angstrom", 0.0254: "in",
+               2.54e-5: "mil", 2.54e-8: "uin"}
+_SMALLER = {1.0: "mm", 1e-3: "um", 1e-6: "nm"}
+
+
+def _named(factor: float, names: dict) -> str | None:
+    return next((name for f, name in names.items() if np.isclose(f, factor, rtol=1e-9)), None)
+
+
+def unit_name(factor: float) -> str:
+    """The name of a length unit from its metres per unit (``1e-6`` -> ``"um"``)."""
+    return _named(factor, _UNIT_NAMES) or f"{factor:g} m"
 
 
 def _spacings(spacing, ndim: int, source: str) -> tuple[float, ...]:
@@ -54,7 +79,7 @@ def _spacings(spacing, ndim: int, source: str) -> tuple[float, ...]:
         s = np.repeat(s, ndim)
     if s.size != ndim:
         raise InputError("spacing", f"one spacing, or {ndim} (dx, dy)", spacing)
-    return tuple(check_positive("spacing", v) for v in s)
+    return tuple(check_positive("spacing", float(v)) for v in s)
 
 
 def _from_heights(z, spacing, source, origin=None, periodic=False):
@@ -85,13 +110,20 @@ class Reading:
         What was assumed or changed: units taken from the file, rounded coordinates accepted,
         points filled, data resampled.
     warnings : tuple of str
-        Reasons to doubt the result (heights implausible in metres without a unit).
+        Reasons to doubt the result (heights implausible in metres without a unit, a length
+        beyond :data:`PLAUSIBLE_LENGTH`).
     filled : int
         Number of missing points filled (or masked).
     missing_points : ndarray of bool or None
         Where they were, on the grid of ``surface``; None when none were missing.
     masked : bool
         True when they are to be left out of the parameters (``missing="mask"``).
+    units : str
+        The units read and where they came from (``"x in mm from the column name 'X (mm)';
+        heights in um from the column name 'Z (um)'"``), for warnings that doubt them.
+    height_unit : float or None
+        Metres per unit of the file's heights; None when they were read as metres for want of
+        a unit.
     """
 
     surface: Profile | Topography
@@ -101,11 +133,28 @@ class Reading:
     filled: int = 0
     missing_points: np.ndarray | None = None
     masked: bool = False
+    units: str = ""
+    height_unit: float | None = None
 
     @property
     def excluded(self) -> np.ndarray | None:
         """The points to leave out of the parameters: the missing ones when masked."""
         return self.missing_points if self.masked else None
+
+    def slope_warnings(self, name: str, value: float) -> tuple[str, ...]:
+        """A warning when the rms slope ``value`` of parameter ``name`` (Rdq, Sdq) is above
+        :data:`PLAUSIBLE_SLOPE`: the units read (:attr:`units`) are then likely wrong -- heights
+        in nm read as um give slopes 1000 times too steep."""
+        if not value > PLAUSIBLE_SLOPE:
+            return ()
+        smaller = None if self.height_unit is None else _named(self.height_unit, _SMALLER)
+        give = (f"if they are in {smaller}, give --z-unit {smaller} (case file: z_unit = "
+                f"\"{smaller}\")" if smaller else "give their unit: --z-unit (case file: z_unit)")
+        return (f"{name}: rms slope {value:.4g} is above {PLAUSIBLE_SLOPE:g} (a mean slope "
+                "angle over 45 deg): steeper than any machined surface and outside the "
+                "small-slope assumption of the contact models, so the units read are likely "
+                f"wrong ({self.units}): check the heights' unit in the file's header; {give}; "
+                "or check the x unit (--x-unit)",)
 
 
 @dataclass
@@ -187,21 +236,70 @@ def _resampled(x, z, notes) -> tuple[np.ndarray, np.ndarray]:
     return grid, CubicSpline(x, z)(grid)
 
 
-def _plausible(surface, known: tuple[bool, bool], warnings: list):
-    """Warn when heights or lengths read without a unit are implausible in metres."""
+def _extent(surface) -> float:
+    """The longest side (m) of a profile or topography, ``n * spacing``."""
+    if isinstance(surface, Profile):
+        return surface.length
+    return max(n * h for n, h in zip(surface.shape, surface.spacing, strict=True))
+
+
+def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list):
+    """Warn when heights read without a unit are implausible in metres, or when the surface is
+    longer than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where)."""
     if not known[1] and np.ptp(surface.z) > PLAUSIBLE_HEIGHT:
         warnings.append(f"heights: peak-to-valley {np.ptp(surface.z):.4g} m read as metres (the "
                         f"file gives no unit) exceeds {PLAUSIBLE_HEIGHT * 1e3:g} mm; give the "
                         "unit: --z-unit um (case file: z_unit = \"um\")")
-    length = surface.x[-1] - surface.x[0]
-    if not known[0] and length > PLAUSIBLE_LENGTH:
+    length = _extent(surface)
+    if length <= PLAUSIBLE_LENGTH:
+        return
+    if not known[0]:
         warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit) "
                         f"exceeds {PLAUSIBLE_LENGTH:g} m; give the unit: --x-unit um (case "
                         "file: x_unit = \"um\")")
+    else:
+        warnings.append(f"x: length {length:.4g} m exceeds {PLAUSIBLE_LENGTH:g} m, longer than "
+                        f"a profilometer traces ({units}): check that unit (um written under "
+                        "an 'X (mm)' header?) and give the right one: --x-unit um (case file: "
+                        "x_unit = \"um\") or the right spacing")
+
+
+def _unit_text(what: str, given: float | None, found: float | None, source: str | None) -> str:
+    """``"heights in um from the column name 'Z (um)'"``: a unit read and where it came from."""
+    if given is not None:
+        return f"{what} in {unit_name(given)} as given"
+    if found is not None:
+        return f"{what} in {unit_name(found)} from {source}"
+    return f"{what} read as metres, no unit given or in the file"
+
+
+def _spacing_text(lay, given_spacing, given_x: float | None) -> str:
+    """Where the spacing of a file without coordinates came from, for :attr:`Reading.units`."""
+    if given_spacing is not None:
+        return "spacing as given"
+    if lay.spacing_factor is not None:
+        return f"spacing in {unit_name(lay.spacing_factor)} from the header's spacing or size"
+    return _unit_text("the header's spacing", given_x, lay.x_factor, lay.x_unit_source)
+
+
+def _ignored_spacing(given, surface, warnings: list) -> None:
+    """Warn when a spacing given for a file with coordinates differs from theirs (it is not
+    used: the positions in the file are)."""
+    if given is None:
+        return
+    wanted = np.atleast_1d(np.asarray(given, dtype=float))
+    have = np.atleast_1d(surface.spacing)
+    if wanted.size > have.size or not np.allclose(wanted, have[:wanted.size], rtol=1e-3):
+        warnings.append("spacing: the spacing given ("
+                        + ", ".join(f"{v:.4g} m" for v in wanted) + ") is not used: the file "
+                        "gives positions " + " x ".join(f"{v:.4g} m" for v in have) + " apart; "
+                        "leave the spacing out, or give the x unit (--x-unit; case file: "
+                        "x_unit) if the positions are read in the wrong one")
 
 
 def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool) -> Reading:
     lay = interpret(read_table(path), str(path))
+    given_spacing = spacing
     notes: list[str] = []
     warnings: list[str] = []
     xf = units.x if units.x is not None else lay.x_factor
@@ -234,12 +332,20 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
             spacing = [v * factor for v in lay.spacing]
             xf = xf or lay.spacing_factor
         surface = _from_heights(z, spacing, str(path), lay.origin, lay.periodic)
+    described = "; ".join((
+        _unit_text("x", units.x, lay.x_factor, lay.x_unit_source) if lay.x is not None
+        else _spacing_text(lay, given_spacing, units.x),
+        _unit_text("heights", units.z, lay.z_factor, lay.z_unit_source)))
     known = (xf is not None or lay.x is None and spacing is not None, zf is not None)
     if zf is not None and units.z is None:
-        notes.append(f"heights in units of {zf:g} m, as the file says")
-    _plausible(surface, known, warnings)
+        notes.append(f"heights in {unit_name(zf)}, from {lay.z_unit_source}")
+    if lay.x is not None and lay.x_factor is not None and units.x is None:
+        notes.append(f"x in {unit_name(lay.x_factor)}, from {lay.x_unit_source}")
+    if lay.x is not None:
+        _ignored_spacing(given_spacing, surface, warnings)
+    _plausible(surface, known, described, warnings)
     return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled, lost,
-                   missing == "mask")
+                   missing == "mask", described, zf)
 
 
 def _read_npz(path: Path, spacing, missing: str) -> Reading:
@@ -260,7 +366,7 @@ def _read_npz(path: Path, spacing, missing: str) -> Reading:
     else:
         surface = Topography(arrays["x"], arrays["y"], z, periodic)
     return Reading(surface, "numpy .npz (metres)", tuple(notes), (), filled, lost,
-                   missing == "mask")
+                   missing == "mask", "x and heights in m, as .npz files hold them", 1.0)
 
 
 def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) -> Reading:
@@ -299,8 +405,27 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
     else:
         h = tuple(np.atleast_1d(topo.pixel_size) * factor)
         surface = _from_heights(heights, h, str(path), periodic=bool(topo.is_periodic))
+    described = (f"x and heights in {topo.unit} from the file" if getattr(topo, "unit", None)
+                 else f"x in {unit_name(factor)}, heights in {unit_name(height_factor)} as given")
     return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes), (), filled,
-                   lost, missing == "mask")
+                   lost, missing == "mask", described, height_factor)
+
+
+def _check_coarse(spacing) -> None:
+    """Refuse a given spacing coarser than :data:`MAX_SPACING`: a plain number is metres, so
+    ``--spacing 1`` meant as 1 um reads as 1 m pixels -- for a topography as for a profile."""
+    if spacing is None:
+        return
+    try:
+        values = np.atleast_1d(np.asarray(spacing, dtype=float))
+    except (TypeError, ValueError):
+        raise InputError("spacing", "a grid spacing (m), or two (dx, dy)", spacing) from None
+    coarse = values[values > MAX_SPACING]
+    if coarse.size:
+        raise InputError("spacing", f"a grid spacing of at most {MAX_SPACING * 1e3:g} mm (two "
+                         "spacings per 8 mm, ISO 4288's longest cut-off); a plain number is "
+                         "metres: give the unit, e.g. --spacing \"1 um\" (case file: spacing = "
+                         "\"1 um\")", f"{float(coarse[0]):g} m")
 
 
 def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
@@ -311,7 +436,8 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     ----------
     path : str or Path
     spacing : float or (float, float), optional
-        Grid spacing (m) for files without coordinates; replaces a spacing from the header.
+        Grid spacing (m) for files without coordinates; replaces a spacing from the header. At
+        most :data:`MAX_SPACING`.
     unit, x_unit, z_unit : str, optional
         Length unit of the file's numbers (``"um"``): of both, of the coordinates, of the
         heights. They replace units found in the file (with a note).
@@ -332,10 +458,12 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     ------
     InputError
         Missing file, unknown format, ragged or non-numeric text (naming file and line),
-        missing spacing or points, non-uniform x, a format that needs an extra.
+        missing spacing or points, a spacing coarser than :data:`MAX_SPACING`, non-uniform x,
+        three unnamed columns of a profile export, a format that needs an extra.
     """
     if missing not in ("refuse", "fill", "mask"):
         raise InputError("missing", '"refuse", "fill" or "mask"', missing)
+    _check_coarse(spacing)
     units = _Units.of(unit, x_unit, z_unit)
     path = Path(path)
     if not path.is_file():
@@ -355,9 +483,10 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         z, filled, lost = _missing(z, missing, str(path), notes)
         surface = _from_heights(z, spacing, str(path))
         warnings: list[str] = []
-        _plausible(surface, (True, units.z is not None), warnings)
+        described = "spacing as given; " + _unit_text("heights", units.z, None, None)
+        _plausible(surface, (True, units.z is not None), described, warnings)
         return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled,
-                       lost, missing == "mask")
+                       lost, missing == "mask", described, units.z)
     return _read_instrument(path, units, missing, resample)
 
 

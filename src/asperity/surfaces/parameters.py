@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.fft
+from scipy.ndimage import map_coordinates
 
 from ..errors import InputError
 from ..grids import grid_spacing
@@ -22,6 +23,7 @@ from .topography import Profile, Topography
 
 __all__ = [
     "PowerSpectrum",
+    "acf_decay_lengths",
     "autocorrelation_length",
     "power_spectrum",
     "residual_heights",
@@ -241,39 +243,84 @@ def _autocorrelation(r: np.ndarray, periodic: bool) -> np.ndarray:
     return acf / acf.flat[0]
 
 
+def _first_crossing(values: np.ndarray, threshold: float, step: float) -> float:
+    """The first position where ``values`` (sampled every ``step`` from 0) fall to
+    ``threshold``, interpolated linearly between the samples bracketing it; NaN if never."""
+    below = np.flatnonzero(values <= threshold)
+    if below.size == 0:
+        return math.nan
+    k = below[0]
+    if k == 0:
+        return 0.0
+    return float((k - 1 + (values[k - 1] - threshold) / (values[k - 1] - values[k])) * step)
+
+
+def acf_decay_lengths(heights, x=None, y=None, *, periodic=False, threshold=0.2,
+                      directions=180) -> tuple[np.ndarray, np.ndarray]:
+    """The lag at which the areal ACF first falls to ``threshold``, along each direction.
+
+    ISO 25178-2 clause 4.3.1-4.3.2 define Sal and Str from the horizontal distance at which
+    f_ACF(tx, ty) decays to s along each direction. The ACF (:func:`autocorrelation_length`'s)
+    is sampled along rays from lag zero, ``directions`` of them over [0, 180) degrees, every half
+    of the smaller spacing, by bilinear interpolation of the lag grid
+    (``scipy.ndimage.map_coordinates``), out to half the field; the crossing is interpolated
+    linearly between the samples that bracket it -- along the x and y axes exactly the linear
+    interpolation between the bracketing grid lags.
+
+    Parameters
+    ----------
+    heights : array_like (nx, ny) or Topography
+    x, y : array_like, optional
+        Uniform coordinates (m); lags in grid units without them.
+    periodic : bool
+    threshold : float
+    directions : int
+
+    Returns
+    -------
+    angles : ndarray
+        Directions in degrees, counter-clockwise from x.
+    lengths : ndarray
+        Decay length (m) along each; NaN where the ACF does not decay within half the field.
+    """
+    z, x, y, periodic = _unpack(heights, x, y, periodic)
+    if z.ndim != 2:
+        raise InputError("heights", "a 2-D height map", z.shape)
+    hx, hy = (1.0, 1.0) if x is None else (grid_spacing(x, "x"), grid_spacing(y, "y"))
+    acf = scipy.fft.fftshift(_autocorrelation(residual_heights(z, periodic), periodic))
+    cx, cy = (n // 2 for n in acf.shape)
+    step = 0.5 * min(hx, hy)
+    r = np.arange(0.0, 0.5 * min(z.shape[0] * hx, z.shape[1] * hy), step)
+    angles = np.arange(directions) * 180.0 / directions
+    lengths = np.array([
+        _first_crossing(map_coordinates(acf, [cx + r * math.cos(a) / hx,
+                                              cy + r * math.sin(a) / hy], order=1),
+                        threshold, step)
+        for a in np.radians(angles)])
+    return angles, lengths
+
+
 def autocorrelation_length(heights, x=None, y=None, *, periodic=False, threshold=0.2) -> float:
     """Autocorrelation length: the shortest lag at which the ACF has decayed to ``threshold``.
 
     The ACF is the (biased) autocorrelation of the residual heights (see
     :func:`residual_heights`), circular when periodic, otherwise of the zero-padded data.
     For a profile the first crossing of ``threshold`` is interpolated linearly (Rsal-like); for
-    a topography it is ISO 25178-2 Sal: the smallest lag length |tau| over all grid lags with
-    ACF(tau) <= threshold, resolved to the grid.
+    a topography it is ISO 25178-2 Sal: the shortest of the decay lengths along all directions
+    (:func:`acf_decay_lengths`, each interpolated between the lags that bracket it).
 
     Returns
     -------
     float
         The length in m (in grid units when no coordinates are given), or NaN when the ACF
-        never decays to ``threshold`` within the data.
+        never decays to ``threshold`` within the data (half the field of a topography).
     """
     z, x, y, periodic = _unpack(heights, x, y, periodic)
+    if z.ndim == 2:
+        lengths = acf_decay_lengths(z, x, y, periodic=periodic, threshold=threshold)[1]
+        return float(np.nanmin(lengths)) if np.isfinite(lengths).any() else math.nan
     r = residual_heights(z, periodic)
     acf = _autocorrelation(r, periodic)
-    if r.ndim == 1:
-        h = 1.0 if x is None else grid_spacing(x, "x")
-        half = acf[: r.size // 2 + 1] if periodic else acf[: r.size]
-        below = np.nonzero(half <= threshold)[0]
-        if below.size == 0:
-            return math.nan
-        k = below[0]
-        frac = (half[k - 1] - threshold) / (half[k - 1] - half[k])
-        return float((k - 1 + frac) * h)
-    hx, hy = (1.0, 1.0) if x is None else (grid_spacing(x, "x"), grid_spacing(y, "y"))
-    tx = scipy.fft.fftfreq(acf.shape[0], 1.0 / acf.shape[0]) * hx
-    ty = scipy.fft.fftfreq(acf.shape[1], 1.0 / acf.shape[1]) * hy
-    lag = np.hypot(tx[:, None], ty[None, :])
-    if not periodic:  # lags beyond the data are the zero padding
-        lag = np.where((np.abs(tx) < r.shape[0] * hx)[:, None]
-                       & (np.abs(ty) < r.shape[1] * hy)[None, :], lag, np.inf)
-    candidates = lag[(acf <= threshold) & np.isfinite(lag)]
-    return float(candidates.min()) if candidates.size else math.nan
+    h = 1.0 if x is None else grid_spacing(x, "x")
+    half = acf[: r.size // 2 + 1] if periodic else acf[: r.size]
+    return _first_crossing(half, threshold, h)

@@ -32,8 +32,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_int
-from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for
-from .filters import gaussian_filter
+from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for, largest_spacing
+from .filters import ALPHA, gaussian_filter
 from .form import remove_form
 from .parameters import _amplitude
 from .topography import Profile
@@ -43,6 +43,9 @@ __all__ = ["ProfileFamilies", "amplitude_parameters", "height_moments", "mean_el
 
 #: Sampling lengths in the ISO 4288 default evaluation length.
 SAMPLING_LENGTHS = 5
+#: |mean| of the roughness profile over the evaluation length, as a fraction of its rms about
+#: that mean, above which form is taken to be left in (Rq then inflated by over 10 %).
+FORM_LEFT_IN = 0.5
 
 
 @dataclass(frozen=True)
@@ -116,8 +119,37 @@ def _mean_ra(r: np.ndarray, window: slice, per: int) -> float:
     return float(np.mean(np.abs(parts)))
 
 
-def _iso4288_cutoff(p: np.ndarray, profile: Profile, notes: list, warnings: list) -> float:
-    """ISO 4288 clause 7: the cut-off whose Ra range holds the Ra measured with it."""
+def _chosen_lambda_s(cutoff: float, spacing: float, lambda_s) -> tuple[float | None, str]:
+    """The lambda_s applied with ``cutoff`` (``lambda_s`` as :func:`profile_families` takes it)
+    and a note saying which ("" for none asked)."""
+    if lambda_s == "iso":
+        return lambda_s_for(cutoff, spacing)
+    if lambda_s is None:
+        return None, ""
+    return lambda_s, f"lambda_s = {lambda_s * 1e6:.4g} um as given"
+
+
+def _short_waves_removed(p: np.ndarray, profile: Profile, lam: float | None) -> np.ndarray:
+    """The primary profile: ``p`` without the wavelengths shorter than ``lam`` (ISO 3274)."""
+    if lam is None:
+        return p
+    return gaussian_filter(p, profile.x, lam, periodic=profile.periodic, end_correction="linear")
+
+
+def _unheld_cutoff(wanted: float, fitting: list, profile: Profile) -> str:
+    """Why a profile does not hold the cut-off ISO 4288 asks for, and what to do."""
+    if wanted > fitting[-1]:
+        return (f"the profile ({profile.length * 1e3:.4g} mm) holds at most "
+                f"{fitting[-1] * 1e3:g} mm with run-in and run-out", "measure a longer trace")
+    return (f"the spacing ({profile.spacing * 1e6:.4g} um) is too coarse for it (a cut-off "
+            f"spans at least two spacings; the shortest held is {fitting[0] * 1e3:g} mm)",
+            "sample finer or check the x unit and spacing")
+
+
+def _iso4288_cutoff(p: np.ndarray, profile: Profile, lambda_s, notes: list,
+                    warnings: list) -> float:
+    """ISO 4288 clause 7: the cut-off whose Ra range holds the Ra measured with it (with the
+    lambda_s that goes with each cut-off, so that the Ra named is the one reported)."""
     fitting = [cut for _, cut in CUTOFFS if _fits(cut, profile)]
     if not fitting:
         need = "one ISO 4288 cut-off (0.08 mm)" if profile.periodic else (
@@ -129,7 +161,8 @@ def _iso4288_cutoff(p: np.ndarray, profile: Profile, notes: list, warnings: list
     tried = []
     while cutoff not in tried:
         tried.append(cutoff)
-        _, r = _split(p, profile.x, cutoff, profile.periodic)
+        lam = _chosen_lambda_s(cutoff, profile.spacing, lambda_s)[0]
+        _, r = _split(_short_waves_removed(p, profile, lam), profile.x, cutoff, profile.periodic)
         window, _ = _window(profile, cutoff, SAMPLING_LENGTHS)
         ra = _mean_ra(r, window, int(round(cutoff / profile.spacing)))
         wanted = cutoff_for_ra(ra)
@@ -138,15 +171,65 @@ def _iso4288_cutoff(p: np.ndarray, profile: Profile, notes: list, warnings: list
                          f"{ra * 1e6:.4g} um measured with it lies in its range)")
             return cutoff
         if wanted not in fitting:
+            reason, advice = _unheld_cutoff(wanted, fitting, profile)
             warnings.append(f"lambda_c: ISO 4288 asks for {wanted * 1e3:g} mm (Ra = "
-                            f"{ra * 1e6:.4g} um) but the profile ({profile.length * 1e3:.4g} mm) "
-                            f"holds at most {fitting[-1] * 1e3:g} mm with run-in and run-out; "
-                            f"used {cutoff * 1e3:g} mm; measure a longer trace or give --cutoff")
+                            f"{ra * 1e6:.4g} um) but {reason}; used {cutoff * 1e3:g} mm; "
+                            f"{advice}, or give --cutoff")
             return cutoff
         cutoff = wanted
     notes.append(f"lambda_c = {cutoff * 1e3:g} mm: the ISO 4288 choice alternates between "
                  f"{' and '.join(f'{c * 1e3:g}' for c in tried[-2:])} mm (Ra at a range limit)")
     return cutoff
+
+
+def _sampling_warning(cutoff: float, spacing: float) -> str | None:
+    """A warning when ``spacing`` is coarser than ISO 3274 allows for ``cutoff``."""
+    row = largest_spacing(cutoff)
+    if row is None or spacing <= row[1] * (1 + 1e-9):
+        return None
+    lam, largest = row
+    return (f"sampling: the spacing {spacing * 1e6:.4g} um is coarser than the "
+            f"{largest * 1e6:g} um ISO 3274 allows at lambda_c = {cutoff * 1e3:g} mm (lambda_s "
+            f"= {lam * 1e6:g} um not applied): the wavelengths shorter than "
+            f"{2 * spacing * 1e6:.4g} um are not measured, so the slopes and spacings (Rdq, "
+            "Pdq, RSm) come out too small, the heights less so; measure with a sampling of "
+            f"{largest * 1e6:g} um or finer (the instrument's sampling interval), or check the "
+            "spacing if it was given (--spacing; case file: spacing)")
+
+
+def _form_offset(p: np.ndarray, profile: Profile, cutoff: float, degree: int,
+                 window: slice) -> float:
+    """Mean over ``window`` of the roughness profile of the least-squares polynomial of
+    ``degree`` fitted to ``p``: the offset that form of that degree, left in, gives R."""
+    fit = np.polynomial.Polynomial.fit(profile.x, p, degree)(profile.x)
+    return float(np.mean(_split(fit, profile.x, cutoff, False)[1][window]))
+
+
+def _form_warning(p: np.ndarray, r: np.ndarray, profile: Profile, cutoff: float,
+                  form_degree: int, window: slice) -> str | None:
+    """A warning when form is left in the primary profile ``p``.
+
+    The roughness profile ``r`` is then offset from zero over the evaluation length: the
+    Gaussian mean line of a parabola z = x^2 / (2 rho) lies sigma^2 / (2 rho) above it, sigma^2
+    = (alpha lambda_c)^2 / (2 pi) being the variance of the ISO 16610-21 weighting function.
+    Form is taken to be left in when the offset exceeds :data:`FORM_LEFT_IN` of R's rms about
+    its mean and at least half of it is the offset of the next-degree polynomial fitted to
+    ``p`` (random waviness offsets R too, but not as a polynomial would); the radius named is
+    rho = sigma^2 / (2 |offset|).
+    """
+    mean, spread = float(np.mean(r[window])), float(np.std(r[window]))
+    if abs(mean) <= FORM_LEFT_IN * spread:
+        return None
+    if _form_offset(p, profile, cutoff, form_degree + 1, window) / mean < 0.5:
+        return None
+    rho = (ALPHA * cutoff) ** 2 / (2 * np.pi) / (2 * abs(mean))
+    curvature = (f"a curvature of about {rho * 1e3:.3g} mm radius that the Gaussian mean "
+                 "line does not follow" if form_degree <= 1 else "a form of higher degree")
+    return (f"form: the roughness profile's mean over the evaluation length is "
+            f"{mean * 1e6:.4g} um, {abs(mean) / spread:.3g} times its rms about that mean "
+            f"({spread * 1e6:.4g} um): form is left in ({curvature}), and Ra, Rq, Rp, Rv and "
+            f"the cut-off chosen from Ra are wrong; remove it: --form-degree {form_degree + 1} "
+            f"(case file: evaluation.form_degree = {form_degree + 1})")
 
 
 def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
@@ -179,23 +262,28 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
     warnings: list[str] = []
     p = remove_form(profile, form_degree).z
     if cutoff is None:
-        cutoff = _iso4288_cutoff(p, profile, notes, warnings)
+        cutoff = _iso4288_cutoff(p, profile, lambda_s, notes, warnings)
     else:
         if not _fits(cutoff, profile):
             raise InputError("cutoff", "a cut-off of at least two spacings that the profile "
                              f"holds with its run-in and run-out (at most "
-                             f"{profile.length / (1 if profile.periodic else 2):.4g} m)", cutoff)
+                             f"{profile.length / (1 if profile.periodic else 2):.4g} m; a plain "
+                             "number is metres: give the unit, e.g. \"0.8 mm\")",
+                             f"{cutoff:.4g} m")
         notes.append(f"lambda_c = {cutoff * 1e3:.4g} mm as given")
-    if lambda_s == "iso":
-        lambda_s, reason = lambda_s_for(cutoff, profile.spacing)
+    lambda_s, reason = _chosen_lambda_s(cutoff, profile.spacing, lambda_s)
+    coarse = _sampling_warning(cutoff, profile.spacing)
+    if coarse is not None:
+        warnings.append(coarse)
+    elif reason:
         notes.append(reason)
-    elif lambda_s is not None:
-        notes.append(f"lambda_s = {lambda_s * 1e6:.4g} um as given")
-    if lambda_s is not None:
-        p = gaussian_filter(p, profile.x, lambda_s, periodic=profile.periodic,
-                            end_correction="linear")
+    p = _short_waves_removed(p, profile, lambda_s)
     waviness, roughness = _split(p, profile.x, cutoff, profile.periodic)
     window, count = _window(profile, cutoff, sampling_lengths)
+    form = None if profile.periodic else _form_warning(p, roughness, profile, cutoff,
+                                                       form_degree, window)
+    if form is not None:
+        warnings.insert(0, form)
     where = "the whole periodic profile" if profile.periodic else (
         "the middle of the profile, without half a cut-off of run-in and run-out")
     notes.append(f"evaluation length {count} x {cutoff * 1e3:.4g} mm = "

@@ -65,6 +65,14 @@ class TextureEvaluation:
     notes: tuple[str, ...]
     warnings: tuple[str, ...]
 
+    @property
+    def rms_slope(self) -> tuple[str, float]:
+        """The rms slope reported and its name: Rdq of the roughness profile (ISO 4287) or Sdq
+        of the scale-limited surface (ISO 25178-2)."""
+        if "R" in self.groups:
+            return "Rdq", self.groups["R"]["Rdq"]
+        return "Sdq", self.groups["hybrid"]["Sdq"]
+
 
 def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = profile_families(profile, cutoff, form_degree=form_degree)

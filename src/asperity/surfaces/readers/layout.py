@@ -6,7 +6,10 @@ Rules, in order (documented for users in docs/surfaces.md):
   ``distance``, ``horizontal``, ``length``, ``scan``) is x, one like ``y`` is y, and one named
   like a height (``z``, ``height``, ``raw``, ``profile``, ``data``, ``value``, ``depth``, ...)
   is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export).
-- Unnamed columns: one = heights, two = x and z, three or more = a height matrix.
+- Unnamed columns: one = heights, two = x and z, three or more = a height matrix -- except
+  three columns whose first is evenly spaced, increasing positions: a profile export (x and
+  two height channels) that would otherwise read as a 3-wide matrix, refused with how to name
+  its columns.
 - A height matrix has one line per y, values along x (how instruments, Gwyddion and
   SurfaceTopography write images), except one written by asperity's ``write_surface`` (its
   first comment says ``asperity topography ... rows along x``), which has one line per x.
@@ -67,6 +70,8 @@ class Layout:
         Coordinates from the file (file units), or None for gridded data without them.
     x_factor, z_factor : float or None
         Metres per file unit of the coordinates and of ``z``, None when the file does not say.
+    x_unit_source, z_unit_source : str or None
+        Where the file says so (``"the column name 'X (mm)'"``), None where it does not.
     spacing : tuple of float or None
         Grid spacing from the header, in units of ``spacing_factor``.
     spacing_factor : float or None
@@ -84,6 +89,8 @@ class Layout:
     y: np.ndarray | None
     x_factor: float | None
     z_factor: float | None
+    x_unit_source: str | None
+    z_unit_source: str | None
     spacing: tuple[float, ...] | None
     spacing_factor: float | None
     resolution: float
@@ -94,6 +101,21 @@ class Layout:
 
 def _first(header: dict, keys) -> str | None:
     return next((header[k] for k in keys if k in header), None)
+
+
+def _header_unit(header: dict, keys) -> tuple[float | None, str | None]:
+    """Metres per unit of the first of ``keys`` in the header naming a length unit, and where
+    it was found (``"the header's 'unit' entry (mm)"``)."""
+    key = next((k for k in keys if k in header), None)
+    factor = None if key is None else length_factor(header[key])
+    return (None, None) if factor is None else (factor, f"the header's {key!r} entry "
+                                                        f"({header[key]})")
+
+
+def _named_unit(name: str, factor: float | None, source: str | None):
+    """The unit in a column name if it has one, else ``(factor, source)``."""
+    found = unit_of_name(name)
+    return (found[1], f"the column name {name!r}") if found else (factor, source)
 
 
 def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
@@ -132,22 +154,25 @@ def _columns(table: TextTable):
     return roles.get("x"), roles.get("y"), roles.get("z")
 
 
-def _scale(header: dict, z_unit_factor: float | None) -> tuple[float, float | None]:
-    """(multiplier of the stored heights, metres per unit of the product or None)."""
+def _scale(header: dict, z_unit: tuple[float | None, str | None]):
+    """(multiplier of the stored heights, (metres per unit of the product or None, where the
+    file says so))."""
     for key, value in header.items():
         match = re.match(r"height conversion factor \(\s*->\s*(.+?)\s*\)", key)
         if match is not None:
             q = _quantity(value)
             if q is not None:
-                return q[0][0], length_factor(match.group(1))
+                return q[0][0], (length_factor(match.group(1)), f"the header's {key!r} entry")
     if "bit2nm" in header:
         q = _quantity(header["bit2nm"])
         if q is not None:
-            return q[0][0], 1e-9
-    q = _quantity(_first(header, _SCALE_KEYS))
+            return q[0][0], (1e-9, "the header's 'bit2nm' entry")
+    key = next((k for k in _SCALE_KEYS if k in header), None)
+    q = None if key is None else _quantity(header[key])
     if q is not None:
-        return q[0][0], q[1] if q[1] is not None else z_unit_factor
-    return 1.0, z_unit_factor
+        return q[0][0], (z_unit if q[1] is None else
+                         (q[1], f"the header's {key!r} entry ({header[key]})"))
+    return 1.0, z_unit
 
 
 def _grid_from_points(x, y, z, where: str):
@@ -162,12 +187,40 @@ def _grid_from_points(x, y, z, where: str):
     return xs, ys, grid
 
 
+def _on_a_line(column: np.ndarray, resolution: float) -> bool:
+    """Whether ``column`` is a straight line of its index within its printed ``resolution``."""
+    i = np.arange(column.size)
+    slope, intercept = np.polyfit(i, column, 1)
+    tolerance = resolution * (1 + 1e-6) + 1e-9 * abs(slope)
+    return bool(np.max(np.abs(column - (intercept + slope * i))) <= tolerance)
+
+
+def _positions_first(table: TextTable, where: str) -> None:
+    """Refuse three unnamed columns whose first holds evenly spaced, increasing positions and
+    the others not (heights): a profile export (x and two height channels), not a height
+    matrix three points wide (a plane's matrix has every column on a line)."""
+    data, res = table.data, table.resolution
+    first = data[:, 0]
+    if (first.size < 4 or not np.all(np.isfinite(data)) or np.any(np.diff(first) <= 0)
+            or not _on_a_line(first, res[0])
+            or all(_on_a_line(data[:, j], res[j]) for j in (1, 2))):
+        return
+    raise InputError(where, "a height matrix of more than 3 columns; these 3 columns are a "
+                     f"profile export (the first is evenly spaced positions, {first[0]:g} to "
+                     f"{first[-1]:g} in steps of {first[1] - first[0]:.4g}, with two height "
+                     "columns): to read x and the first heights as a profile, name the columns "
+                     "in a line above the numbers, e.g. 'x_mm z_um z2_um' (units in the names)",
+                     f"{first.size} lines of 3 numbers")
+
+
 def interpret(table: TextTable, where: str) -> Layout:
     """Decide what the columns of ``table`` are and what units they carry (module docstring)."""
     h = table.header
-    unit_all = length_factor(_first(h, _UNIT_KEYS) or "")
-    x_factor = length_factor(_first(h, _X_UNIT_KEYS) or "") or unit_all
-    z_unit = length_factor(_first(h, _Z_UNIT_KEYS) or "") or unit_all
+    unit_all = _header_unit(h, _UNIT_KEYS)
+    x_unit = _header_unit(h, _X_UNIT_KEYS)
+    x_unit = x_unit if x_unit[0] is not None else unit_all
+    z_unit = _header_unit(h, _Z_UNIT_KEYS)
+    z_unit = z_unit if z_unit[0] is not None else unit_all
     data, names = table.data, table.names
     ix, iy, iz = _columns(table)
     x = y = None
@@ -176,26 +229,22 @@ def interpret(table: TextTable, where: str) -> Layout:
     if names is not None and ix is not None and iz is not None:
         x, z = data[:, ix], data[:, iz]
         resolution = float(table.resolution[ix])
-        found = unit_of_name(names[ix])
-        x_factor = found[1] if found else x_factor
-        found = unit_of_name(names[iz])
-        z_unit = found[1] if found else z_unit
+        x_unit = _named_unit(names[ix], *x_unit)
+        z_unit = _named_unit(names[iz], *z_unit)
         style = f"columns named {names[ix]!r} (x) and {names[iz]!r} (z)"
         if iy is not None:
             x, y, z = _grid_from_points(x, data[:, iy], z, where)
             style = f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
     elif ncol == 1:
         z = data[:, 0]
-        found = unit_of_name(names[0]) if names else None
-        z_unit = found[1] if found else z_unit
+        z_unit = _named_unit(names[0], *z_unit) if names else z_unit
         style = "one column of heights" + (f" named {names[0]!r}" if names else "")
     elif ncol == 2:
         x, z = data[:, 0], data[:, 1]
         resolution = float(table.resolution[0])
         if names:
-            found = [unit_of_name(n) for n in names]
-            x_factor = found[0][1] if found[0] else x_factor
-            z_unit = found[1][1] if found[1] else z_unit
+            x_unit = _named_unit(names[0], *x_unit)
+            z_unit = _named_unit(names[1], *z_unit)
         style = "two columns, x and z" + (f" named {names[0]!r}, {names[1]!r}" if names else "")
     elif ncol == 3 and ("lateral units" in h or "lateral unit" in h):
         x, y, z = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where)
@@ -204,18 +253,20 @@ def interpret(table: TextTable, where: str) -> Layout:
         z = data
         style = "height matrix, one line per x (written by asperity)"
     else:
+        if ncol == 3:
+            _positions_first(table, where)
         z = data.T
         style = "height matrix, one line per y"
     sentinel = _quantity(_first(h, _MISSING_KEYS))
     if sentinel is not None:
         z = np.where(z == sentinel[0][0], np.nan, z)
-    scale, z_factor = _scale(h, z_unit)
+    scale, z_unit = _scale(h, z_unit)
     spacing = _spacing(h, z)
     periodic = str(h.get("periodic", "false")).lower() == "true"
     origin = _quantity(h.get("origin"))
-    return Layout(np.asarray(z, float) * scale, x, y, x_factor, z_factor,
-                  None if spacing is None else spacing[0], None if spacing is None else spacing[1],
-                  resolution,
+    return Layout(np.asarray(z, float) * scale, x, y, x_unit[0], z_unit[0], x_unit[1],
+                  z_unit[1], None if spacing is None else spacing[0],
+                  None if spacing is None else spacing[1], resolution,
                   periodic, None if origin is None else origin[0],
                   style + ("" if scale == 1.0 else f", heights scaled by {scale:g}"))
 
