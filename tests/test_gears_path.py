@@ -10,6 +10,7 @@ from typer.testing import CliRunner
 from asperity.cases import load_case
 from asperity.cli import app
 from asperity.ehl import LineContact, Lubricant, solve_steady
+from asperity.errors import InputError
 from asperity.examples import example_text
 from asperity.gears import (
     LINE_MAX_SWEEPS,
@@ -290,3 +291,22 @@ def test_newtonian_gear_friction_is_reported():
     eyring = run_case(load_case(smooth))
     assert eyring.summary["mean_friction_coefficient"] < 0.1
     assert not any(w.startswith("lubricant.tau0:") for w in eyring.warnings)
+
+
+@pytest.mark.parametrize("speed, rad_per_s", [
+    ("2170 rpm", 2170 * 2 * math.pi / 60), ("2170 min^-1", 2170 * 2 * math.pi / 60),
+    ("2170 1/min", 2170 * 2 * math.pi / 60), ("36 rev/s", 36 * 2 * math.pi),
+    ("227 rad/s", 227.0), (227.0, 227.0)])
+def test_pinion_speed_units(speed, rad_per_s):
+    """DIN 1301's "min^-1" counts revolutions like "rpm" (it was read as 1/60 rad/s per unit,
+    2 pi times too slow, silently)."""
+    case = load_case(GEAR_CASE.replace('speed = "2170 rpm"', f"speed = {speed!r}".replace(
+        "'", '"')))
+    assert case.operation.speed == pytest.approx(rad_per_s, rel=1e-12)
+
+
+@pytest.mark.parametrize("speed", ["36 Hz", "227 1/s"])
+def test_a_per_second_speed_without_a_turn_is_refused(speed):
+    """"36 Hz" may be revolutions or radians per second; it was taken as 36 rad/s."""
+    with pytest.raises(InputError, match=r"operation\.speed: expected a unit that says what"):
+        load_case(GEAR_CASE.replace('speed = "2170 rpm"', f'speed = "{speed}"'))

@@ -16,7 +16,7 @@
     crowning = ["0 um", "0 um"]          # optional crowning heights: elliptical contact
     [operation]
     torque = "302 N m"                   # pinion torque
-    speed = "2170 rpm"                   # pinion speed ("rpm" or "1/min"; or rad/s as "227 1/s")
+    speed = "2170 rpm"                   # pinion speed ("rpm", "min^-1", "rev/s" or "rad/s")
     bulk_temperature = 90                # deg C (viscosity eta0 is taken at this temperature)
     [body1] / [body2]                    # E, nu (optional: steel)
     [lubricant]                          # eta0, alpha, ... tau0 (as for ehl-steady)
@@ -50,7 +50,7 @@ from ..errors import InputError
 from ..gears.geometry import GearPair
 from ..gears.path import EHLMesh, Thermal
 from ..materials import Material
-from ..units import to_si
+from ..units import registry, to_si
 from .bodies import MaterialSpec
 from .ehl import LubricantSpec
 from .ehl_transient import MovingSurfaceSpec, TimeSpec, TransientSolverSpec
@@ -101,19 +101,43 @@ class GearSpec(CaseModel):
                         self.tip_diameter, self.tip_relief, self.crowning)
 
 
+#: Per-minute speeds, revolutions as gear catalogues and DIN 1301 write them ("min^-1").
+_PER_MINUTE = re.compile(r"\s*([-+0-9.eE]+)\s*(rpm|RPM|r/min|rev/min|U/min|1/min|/min|min\^-1|"
+                         r"min\*\*-1|min-1)\s*")
+#: Units that say what turns: pint converts them to rad/s as they are.
+_TURNING = {"radian", "degree", "turn", "revolution", "revolutions_per_minute"}
+_SPEED_EXAMPLES = "'1500 rpm', '1500 min^-1', '25 rev/s' or '157 rad/s'"
+
+
 def _rotational_speed(value):
-    """"2170 rpm" / "2170 1/min" -> rad/s; a plain number or "227 1/s" is rad/s."""
-    if isinstance(value, str):
-        match = re.fullmatch(r"\s*([-+0-9.eE]+)\s*(rpm|1/min|/min|r/min)\s*", value)
-        if match:
-            try:
-                return float(match.group(1)) * 2.0 * math.pi / 60.0
-            except ValueError:
-                raise ValueError("expected a speed like \"2170 rpm\"") from None
-    try:
+    """The pinion speed in rad/s.
+
+    A plain number is rad/s. Per-minute units ("2170 rpm", "2170 1/min", "2170 min^-1") count
+    revolutions; units with a turn or an angle ("25 rev/s", "227 rad/s") convert as such. A
+    per-second unit that names no turn ("25 Hz", "227 1/s") is refused: it may count
+    revolutions or radians (a factor 2 pi; "25 Hz" was read as 25 rad/s).
+    """
+    if not isinstance(value, str):
         return to_si(value, "frequency", "speed")
-    except InputError as exc:
-        raise ValueError(f"expected {exc.expected}") from None
+    match = _PER_MINUTE.fullmatch(value)
+    if match:
+        try:
+            return float(match.group(1)) * 2.0 * math.pi / 60.0
+        except ValueError:
+            raise ValueError("expected a speed like \"2170 rpm\"") from None
+    text = re.sub(r"\brev\b|\br\b|\brps\b", "turn", value.replace("rps", "turn/s"))
+    try:
+        q = registry().Quantity(text.strip())
+        if q.dimensionless:  # "227": rad/s, as a plain number
+            return to_si(float(q.magnitude), "frequency", "speed")
+        turning = bool(_TURNING & {name for name, _ in q.unit_items()})
+        rad_per_s = float(q.to("rad/s").magnitude)
+    except Exception:  # pint raises many kinds on odd text
+        raise ValueError(f"expected a rotational speed such as {_SPEED_EXAMPLES}") from None
+    if not turning:
+        raise ValueError(f"expected a unit that says what turns: {_SPEED_EXAMPLES} (a bare "
+                         "per-second unit such as '25 Hz' may count revolutions or radians)")
+    return rad_per_s
 
 
 class OperationSpec(CaseModel):
@@ -123,7 +147,8 @@ class OperationSpec(CaseModel):
     torque: Quantity("moment", gt=0)
     """Pinion torque."""
     speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s"})]
-    """Pinion speed: "2170 rpm" or "2170 1/min"; a plain number or "227 1/s" is rad/s."""
+    """Pinion speed: "2170 rpm", "2170 min^-1", "36 rev/s" or "227 rad/s"; a plain number is
+    rad/s; "25 Hz" and "227 1/s" are refused (revolutions or radians?)."""
     bulk_temperature: Annotated[float, Field(gt=-100, lt=1000,
                                              json_schema_extra={"unit": "°C"})] = 90.0
     """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""
