@@ -125,18 +125,37 @@ def test_sliding_speed_from_pitch_distance(make):
 
 @pytest.mark.parametrize("relief", [(0.0, 0.0), (10e-6, 0.0), (0.0, 8e-6), (5e-6, 5e-6)])
 def test_load_sharing_sums_to_total(relief):
-    """The two pairs in contact, a base pitch apart, carry the whole normal force."""
+    """The two pairs in contact, a base pitch apart, carry the whole normal force between the
+    switching instants A (the other pair at D) and B (the other at E); at B and D a pair
+    alone carries it (X = 1 on the closed interval B..D, ISO 6336-2's design points)."""
     g = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
                  centre_distance=91.5e-3, tip_relief=relief)
     pts = g.points
-    rho = np.linspace(pts["A"], pts["B"], 41)
+    rho = np.linspace(pts["A"], pts["B"], 41)[1:-1]
     total = load_sharing(g, rho) + load_sharing(g, rho + g.pbt)
-    assert total == pytest.approx(np.ones(41), abs=1e-12)
-    single = np.linspace(pts["B"], pts["D"], 11)[1:-1]  # X jumps from 2/3 to 1 at B and D
-    assert load_sharing(g, single) == pytest.approx(np.ones(9))
+    assert total == pytest.approx(np.ones(39), abs=1e-12)
+    single = np.linspace(pts["B"], pts["D"], 11)
+    assert load_sharing(g, single) == pytest.approx(np.ones(11))
     # force balance: both pairs' loads per length times the face width give F_bn = T / r_b1
     w = load_per_length(g, rho, 302.0) + load_per_length(g, rho + g.pbt, 302.0)
-    assert w * g.face_width == pytest.approx(np.full(41, 302.0 / g.rb[0]), rel=1e-12)
+    assert w * g.face_width == pytest.approx(np.full(39, 302.0 / g.rb[0]), rel=1e-12)
+
+
+def test_the_path_always_holds_b_c_and_d():
+    """Five points on a contact ratio 1.66 pair are A, B, C, D, E (C was lost: the "pitch"
+    film came from 1.27 mm away); on a high contact ratio pair (1.94, 25 points) B-D is
+    shorter than a spacing and all three are still nodes."""
+    g = GearPair((25, 40), 3e-3, 20 * DEG, 0.0, (0.0, 0.0), 20e-3)
+    pts = g.points
+    assert g.path(5) == pytest.approx([pts[k] for k in "ABCDE"], rel=1e-12)
+    hcr = GearPair((40, 60), 3e-3, 20 * DEG, 0.0, (0.0, 0.0), 20e-3,
+                   tip_diameter=(126.72e-3, 186.72e-3))
+    assert hcr.contact_ratio > 1.9
+    rho = hcr.path(25)
+    assert np.all(np.diff(rho) > 0)
+    for key in "BCD":
+        assert np.min(np.abs(rho - hcr.points[key])) < 1e-15
+
 
 
 def test_helical_sharing_is_uniform_for_full_overlap():

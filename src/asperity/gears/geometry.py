@@ -307,15 +307,18 @@ class GearPair:
         return rho
 
     def path(self, n: int) -> np.ndarray:
-        """``n`` positions rho1 (m) spread evenly from A to E, with B, C and D among them when
-        they fall within half a spacing of a node (the nearest node is moved onto them)."""
+        """``n`` positions rho1 (m) spread evenly from A to E, with B, C and D always among
+        them: each takes the nearest interior node not yet taken, in that order. (Moving only
+        a node within half a spacing lost C when B-D is short against the spacing: 5 points
+        on a pair with contact ratio 1.66 reported the "pitch" film 1.27 mm from C, and a
+        maximum Hertz pressure 19 % low.)"""
         if isinstance(n, bool) or not isinstance(n, int) or n < 5:
             raise InputError("points", "an integer >= 5", n)
         pts = self.derived["path"]
         rho = np.linspace(pts["A"], pts["E"], n)
-        step = rho[1] - rho[0]
+        free = list(range(1, n - 1))
         for key in ("B", "C", "D"):
-            i = int(np.argmin(np.abs(rho - pts[key])))
-            if 0 < i < n - 1 and abs(rho[i] - pts[key]) <= 0.5 * step:
-                rho[i] = pts[key]
-        return rho
+            i = min(free, key=lambda k: abs(rho[k] - pts[key]))
+            rho[i] = pts[key]
+            free.remove(i)
+        return np.sort(rho)

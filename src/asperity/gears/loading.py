@@ -43,8 +43,10 @@ def load_sharing(pair: GearPair, rho1) -> np.ndarray:
     else:
         rise = (rho - pts["A"]) / (pts["B"] - pts["A"])
         fall = (pts["E"] - rho) / (pts["E"] - pts["D"])
-        spur = np.where(rho <= pts["B"], x_a + (1.0 - x_e - x_a) * rise,
-                        np.where(rho >= pts["D"], x_e + (1.0 - x_a - x_e) * fall, 1.0))
+        # single-pair contact on the closed interval B..D: at B and D themselves the pair
+        # carries the whole load (the design points of ISO 6336-2), not the two-pair limit
+        spur = np.where(rho < pts["B"], x_a + (1.0 - x_e - x_a) * rise,
+                        np.where(rho > pts["D"], x_e + (1.0 - x_a - x_e) * fall, 1.0))
     weight = min(pair.overlap_ratio, 1.0)
     return (1.0 - weight) * spur + weight / pair.contact_ratio
 
