@@ -156,3 +156,30 @@ def test_surfaces_are_drawn_facing_each_other():
     assert upper.mean() > lower.mean()
     assert np.argmin(upper) == np.argmax(lower) == 40
     assert upper[40] < upper[0] and lower[40] > lower[0]
+
+
+def test_a_run_stopped_by_a_diverged_step_says_so(monkeypatch):
+    """A step that diverges after every fallback stops the run. The a/b = 4 case of the
+    aspect-ratio study at the seed's mesh stopped so at step 1167 of 4428, in its warm-up, and
+    the report said only that 1 of 1167 steps "did not reach the tolerance; their statistics
+    are included", beside a contact time of 0 %. Here step 7 of 40 diverges (its pressure set
+    to NaN, the stepper's divergence): the warning names the step and the empty statistics."""
+    from asperity.ehl import stepper as stepper_module
+    from asperity.runners import run_case
+
+    advance = stepper_module.TimeStepper.advance
+    calls = {"n": 0}
+
+    def diverging(self, phi):
+        report = advance(self, phi)
+        calls["n"] += 1
+        if calls["n"] == 7:
+            self.state.P[:] = np.nan
+            return report._replace(converged=False, residual=np.inf)
+        return report
+
+    monkeypatch.setattr(stepper_module.TimeStepper, "advance", diverging)
+    out = run_case(load_case(CASE))
+    stopped = [w for w in out.warnings if w.startswith("steps: the run stopped at step 7 of 40")]
+    assert len(stopped) == 1 and "no step was counted" in stopped[0]
+    assert not out.converged

@@ -51,6 +51,7 @@ __all__ = [
     "ehl_sides",
     "feature_passage",
     "side_pressure",
+    "stopped_run",
     "lowpass_removed",
     "newtonian_traction",
     "periodic_contact",
@@ -971,3 +972,32 @@ def coarse_roughness_file(label: str, spacing, x, y,
             "grid gets spline-interpolated heights, smooth hills instead of measured roughness, "
             "so the real contact area and pressures are those of a smoother surface; use a "
             f"file sampled at {finer}, or a coarser grid: {grid}"]
+
+
+def stopped_run(steps_done: int, warmup_steps: int, counting_steps: int) -> list[str]:
+    """A transient run that stopped before its last step: a step diverged after every
+    fallback of the solver (:meth:`asperity.ehl.stepper.TimeStepper.advance`).
+
+    Parameters
+    ----------
+    steps_done : int
+        Steps done, the diverged one included.
+    warmup_steps, counting_steps : int
+        The run's warm-up and counting steps.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    total = warmup_steps + counting_steps
+    if steps_done >= total:
+        return []
+    counted = max(0, steps_done - warmup_steps)
+    held = ("no step was counted (counting starts after the warm-up), so every statistic is "
+            "empty" if counted == 0 else
+            f"the statistics hold {counted} of the {counting_steps} counting steps")
+    return [f"steps: the run stopped at step {steps_done} of {total}: that step diverged after "
+            "every fallback of the solver (the far field refreshed at every sweep, the "
+            f"density's Newton term, the load gain halved); {held}. Try a smaller time.dt or "
+            "solver.load_gain"]

@@ -247,6 +247,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     # an unconverged steady start's film would set the inlet and mesh advice: the formula's
     film = res.steady_central_film if res.steady_converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
+    trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps)
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
