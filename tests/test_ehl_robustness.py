@@ -72,6 +72,16 @@ def _bearing():
     return PointContact(3.2e-3, 40e-3, 800.0, 8.0, 8.0, steel, steel, Lubricant(0.02, 1.8e-8))
 
 
+def _bearing_6205(lubricant):
+    """A 6205 deep-groove ball bearing's inner-race contact at its most loaded ball, as its
+    user writes it (docs/ehl-robustness.md): steel (208 GPa), ball 7.94 mm on a 31.5 mm
+    raceway in a 0.52 D groove (Rx = 3.17 mm, Ry = 102 mm, k = 9.3), 1000 N (2.58 GPa),
+    2.1 m/s rolling, 0.012 Pa s, alpha = 18 1/GPa: M = 18080, L = 11.9, beyond the other
+    rows in M and k."""
+    steel = Material(208e9, 0.3)
+    return PointContact(3.17e-3, 102e-3, 1000.0, 2.1, 2.1, steel, steel, lubricant)
+
+
 def _line(M, L):
     """Newtonian Barus incompressible line contact with Moes groups M, L."""
     alpha, eta0, r = 2e-8, 0.04, 0.01
@@ -133,6 +143,10 @@ CASES = [
     ("circle M=1000 L=19 Roelands+DH", lambda: _point(1000, 19, 1.0, Lubricant(0.04, 2e-8)),
      "roelands"),
     ("ball bearing k=5.2 Roelands+DH", _bearing, "roelands"),
+    ("6205 bearing k=9.3 M=18080", lambda: _bearing_6205(
+        Lubricant(0.012, 1.8e-8, viscosity_model="barus", compressible=False)), "exact"),
+    ("6205 bearing k=9.3 M=18080 Roelands+DH", lambda: _bearing_6205(
+        Lubricant(0.012, 1.8e-8)), "roelands"),
     ("line M=10 L=10", lambda: _line(10, 10), "exact"),
     ("line M=100 L=10", lambda: _line(100, 10), "exact"),
     ("line M=1000 L=10", lambda: _line(1000, 10), "exact"),
