@@ -393,3 +393,24 @@ def test_square_cells_fall_back_to_y_line_sweeps():
     assert res.converged and res.y_lines and not default.y_lines
     assert res.y[1] - res.y[0] < res.x[1] - res.x[0]
     assert res.central_film == pytest.approx(default.central_film, rel=0.07)
+
+
+def test_coarse_grids_of_a_point_contact_stop_at_their_sweep_cap(monkeypatch):
+    """The 6205 bearing's coarsest grid (65 x 39 at M = 18,080, a/16 cells) does not converge:
+    uncapped it takes all of its 5000 sweeps before the next grid converges from its state.
+    Capped at ``COARSE_SWEEPS`` the sequence gives the same converged film on the finest grid
+    (here 257 x 153, three levels) to the solver's tolerance, with at most ``COARSE_SWEEPS``
+    sweeps on each coarser grid (docs/ehl.md, grid sequencing)."""
+    from asperity.ehl import solver
+
+    prob = _bearing_6205(Lubricant(0.012, 1.8e-8, viscosity_model="barus", compressible=False))
+    domain = prob.default_domain()
+    cap = solver.COARSE_SWEEPS
+    capped = solve_steady(prob, nx=257, ny=153, domain=domain, levels=3)
+    monkeypatch.setattr(solver, "COARSE_SWEEPS", 10**6)
+    uncapped = solve_steady(prob, nx=257, ny=153, domain=domain, levels=3)
+    assert capped.converged and uncapped.converged
+    assert uncapped.total_sweeps - uncapped.sweeps > 5000  # the coarsest grid never converged
+    assert capped.total_sweeps - capped.sweeps <= 2 * cap
+    assert capped.central_film == pytest.approx(uncapped.central_film, rel=1e-4)
+    assert capped.minimum_film == pytest.approx(uncapped.minimum_film, rel=1e-3)
