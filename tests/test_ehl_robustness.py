@@ -47,6 +47,7 @@ GLASS = Material(75e9, 0.22)
 BODY = Material(2e11, 0.3)
 E_PRIME = 2e11 / (1 - 0.3**2)
 GEAR = Material(227e9 * (1 - 0.3**2), 0.3)
+BEARING_STEEL = Material(208e9, 0.3)
 
 
 def _barus():
@@ -68,8 +69,8 @@ def _bearing():
     """A user's deep-groove ball bearing, inner-race contact (docs/ehl-robustness.md): steel
     (208 GPa), Rx = 3.2 mm, Ry = 40 mm (k = 5.2), 800 N (2.9 GPa), 8 m/s rolling, 0.02 Pa s,
     alpha = 18 1/GPa, Roelands + Dowson-Higginson: M = 3573, L = 18.8."""
-    steel = Material(208e9, 0.3)
-    return PointContact(3.2e-3, 40e-3, 800.0, 8.0, 8.0, steel, steel, Lubricant(0.02, 1.8e-8))
+    return PointContact(3.2e-3, 40e-3, 800.0, 8.0, 8.0, BEARING_STEEL, BEARING_STEEL,
+                        Lubricant(0.02, 1.8e-8))
 
 
 def _bearing_6205(lubricant):
@@ -78,8 +79,8 @@ def _bearing_6205(lubricant):
     raceway in a 0.52 D groove (Rx = 3.17 mm, Ry = 102 mm, k = 9.3), 1000 N (2.58 GPa),
     2.1 m/s rolling, 0.012 Pa s, alpha = 18 1/GPa: M = 18080, L = 11.9, beyond the other
     rows in M and k."""
-    steel = Material(208e9, 0.3)
-    return PointContact(3.17e-3, 102e-3, 1000.0, 2.1, 2.1, steel, steel, lubricant)
+    return PointContact(3.17e-3, 102e-3, 1000.0, 2.1, 2.1, BEARING_STEEL, BEARING_STEEL,
+                        lubricant)
 
 
 def _line(M, L):
