@@ -7,13 +7,16 @@ the domain. A mesh or counting period chosen in the case file that misses the fe
 reported with the setting that would not.
 """
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 import tomllib
 
 from asperity import diagnostics
 from asperity.cases import load_case
-from asperity.ehl import Lubricant, PointContact
+from asperity.ehl import Lubricant, PointContact, solve_steady
+from asperity.ehl.stepper import StepOptions, TimeStepper
 from asperity.ehl.transient import MovingSurface, solve_transient
 from asperity.errors import InputError
 from asperity.examples import example_text
@@ -279,6 +282,93 @@ def test_resume_after_the_settings_were_changed_is_bit_identical(tmp_path, reque
                               resume=True, **args)
     for name in ("pressure", "film", "sweeps", changed, "max_pressure"):
         np.testing.assert_array_equal(getattr(resumed, name), getattr(whole, name))
+
+
+def test_the_stepper_goes_back_to_the_run_settings_after_steps_without_a_retry(
+        tmp_path, monkeypatch, smooth_fine):
+    """With a refresh every 6 sweeps the smooth contact on 129 x 129 nodes fails at step 6
+    and is relaxed again with a refresh at every sweep (the fallback test above). With
+    ``RESTORE_AFTER`` cut to 3 the stepper takes up the refresh of 6 again after 3 steps
+    without a retry: step 10 fails with it once more and falls back (two tries), and a later
+    restored step converges with it; the report says where the settings came back. Resumed
+    from a checkpoint between a fallback and a restore, the run is bit-identical."""
+    monkeypatch.setattr(TimeStepper, "RESTORE_AFTER", 3)
+    problem, domain = smooth_fine
+    args = dict(nx=129, ny=129, domain=domain, warmup_steps=0, counting_steps=20,
+                max_iter=100, refresh=6)
+    res = solve_transient(problem, **args)
+    assert res.converged and np.all(res.step_converged)
+    np.testing.assert_array_equal(res.tries[:10], [1, 1, 1, 1, 1, 2, 1, 1, 1, 2])
+    np.testing.assert_array_equal(res.refresh_intervals[:10], [6] * 5 + [1] * 5)
+    assert res.sweeps[9] > 100                          # restored, failed, relaxed again
+    kept = np.flatnonzero((res.refresh_intervals == 6) & (np.arange(20) > 9))
+    assert kept.size and np.all(res.tries[kept] == 1)   # a restored step that converged
+    # each fallback is followed by 3 steps at a refresh of 1 (no restore sooner)
+    for step in np.flatnonzero(res.tries > 1):
+        assert np.all(res.refresh_intervals[step:step + 4] == 1)
+
+    path = tmp_path / "run.npz"
+
+    class Killed(Exception):
+        pass
+
+    def kill(step, residual):
+        if step == 9:
+            raise Killed
+
+    with pytest.raises(Killed):
+        solve_transient(problem, checkpoint=path, checkpoint_every=8, callback=kill, **args)
+    resumed = solve_transient(problem, checkpoint=path, checkpoint_every=8, resume=True,
+                              **args)
+    for name in ("pressure", "sweeps", "tries", "refresh_intervals", "max_pressure"):
+        np.testing.assert_array_equal(getattr(resumed, name), getattr(res, name))
+
+    case = _bump(surface2={"kind": "smooth"}, speeds={"xi": 0.0}, grid={"nx": 129, "ny": 129},
+                 time={"warmup_steps": 0, "counting_steps": 20},
+                 solver={"max_sweeps": 100, "refresh": 6})
+    notes = run_case(case, workdir=tmp_path / "case").notes
+    assert ("From step 10 on, 3 steps after the last step relaxed again, the case's own "
+            "settings were taken up again.") in notes
+    assert any(n.startswith("Step 10 did not converge with the far field refreshed every 6 "
+                            "sweeps; it and the later steps were relaxed with a refresh at "
+                            "every sweep") for n in notes)
+
+
+def test_a_step_that_fails_with_the_density_term_is_relaxed_again_with_the_density_lagged(
+        monkeypatch, smooth_fine):
+    """The last fallback: a step that began with the density's Newton term (kept from an
+    earlier step) and fails with every other setting is relaxed again with the density
+    lagged, as the a/b = 4 contact needs. Here the relaxation is made to fail whenever the
+    term is on."""
+    problem, domain = smooth_fine
+    x, y = problem.grid(65, 65, domain)
+    options = StepOptions.for_problem(problem, refresh=1)
+    stepper = TimeStepper(problem, x, y, options, 0.5 * (x[1] - x[0]) / problem.u1,
+                          problem.film_estimate() / problem.film_scale)
+    steady = solve_steady(problem, nx=65, ny=65, domain=domain)
+    state = stepper.state
+    state.P = steady.pressure / problem.p_hertz
+    state.H = steady.film / problem.film_scale
+    state.H0 = steady.separation / problem.film_scale
+    state.kind[state.P <= 0.0] = 1
+    stepper.resume_settings(1, options.load_gain / 4, True)   # every earlier fallback taken
+    assert stepper.halvings == TimeStepper.GAIN_HALVINGS
+    relax = TimeStepper.relax
+
+    def failing_with_the_term(self):
+        report = relax(self)
+        return report._replace(converged=False) if self.options.density_newton else report
+
+    monkeypatch.setattr(TimeStepper, "relax", failing_with_the_term)
+    report = stepper.advance(state.roughness)
+    assert report.converged and report.tries == 2 and not report.density_newton
+    assert stepper.options.load_gain == options.load_gain / 4
+    # a step that began lagged and fails with the term added does not drop it again
+    stepper.options = replace(stepper.options, density_newton=False)
+    monkeypatch.setattr(TimeStepper, "relax", lambda self: relax(self)._replace(
+        converged=False))
+    report = stepper.advance(state.roughness)
+    assert not report.converged and report.tries == 2 and report.density_newton
 
 
 @pytest.mark.parametrize("density_model, solver, note", [

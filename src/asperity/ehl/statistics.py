@@ -155,7 +155,8 @@ class StepHistory:
         FFT refreshes), ``residuals``, ``step_converged``, ``load_errors``,
         ``refresh_intervals`` (sweeps between refreshes at the step's end), ``load_gains``
         (the load gain at the step's end), ``density_newton`` (whether the row solve kept the
-        density's Newton term at the step's end); NaN, 0 or False for steps not done.
+        density's Newton term at the step's end), ``tries`` (relaxations of the step, 1 at
+        the first try); NaN, 0 or False for steps not done.
     centre : dict of ndarray
         ``centre_pressure``, ``centre_film``, ``centre_surface1``, ``centre_surface2`` along
         y = 0 at the snapshot steps, shape ``(len(snapshot_steps), nx)``.
@@ -171,7 +172,8 @@ class StepHistory:
                        "load_errors": np.full(steps, np.nan),
                        "refresh_intervals": np.zeros(steps, dtype=np.int64),
                        "load_gains": np.full(steps, np.nan),
-                       "density_newton": np.zeros(steps, dtype=bool)}
+                       "density_newton": np.zeros(steps, dtype=bool),
+                       "tries": np.zeros(steps, dtype=np.int64)}
         self.centre = {name: np.full((self.snapshot_steps.size, nx), np.nan) for name in
                        ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
 
@@ -189,6 +191,7 @@ class StepHistory:
         self.record["refresh_intervals"][n] = report.refresh
         self.record["load_gains"][n] = report.load_gain
         self.record["density_newton"][n] = report.density_newton
+        self.record["tries"][n] = report.tries
 
     def wants_snapshot(self, step: int) -> bool:
         """Whether the centre line of step ``step`` is kept."""

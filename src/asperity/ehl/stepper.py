@@ -58,6 +58,7 @@ REFRESH_EVERY_SWEEP_BELOW = 0.3
 UNDAMPED_BELOW = 1e-2
 
 
+
 @dataclass(frozen=True)
 class StepOptions:
     """Settings of the transient solver's iteration within a timestep.
@@ -156,7 +157,8 @@ class StepReport(NamedTuple):
     FFT refreshes the step took (a retried step's included); ``load_error`` is the relative
     load error after the last sweep; ``refresh``, ``load_gain`` and ``density_newton`` the
     sweeps between refreshes, the load gain and whether the density's Newton term was kept,
-    as the step ended (:meth:`TimeStepper.advance`).
+    as the step ended; ``tries`` how often the step was relaxed, 1 when its first relaxation
+    converged (:meth:`TimeStepper.advance`).
     """
 
     converged: bool
@@ -167,6 +169,7 @@ class StepReport(NamedTuple):
     refresh: int
     load_gain: float
     density_newton: bool
+    tries: int = 1
 
 
 def reynolds_operator(state: EHLState, ex, ey, rho) -> np.ndarray:
@@ -222,6 +225,15 @@ class TimeStepper:
     #: Most halvings of the load gain for steps that do not converge (:meth:`advance`).
     GAIN_HALVINGS = 2
 
+    #: Steps after the last step relaxed again with safer settings after which the stepper
+    #: goes back to the run's own settings (:meth:`advance`). The safer settings are not
+    #: safer for every later step: the aspect-ratio study's a/b = 4 contact at the seed's
+    #: mesh needed every fallback at its first step (from a steady start that had not
+    #: converged), kept them, and diverged at step 1167 with none left; on 131 x 29 the same
+    #: contact with the density's Newton term failed from step 420 on and converged at every
+    #: step with the density lagged (docs/ehl-transient.md, "Fallbacks").
+    RESTORE_AFTER = 200
+
     def __init__(self, problem, x, y, options: StepOptions, dt: float, film_scale: float):
         self.problem = problem
         self.options = options
@@ -230,18 +242,24 @@ class TimeStepper:
         self.mass = self.state.lam / (dt * problem.mean_speed / problem.a)
         self.film_scale = film_scale
         self.mixer = AndersonMixer(options.acceleration) if options.acceleration else None
+        #: The run's own settings, which :meth:`advance` goes back to.
+        self.initial = options
         #: Times the load gain has been halved for a step that did not converge.
         self.halvings = 0
+        #: Steps since the last step that was relaxed again (:attr:`RESTORE_AFTER`).
+        self.since_retry = 0
 
     def advance(self, phi) -> StepReport:
         """One timestep to the dimensionless roughness ``phi`` of level n+1: the step set up
         (:meth:`start_step`) and relaxed (:meth:`relax`). The last separation shift also
         moves the h = 0 contact nodes; they are put back to 0.
 
-        A step that does not converge is relaxed again from its start with safer settings,
-        which the later steps keep: first with the far field refreshed at every sweep (when
-        ``refresh > 1``), then, for a compressible lubricant, with the density's Newton term
-        in the row solve, then with the load gain halved, at most ``GAIN_HALVINGS`` times.
+        A step that does not converge is relaxed again from its start with safer settings
+        (:meth:`safer_settings`), which the later steps keep until :attr:`RESTORE_AFTER`
+        steps have passed without another such step; the stepper then goes back to the run's
+        own settings, so that a hard stretch of the run (a steady start that had not
+        converged, a ridge entering the contact) leaves neither a costlier nor a less robust
+        iteration, nor an empty list of fallbacks, to the rest of it.
         The separation shifted at every sweep against a far field lagged over several
         sweeps can grow into an oscillation of the load and of the pressure at the outlet
         constriction on fine meshes: a smooth ball-on-disc contact (Moes M = 208, L = 9.5)
@@ -262,31 +280,61 @@ class TimeStepper:
         at every setting of refresh and gain, and converged in 4 sweeps per step with the
         term (docs/ehl-transient.md).
         """
+        if self.options != self.initial and self.since_retry >= self.RESTORE_AFTER:
+            self.options = self.initial
+            self.halvings = 0
         self.start_step(phi)
         state = self.state
         before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy()) \
             if self.can_retry else None
         report = self.relax()
-        while not report.converged and self.can_retry:
+        tries = 1
+        first = self.options
+        while not report.converged:
+            safer = self.safer_settings(first)
+            if safer is None:
+                break
+            self.options = safer
             state.P, state.H, state.H0, state.kind = (before[0].copy(), before[1].copy(),
                                                       before[2], before[3].copy())
-            if self.options.refresh > 1:
-                self.options = replace(self.options, refresh=1)
-            elif self.can_add_density_term:
-                self.options = replace(self.options, density_newton=True)
-            else:
-                self.options = replace(self.options, load_gain=self.options.load_gain / 2)
-                self.halvings += 1
             again = self.relax()
+            tries += 1
             report = again._replace(sweeps=report.sweeps + again.sweeps,
                                     refreshes=report.refreshes + again.refreshes)
+        self.since_retry = 0 if tries > 1 else self.since_retry + 1
         np.maximum(self.state.H, 0.0, out=self.state.H)
-        return report
+        return report._replace(tries=tries)
 
-    def resume_settings(self, refresh: int, load_gain: float, density_newton: bool = False):
+    def safer_settings(self, first: StepOptions) -> StepOptions | None:
+        """The settings to relax a step that did not converge again with, or None when none
+        is left; ``first`` are the settings the step was first relaxed with. In this order:
+
+        1. the far field refreshed at every sweep (when ``refresh > 1``);
+        2. for a compressible lubricant, the density's Newton term in the update
+           (:attr:`can_add_density_term`), when the step began with the density lagged;
+        3. the load gain halved, at most ``GAIN_HALVINGS`` times in all;
+        4. the density lagged again, when the step began with its Newton term: the term
+           that carries the heavily loaded bearing contact made the narrow a/b = 4 contact
+           fail (:meth:`advance`).
+        """
+        opts = self.options
+        if opts.refresh > 1:
+            return replace(opts, refresh=1)
+        if self.can_add_density_term and not first.density_newton:
+            return replace(opts, density_newton=True)
+        if self.halvings < self.GAIN_HALVINGS:
+            self.halvings += 1
+            return replace(opts, load_gain=opts.load_gain / 2)
+        if opts.density_newton and first.density_newton:
+            return replace(opts, density_newton=False)
+        return None
+
+    def resume_settings(self, refresh: int, load_gain: float, density_newton: bool = False,
+                        since_retry: int = 0):
         """Take up the refresh interval, load gain and density term a checkpointed step ended
-        with (:class:`StepReport`); 0, NaN or False (a checkpoint written before they were
-        recorded) leaves the option as it is."""
+        with (:class:`StepReport`) and the steps since the last step relaxed again; 0, NaN
+        or False (a checkpoint written before they were recorded) leaves the option as it
+        is."""
         if 0 < refresh < self.options.refresh:
             self.options = replace(self.options, refresh=refresh)
         if density_newton:
@@ -294,13 +342,14 @@ class TimeStepper:
         if np.isfinite(load_gain) and load_gain < self.options.load_gain:
             self.halvings = round(np.log2(self.options.load_gain / load_gain))
             self.options = replace(self.options, load_gain=load_gain)
+        self.since_retry = int(since_retry)
 
     @property
     def can_retry(self) -> bool:
         """Whether a step that fails can be relaxed again with safer settings
-        (:meth:`advance`)."""
+        (:meth:`safer_settings`)."""
         return (self.options.refresh > 1 or self.can_add_density_term
-                or self.halvings < self.GAIN_HALVINGS)
+                or self.halvings < self.GAIN_HALVINGS or self.options.density_newton)
 
     @property
     def can_add_density_term(self) -> bool:

@@ -170,6 +170,9 @@ class TransientResult(SolverResult):
         Per step: sweeps between far-field refreshes at the start of the step, load gain and
         whether the row solve kept the density's Newton term, as the step ended (changed from
         a step that had to be relaxed again: :meth:`~asperity.ehl.stepper.TimeStepper.advance`).
+    tries : ndarray of int
+        Per step: how often it was relaxed (1: it converged at the first try; more: relaxed
+        again with safer settings).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -218,6 +221,7 @@ class TransientResult(SolverResult):
     refresh_intervals: np.ndarray
     load_gains: np.ndarray
     density_newton: np.ndarray
+    tries: np.ndarray
     iterations: int
     converged: bool
     residual: float
@@ -488,9 +492,11 @@ def solve_transient(
         stats.restore(arrays)
         history.restore(arrays)
         if start:  # the settings a step before the checkpoint was relaxed again with
+            retried = np.flatnonzero(history.record["tries"][:start] > 1)
             stepper.resume_settings(int(history.record["refresh_intervals"][start - 1]),
                                     float(history.record["load_gains"][start - 1]),
-                                    bool(history.record["density_newton"][start - 1]))
+                                    bool(history.record["density_newton"][start - 1]),
+                                    start - 1 - retried[-1] if retried.size else start)
     else:
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,

@@ -24,7 +24,7 @@ from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
-from ..ehl.stepper import StepOptions
+from ..ehl.stepper import StepOptions, TimeStepper
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
 from .ehl_steady import chosen_mesh, ehl_warnings
@@ -68,6 +68,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "density_newton": variable("step", res.density_newton.astype("i1"), "1",
                                    "row solve with the density's Newton term (1) or the "
                                    "density lagged (0)"),
+        "tries": variable("step", res.tries, "1",
+                          "relaxations of the step (1: converged at the first try)"),
         "film_counts": variable("film_bin", res.film_counts, "1",
                                 "film thickness histogram over the counting period"),
         "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
@@ -100,41 +102,53 @@ def _listed(items: list[str]) -> str:
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
+def _setting_changes(start, end, update: str) -> tuple[str, str]:
+    """The settings ``(refresh, load gain, density term)`` that differ between ``start`` and
+    ``end``, as the report names them before and after."""
+    before, after = [], []
+    if end[0] != start[0]:
+        before.append(f"the far field refreshed every {start[0]} sweeps")
+        after.append("a refresh at every sweep")
+    if end[2] != start[2]:
+        before.append(f"the density's Newton term in the {update}" if start[2]
+                      else f"the density lagged in the {update}")
+        after.append("the density lagged" if start[2] else "the density's Newton term")
+    if end[1] != start[1]:
+        before.append(f"the load gain {start[1]:.3g}")
+        after.append(f"the load gain {end[1]:.3g}")
+    return _listed(before), _listed(after)
+
+
 def _fallback_notes(case, problem, res) -> list[str]:
-    """One note per step at which the stepper changed a setting (:meth:`TimeStepper.advance`):
-    the settings it failed with, those it and the later steps were relaxed with, and how it
-    ended; a step that changed several settings (a retry that failed again) gets one note."""
-    done = slice(0, res.steps_done)
+    """One note per step relaxed again with safer settings (:meth:`TimeStepper.advance`): the
+    settings it failed with, those it and the later steps were relaxed with, and how it
+    ended; and one where the stepper went back to the case's own settings,
+    :attr:`~asperity.ehl.stepper.TimeStepper.RESTORE_AFTER` steps after the last step relaxed
+    again."""
     options = StepOptions.for_problem(problem, method=case.solver.method,
                                       load_gain=case.solver.load_gain)
     update = "row solve" if options.method == "line" else "point update"
-    changes = []  # (first step, the setting it failed with, the setting after)
-    lowered = np.flatnonzero((res.refresh_intervals[done] > 0)
-                             & (res.refresh_intervals[done] < case.solver.refresh))
-    if lowered.size:
-        changes.append((lowered[0], f"the far field refreshed every {case.solver.refresh} "
-                        "sweeps", "a refresh at every sweep"))
-    added = np.flatnonzero(res.density_newton[done])
-    if added.size:
-        changes.append((added[0], f"the density lagged in the {update}",
-                        "the density's Newton term"))
-    halved = np.flatnonzero(res.load_gains[done] < options.load_gain)
-    if halved.size:
-        changes.append((halved[0], f"the load gain {options.load_gain:.3g}",
-                        f"the load gain {res.load_gains[halved[0]]:.3g}"))
+    own = (case.solver.refresh, options.load_gain, False)
     notes = []
-    for step in sorted({change[0] for change in changes}):
-        these = [change for change in changes if change[0] == step]
-        before = _listed([change[1] for change in these])
-        after = _listed([change[2] for change in these])
-        notes.append(f"Step {step + 1} did not converge with {before}; it and the later steps "
-                     f"were relaxed with {after}{_outcome(res, step, len(these))}.")
-    if halved.size:
-        last = res.load_gains[res.steps_done - 1]
-        again = np.flatnonzero(res.load_gains[done] == last)[0]
-        if again > halved[0]:
-            notes.append(f"From step {again + 1} on the load gain was halved again, to "
-                         f"{last:.3g}.")
+    previous, since = own, 0
+    for step in range(res.steps_done):
+        start = previous
+        if previous != own and since >= TimeStepper.RESTORE_AFTER:
+            start = own
+            notes.append(f"From step {step + 1} on, {TimeStepper.RESTORE_AFTER} steps after the "
+                         "last step relaxed again, the case's own settings were taken up "
+                         "again.")
+        now = (int(res.refresh_intervals[step]), float(res.load_gains[step]),
+               bool(res.density_newton[step]))
+        if res.tries[step] > 1:
+            before, after = _setting_changes(start, now, update)
+            changed = (start[0] != now[0]) + (start[1] != now[1]) + (start[2] != now[2])
+            notes.append(f"Step {step + 1} did not converge with {before}; it and the later "
+                         f"steps were relaxed with {after}{_outcome(res, step, changed)}.")
+            since = 0
+        else:
+            since += 1
+        previous = now
     return notes
 
 
