@@ -58,7 +58,6 @@ REFRESH_EVERY_SWEEP_BELOW = 0.3
 UNDAMPED_BELOW = 1e-2
 
 
-
 @dataclass(frozen=True)
 class StepOptions:
     """Settings of the transient solver's iteration within a timestep.
@@ -255,7 +254,7 @@ class TimeStepper:
         moves the h = 0 contact nodes; they are put back to 0.
 
         A step that does not converge is relaxed again from its start with safer settings
-        (:meth:`safer_settings`), which the later steps keep until :attr:`RESTORE_AFTER`
+        (:meth:`fall_back`), which the later steps keep until :attr:`RESTORE_AFTER`
         steps have passed without another such step; the stepper then goes back to the run's
         own settings, so that a hard stretch of the run (a steady start that had not
         converged, a ridge entering the contact) leaves neither a costlier nor a less robust
@@ -290,11 +289,7 @@ class TimeStepper:
         report = self.relax()
         tries = 1
         first = self.options
-        while not report.converged:
-            safer = self.safer_settings(first)
-            if safer is None:
-                break
-            self.options = safer
+        while not report.converged and self.fall_back(first):
             state.P, state.H, state.H0, state.kind = (before[0].copy(), before[1].copy(),
                                                       before[2], before[3].copy())
             again = self.relax()
@@ -305,9 +300,10 @@ class TimeStepper:
         np.maximum(self.state.H, 0.0, out=self.state.H)
         return report._replace(tries=tries)
 
-    def safer_settings(self, first: StepOptions) -> StepOptions | None:
-        """The settings to relax a step that did not converge again with, or None when none
-        is left; ``first`` are the settings the step was first relaxed with. In this order:
+    def fall_back(self, first: StepOptions) -> bool:
+        """Switch to the next safer settings for a step that did not converge; False when
+        none is left. ``first`` are the settings the step was first relaxed with. In this
+        order:
 
         1. the far field refreshed at every sweep (when ``refresh > 1``);
         2. for a compressible lubricant, the density's Newton term in the update
@@ -319,15 +315,17 @@ class TimeStepper:
         """
         opts = self.options
         if opts.refresh > 1:
-            return replace(opts, refresh=1)
-        if self.can_add_density_term and not first.density_newton:
-            return replace(opts, density_newton=True)
-        if self.halvings < self.GAIN_HALVINGS:
+            self.options = replace(opts, refresh=1)
+        elif self.can_add_density_term and not first.density_newton:
+            self.options = replace(opts, density_newton=True)
+        elif self.halvings < self.GAIN_HALVINGS:
             self.halvings += 1
-            return replace(opts, load_gain=opts.load_gain / 2)
-        if opts.density_newton and first.density_newton:
-            return replace(opts, density_newton=False)
-        return None
+            self.options = replace(opts, load_gain=opts.load_gain / 2)
+        elif opts.density_newton and first.density_newton:
+            self.options = replace(opts, density_newton=False)
+        else:
+            return False
+        return True
 
     def resume_settings(self, refresh: int, load_gain: float, density_newton: bool = False,
                         since_retry: int = 0):
@@ -347,7 +345,7 @@ class TimeStepper:
     @property
     def can_retry(self) -> bool:
         """Whether a step that fails can be relaxed again with safer settings
-        (:meth:`safer_settings`)."""
+        (:meth:`fall_back`)."""
         return (self.options.refresh > 1 or self.can_add_density_term
                 or self.halvings < self.GAIN_HALVINGS or self.options.density_newton)
 
