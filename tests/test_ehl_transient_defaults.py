@@ -373,6 +373,76 @@ def test_a_step_that_fails_with_the_density_term_is_relaxed_again_with_the_densi
     assert not report.converged and report.tries == 2 and report.density_newton
 
 
+@pytest.mark.parametrize("ny, rescued", [(65, True), (17, False)])
+def test_a_step_that_fails_with_every_setting_on_square_cells_gets_y_lines(
+        monkeypatch, smooth_fine, ny, rescued):
+    """The last resort on cells less than 3 times as wide as long (65 x 65 nodes over the
+    bump case's domain: dY = 1.6 dX): a step that fails with every setting is relaxed once
+    more with a y-line sweep after every x-line sweep, for that step only. Here every
+    relaxation without them is made to fail. On cells 6.4 dX wide (65 x 17) there is no such
+    resort. (On the a/b = 4 seed-mesh run, step 1225 failed with every setting and converged
+    so, docs/ehl-transient.md.)"""
+    problem, domain = smooth_fine
+    x, y = problem.grid(65, ny, domain)
+    stepper = TimeStepper(problem, x, y, StepOptions.for_problem(problem),
+                          0.5 * (x[1] - x[0]) / problem.u1,
+                          problem.film_estimate() / problem.film_scale)
+    steady = solve_steady(problem, nx=65, ny=ny, domain=domain)
+    state = stepper.state
+    state.P = steady.pressure / problem.p_hertz
+    state.H = steady.film / problem.film_scale
+    state.H0 = steady.separation / problem.film_scale
+    state.kind[state.P <= 0.0] = 1
+    relax = TimeStepper.relax
+    seen = []
+
+    def failing_without_y_lines(self, max_sweeps=None):
+        seen.append(self.state.y_lines)
+        report = relax(self, max_sweeps)
+        return report if self.state.y_lines else report._replace(converged=False)
+
+    monkeypatch.setattr(TimeStepper, "relax", failing_without_y_lines)
+    report = stepper.advance(state.roughness)
+    assert report.converged == rescued and report.y_lines == rescued
+    assert seen == [False] * 5 + [True] * rescued       # first try, 4 fallbacks, y-lines
+    assert report.tries == 5 + rescued
+    assert not state.y_lines                            # for that step only
+
+
+def test_report_names_the_step_relaxed_with_y_lines(tmp_path, monkeypatch):
+    """A step rescued by the y-line sweeps gets one note that says so, and result.nc marks
+    it (step 3 of 5 made to fail without them; the case already refreshes at every sweep, its
+    oil is incompressible and its gain is quartered, so no setting is left)."""
+    case = _bump(surface2={"kind": "smooth"}, speeds={"xi": 0.0}, grid={"nx": 65, "ny": 65},
+                 time={"warmup_steps": 0, "counting_steps": 5},
+                 lubricant={"density_model": "incompressible"}, solver={"refresh": 1})
+    advance, relax = TimeStepper.advance, TimeStepper.relax
+    calls = {"step": 0}
+
+    def counted(self, phi):
+        calls["step"] += 1
+        self.halvings = self.GAIN_HALVINGS
+        return advance(self, phi)
+
+    def failing(self, max_sweeps=None):
+        report = relax(self, max_sweeps)
+        if calls["step"] == 3 and not self.state.y_lines:
+            return report._replace(converged=False)
+        return report
+
+    monkeypatch.setattr(TimeStepper, "advance", counted)
+    monkeypatch.setattr(TimeStepper, "relax", failing)
+    outcome = run_case(case, workdir=tmp_path)
+    assert outcome.converged
+    np.testing.assert_array_equal(outcome.dataset["y_lines"].values, [0, 0, 1, 0, 0])
+    note = [n for n in outcome.notes if n.startswith("Step 3 ")]
+    assert len(note) == 1
+    assert note[0].startswith("Step 3 did not converge with any setting left; it alone was "
+                              "relaxed once more with a y-line sweep after every x-line "
+                              "sweep (the sweeps of all tries are counted: ")
+    assert note[0].endswith("; with the y-line sweeps it converged).")
+
+
 @pytest.mark.parametrize("density_model, solver, note", [
     ("incompressible", {"refresh": 1, "load_gain": 4.8},
      "did not converge with the load gain 4.8; it and the later steps were relaxed with the "

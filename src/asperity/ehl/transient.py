@@ -173,6 +173,9 @@ class TransientResult(SolverResult):
     tries : ndarray of int
         Per step: how often it was relaxed (1: it converged at the first try; more: relaxed
         again with safer settings).
+    y_lines : ndarray of bool
+        Per step: relaxed once more with y-line sweeps after failing with every setting
+        (:attr:`~asperity.ehl.stepper.TimeStepper.can_add_y_lines`).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -222,6 +225,7 @@ class TransientResult(SolverResult):
     load_gains: np.ndarray
     density_newton: np.ndarray
     tries: np.ndarray
+    y_lines: np.ndarray
     iterations: int
     converged: bool
     residual: float

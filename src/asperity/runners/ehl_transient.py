@@ -70,6 +70,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
                                    "density lagged (0)"),
         "tries": variable("step", res.tries, "1",
                           "relaxations of the step (1: converged at the first try)"),
+        "y_lines": variable("step", res.y_lines.astype("i1"), "1",
+                            "step relaxed once more with y-line sweeps (1) or not (0)"),
         "film_counts": variable("film_bin", res.film_counts, "1",
                                 "film thickness histogram over the counting period"),
         "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
@@ -89,10 +91,13 @@ def _dataset(case, problem, res) -> xr.Dataset:
 
 
 def _outcome(res, step: int, settings: int = 1) -> str:
-    """How the step (0-based) that changed ``settings`` solver settings ended, for the
-    report's note."""
+    """How the step (0-based) that changed ``settings`` solver settings, or added y-line
+    sweeps, ended, for the report's note."""
     ended = "converged" if res.step_converged[step] else "still did not converge"
-    changed = "the changed setting" if settings == 1 else "the changed settings"
+    if res.y_lines[step]:
+        changed = "the y-line sweeps"
+    else:
+        changed = "the changed setting" if settings == 1 else "the changed settings"
     return (f" (the sweeps of all tries are counted: {res.sweeps[step]}; with {changed} it "
             f"{ended})")
 
@@ -141,10 +146,16 @@ def _fallback_notes(case, problem, res) -> list[str]:
         now = (int(res.refresh_intervals[step]), float(res.load_gains[step]),
                bool(res.density_newton[step]))
         if res.tries[step] > 1:
-            before, after = _setting_changes(start, now, update)
             changed = (start[0] != now[0]) + (start[1] != now[1]) + (start[2] != now[2])
-            notes.append(f"Step {step + 1} did not converge with {before}; it and the later "
-                         f"steps were relaxed with {after}{_outcome(res, step, changed)}.")
+            text = f"Step {step + 1} did not converge"
+            if changed:
+                before, after = _setting_changes(start, now, update)
+                text += f" with {before}; it and the later steps were relaxed with {after}"
+            if res.y_lines[step]:
+                text += (", and not with those either" if changed else " with any setting left")
+                text += ("; it alone was relaxed once more with a y-line sweep after every "
+                         "x-line sweep")
+            notes.append(f"{text}{_outcome(res, step, changed)}.")
             since = 0
         else:
             since += 1
