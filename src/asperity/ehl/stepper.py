@@ -335,8 +335,8 @@ class TimeStepper:
         with every setting (residual 0.15 after 401 sweeps) and converged with them in 71
         more (docs/ehl-transient.md)."""
         state = self.state
-        return (self.options.method == "line" and not state.line
-                and state.dY < Y_LINES_BELOW * state.dX)
+        return bool(self.options.method == "line" and not state.line
+                    and state.dY < Y_LINES_BELOW * state.dX)
 
     def fall_back(self, first: StepOptions) -> bool:
         """Switch to the next safer settings for a step that did not converge; False when
