@@ -94,14 +94,17 @@ class InletProbe(_FilmChanges):
     nodes: tuple[int, int]
 
 
-def _probe_nodes(problem, x, y) -> tuple[int, int, int]:
-    """(nx, ny, levels) of a probe's solve on the domain of ``x``, ``y``: twice the mesh
-    spacing, or the default mesh of that domain where it is coarser (:func:`side_probe`)."""
+def _probe_nodes(problem, x, y):
+    """``(x_bounds, y_bounds), (nx, ny), levels`` of a probe's solves on the domain of the
+    nodes ``x``, ``y``: twice the mesh spacing, or the default mesh of that domain where it
+    is coarser (:func:`side_probe`)."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
     bounds = ((float(x[0]), float(x[-1])), (float(y[0]), float(y[-1])))
     default = problem.default_nodes(bounds)
     nx, ny = (max(MIN_NODES, min((n.size - 1) // 2 + 1, d))
               for n, d in zip((x, y), default, strict=True))
-    return nx, ny, sequencing_levels(nx, ny)
+    return bounds, (nx, ny), sequencing_levels(nx, ny)
 
 
 def _extension(length: float, spacing: float, levels: int) -> int:
@@ -145,12 +148,8 @@ def side_probe(problem, x, y, widen: float = 1.0) -> SideProbe:
     -------
     SideProbe
     """
-    x = np.asarray(x, dtype=float)
-    y = np.asarray(y, dtype=float)
-    x_bounds = (float(x[0]), float(x[-1]))
-    y_bounds = (float(y[0]), float(y[-1]))
-    nx, ny, levels = _probe_nodes(problem, x, y)
-    dy = (y[-1] - y[0]) / (ny - 1)
+    (x_bounds, y_bounds), (nx, ny), levels = _probe_nodes(problem, x, y)
+    dy = (y_bounds[1] - y_bounds[0]) / (ny - 1)
     extra = _extension(widen * problem.b, dy, levels)
     wide = (y_bounds[0] - extra * dy, y_bounds[1] + extra * dy)
     narrow_res, wide_res = _solve_pair(problem, levels, (nx, ny, (x_bounds, y_bounds)),
@@ -182,12 +181,8 @@ def inlet_probe(problem, x, y, x_min: float) -> InletProbe:
     -------
     InletProbe
     """
-    x = np.asarray(x, dtype=float)
-    y = np.asarray(y, dtype=float)
-    x_bounds = (float(x[0]), float(x[-1]))
-    y_bounds = (float(y[0]), float(y[-1]))
-    nx, ny, levels = _probe_nodes(problem, x, y)
-    dx = (x[-1] - x[0]) / (nx - 1)
+    (x_bounds, y_bounds), (nx, ny), levels = _probe_nodes(problem, x, y)
+    dx = (x_bounds[1] - x_bounds[0]) / (nx - 1)
     extra = _extension(x_bounds[0] - x_min, dx, levels)
     long_x_min = x_bounds[0] - extra * dx
     short_res, long_res = _solve_pair(problem, levels, (nx, ny, (x_bounds, y_bounds)),
