@@ -39,6 +39,7 @@ the deflection equation as its 5-point Laplacian and the Dirichlet edge films.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,7 +55,7 @@ from .solver import sequencing_levels, solve_steady
 from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
 from .stepper import StepOptions, TimeStepper
 
-__all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "TransientResult",
+__all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "FIXED_POINT_LIMIT", "TransientResult",
            "default_warmup_steps", "solve_transient"]
 
 #: Mesh cells per half-width of a single feature along x (the rolling direction) and across
@@ -64,6 +65,13 @@ __all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "TransientResult",
 #: contact (docs/ehl-transient.md, "The default mesh of a transient case").
 FEATURE_CELLS_ALONG = 8
 FEATURE_CELLS_ACROSS = 3
+
+#: Largest change of p (in Hertz pressures) and of h (in central films) that relaxing a run's
+#: converged last step on may bring before the result warns (:meth:`TransientResult.
+#: fixed_point_warning`). The gear case at the seed's spacing moves by 0.1-0.2 % with the
+#: default tolerance, the a/b = 4 contact on the seed's square cells by 3 % of p_h and 1 % of
+#: the film (docs/ehl-transient.md, "How far a converged step is from its fixed point").
+FIXED_POINT_LIMIT = 0.01
 
 class MovingSurface:
     """A rough surface entering the domain at the inlet and moving along +x at ``speed``.
@@ -176,6 +184,14 @@ class TransientResult(SolverResult):
     y_lines : ndarray of bool
         Per step: relaxed once more with y-line sweeps after failing with every setting
         (:attr:`~asperity.ehl.stepper.TimeStepper.can_add_y_lines`).
+    fixed_point_pressure, fixed_point_film : float
+        How far the last step is from the fixed point of its equations: the largest change of
+        p (in Hertz pressures) and of h (in central-film estimates) when it is relaxed on to a
+        hundredth of ``tol`` (:meth:`~asperity.ehl.stepper.TimeStepper.check_fixed_point`);
+        NaN when the run did not end with a converged step. Above
+        :data:`FIXED_POINT_LIMIT` the result warns.
+    fixed_point_sweeps : int
+        Sweeps of that check (0: not made).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -226,6 +242,9 @@ class TransientResult(SolverResult):
     density_newton: np.ndarray
     tries: np.ndarray
     y_lines: np.ndarray
+    fixed_point_pressure: float
+    fixed_point_film: float
+    fixed_point_sweeps: int
     iterations: int
     converged: bool
     residual: float
@@ -272,6 +291,31 @@ class TransientResult(SolverResult):
         """Length of the counting period, s."""
         return self.counting_steps * self.dt
 
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """No convergence, and a last step far from its fixed point
+        (:meth:`fixed_point_warning`)."""
+        return (*SolverResult.warnings.fget(self), *self.fixed_point_warning())
+
+    def fixed_point_warning(self) -> list[str]:
+        """A line when the last step, relaxed on, moved p or h by more than
+        :data:`FIXED_POINT_LIMIT` (of the Hertz pressure, of the central film): the steps stop
+        on the change per sweep while the relaxation still drifts, so every step's state may
+        be that far from its solution. Lowering the tolerance moves the stop closer in
+        proportion (the tail of a step contracts geometrically)."""
+        worst = max(self.fixed_point_pressure, self.fixed_point_film)
+        if not worst > FIXED_POINT_LIMIT:
+            return []
+        fold = math.ceil(worst / FIXED_POINT_LIMIT) if np.isfinite(worst) else None
+        advice = (f"lower the tolerance (solver.tolerance) about {fold}-fold" if fold else
+                  "the check diverged: lower the tolerance or the time step")
+        return [f"solver.tolerance: the last step, relaxed {self.fixed_point_sweeps} sweeps "
+                f"past its tolerance, moved p by up to {self.fixed_point_pressure:.2%} of the "
+                f"Hertz pressure and h by up to {self.fixed_point_film:.2%} of the central "
+                f"film (limit {FIXED_POINT_LIMIT:.0%}): the steps stop while the relaxation "
+                "still drifts toward their solution, as on the cells dy < 3 dx of a narrow "
+                f"contact, so each step's p and h may be that far off; {advice}"]
+
     def summary(self) -> dict:
         """Scalars for ``summary.json``: contact-time fraction, extremes of the counting period."""
         counted = slice(self.warmup_steps, self.steps_done)
@@ -286,6 +330,8 @@ class TransientResult(SolverResult):
             "steps": int(self.steps),
             "mean_sweeps_per_step": float(self.sweeps[: self.steps_done].mean())
             if self.steps_done else 0.0,
+            "fixed_point_pressure_per_hertz": float(self.fixed_point_pressure),
+            "fixed_point_film_per_central": float(self.fixed_point_film),
             "converged": bool(self.converged),
         }
 
@@ -546,14 +592,15 @@ def solve_transient(
         if not finite:
             break
 
+    record = history.record
+    done = record["step_converged"][:steps_done]
+    check = stepper.check_fixed_point() if steps_done == total and done[-1] else None
     p = state.P * problem.p_hertz
     h = state.H * problem.film_scale
     if np.all(np.isfinite(p)) and np.all(np.isfinite(h)):
         qx, qy = flow_vectors(problem, x, y, p, h)
     else:
         qx = qy = np.full((nx, ny), np.nan)
-    record = history.record
-    done = record["step_converged"][:steps_done]
     return TransientResult(
         x=x, y=y, dt=float(dt), warmup_steps=warmup_steps, counting_steps=counting_steps,
         steps=total, steps_done=steps_done, pressure=p, film=h, surface1=z1, surface2=z2,
@@ -565,5 +612,8 @@ def solve_transient(
         residual=float(np.nanmax(record["residuals"])) if steps_done else float("nan"),
         steady_central_film=steady_hc, steady_converged=steady_converged, method=opts.method,
         theta=opts.theta,
+        fixed_point_pressure=check.pressure if check else float("nan"),
+        fixed_point_film=check.film if check else float("nan"),
+        fixed_point_sweeps=check.sweeps if check else 0,
         **history.arrays(),
     )

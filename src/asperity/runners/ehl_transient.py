@@ -87,7 +87,10 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "title": case.title, "analysis": "ehl-transient", "Conventions": "CF-1.8",
         "timestep_s": res.dt, "warmup_steps": res.warmup_steps,
         "counting_steps": res.counting_steps, "steps_done": res.steps_done,
-        "hertz_a_m": a, "converged": int(res.converged)})
+        "hertz_a_m": a, "converged": int(res.converged),
+        "fixed_point_pressure": res.fixed_point_pressure,
+        "fixed_point_film": res.fixed_point_film,
+        "fixed_point_sweeps": res.fixed_point_sweeps})
 
 
 def _outcome(res, step: int, settings: int = 1) -> str:
@@ -275,6 +278,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps)
+    trust += res.fixed_point_warning()
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
     trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
