@@ -70,6 +70,7 @@ HEADLINE_KEYS = (
 _SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps", "steps",
                 "mean_sweeps_per_step", "steps_converged_fraction", "load_error", "path_steps",
                 "path_iterations", "path_converged", "path_gross_slip_step", "points",
+                "fixed_point_distance_pressure_fraction", "fixed_point_distance_film_fraction",
                 "ehl_solves_converged", "ehl_wall_time_s", "status")
 
 
