@@ -257,6 +257,9 @@ class TimeStepper:
     #: step with the density lagged (docs/ehl-transient.md, "Fallbacks").
     RESTORE_AFTER = 200
 
+    #: Sweeps at most of :meth:`check_fixed_point`.
+    CHECK_SWEEPS = 200
+
     def __init__(self, problem, x, y, options: StepOptions, dt: float, film_scale: float):
         self.problem = problem
         self.options = options
@@ -495,9 +498,6 @@ class TimeStepper:
                 else:
                     mixer.reset()
         return report(False, residual)
-
-    #: Sweeps at most of :meth:`check_fixed_point`.
-    CHECK_SWEEPS = 200
 
     def check_fixed_point(self, sweeps: int | None = None) -> FixedPointCheck:
         """Relax the current (converged) step on, to a hundredth of its tolerance in at most
