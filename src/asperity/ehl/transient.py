@@ -73,6 +73,7 @@ FEATURE_CELLS_ACROSS = 3
 #: the film (docs/ehl-transient.md, "How far a converged step is from its fixed point").
 FIXED_POINT_LIMIT = 0.01
 
+
 class MovingSurface:
     """A rough surface entering the domain at the inlet and moving along +x at ``speed``.
 
