@@ -194,6 +194,8 @@ class TransientResult(SolverResult):
         result warns.
     fixed_point_sweeps : int
         Sweeps of that check (0: not made).
+    fixed_point_settled : bool
+        Whether the check reached its own tolerance (if not, the distances are lower bounds).
     iterations : int
         Relaxation sweeps over all steps.
     converged : bool
@@ -247,6 +249,7 @@ class TransientResult(SolverResult):
     fixed_point_pressure: float
     fixed_point_film: float
     fixed_point_sweeps: int
+    fixed_point_settled: bool
     iterations: int
     converged: bool
     residual: float
@@ -310,17 +313,20 @@ class TransientResult(SolverResult):
         worst = max(self.fixed_point_pressure, self.fixed_point_film)
         if not worst > FIXED_POINT_LIMIT:
             return []
-        fold = math.ceil(worst / FIXED_POINT_LIMIT) if np.isfinite(worst) else None
-        advice = (f"lower the tolerance (solver.tolerance) by more than {fold}-fold: the "
-                  "distance falls about as the tolerance, not in proportion at every step"
-                  if fold else
-                  "the check diverged: lower the tolerance or the time step")
+        if not np.isfinite(worst):
+            return [f"solver.tolerance: the last step, relaxed past its tolerance, diverged "
+                    f"within {self.fixed_point_sweeps} sweeps: its state is no solution of "
+                    "the step's equations; lower the tolerance or the time step (time.dt)"]
+        fold = math.ceil(worst / FIXED_POINT_LIMIT)
+        moved = "moved" if self.fixed_point_settled else "moved (and was still moving)"
         return [f"solver.tolerance: the last step, relaxed {self.fixed_point_sweeps} sweeps "
-                f"past its tolerance, moved p by up to {self.fixed_point_pressure:.2%} of the "
-                f"Hertz pressure and h by up to {self.fixed_point_film:.2%} of the central "
+                f"past its tolerance, {moved} p by up to {self.fixed_point_pressure:.2%} of "
+                f"the Hertz pressure and h by up to {self.fixed_point_film:.2%} of the central "
                 f"film (limit {FIXED_POINT_LIMIT:.0%}): the steps stop while the relaxation "
                 "still drifts toward their solution, as on the cells dy < 3 dx of a narrow "
-                f"contact, so each step's p and h may be that far off; {advice}"]
+                "contact, so each step's p and h may be that far off; lower the tolerance "
+                f"(solver.tolerance) by more than {fold}-fold: the distance falls about as the "
+                "tolerance, not in proportion at every step"]
 
     def summary(self) -> dict:
         """Scalars for ``summary.json``: contact-time fraction, extremes of the counting period,
@@ -625,5 +631,6 @@ def solve_transient(
         fixed_point_pressure=check.pressure if check else float("nan"),
         fixed_point_film=check.film if check else float("nan"),
         fixed_point_sweeps=check.sweeps if check else 0,
+        fixed_point_settled=check.settled if check else False,
         **history.arrays(),
     )

@@ -90,7 +90,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "hertz_a_m": a, "converged": int(res.converged),
         "fixed_point_pressure": res.fixed_point_pressure,
         "fixed_point_film": res.fixed_point_film,
-        "fixed_point_sweeps": res.fixed_point_sweeps})
+        "fixed_point_sweeps": res.fixed_point_sweeps,
+        "fixed_point_settled": int(res.fixed_point_settled)})
 
 
 def _outcome(res, step: int, settings: int = 1) -> str:
