@@ -651,3 +651,39 @@ def test_a_last_step_far_from_its_fixed_point_is_reported(tmp_path):
         else:
             assert distances[tolerance] < 0.006 and not lines
     assert distances[1e-3] > 4 * distances[1e-4]
+
+
+def test_the_check_measures_the_distance_to_the_step_solved_tightly_from_its_start(
+        tmp_path, monkeypatch):
+    """An independent measure of what the check reports: the last step of the narrow a/b = 4
+    contact (129 x 33, tolerance 1e-3) solved again from the state before it to a tolerance
+    of 1e-8, by the step's own relaxation from its start rather than from the converged
+    state. Its largest distance from the state that converged at 1e-3 agrees with the
+    check's to 10 %: both reach the same solution of the step's equations."""
+    import copy
+
+    from asperity.runners.ehl_transient import run as run_transient
+
+    kept = {}
+    advance = TimeStepper.advance
+
+    def watched(self, phi):
+        kept["before"] = copy.deepcopy(self), phi.copy()  # overwritten until the last step
+        return advance(self, phi)
+
+    monkeypatch.setattr(TimeStepper, "advance", watched)
+    case = _narrow_contact(129, 33, 150, 1e-3)
+    outcome = run_transient(case, workdir=tmp_path)
+    attrs = outcome.dataset.attrs
+    assert attrs["fixed_point_settled"]
+    tight, phi = kept["before"]
+    tight.options = replace(tight.options, tol=1e-8, max_sweeps=4000)
+    tight.initial = tight.options
+    report = advance(tight, phi)
+    assert report.converged
+    problem = case.problem()
+    converged_p = outcome.dataset["pressure"].values / problem.p_hertz
+    distance = float(np.abs(tight.state.P - converged_p).max())
+    print(f"check {attrs['fixed_point_pressure']:.4f} p_h, solved from the start "
+          f"{distance:.4f} p_h ({report.sweeps} sweeps)")
+    assert distance == pytest.approx(attrs["fixed_point_pressure"], rel=0.1)
