@@ -24,7 +24,7 @@ Cost): an estimate, not a run.
 ``asperity run`` does (figures and files aside): wall time against the 8 min goal of issue 17,
 steps, sweeps per step in the warm-up and counting phases, and the results compared in
 docs/ehl-transient.md (contact-time fraction, largest pressure and contact count rate, steady
-central film). Long: 27 min on 2 loaded cores.
+central film). Long: 27-43 min on 2 cores, with the speed of this shared machine.
 
 Like the command line, the benchmark keeps freed memory for reuse
 (:func:`asperity.memory.retain_freed_memory`); ``--default-allocator`` times without it.
@@ -174,7 +174,7 @@ def main():
     parser.add_argument("--meshes", default="131x29,261x57,571x201")
     parser.add_argument("--steps", type=int, default=60, help="rough steps timed per mesh")
     parser.add_argument("--full", action="store_true",
-                        help="also run the full paper case end to end (~27 min)")
+                        help="also run the full paper case end to end (27-43 min)")
     parser.add_argument("--default-allocator", action="store_true",
                         help="leave glibc's malloc thresholds alone (the CLI raises them)")
     args = parser.parse_args()
