@@ -502,7 +502,9 @@ class TimeStepper:
     def check_fixed_point(self, sweeps: int | None = None) -> FixedPointCheck:
         """Relax the current (converged) step on, to a hundredth of its tolerance in at most
         ``sweeps`` sweeps (default :attr:`CHECK_SWEEPS`), measure how far p and h move, and
-        put the state back as it was.
+        put p, h, H0, the active set, the refresh count and the options back as they were.
+        The far field ``efar`` and the flow-factor derivatives are left at the relaxed-on
+        state: :meth:`relax` rebuilds both before its first sweep.
 
         A step stops when a sweep changes p and h by less than ``tol``. The state is then
         within ``tol rho / (1 - rho)`` of the fixed point for a relaxation that contracts by
