@@ -337,6 +337,29 @@ def test_unconverged_steps():
     _every_line_names_a_limit(lines)
     assert len(lines) == 1 and lines[0].startswith("steps: 3 of 200") and "4, 51, 52" in lines[0]
     assert dg.unconverged_steps(np.ones(5, bool), 1e-4, 400) == []
+    assert "raise max_sweeps" in lines[0]
+
+
+def test_unconverged_steps_that_blew_up_are_not_told_to_take_more_sweeps():
+    # two steps stalled near the tolerance, one given up with its residual at 0.15 p_h and
+    # one diverged (inf): the advice for each kind, with the sizes of the last changes
+    flags = np.ones(200, dtype=bool)
+    flags[[3, 50, 51, 120]] = False
+    residuals = np.full(200, 5e-5)
+    residuals[[3, 50, 51, 120]] = [2e-4, 0.15, np.inf, 3e-4]
+    (line,) = dg.unconverged_steps(flags, 1e-4, 400, residuals, 0.05)
+    _every_line_names_a_limit([line])
+    assert line.startswith("steps: 4 of 200") and "4, 51, 52, 121" in line
+    assert "2 ran out of 400 sweeps: raise max_sweeps" in line
+    assert "2 stayed far from it" in line and "last change per sweep 0.15, at least 0.05" in line
+    assert line.endswith("use a smaller [time] dt")
+    residuals[51] = 2.0
+    (line,) = dg.unconverged_steps(flags[52:], 1e-4, 400, residuals[52:], 0.05)
+    assert "raise max_sweeps" in line and "stayed far" not in line
+    (line,) = dg.unconverged_steps(flags[:52], 1e-4, 400, residuals[:52], 0.05)
+    assert "1 ran out" in line and "2 stayed far from it" in line and "0.15-2," in line
+    (line,) = dg.unconverged_steps(flags[51:52], 1e-4, 400, [np.inf], 0.05)
+    assert "1 stayed far from it with every setting the solver falls back on (diverged" in line
 
 
 def test_inlet_length_criterion_against_a_longer_inlet():

@@ -893,8 +893,15 @@ def feature_passage(label: str, feature: str, start: float, end: float, a: float
             f"{' and '.join(changes)} (or leave them out: the defaults count the whole passage)"]
 
 
-def unconverged_steps(step_converged, tolerance: float, max_sweeps: int) -> list[str]:
-    """Time steps that did not reach the tolerance.
+def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residuals=None,
+                      blown_up: float = np.inf) -> list[str]:
+    """Time steps that did not reach the tolerance, and what to change for them.
+
+    A step whose last residual is still at least ``blown_up`` (or not finite) did not run
+    short of sweeps: its relaxation blew up or stalled far from the tolerance with every
+    setting the solver falls back on, and more sweeps do not mend it (docs/ehl-transient.md,
+    "A try that blows up is given up at once"); a smaller timestep moves the surfaces less
+    per step.
 
     Parameters
     ----------
@@ -904,6 +911,11 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int) -> list
         The solver's tolerance.
     max_sweeps : int
         Sweeps allowed per step.
+    residuals : ndarray of float, optional
+        The last residual of each step (largest change per sweep, in Hertz pressures or
+        central films, or relative load error).
+    blown_up : float
+        Residual from which a step counts as blown up (default: none does).
 
     Returns
     -------
@@ -915,10 +927,27 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int) -> list
     if not bad.size:
         return []
     first = ", ".join(str(k + 1) for k in bad[:5]) + (", ..." if bad.size > 5 else "")
+    last = (np.full(bad.size, np.nan) if residuals is None
+            else np.asarray(residuals, dtype=float)[bad])
+    up = ~(last < blown_up) if residuals is not None else np.zeros(bad.size, dtype=bool)
+    advice = []
+    if (~up).any():
+        advice.append(f"{np.count_nonzero(~up)} ran out of {max_sweeps} sweeps: raise "
+                      "max_sweeps or use a smaller dt")
+    if up.any():
+        finite = last[up][np.isfinite(last[up])]
+        if not finite.size:
+            size = "diverged"
+        elif finite.min() == finite.max():
+            size = f"last change per sweep {finite.min():.2g}"
+        else:
+            size = f"last change per sweep {finite.min():.2g}-{finite.max():.2g}"
+        advice.append(f"{np.count_nonzero(up)} stayed far from it with every setting the solver "
+                      f"falls back on ({size}, at least {blown_up:g}), which more sweeps do "
+                      "not mend: use a smaller [time] dt")
     return [f"steps: {bad.size} of {flags.size} time steps ({_pct(bad.size / flags.size)}; "
-            f"limit 0) did not reach the tolerance {tolerance:g} within {max_sweeps} sweeps "
-            f"(steps {first}); their statistics are included; raise max_sweeps or use a "
-            "smaller dt"]
+            f"limit 0) did not reach the tolerance {tolerance:g} (steps {first}); their "
+            f"statistics are included; {'; '.join(advice)}"]
 
 
 #: cells per autocorrelation length below which a rough surface is set by the mesh (heights

@@ -24,7 +24,7 @@ from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
-from ..ehl.stepper import StepOptions, TimeStepper
+from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
 from .ehl_steady import chosen_mesh, ehl_warnings
@@ -278,7 +278,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
     trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
-                                           case.solver.tolerance, case.solver.max_sweeps)
+                                           case.solver.tolerance, case.solver.max_sweeps,
+                                           res.residuals[:res.steps_done], BLOWN_UP_FLOOR)
     trust += res.fixed_point_warning()
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
     trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
