@@ -340,6 +340,29 @@ def test_unconverged_steps():
     assert "raise max_sweeps" in lines[0]
 
 
+def test_smooth_start_contact():
+    # a smooth film that closes on two bands at the edges across y (the side lobes on too
+    # coarse a mesh), and on the boundary rows, which the statistics do not count
+    a, b = 2e-4, 1e-4
+    x, y = np.linspace(-2.5 * a, 1.5 * a, 81), np.linspace(-2 * b, 2 * b, 41)
+    film = np.full((81, 41), 3e-7)
+    lobes = (np.abs(x) <= 0.5 * a)[:, None] & (np.abs(np.abs(y) - b) < 0.06 * b)[None, :]
+    film[lobes] = 0.0
+    film[0, :] = film[:, -1] = 0.0
+    (line,) = dg.smooth_start_contact(film, x, y, a, b, 1e-11)
+    _every_line_names_a_limit([line])
+    assert f"at {lobes.sum()} nodes" in line
+    xs = x[np.any(lobes, axis=1)] / a
+    assert f"x = {xs.min():.2f} a to {xs.max():.2f} a, |y| = 1.00 b to 1.00 b" in line
+    film[lobes] = 2e-11                                 # above the contact film: no contact
+    assert dg.smooth_start_contact(film, x, y, a, b, 1e-11) == []
+    # a line contact: one node across
+    line_film = np.full(81, 3e-7)
+    line_film[50] = 0.0                                 # x = 0
+    (line,) = dg.smooth_start_contact(line_film, x, np.zeros(1), a, None, 1e-11)
+    assert "at 1 nodes (x = 0.00 a to 0.00 a; limit 0)" in line
+
+
 def test_unconverged_steps_that_blew_up_are_not_told_to_take_more_sweeps():
     # two steps stalled near the tolerance, one given up with its residual at 0.15 p_h and
     # one diverged (inf): the advice for each kind, with the sizes of the last changes

@@ -204,6 +204,11 @@ class TransientResult(SolverResult):
         Largest final residual of any step.
     steady_central_film : float
         Central film of the smooth steady start, m.
+    steady_film : ndarray
+        Film of the smooth steady start, m, shape (nx, ny) (NaN when resumed from a
+        checkpoint written before it was kept).
+    contact_film : float
+        Film at or below which a node counts as in contact, m.
     steady_converged : bool
         Whether the smooth steady start converged (a run goes on from an unconverged one: its
         steps relax the state to the transient solution, but ``converged`` is then False).
@@ -254,6 +259,8 @@ class TransientResult(SolverResult):
     converged: bool
     residual: float
     steady_central_film: float
+    steady_film: np.ndarray
+    contact_film: float
     steady_converged: bool
     method: str
     theta: float
@@ -263,6 +270,7 @@ class TransientResult(SolverResult):
         "contact_count": ("1", "number of counting steps with contact at the node"),
         "pressure": ("Pa", "pressure at the last step"),
         "film": ("m", "film thickness at the last step"),
+        "steady_film": ("m", "film thickness of the smooth steady start"),
         "surface1": ("m", "height of surface 1 at the last step"),
         "surface2": ("m", "height of surface 2 at the last step"),
         "flow_x": ("m2 s-1", "lubricant flow per unit width along x"),
@@ -553,6 +561,7 @@ def solve_transient(
         start = int(arrays["step"])
         steady_converged = bool(arrays["steady_converged"])
         steady_hc = float(arrays["steady_central_film"])
+        steady_film = arrays.get("steady_film", np.full((nx, ny), np.nan))
         stats.restore(arrays)
         history.restore(arrays)
         if start:  # the settings a step before the checkpoint was relaxed again with
@@ -576,6 +585,7 @@ def solve_transient(
         state.kind[state.H <= 0.0] = CONTACT
         steady_converged = bool(steady.converged)
         steady_hc = float(steady.central_film)
+        steady_film = np.asarray(steady.film, dtype=float)
 
     z1, z2 = heights(start * dt)
     state.roughness = -(z1 + z2) / problem.film_scale
@@ -599,7 +609,8 @@ def solve_transient(
             checkpointer.save({
                 "P": state.P, "H": state.H, "H0": np.float64(state.H0), "kind": state.kind,
                 "step": np.int64(step), "steady_converged": np.bool_(steady_converged),
-                "steady_central_film": np.float64(steady_hc), **stats.arrays(),
+                "steady_central_film": np.float64(steady_hc), "steady_film": steady_film,
+                **stats.arrays(),
                 **history.arrays()})
         if callback is not None:  # after the checkpoint, so a callback sees this step's file
             callback(step, report.residual)
@@ -626,7 +637,8 @@ def solve_transient(
         snapshot_steps=snaps, iterations=int(record["sweeps"].sum()),
         converged=bool(steady_converged and steps_done == total and done.all()),
         residual=float(np.nanmax(record["residuals"])) if steps_done else float("nan"),
-        steady_central_film=steady_hc, steady_converged=steady_converged, method=opts.method,
+        steady_central_film=steady_hc, steady_film=steady_film, contact_film=contact_film,
+        steady_converged=steady_converged, method=opts.method,
         theta=opts.theta,
         fixed_point_pressure=check.pressure if check else float("nan"),
         fixed_point_film=check.film if check else float("nan"),

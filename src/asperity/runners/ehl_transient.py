@@ -51,6 +51,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
                                   "number of counting steps with contact at the node"),
         "pressure": variable(xy, res.pressure, "Pa", "pressure at the last step"),
         "film": variable(xy, res.film, "m", "film thickness at the last step"),
+        "steady_film": variable(xy, res.steady_film, "m",
+                                "film thickness of the smooth steady start"),
         "surface1": variable(xy, res.surface1, "m", "height of surface 1 at the last step"),
         "surface2": variable(xy, res.surface2, "m", "height of surface 2 at the last step"),
         "flow_x": variable(xy, res.flow_x, "m2 s-1", "lubricant flow per unit width along x"),
@@ -276,6 +278,14 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     # an unconverged steady start's film would set the inlet and mesh advice: the formula's
     film = res.steady_central_film if res.steady_converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
+    if np.isfinite(res.steady_film).all():  # contacts without roughness, counted all the same
+        b = None if line else problem.b
+        touching = diagnostics.smooth_start_contact(res.steady_film, res.x, res.y, problem.a,
+                                                    b, res.contact_film)
+        trust += touching
+        if touching:  # most often the side lobes, too narrow for the mesh: how to refine
+            trust += diagnostics.ehl_minimum_film_mesh(res.steady_film, res.x, res.y,
+                                                       problem.a, b)
     trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps,
