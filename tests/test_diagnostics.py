@@ -353,14 +353,14 @@ def test_smooth_start_contact():
     _every_line_names_a_limit([line])
     assert f"at {lobes.sum()} nodes" in line
     xs = x[np.any(lobes, axis=1)] / a
-    assert f"x = {xs.min():.2f} a to {xs.max():.2f} a, |y| = 1.00 b to 1.00 b" in line
+    assert f"x = {xs.min():.2f} a to {xs.max():.2f} a, |y| = 1.00 b;" in line
     film[lobes] = 2e-11                                 # above the contact film: no contact
     assert dg.smooth_start_contact(film, x, y, a, b, 1e-11) == []
     # a line contact: one node across
     line_film = np.full(81, 3e-7)
     line_film[50] = 0.0                                 # x = 0
     (line,) = dg.smooth_start_contact(line_film, x, np.zeros(1), a, None, 1e-11)
-    assert "at 1 nodes (x = 0.00 a to 0.00 a; limit 0)" in line
+    assert "at 1 nodes (x = 0.00 a; limit 0)" in line
 
 
 def test_unconverged_steps_that_blew_up_are_not_told_to_take_more_sweeps():

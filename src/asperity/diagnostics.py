@@ -734,9 +734,14 @@ def smooth_start_contact(steady_film, x, y, a: float, b: float | None,
         return []
     i, j = np.nonzero(touching)
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    where = f"x = {x[i].min() / a:.2f} a to {x[i].max() / a:.2f} a"
+
+    def span(values, unit):
+        low, high = f"{values.min():.2f} {unit}", f"{values.max():.2f} {unit}"
+        return low if low == high else f"{low} to {high}"
+
+    where = "x = " + span(x[i] / a, "a")
     if b is not None:
-        where += f", |y| = {np.abs(y[j]).min() / b:.2f} b to {np.abs(y[j]).max() / b:.2f} b"
+        where += ", |y| = " + span(np.abs(y[j]) / b, "b")
     return [f"statistics: the smooth steady start already touches (film <= "
             f"{contact_film * 1e9:.3g} nm) at {touching.sum()} nodes ({where}; limit 0), with no "
             "roughness in the contact; the contact counts and the contact-time fraction include "
