@@ -982,9 +982,11 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residua
     if not bad.size:
         return []
     first = ", ".join(str(k + 1) for k in bad[:5]) + (", ..." if bad.size > 5 else "")
-    last = (np.full(bad.size, np.nan) if residuals is None
-            else np.asarray(residuals, dtype=float)[bad])
-    up = ~(last < blown_up) if residuals is not None else np.zeros(bad.size, dtype=bool)
+    if residuals is None:
+        up = np.zeros(bad.size, dtype=bool)
+    else:
+        last = np.asarray(residuals, dtype=float)[bad]
+        up = ~(last < blown_up)                         # NaN and inf: blown up
     advice = []
     if (~up).any():
         advice.append(f"{np.count_nonzero(~up)} ran out of {max_sweeps} sweeps: raise "
