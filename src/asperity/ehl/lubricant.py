@@ -76,7 +76,7 @@ def _roelands_law(p, eta0, log_ratio, chi, z):
     """Roelands eta and d eta/dp, ``log_ratio = ln(eta0/kappa)``:
     ``d eta/dp = eta ln(eta0/kappa) Z chi (1 + chi p)^(Z - 1)``."""
     q = 1.0 + chi * max(p, 0.0)
-    t = q**z
+    t = math.exp(z * math.log(q))  # q**z: libm's pow costs about twice exp and log
     eta = eta0 * math.exp(log_ratio * (t - 1.0))
     return eta, eta * log_ratio * z * chi * t / q
 
@@ -117,10 +117,11 @@ def _eyring_y(h, eta, shear):
         dg = -1.0 / (eta * eta)
         if shear > 0.0:  # (not 0/0 where h^2 underflows without sliding)
             dg += shear * shear / (6.0 * h * h)
-    else:
-        s = math.asinh(x)
+    else:  # asinh X = ln(X + sqrt(1 + X^2)) (X >= 1e-4: no cancellation), the root shared
+        root = math.sqrt(1.0 + x * x)
+        s = math.log(x + root)
         g = x / (eta * s)
-        dg = -(shear / h) ** 2 / (s * s * math.sqrt(1.0 + x * x))
+        dg = -(shear / h) ** 2 / (s * s * root)
     return h * h * h * g / 12.0, h * h * h * dg / 12.0
 
 

@@ -560,8 +560,12 @@ class TimeStepper:
         """The iterate ``(P, H / film_scale, H0 / film_scale)`` as one vector (comparable
         scales; the fields in their x-fastest memory order)."""
         state, scale = self.state, self.film_scale
-        return np.concatenate([state.P.ravel(order="F"), state.H.ravel(order="F") / scale,
-                               [state.H0 / scale]])
+        n = state.P.size
+        v = np.empty(2 * n + 1)
+        v[:n] = state.P.ravel(order="F")
+        np.divide(state.H.ravel(order="F"), scale, out=v[n:2 * n])
+        v[-1] = state.H0 / scale
+        return v
 
     def set_mixed(self, v):
         """Set (P, H, H0) from a mixed vector: p, h >= 0, p = 0 cavitated, h = 0 in contact."""
