@@ -32,50 +32,14 @@ import numpy as np
 
 __all__ = ["AndersonMixer"]
 
-#: Blocks of the parallel passes: partial dot products are summed per block, then over the
-#: blocks in a fixed order, so a mix does not depend on the number of threads.
-_BLOCKS = 64
 
-
-@numba.njit(parallel=True, cache=True)
-def _record(x, g, last, df, dg, slot, slots, dots):
-    """Record the pair (x, g) in history slot ``slot`` and return its dot products.
-
-    With ``f = g - x`` and ``last = (f, g)`` of the previous pair: ``df[slot] = f - last[0]``,
-    ``dg[slot] = g - last[1]``, then ``last = (f, g)``; ``dots[0, a] = df[slots[a]] .
-    df[slot]`` (the new row of the Gram matrix) and ``dots[1, a] = df[slots[a]] . f`` (the
-    right-hand side), ``slots`` holding ``slot``. One pass, in ``_BLOCKS`` blocks.
-    """
-    n = x.size
-    m = slots.size
-    size = (n + _BLOCKS - 1) // _BLOCKS
-    partial = np.zeros((_BLOCKS, 2, m))
-    for block in numba.prange(_BLOCKS):
-        for i in range(block * size, min(n, (block + 1) * size)):
-            f = g[i] - x[i]
-            d = f - last[0, i]
-            df[slot, i] = d
-            dg[slot, i] = g[i] - last[1, i]
-            last[0, i] = f
-            last[1, i] = g[i]
-            for a in range(m):
-                u = df[slots[a], i]
-                partial[block, 0, a] += u * d
-                partial[block, 1, a] += u * f
-    dots[:] = 0.0
-    for block in range(_BLOCKS):
-        dots += partial[block]
-
-
-@numba.njit(parallel=True, cache=True)
-def _combine(g, dg, slots, gamma, out):
-    """``out = g - sum_a gamma[a] dg[slots[a]]``, the mixer's proposal."""
-    m = slots.size
-    for i in numba.prange(g.size):
-        v = g[i]
-        for a in range(m):
-            v -= gamma[a] * dg[slots[a], i]
-        out[i] = v
+@numba.njit(cache=True, fastmath={"reassoc"})
+def _dot(u, v):
+    """``u . v`` of two 1-D float arrays, on the calling thread (reassociated: vectorised)."""
+    total = 0.0
+    for i in range(u.size):
+        total += u[i] * v[i]
+    return total
 
 
 class AndersonMixer:
@@ -87,88 +51,51 @@ class AndersonMixer:
     memory : int
         Number m of residual differences in the least-squares fit (>= 1).
     dot : callable, optional
-        ``dot(u, v)``: the dot product of two iterate-sized vectors as a float, for vectors of
-        another array library (a GPU's, as in ``benchmarks/ehl_sweep_gpu.py``), which the
-        mixer then handles with that library's array operations. Default: numpy vectors,
-        mixed by the compiled passes :func:`_record` and :func:`_combine`.
+        ``dot(u, v)``: the dot product of two iterate-sized vectors as a float. Default: the
+        compiled loop for numpy arrays; vectors of another array library (a GPU's, as in
+        ``benchmarks/ehl_sweep_gpu.py``) need that library's.
     """
 
     def __init__(self, memory: int, dot=None):
         self.memory = int(memory)
-        self.dot = dot
-        self._df = self._dg = self._last = None
-        self._size = -1
+        self.dot = _dot if dot is None else dot
         self.reset()
 
     def reset(self):
         """Forget the history (the next :meth:`mix` returns ``g`` unchanged)."""
-        self._pairs = 0
-        self._slots: list[int] = []
+        self._last = None
+        self._d_f: list[np.ndarray] = []
+        self._d_g: list[np.ndarray] = []
         self._gram = np.zeros((0, 0))
 
-    def mix(self, x, g):
-        """Record the pair (x, g(x)) and return the accelerated next iterate (a new vector).
+    def mix(self, x: np.ndarray, g: np.ndarray) -> np.ndarray:
+        """Record the pair (x, g(x)) and return the accelerated next iterate.
 
         With a single pair in the history this is the plain fixed-point step ``g``. The
         least-squares problem is solved through its m x m normal equations (the vectors are
-        long, m is small), whose Gram matrix gains one row of dot products per call; the
-        oldest difference is dropped once there are ``memory`` of them.
+        long, m is small), whose Gram matrix gains one row of dot products per call.
         """
-        if self.dot is None:
+        if self.dot is _dot:
             x, g = np.asarray(x, dtype=float), np.asarray(g, dtype=float)
-        self._allocate(g)
-        if self._pairs == 0:
-            self._pairs = 1
-            self._last[0] = g - x
-            self._last[1] = g
-            return g.copy()
-        slots = self._slots
-        gram = self._gram
-        if len(slots) == self.memory:
-            slot = slots.pop(0)
-            gram = gram[1:, 1:]
-        else:
-            slot = min(set(range(self.memory)) - set(slots))
-        slots.append(slot)
-        dots = self._record(x, g, slot)
-        self._gram = np.empty((len(slots), len(slots)))
-        self._gram[:-1, :-1] = gram
-        self._gram[-1] = self._gram[:, -1] = dots[0]
-        gamma = np.linalg.lstsq(self._gram, dots[1], rcond=1e-12)[0]
-        if self.dot is None:
-            out = np.empty_like(g)
-            _combine(g, self._dg, np.array(slots), gamma, out)
-            return out
-        out = g.copy()
-        for gk, slot in zip(gamma, slots, strict=True):
-            out -= gk * self._dg[slot]
-        return out
-
-    def _allocate(self, g):
-        """The history buffers, for vectors like ``g`` (kept while the size stays)."""
-        if g.size == self._size:
-            return
-        self._size = g.size
-        if self.dot is None:
-            self._df = np.empty((self.memory, g.size))
-            self._dg = np.empty((self.memory, g.size))
-            self._last = np.empty((2, g.size))
-        else:
-            self._df = [None] * self.memory
-            self._dg = [None] * self.memory
-            self._last = [None, None]
-
-    def _record(self, x, g, slot):
-        """Store the differences of the new pair in ``slot``; its Gram row and right-hand
-        side, ``(2, len(slots))``, in the order of the history."""
-        slots = self._slots
-        if self.dot is None:
-            dots = np.empty((2, len(slots)))
-            _record(x, g, self._last, self._df, self._dg, slot, np.array(slots), dots)
-            return dots
         f = g - x
-        self._df[slot] = f - self._last[0]
-        self._dg[slot] = g - self._last[1]
-        self._last = [f, g]
-        return np.array([[self.dot(self._df[a], self._df[slot]) for a in slots],
-                         [self.dot(self._df[a], f) for a in slots]])
+        if self._last is not None:
+            self._d_f.append(f - self._last[0])
+            self._d_g.append(g - self._last[1])
+            gram = self._gram
+            if len(self._d_f) > self.memory:
+                self._d_f.pop(0)
+                self._d_g.pop(0)
+                gram = gram[1:, 1:]
+            row = np.array([self.dot(u, self._d_f[-1]) for u in self._d_f])
+            self._gram = np.empty((row.size, row.size))
+            self._gram[:-1, :-1] = gram
+            self._gram[-1] = self._gram[:, -1] = row
+        self._last = (f, g)
+        if not self._d_f:
+            return g.copy()
+        rhs = np.array([self.dot(u, f) for u in self._d_f])
+        gamma = np.linalg.lstsq(self._gram, rhs, rcond=1e-12)[0]
+        out = g.copy()
+        for gk, d_g in zip(gamma, self._d_g, strict=True):
+            out -= gk * d_g
+        return out
