@@ -1,5 +1,7 @@
 """Lubricant models against closed forms and an exact integration of the Eyring film flux."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -180,6 +182,13 @@ def test_flow_factor_limits():
     # X >> 1: sigma_x / sigma_y -> ln 2X (relative error ~ 1/(2 X^2))
     sx, sy = eyring_flow_factors(1e-12, eta, rho, 3.0, tau0)
     assert sx / sy == pytest.approx(np.log(2 * eta * 3.0 / (tau0 * 1e-12)), rel=1e-6)
+    # the same where X^2 would overflow (a Barus viscosity at a pressure spike), without an
+    # overflow warning: X = 6e209
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        sx, sy = eyring_flow_factors(1e-6, 1e214, rho, 3.0, tau0)
+    assert sy > 0.0
+    assert sx / sy == pytest.approx(np.log(2 * 1e214 * 3.0 / (tau0 * 1e-6)), rel=1e-12)
     with pytest.raises(InputError, match="h"):
         eyring_flow_factors(-1e-9, eta, rho, 1.0, tau0)
     with pytest.raises(InputError, match="tau0"):

@@ -118,7 +118,8 @@ def _eyring_y(h, eta, shear):
         if shear > 0.0:  # (not 0/0 where h^2 underflows without sliding)
             dg += shear * shear / (6.0 * h * h)
     else:  # asinh X = ln(X + sqrt(1 + X^2)) (X >= 1e-4: no cancellation), the root shared
-        root = math.sqrt(1.0 + x * x)
+        r = 1.0 / x
+        root = x * math.sqrt(1.0 + r * r)  # (not X^2, which overflows at a huge eta)
         s = math.log(x + root)
         g = x / (eta * s)
         dg = -(shear / h) ** 2 / (s * s * root)
