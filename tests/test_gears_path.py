@@ -288,9 +288,29 @@ def test_newtonian_gear_friction_is_reported():
     newtonian = run_case(load_case(smooth.replace('tau0 = "5 MPa"\n', "")))
     assert newtonian.summary["mean_friction_coefficient"] > 1.0
     assert sum(w.startswith("lubricant.tau0:") for w in newtonian.warnings) == 1
+    assert "Newtonian" in newtonian.dataset.ehl_friction.attrs["long_name"]
     eyring = run_case(load_case(smooth))
     assert eyring.summary["mean_friction_coefficient"] < 0.1
     assert not any(w.startswith("lubricant.tau0:") for w in eyring.warnings)
+    assert "Eyring" in eyring.dataset.ehl_friction.attrs["long_name"]
+
+
+def test_newtonian_traction_hidden_by_the_boundary_share_is_reported():
+    """With the case's Ra 0.3 um every point is in boundary lubrication, so the mixed
+    friction is the boundary 0.1 and its mean hides the Newtonian EHL value; the EHL
+    traction itself (the dataset's ehl_friction, drawn in the report) is still far above any
+    traction, so the warning names lubricant.tau0, and the figure draws it on a log axis
+    labelled Newtonian."""
+    from asperity.runners import run_case
+
+    newtonian = run_case(load_case(GEAR_CASE.replace('tau0 = "5 MPa"\n', "")))
+    assert newtonian.summary["mean_friction_coefficient"] == pytest.approx(0.1, rel=1e-6)
+    assert float(newtonian.dataset.ehl_friction.max()) > 1.0
+    assert sum(w.startswith("lubricant.tau0:") for w in newtonian.warnings) == 1
+    draw, _caption = newtonian.figures["path_friction_temperature"]
+    ax = draw().axes[0]
+    assert ax.get_yscale() == "log"
+    assert "Newtonian" in ax.get_legend().get_texts()[0].get_text()
 
 
 @pytest.mark.parametrize("speed, rad_per_s", [

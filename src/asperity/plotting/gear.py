@@ -78,12 +78,20 @@ def conditions_figure(result, title):
     return fig
 
 
-def friction_temperature_figure(result, title, bulk_temperature):
-    """Friction coefficient (EHL traction and mixed) and flash/contact temperature."""
+def friction_temperature_figure(result, title, bulk_temperature, newtonian=False):
+    """Friction coefficient (EHL traction and mixed) and flash/contact temperature.
+
+    ``newtonian``: the lubricant has no Eyring stress, so the EHL "traction" is a Newtonian
+    film's ``eta du / h`` (labelled so); where it exceeds 1, which no traction does, the
+    axis is logarithmic so that the mixed friction stays readable beside it.
+    """
     fig, (ax, ax2) = new_figure(6.4, 6.0, nrows=2, sharex=True)
     x = _angle(result)
-    ax.plot(x, result.ehl_friction, "C0--", label="EHL traction (Eyring)")
+    law = "Newtonian, no tau0" if newtonian else "Eyring"
+    ax.plot(x, result.ehl_friction, "C0--", label=f"EHL traction ({law})")
     ax.plot(x, result.friction, "C0-o", ms=3, label="with boundary share")
+    if np.nanmax(result.ehl_friction) > 1.0:
+        ax.set_yscale("log")
     ax.set_ylabel("friction coefficient")
     ax.legend(fontsize=7)
     _mark_points(ax, result)

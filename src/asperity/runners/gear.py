@@ -86,6 +86,7 @@ def _at(result, i, name: str) -> dict:
 def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     """Dataset, summary (geometry, critical points), figures and comparisons of a path."""
     pair, kin = result.pair, result.kin
+    newtonian = case.lubricant.lubricant().newtonian
     dims = ("point",)
     fields = {
         "rho1": (kin.rho1, "m", "pinion transverse radius of curvature"),
@@ -111,7 +112,8 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "formula_minimum_film": (result.formula_minimum, "m",
                                  f"minimum film ({result.formula_names[1]})"),
         "specific_film": (result.specific_film, "1", "lambda = h_min / composite roughness"),
-        "ehl_friction": (result.ehl_friction, "1", "EHL traction coefficient (Eyring)"),
+        "ehl_friction": (result.ehl_friction, "1", "EHL traction coefficient (Newtonian: "
+                         "no Eyring stress)" if newtonian else "EHL traction coefficient (Eyring)"),
         "asperity_share": (result.asperity_share, "1", "load share on asperities"),
         "friction": (result.friction, "1", "friction coefficient"),
         "flash_temperature": (result.flash_temperature, "K", "Blok flash temperature"),
@@ -191,12 +193,12 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
                             "reduced radius along the path of contact."),
         "path_friction_temperature": (
             lambda: friction_temperature_figure(result, title,
-                                                case.operation.bulk_temperature),
+                                                case.operation.bulk_temperature, newtonian),
             "Friction coefficient (EHL traction and with the boundary share) and Blok's flash "
             "temperature and the contact temperature along the path."),
     }
     trust = list(result.warnings) + diagnostics.newtonian_traction(
-        summary["mean_friction_coefficient"], case.lubricant.lubricant().newtonian)
+        float(np.nanmax(result.ehl_friction)), newtonian)
     return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
                    notes=notes, warnings=trust)
 
