@@ -138,7 +138,7 @@ class StepOptions:
                     refresh=3, acceleration=None, load_gain=None, damping=0.7) -> StepOptions:
         """Options for ``problem`` with its defaults (see :func:`asperity.ehl.solve_transient`).
 
-        ``method`` None: line relaxation for a point contact, point update for a line contact.
+        ``method`` None: line relaxation (a line contact's one row solved at once).
         ``acceleration`` None: 3 with line relaxation, 0 with the point update. ``load_gain``
         None: ``0.15 min(1, b/a)`` (point contact), 0.03 (line contact).
 
@@ -147,7 +147,7 @@ class StepOptions:
         InputError
             For a value out of range, naming the argument.
         """
-        line, method = check_contact_and_method(problem, method)
+        line, method = check_contact_and_method(problem, method or "line")
         theta = float(theta)
         if not 0.5 <= theta <= 1.0:
             raise InputError("theta", "a time-scheme weight 0.5 <= theta <= 1", theta)

@@ -423,8 +423,10 @@ def solve_transient(
     theta : float
         Time-scheme weight, 1/2 (Crank-Nicolson, default) to 1 (implicit Euler).
     method : {"line", "point"}, optional
-        Relaxation, as for :func:`asperity.ehl.solve_steady` (default line for a point
-        contact, point for a line contact).
+        Relaxation of the steps: default the line relaxation, for a line contact its one row
+        solved at once (docs/ehl-transient.md, "Line contacts: the row solve"). The smooth
+        steady start takes ``method`` as given, so by default the steady solver's own (the
+        point update for a line contact, whose steady row solve does not converge).
     near : int
         x-neighbour pressure coefficients implicit in the line relaxation (2: the sweep costs
         half that of 4 and, with the acceleration, the step the least; it does not change the
@@ -572,7 +574,7 @@ def solve_transient(
                                     start - 1 - retried[-1] if retried.size else start)
     else:
         if steady is None:
-            steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=opts.method,
+            steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,
                                   levels=sequencing_levels(nx, ny, min_nx=17), near=opts.near,
                                   tol=min(opts.tol, 1e-5), max_iter=20000)
         if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
