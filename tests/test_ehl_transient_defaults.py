@@ -359,6 +359,7 @@ def test_the_stepper_goes_back_to_the_run_settings_after_steps_without_a_retry(
                             "every sweep") for n in notes)
 
 
+
 def test_a_step_that_fails_with_the_density_term_is_relaxed_again_with_the_density_lagged(
         monkeypatch, smooth_fine):
     """The last fallback: a step that began with the density's Newton term (kept from an
@@ -724,3 +725,23 @@ def test_the_check_measures_the_distance_to_the_step_solved_tightly_from_its_sta
           f"{distance:.4f} p_h ({report.sweeps} sweeps)")
     assert distance == pytest.approx(attrs["fixed_point_pressure"], rel=0.1)
 
+
+def test_a_step_that_stays_far_with_every_setting_leaves_its_start_to_the_next(
+        monkeypatch, smooth_fine_incompressible):
+    """The overshooting load loop of the test above with no gain halving left: step 6 fails
+    with every setting, its residual far above ``BLOWN_UP_FLOOR``. The step hands its start
+    (here the smooth solution of step 5) to the next step, not its blown-up last iterate: a
+    user's line contact on 513 nodes carried a 50 GPa iterate into the next step, whose
+    pressure reached 1.4e12 Pa and then NaN, and the run stopped (docs/ehl-transient.md)."""
+    monkeypatch.setattr(TimeStepper, "GAIN_HALVINGS", 0)
+    problem, domain = smooth_fine_incompressible
+    res = solve_transient(problem, nx=129, ny=129, domain=domain, warmup_steps=0,
+                          counting_steps=10, max_iter=100, refresh=1, load_gain=4.8)
+    failed = np.flatnonzero(~res.step_converged)
+    assert failed.size and failed[0] == 5 and res.steps_done == 10
+    assert np.all(res.residuals[failed] >= stepper.BLOWN_UP_FLOOR)
+    for step in failed:  # the smooth contact's start is the step before, to the bit
+        assert res.max_pressure[step] == res.max_pressure[step - 1]
+        assert res.min_film[step] == res.min_film[step - 1]
+    assert np.all(np.isfinite(res.pressure)) and np.all(np.isfinite(res.max_pressure))
+    assert res.max_pressure[-1] == pytest.approx(res.max_pressure[0], rel=1e-3)

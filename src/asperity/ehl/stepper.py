@@ -334,8 +334,7 @@ class TimeStepper:
             self.halvings = 0
         self.start_step(phi)
         state = self.state
-        before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy()) \
-            if self.can_retry or self.can_add_y_lines else None
+        before = (state.P.copy(), state.H.copy(), state.H0, state.kind.copy())
         report = self.relax(self.options.max_sweeps // 4 if restored else None)
         tries = 1
         first = self.options
@@ -348,7 +347,8 @@ class TimeStepper:
                                     refreshes=report.refreshes + again.refreshes)
         y_lines = not report.converged and self.can_add_y_lines
         if y_lines:
-            state.P, state.H, state.H0, state.kind = before
+            state.P, state.H, state.H0, state.kind = (before[0].copy(), before[1].copy(),
+                                                      before[2], before[3].copy())
             state.y_lines = True
             try:
                 again = self.relax()
@@ -358,6 +358,10 @@ class TimeStepper:
             report = again._replace(sweeps=report.sweeps + again.sweeps,
                                     refreshes=report.refreshes + again.refreshes)
         self.since_retry = 0 if tries > 1 else self.since_retry + 1
+        if not report.converged and not report.residual < BLOWN_UP_FLOOR:
+            # a step that stayed far from its fixed point with every setting (or went
+            # non-finite) leaves its start, not its last iterate, to the next step
+            state.P, state.H, state.H0, state.kind = before
         np.maximum(self.state.H, 0.0, out=self.state.H)
         return report._replace(tries=tries, y_lines=y_lines)
 
