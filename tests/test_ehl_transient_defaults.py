@@ -357,7 +357,17 @@ def test_the_stepper_goes_back_to_the_run_settings_after_steps_without_a_retry(
     assert any(n.startswith("Step 10 did not converge with the far field refreshed every 6 "
                             "sweeps; it and the later steps were relaxed with a refresh at "
                             "every sweep") for n in notes)
+    # past MAX_FALLBACK_NOTES steps relaxed again, the rest are counted in one note
+    import asperity.runners.ehl_transient as runner
 
+    monkeypatch.setattr(runner, "MAX_FALLBACK_NOTES", 1)
+    short = run_case(case, workdir=tmp_path / "short").notes
+    again = [n for n in short if "relaxed again" in n or n.startswith("Step ")]
+    assert any(n.startswith("Step 6 did not converge") for n in again)
+    assert not any(n.startswith(("Step 10 ", "From step 10 ")) for n in again)
+    more = int(np.count_nonzero(res.tries > 1)) - 1
+    assert more >= 1
+    assert any(n.startswith(f"{more} more steps were relaxed again (10") for n in again)
 
 
 def test_a_step_that_fails_with_the_density_term_is_relaxed_again_with_the_density_lagged(

@@ -33,6 +33,8 @@ __all__ = ["CHECKPOINTS", "run"]
 
 #: This runner takes ``workdir`` and ``resume`` (see :func:`asperity.runners.run_case`).
 CHECKPOINTS = True
+#: Steps relaxed again that get a note of their own in the report; the rest are counted.
+MAX_FALLBACK_NOTES = 8
 
 
 def _dataset(case, problem, res) -> xr.Dataset:
@@ -135,10 +137,12 @@ def _fallback_notes(case, problem, res) -> list[str]:
     settings it failed with, those it and the later steps were relaxed with, and how it
     ended; and one where the stepper went back to the case's own settings,
     :attr:`~asperity.ehl.stepper.TimeStepper.RESTORE_AFTER` steps after the last step relaxed
-    again."""
+    again. Past :data:`MAX_FALLBACK_NOTES` steps relaxed again the rest are counted in one
+    note (a user's gear case relaxed 41 steps again, a wall of notes over the results)."""
     options = StepOptions.for_problem(problem, method=case.solver.method,
                                       load_gain=case.solver.load_gain)
     update = "row solve" if options.method == "line" else "point update"
+    relaxed_again = np.flatnonzero(res.tries[:res.steps_done] > 1) + 1
     own = (case.solver.refresh, options.load_gain, False)
     notes = []
     previous, since = own, 0
@@ -146,9 +150,9 @@ def _fallback_notes(case, problem, res) -> list[str]:
         start = previous
         if previous != own and since >= TimeStepper.RESTORE_AFTER:
             start = own
-            notes.append(f"From step {step + 1} on, {TimeStepper.RESTORE_AFTER} steps after the "
-                         "last step relaxed again, the case's own settings were taken up "
-                         "again.")
+            notes.append((step + 1, f"From step {step + 1} on, {TimeStepper.RESTORE_AFTER} steps "
+                                    "after the last step relaxed again, the case's own settings "
+                                    "were taken up again."))
         now = (int(res.refresh_intervals[step]), float(res.load_gains[step]),
                bool(res.density_newton[step]))
         if res.tries[step] > 1:
@@ -161,12 +165,19 @@ def _fallback_notes(case, problem, res) -> list[str]:
                 text += (", and not with those either" if changed else " with any setting left")
                 text += ("; it alone was relaxed once more with a y-line sweep after every "
                          "x-line sweep")
-            notes.append(f"{text}{_outcome(res, step, changed)}.")
+            notes.append((step + 1, f"{text}{_outcome(res, step, changed)}."))
             since = 0
         else:
             since += 1
         previous = now
-    return notes
+    if relaxed_again.size <= MAX_FALLBACK_NOTES:
+        return [text for _, text in notes]
+    last = relaxed_again[MAX_FALLBACK_NOTES - 1]
+    rest = relaxed_again[MAX_FALLBACK_NOTES:]
+    listed = ", ".join(str(s) for s in rest[:10]) + (", ..." if rest.size > 10 else "")
+    return [text for step, text in notes if step <= last] + [
+        f"{rest.size} more steps were relaxed again ({listed}): result.nc's tries, "
+        "refresh_interval, load_gain and density_newton give every step's settings."]
 
 
 def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
