@@ -7,7 +7,8 @@ booleans and nested tables: all a case needs).
 
 A line contact is written with ``[solver] max_sweeps = 2000`` (:data:`LINE_MAX_SWEEPS`), as
 the seed's line-contact example sets it: the point relaxation of a rough line contact at the
-sliding of a gear flank needs up to about 800 sweeps in a time step. The mesh is refined until
+sliding of a gear flank needed up to about 800 sweeps in a time step (the row solve, now the
+default, at most 188). The mesh is refined until
 the shorter autocorrelation length of the two surfaces spans :data:`NODES_PER_CORRELATION`
 spacings (:func:`roughness_nodes`): on coarser meshes the steps stall (docs/gears.md).
 """
@@ -24,9 +25,10 @@ from .path import GearPathResult
 __all__ = ["LINE_MAX_SWEEPS", "NODES_PER_CORRELATION", "point_index", "roughness_nodes",
            "toml_text", "transient_case"]
 
-#: Sweep limit per time step written into the case of a line contact (the transient solver's
-#: default of 400 left 16.5 % of the steps of the FZG example's minimum-lambda point
-#: unconverged; the most any step needed was 788).
+#: Sweep limit per time step written into the case of a line contact (with the point update
+#: the transient solver's default of 400 left 16.5 % of the steps of the FZG example's
+#: minimum-lambda point unconverged, the most any step needed being 788; the row solve, the
+#: default since, needed at most 59 there and 188 at the FZG pitch point).
 LINE_MAX_SWEEPS = 2000
 
 #: Mesh spacings per autocorrelation length (ACF down to 0.2) of the surfaces at least: the
