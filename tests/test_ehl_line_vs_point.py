@@ -10,14 +10,15 @@ contact's reduced domain -2a..1.25a, 131 nodes), the same timestep dx/(2 u_max) 
 surfaces.
 
 Measured on the default run (131 x 29 / 131 nodes, 20 counting steps after the 335-step
-warm-up, every counting step compared; docs/ehl-transient.md): film difference over |x| <= a
-RMS 0.029-0.033 and max 0.077-0.088 of the smooth central film, at most 2.5 % of the RMS
-change of the film by the roughness (1.3-1.6 central films); pressure RMS difference
-0.048-0.056 p_h against 0.033 p_h between the smooth solutions. Over the examples' 200
-counting steps (slow test, 10 snapshots): film RMS 0.024-0.042, max 0.053-0.11, at most
-3.5 % of the roughness' film change; pressure RMS 0.040-0.057 p_h. Smooth films differ by
-0.0019 (RMS) / 0.0049 (max) central films. Shifting the line contact's snapshots by one step
-(surfaces moved by half a mesh spacing) raises the film RMS difference to 0.36.
+warm-up, every counting step compared; the line contact relaxed by the row solve, its
+default; docs/ehl-transient.md): film difference over |x| <= a RMS 0.027-0.030 and max
+0.072-0.079 of the smooth central film, at most 2.3 % of the RMS change of the film by the
+roughness (1.3-1.6 central films); pressure RMS difference 0.047-0.056 p_h against 0.033 p_h
+between the smooth solutions. Over the examples' 200 counting steps (slow test, 10
+snapshots): film RMS 0.023-0.044, max 0.056-0.11, at most 3.6 % of the roughness' film
+change; pressure RMS 0.041-0.056 p_h. Smooth films differ by 0.0020 (RMS) central films.
+Shifting the line contact's snapshots by one step (surfaces moved by half a mesh spacing)
+raises the film RMS difference to 0.28-0.36.
 """
 
 import dataclasses

@@ -576,7 +576,7 @@ def test_a_thick_film_line_contact_gets_the_density_term_in_its_point_update():
     assert row.converged and np.all(row.step_converged) and not row.density_newton.any()
     assert np.all(row.tries == 1)
     tight = solve_transient(problem, nx=nx, domain=domain, warmup_steps=0, counting_steps=12,
-                            method="point", tol=1e-7, max_sweeps=5000)
+                            method="point", tol=1e-7, max_iter=5000)
     assert tight.converged
     assert res.max_pressure[-1] == pytest.approx(tight.max_pressure[-1], rel=3e-3)
     assert row.max_pressure[-1] == pytest.approx(tight.max_pressure[-1], rel=1e-3)
