@@ -955,8 +955,10 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residua
     A step whose last residual is still at least ``blown_up`` (or not finite) did not run
     short of sweeps: its relaxation blew up or stalled far from the tolerance with every
     setting the solver falls back on, and more sweeps do not mend it (docs/ehl-transient.md,
-    "A try that blows up is given up at once"); a smaller timestep moves the surfaces less
-    per step.
+    "A try that blows up is given up at once"). A finer grid or a smaller timestep may: on a
+    user's Newtonian gear contact (docs/ehl-transient.md, "Line contacts: the row solve")
+    twice the nodes cut such steps from 1.1 % to 0.3 % of the steps, half the timestep did
+    not.
 
     Parameters
     ----------
@@ -1001,7 +1003,9 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residua
             size = f"last change per sweep {finite.min():.2g}-{finite.max():.2g}"
         advice.append(f"{np.count_nonzero(up)} stayed far from it with every setting the solver "
                       f"falls back on ({size}, at least {blown_up:g}), which more sweeps do "
-                      "not mend: use a smaller [time] dt")
+                      "not mend: try a finer grid (grid.nx, grid.ny) or a smaller [time] dt "
+                      "(on a measured gear case twice the nodes cut such steps from 1.1 % to "
+                      "0.3 %, half the time step did not)")
     return [f"steps: {bad.size} of {flags.size} time steps ({_pct(bad.size / flags.size)}; "
             f"limit 0) did not reach the tolerance {tolerance:g} (steps {first}); their "
             f"statistics are included; {'; '.join(advice)}"]
