@@ -383,6 +383,8 @@ def test_unconverged_steps_that_blew_up_are_not_told_to_take_more_sweeps():
     assert "1 ran out" in line and "2 stayed far from it" in line and "0.15-2," in line
     (line,) = dg.unconverged_steps(flags[51:52], 1e-4, 400, [np.inf], 0.05)
     assert "1 stayed far from it with every setting the solver falls back on (diverged" in line
+    (line,) = dg.unconverged_steps(flags[51:52], 1e-4, 400, [np.inf], 0.05, line=True)
+    assert "try a finer grid (grid.nx) or" in line
 
 
 def test_inlet_length_criterion_against_a_longer_inlet():

@@ -949,7 +949,7 @@ def feature_passage(label: str, feature: str, start: float, end: float, a: float
 
 
 def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residuals=None,
-                      blown_up: float = np.inf) -> list[str]:
+                      blown_up: float = np.inf, line: bool = False) -> list[str]:
     """Time steps that did not reach the tolerance, and what to change for them.
 
     A step whose last residual is still at least ``blown_up`` (or not finite) did not run
@@ -973,6 +973,8 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residua
         central films, or relative load error).
     blown_up : float
         Residual from which a step counts as blown up (default: none does).
+    line : bool
+        A line contact: its grid has ``nx`` only.
 
     Returns
     -------
@@ -989,6 +991,7 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residua
     else:
         last = np.asarray(residuals, dtype=float)[bad]
         up = ~(last < blown_up)                         # NaN and inf: blown up
+    grid = "grid.nx" if line else "grid.nx, grid.ny"
     advice = []
     if (~up).any():
         advice.append(f"{np.count_nonzero(~up)} ran out of {max_sweeps} sweeps: raise "
@@ -1003,7 +1006,7 @@ def unconverged_steps(step_converged, tolerance: float, max_sweeps: int, residua
             size = f"last change per sweep {finite.min():.2g}-{finite.max():.2g}"
         advice.append(f"{np.count_nonzero(up)} stayed far from it with every setting the solver "
                       f"falls back on ({size}, at least {blown_up:g}), which more sweeps do "
-                      "not mend: try a finer grid (grid.nx, grid.ny) or a smaller [time] dt "
+                      f"not mend: try a finer grid ({grid}) or a smaller [time] dt "
                       "(on a measured gear case twice the nodes cut such steps from 1.1 % to "
                       "0.3 %, half the time step did not)")
     return [f"steps: {bad.size} of {flags.size} time steps ({_pct(bad.size / flags.size)}; "

@@ -300,7 +300,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps,
-                                           res.residuals[:res.steps_done], BLOWN_UP_FLOOR)
+                                           res.residuals[:res.steps_done], BLOWN_UP_FLOOR,
+                                           line=line)
     trust += res.fixed_point_warning()
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
     trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
