@@ -117,21 +117,22 @@ def fig10():
     return _fig10(counting_steps=20, snapshots=20)
 
 
-def _check_seed_statement(c):
+def _check_seed_statement(c, film_rms=0.06, smooth_ratio=30.0):
     assert c.converged
     # the smooth solutions are equivalent: films within 1 %, pressures within 5 % p_h
-    # (measured 0.19 % / 3.3 %: p_h of the line contact is 4.6 % lower)
+    # (measured 0.15-0.20 % / 3.1-3.3 %: p_h of the line contact is 4.6 % lower)
     assert c.smooth_film_rms_difference < 0.01
     assert c.smooth_pressure_rms_difference < 0.05
     # the rough films are "identical" (bounds ~1.4-2 times the worst of the 20-step default
-    # and the 200-step slow run): RMS difference < 6 % of the smooth central film
-    # (measured <= 4.2 %), max < 15 % (<= 11 %), and < 6 % of how far the roughness moves
-    # the film (<= 3.5 %); at most 30 times the smooth film difference (<= 21)
-    assert np.all(c.film_rms_difference < 0.06)
+    # and the 200-step slow run): RMS difference < film_rms of the smooth central film
+    # (measured <= 4.4 % on the reduced mesh), max < 15 % (<= 11 %), and < 6 % of how far the
+    # roughness moves the film (<= 3.6 %); at most smooth_ratio times the smooth film
+    # difference (<= 21)
+    assert np.all(c.film_rms_difference < film_rms)
     assert np.all(c.film_max_difference < 0.15)
     assert np.all(c.film_rms_difference < 0.06 * c.film_rms_deviation)
-    assert np.all(c.film_rms_difference < 30.0 * c.smooth_film_rms_difference)
-    # pressure differences of the order of the smooth ones (measured <= 1.7 times)
+    assert np.all(c.film_rms_difference < smooth_ratio * c.smooth_film_rms_difference)
+    # pressure differences of the order of the smooth ones (measured <= 2.15 times)
     assert np.all(c.pressure_rms_difference < 2.5 * c.smooth_pressure_rms_difference)
 
 
@@ -175,21 +176,27 @@ def test_line_contact_follows_point_contact_over_counting_period():
 def test_line_contact_follows_point_contact_on_seed_mesh():
     """The statement on the seed's mesh: 801 x 201 / 801 nodes on -2.5a..1.5a (-2b..2b), dx =
     a/200, profiles not low-passed (as holmes-rough-CC-paper), the 2058-step warm-up, then 10
-    counting steps with 5 snapshots (38 min for the point run, 1.7 min for the line run, on 2
-    cores shared with other jobs; docs/ehl-transient.md).
+    counting steps with 5 snapshots (32 min for the point run, under a minute for the line
+    run, on 2 cores shared with other jobs; docs/ehl-transient.md).
 
-    Measured: film difference RMS 0.043-0.044 and max 0.112-0.114 of the smooth central film
-    (481.7 nm), 2.6 % of the RMS change of the film by the roughness (1.64-1.66 h_c), 18-19
-    times the smooth film difference (RMS 0.0023, max 0.0087); pressure RMS difference
-    0.053-0.055 p_h, 1.66-1.72 times the smooth 0.032 p_h. The same bounds as on the reduced
-    mesh hold with margins 1.3 (film max) to 2.3 (against the roughness change); the film
-    differences are 5-35 % above the reduced mesh's 20-step run (max 0.077-0.088, RMS
-    0.029-0.033 h_c) and within its 200-step range (max up to 0.11, RMS up to 0.042).
+    Measured with the line relaxed by the row solve (session 29): film difference RMS
+    0.055-0.056 and max 0.118 of the smooth central film (481.7 nm), 3.3-3.4 % of the RMS
+    change of the film by the roughness (1.64-1.66 h_c), 36-37 times the smooth film
+    difference (RMS 0.0015, max 0.0072); pressure RMS difference 0.063-0.067 p_h, 2.0-2.1
+    times the smooth 0.031 p_h. The line steps relaxed to a tolerance of 1e-6 give the same
+    (film RMS 0.055-0.057, within 0.002 h_c of the default), so this is the converged line
+    contact's difference, not the relaxation's. It is larger than on the reduced mesh in h_c
+    (RMS 0.023-0.044) and against the smooth difference, which the converged smooth line
+    start (482.2 nm, grid sequencing; 482.6 nm and 0.0023 before) made smaller; against the
+    roughness' film change it is the same. Hence the looser bounds here: RMS < 0.08 h_c and 50 times
+    the smooth difference (margins 1.4 and 1.3); the others are the reduced mesh's. An
+    earlier line run relaxed by the point update gave 0.043 h_c here; that update stops
+    0.095-0.103 h_c (RMS) from the line's fixed point on this mesh.
     """
     c = _fig10(10, 5, SEED_NX, SEED_NY, SEED_DOMAIN, lowpass=False)
     assert c.steps.tolist() == [2059, 2061, 2064, 2066, 2068] and c.x.size == SEED_NX
     assert c.x[1] - c.x[0] == pytest.approx(c.a / 200, rel=1e-6)
-    _check_seed_statement(c)
+    _check_seed_statement(c, film_rms=0.08, smooth_ratio=50.0)
 
 
 # --- input errors, on small smooth runs -------------------------------------------------------
