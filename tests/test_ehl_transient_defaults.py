@@ -622,6 +622,79 @@ def test_the_tail_of_a_step_relaxes_without_the_oscillation_damping(tmp_path):
     assert sweeps.mean() < 45 and sweeps[150:].mean() < 80
 
 
+# A user's spur reducer (z 19/77, m 5 mm, face 60 mm, 800 N m at 1480 rpm, 0.08 Pa s, alpha
+# 22/GPa, no Eyring stress, ground flanks Ra 0.4/0.6 um) as `asperity gear --emit-transient`
+# wrote it at its minimum-lambda point.
+REDUCER_POINT_A = """
+analysis = "ehl-transient"
+title = "Spur reducer 19/77: transient mixed EHL at min-lambda"
+[body1]
+youngs_modulus = 210000000000.0
+poisson_ratio = 0.3
+[body2]
+youngs_modulus = 210000000000.0
+poisson_ratio = 0.3
+[contact]
+type = "line"
+radius = 0.002712287213972584
+load_per_length = 99572.18923751223
+[speeds]
+u1 = 0.4352558966754244
+u2 = 3.0317785924156078
+[lubricant]
+eta0 = 0.08
+alpha = 2.2000000000000002e-08
+viscosity_model = "roelands"
+kappa = 6.32e-05
+chi = 5.1e-09
+density_model = "dowson-higginson"
+rho0 = 850.0
+gamma = 2.27e-09
+lambda = 1.68e-09
+[surface1]
+kind = "ground"
+ra = 4e-07
+[surface2]
+kind = "ground"
+ra = 6e-07
+seed = 1
+[grid]
+nx = 129
+x_min = -2.5
+x_max = 1.5
+[solver]
+max_sweeps = 2000
+"""
+
+
+@pytest.mark.parametrize("rise", [stepper.REDAMP_RISE, np.inf], ids=["redamped", "never"])
+def test_an_undamped_step_that_grows_takes_the_damping_back(monkeypatch, rise):
+    """Steps 506-510 of the reducer's 1984: an asperity of the faster flank in contact at the
+    node before the outlet boundary (x = 1.47 a), its pressure alternating from sweep to sweep
+    against the lagged edge film. Damped, the alternation decays by about 0.9 per sweep; once
+    undamped (``UNDAMPED_BELOW``) it grew by 1.7 per sweep, and these five steps failed with
+    every fallback (Anderson mixing off or with memory 6, damping 0.5 or off, a refresh at
+    every sweep: 5-6 failed; docs/ehl-transient.md). With the damping taken back when the
+    residual rises above ``REDAMP_RISE`` times its best, all of the first 510 steps converge;
+    never taking it back (the code before) fails them again."""
+    monkeypatch.setattr(stepper, "REDAMP_RISE", rise)
+    case = load_case(tomllib.loads(REDUCER_POINT_A))
+    problem = case.problem()
+    nx, ny, domain = case.mesh(problem)
+    x, y = problem.grid(nx, ny, domain)
+    dt = 0.5 * (x[1] - x[0]) / max(problem.u1, problem.u2)
+    warmup, counting = case.steps(problem, x, dt)
+    assert warmup + counting == 1984
+    rough = case.surfaces(problem, x, y, warmup, warmup + counting, dt)
+    res = solve_transient(problem, *rough, nx=nx, ny=ny, domain=domain, dt=dt,
+                          warmup_steps=509, counting_steps=1, max_iter=2000)
+    failed = np.flatnonzero(~res.step_converged) + 1
+    if np.isfinite(rise):
+        assert failed.size == 0
+    else:
+        assert set(failed) >= {506, 507, 508, 509}
+
+
 def _narrow_contact(nx, ny, steps, tolerance):
     """The a/b = 4 contact of the seed's aspect-ratio study (C against C, xi = 0.25) on square
     cells, ``steps`` steps from the smooth start as the roughness comes in."""
