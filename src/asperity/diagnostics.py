@@ -440,9 +440,10 @@ def ehl_inlet_film(probe, a: float) -> list[str]:
         return []
     moved = " and the ".join(f"{name} is {_pct(abs(d) / (1.0 + d))} "
                              f"{'higher' if d < 0 else 'lower'}" for name, d in changes)
+    nodes = " x ".join(str(n) for n in probe.nodes if n > 1)  # one across a line contact
     return [f"inlet: the inlet at x = {probe.x_min / a:.3g} a changes the film: with it at "
             f"{probe.long_x_min / a:.3g} a the {moved} (steady smooth solutions on "
-            f"{probe.nodes[0]} x {probe.nodes[1]} nodes; limit {_pct(STARVED_FILM_LOSS)}); the "
+            f"{nodes} nodes; limit {_pct(STARVED_FILM_LOSS)}); the "
             f"inlet starves the film; use x_min <= {probe.long_x_min / a:.3g} a"]
 
 

@@ -1,4 +1,5 @@
-"""How much the side boundaries and the inlet of a point contact's domain move its film.
+"""How much the side boundaries of a point contact's domain, and the inlet of a point or line
+contact's, move its film.
 
 The Reynolds equation is solved with p = 0 on the side boundaries y = y0, y1. Where the
 pressure has not decayed there, the boundary cuts off the side leakage. A side pressure of
@@ -12,7 +13,8 @@ The inlet boundary x = x0 is a meniscus of the same kind. Hamrock & Dowson's sta
 (:func:`asperity.diagnostics.ehl_inlet_length`) puts it too close at high M: a 6205 ball
 bearing's contact (M = 18,100) lost 5.4 % of its central film with the inlet at -1.3 a against
 -2.5 a, where the fit predicts none (docs/ehl-robustness.md). :func:`inlet_probe` measures it
-the same way, with the inlet moved upstream.
+the same way, with the inlet moved upstream; a line contact, which has no such fit here, only
+that way (a cam contact lost 6.8 % of its central film with the inlet at -1.5 a).
 """
 
 from __future__ import annotations
@@ -97,12 +99,12 @@ class InletProbe(_FilmChanges):
 def _probe_nodes(problem, x, y):
     """``(x_bounds, y_bounds), (nx, ny), levels`` of a probe's solves on the domain of the
     nodes ``x``, ``y``: twice the mesh spacing, or the default mesh of that domain where it
-    is coarser (:func:`side_probe`)."""
+    is coarser (:func:`side_probe`); one node across a line contact (``y = [0.]``)."""
     x = np.asarray(x, dtype=float)
     y = np.asarray(y, dtype=float)
     bounds = ((float(x[0]), float(x[-1])), (float(y[0]), float(y[-1])))
     default = problem.default_nodes(bounds)
-    nx, ny = (max(MIN_NODES, min((n.size - 1) // 2 + 1, d))
+    nx, ny = (max(MIN_NODES, min((n.size - 1) // 2 + 1, d)) if n.size > 1 else 1
               for n, d in zip((x, y), default, strict=True))
     return bounds, (nx, ny), sequencing_levels(nx, ny)
 
@@ -170,10 +172,10 @@ def inlet_probe(problem, x, y, x_min: float) -> InletProbe:
 
     Parameters
     ----------
-    problem : PointContact
+    problem : PointContact or LineContact
         The contact (SI).
     x, y : ndarray
-        Nodes of the solution whose inlet is probed, m.
+        Nodes of the solution whose inlet is probed, m (``y = [0.]`` for a line contact).
     x_min : float
         Inlet of the longer domain, m (upstream of ``x[0]``; e.g. the default domain's).
 

@@ -566,7 +566,7 @@ def _film_scale(state) -> float:
 
 
 def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0,
-           tangent=None, load_factor=1.0):
+           tangent=None, load_factor=1.0, stall_refresh=None):
     """Relax one grid to convergence; return (converged, residual, sweeps, history).
 
     The load target is ``load_factor`` times the problem's. Without ``tangent`` the
@@ -574,14 +574,21 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
     a :class:`LoadTangent` the state is moved along it to remove the load error before every
     far-field refresh instead.
 
-    With the x-line relaxation (``method="line"``) a relaxation that stalls (the residual at
-    the end of a refresh cycle above ``STALL_RATIO`` times its value ``STALL_CYCLES`` cycles
-    before) refreshes the far field twice as often from then on: with the far field lagged
-    over 10 sweeps a thick, low-L film (circle, M = 10, L = 3) kept swinging at residual
-    0.16, and converged with a refresh every 5 (docs/ehl-robustness.md). Relaxations that
-    converge steadily never stall by this test, so they keep ``refresh``.
+    With ``stall_refresh`` (default: the x-line relaxation, ``method="line"``) a relaxation
+    that stalls (the residual at the end of a refresh cycle above ``STALL_RATIO`` times its
+    value ``STALL_CYCLES`` cycles before) refreshes the far field twice as often from then
+    on: with the far field lagged over 10 sweeps a thick, low-L film (circle, M = 10, L = 3)
+    kept swinging at residual 0.16, and converged with a refresh every 5
+    (docs/ehl-robustness.md). Relaxations that converge steadily never stall by this test,
+    so they keep ``refresh``. :func:`_sequence` also sets it for the tangent-steered grids of
+    a line contact's fallback sequence (``tangents_from="every_grid"``): a cam contact on a
+    short domain (-1.5a..1.5a, 101-201 nodes) swung there at residual 0.15 with a refresh
+    every 10 sweeps and converged with one every 3 or 1 (docs/ehl-robustness.md,
+    "Line contacts on a short domain").
     """
     target = state.problem.load_integral * load_factor
+    if stall_refresh is None:
+        stall_refresh = method == "line"
     state.start_iteration()
     cycle_residuals = []
     history = []
@@ -609,7 +616,7 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
             state.refresh()
             return True, residual, sweeps, history
         cycle_residuals.append(residual)
-        if method == "line" and refresh > 1 and len(cycle_residuals) > STALL_CYCLES \
+        if stall_refresh and refresh > 1 and len(cycle_residuals) > STALL_CYCLES \
                 and residual > STALL_RATIO * cycle_residuals[-1 - STALL_CYCLES]:
             refresh = max(1, refresh // 2)
             cycle_residuals.clear()
@@ -865,6 +872,8 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
         converged, residual, sweeps, history = _relax(
             state, method, tol=tol, max_sweeps=limit, refresh=refresh, gain=gain,
             callback=callback, sweep_offset=total, tangent=tangent,
+            stall_refresh=method == "line" or (tangents_from == "every_grid"
+                                               and tangent is not None),
         )
         total += sweeps
         wanted = tangents_from == "every_grid" or (

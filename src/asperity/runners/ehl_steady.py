@@ -156,22 +156,21 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None) 
     p_h) on a mesh that resolves the Hertz zone, the film's dependence on the sides is
     measured by :func:`asperity.ehl.sides.side_probe` (two steady solves at twice the mesh
     spacing, or on the default mesh where that is coarser). An inlet shorter than the default
-    domain's that the inlet pressure and Hamrock & Dowson's starvation fit both pass is
-    measured the same way (:func:`asperity.ehl.sides.inlet_probe`, inlet moved to the
+    domain's that the inlet pressure and (point contacts) Hamrock & Dowson's starvation fit
+    pass is measured the same way (:func:`asperity.ehl.sides.inlet_probe`, inlet moved to the
     default domain's).
     """
     hz = problem.hertz
     b = None if isinstance(problem, LineContact) else hz.b
     lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max)
     mesh = diagnostics.ehl_mesh(x, y, hz.a, b)
+    if b is not None and not lines:  # the pressure is back to ambient: still starved?
+        lines += diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film)
+    default_inlet = problem.default_domain()[0][0]
+    if not lines and not mesh and x[0] > default_inlet + 0.01 * hz.a:
+        # an inlet shorter than the default domain's that the checks above passed
+        lines += diagnostics.ehl_inlet_film(inlet_probe(problem, x, y, default_inlet), hz.a)
     if b is not None:
-        if not lines:  # the pressure is back to ambient: is the inlet still starving the film?
-            lines += diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film)
-        default_inlet = problem.default_domain()[0][0]
-        if not lines and not mesh and x[0] > default_inlet + 0.01 * hz.a:
-            # an inlet shorter than the default domain's that both checks above passed
-            lines += diagnostics.ehl_inlet_film(inlet_probe(problem, x, y, default_inlet),
-                                                hz.a)
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
