@@ -442,6 +442,8 @@ def test_a_grid_table_with_only_the_domain_keeps_the_regime_mesh():
     assert [w for w in given.warnings if w.startswith("mesh: dx")]
 
 
+@pytest.mark.slow  # the 513 x 97 reference and the advised mesh: 95 s; the check itself is
+# in test_diagnostics.test_ehl_film_mesh, end to end in corpus/warn-ehl-line-inlet-short-cam
 def test_mesh_too_coarse_for_the_film_is_reported():
     """The ball-on-disc case on 129 nodes over -4a..1.5a (a/23.3) has its central film 4.0 %
     below that on 513 nodes (an independent solve here); the film-mesh check, which estimates

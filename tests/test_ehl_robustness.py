@@ -369,6 +369,8 @@ def test_point_contact_on_a_mesh_three_times_finer_than_the_default_converges():
     assert fine.central_film == pytest.approx(half.central_film, rel=0.01)
 
 
+@pytest.mark.slow  # 45 s; the fallback itself runs in the fast suite through the runner
+# (tests/test_ehl_analysis.py::test_run_rescued_by_y_line_sweeps_says_so)
 def test_square_cells_fall_back_to_y_line_sweeps():
     """A user's mesh with cells not long across y: the a/b = 4 ellipse of the seed's
     aspect-ratio study (M = 1024, L = 6.9) on 129 x 129 nodes over -2.5a..1.5a, -2b..2b

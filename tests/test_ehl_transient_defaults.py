@@ -601,6 +601,7 @@ def test_report_says_when_the_steady_start_did_not_converge(tmp_path, monkeypatc
     assert not any("steps did not reach the tolerance" in n for n in outcome.notes)
 
 
+@pytest.mark.slow  # 300 steps on 201 x 51: 90 s
 def test_the_tail_of_a_step_relaxes_without_the_oscillation_damping(tmp_path):
     """The narrow contact of the seed's aspect-ratio study (a/b = 4, C against C, xi = 0.25) on
     square cells (201 x 51 over -2.5a..1.5a, -2b..2b), 300 steps as the roughness comes in.
