@@ -85,6 +85,15 @@ POINT_GAIN_EXPONENT = 1.0
 STALL_CYCLES = 20
 STALL_RATIO = 0.9
 
+#: A grid of a line contact's first grid sequence (:func:`solve_steady`) gives up, and leaves
+#: the solve to its fallback, once its best residual has not fallen below ``STALL_RATIO``
+#: times its value ``STUCK_SWEEPS`` sweeps before. A cam contact on a short domain (161
+#: nodes) kept its best at 1e-2 from sweep 1,000 to 20,000, a case file's 40,000 sweeps per
+#: grid took most of the run's 36 s; the slowest grid that converged (129 nodes, 14,120
+#: sweeps) halved its best every 1,000-2,000 sweeps (docs/ehl-robustness.md, "Line contacts
+#: on a short domain").
+STUCK_SWEEPS = 5000
+
 #: Sweep limit on the coarser grids of a point contact's grid sequence (at most ``max_iter``):
 #: a coarse grid only gives the next grid its start. A 6205 ball bearing's inner-race contact
 #: (M = 18,080, k = 9.3, docs/ehl-robustness.md) spent 5000 of its 6130 sweeps, 5 of 20 s,
@@ -566,7 +575,7 @@ def _film_scale(state) -> float:
 
 
 def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0,
-           tangent=None, load_factor=1.0, stall_refresh=None):
+           tangent=None, load_factor=1.0, stall_refresh=None, give_up=False):
     """Relax one grid to convergence; return (converged, residual, sweeps, history).
 
     The load target is ``load_factor`` times the problem's. Without ``tangent`` the
@@ -585,12 +594,16 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
     short domain (-1.5a..1.5a, 101-201 nodes) swung there at residual 0.15 with a refresh
     every 10 sweeps and converged with one every 3 or 1 (docs/ehl-robustness.md,
     "Line contacts on a short domain").
+
+    With ``give_up`` the relaxation stops unconverged once its best residual has not fallen
+    below ``STALL_RATIO`` times its value ``STUCK_SWEEPS`` sweeps before (:data:`STUCK_SWEEPS`).
     """
     target = state.problem.load_integral * load_factor
     if stall_refresh is None:
         stall_refresh = method == "line"
     state.start_iteration()
     cycle_residuals = []
+    bests = []  # (sweeps, best residual so far) after every refresh cycle
     history = []
     residual = np.inf
     sweeps = 0
@@ -616,6 +629,11 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
             state.refresh()
             return True, residual, sweeps, history
         cycle_residuals.append(residual)
+        bests.append((sweeps, min(residual, bests[-1][1]) if bests else residual))
+        if give_up and sweeps - bests[0][0] >= STUCK_SWEEPS:
+            before = next(b for n, b in reversed(bests) if n <= sweeps - STUCK_SWEEPS)
+            if bests[-1][1] > STALL_RATIO * before:
+                break
         if stall_refresh and refresh > 1 and len(cycle_residuals) > STALL_CYCLES \
                 and residual > STALL_RATIO * cycle_residuals[-1 - STALL_CYCLES]:
             refresh = max(1, refresh // 2)
@@ -874,6 +892,7 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             callback=callback, sweep_offset=total, tangent=tangent,
             stall_refresh=method == "line" or (tangents_from == "every_grid"
                                                and tangent is not None),
+            give_up=tangents_from == "below_default",
         )
         total += sweeps
         wanted = tangents_from == "every_grid" or (
