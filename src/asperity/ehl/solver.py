@@ -758,8 +758,10 @@ def solve_steady(
         finer than the default mesh gets ``0.01 (dX / dX_default)^3.5``
         (:data:`LINE_GAIN_EXPONENT`: the point update's load answers a shift of the
         separation the more slowly the finer the mesh, and a larger gain overshoots). When
-        that sequence ends unconverged it is solved again with every converged grid's
-        tangent steering the next (line contacts at L = 2). A point contact's grid finer
+        that sequence ends unconverged (a grid of it whose best residual has stopped falling
+        for :data:`STUCK_SWEEPS` sweeps ends it early) it is solved again with every
+        converged grid's tangent steering the next (line contacts at L = 2), refreshing the
+        far field more often where a grid stalls. A point contact's grid finer
         than the default mesh gets ``0.05 (dX / dX_default)`` (:data:`POINT_GAIN_EXPONENT`).
         A given value is used on every grid, without the tangent.
     initial_film : float, optional
