@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from asperity.ehl.anderson import AndersonMixer, _dot
+from asperity.ehl.anderson import AndersonMixer
 
 
 def _linear_map(n, radius, seed=0):
@@ -75,16 +75,6 @@ def test_incremental_gram_matrix_equals_the_direct_least_squares():
         gs.append(np.tanh(g(x)))
         x = mixer.mix(xs[-1], gs[-1])
         np.testing.assert_allclose(x, _reference_mix(xs, gs, 3), rtol=1e-9, atol=1e-12)
-
-
-def test_compiled_dot_equals_numpy_dot():
-    """The mixer's dot product (a compiled loop, kept off OpenBLAS' spinning threads) is the
-    dot product, to round-off, at a length where the summation order matters."""
-    rng = np.random.default_rng(3)
-    u, v = rng.standard_normal((2, 320_001))
-    assert abs(_dot(u, v) - np.dot(u, v)) <= 1e-12 * np.dot(np.abs(u), np.abs(v))
-    assert _dot(u[:1], v[:1]) == u[0] * v[0]
-    assert _dot(u[:0], v[:0]) == 0.0
 
 
 def test_a_dot_product_of_another_array_library_gives_the_same_iterates():

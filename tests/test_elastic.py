@@ -190,3 +190,27 @@ def test_tangential_transfer_limits():
     assert np.all(t.xy == 0)
     with pytest.raises(InputError, match="kx, ky"):
         tangential_transfer(0.0, 0.0, body)
+
+
+def test_kept_buffer_convolves_any_kernel_and_forgets_the_last_load():
+    """The non-periodic convolution in its kept FFT buffer: an uneven kernel (complex
+    spectrum, not the real product of an even one) against the direct sum, and a second load
+    after a first one gives what a fresh operator gives (the padding is cleared)."""
+    nx, ny, dx, dy = 7, 5, 0.3, 0.7
+
+    def kernel(X, Y):
+        return (X + 2.0 * Y + 0.5) / (1.0 + X**2 + Y**2)
+
+    rng = np.random.default_rng(5)
+    first, second = rng.random((2, nx, ny))
+    conv = Convolution.from_coefficients(kernel, dx, dy, (nx, ny), False)
+    conv(first)
+    direct = np.zeros((nx, ny))
+    for i in range(nx):
+        for j in range(ny):
+            for k in range(nx):
+                for m in range(ny):
+                    direct[i, j] += kernel((i - k) * dx, (j - m) * dy) * second[k, m]
+    np.testing.assert_allclose(conv(second), direct, rtol=1e-10, atol=1e-12)
+    fresh = Convolution.from_coefficients(kernel, dx, dy, (nx, ny), False)
+    np.testing.assert_array_equal(conv(second), fresh(second))

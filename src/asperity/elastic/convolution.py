@@ -64,6 +64,12 @@ class Convolution:
         if spectrum.shape != expected:
             raise ValueError(f"spectrum shape {spectrum.shape} does not match grid {expected}")
         self.spectrum = spectrum
+        # An even kernel (Love's coefficients, the EHL film kernel) has a real spectrum (to
+        # round-off): __call__ multiplies by its real part, half the work of a complex product
+        scale = np.abs(spectrum).max(initial=0.0)
+        even = np.abs(np.imag(spectrum)).max(initial=0.0) <= 1e-12 * scale
+        self._factor = np.ascontiguousarray(np.real(spectrum)) if even else spectrum
+        self._work = None
 
     @classmethod
     def from_coefficients(cls, coefficient, dx: float, dy: float, shape, periodic: bool):
@@ -112,11 +118,30 @@ class Convolution:
         return sfft.irfft(columns, n=self.fft_shape[1], axis=1, workers=-1)[:, : self.shape[1]]
 
     def __call__(self, load: np.ndarray) -> np.ndarray:
-        """Convolve: the displacement due to ``load`` on the grid."""
+        """Convolve: the displacement due to ``load`` on the grid.
+
+        Non-periodic: the transforms of :meth:`spectrum_of` and :meth:`inverse` in one
+        complex buffer on the FFT grid that the instance keeps (the x-transforms in place, the
+        kernel product in place, by the real spectrum of an even kernel), so that a solver
+        that convolves at every iteration allocates, zero-fills and copies no padded arrays:
+        5.5 against 8.7 ms on 801 x 201 cells (an EHL refresh). The buffer makes an instance
+        not re-entrant: one thread per instance.
+        """
         load = np.asarray(load, dtype=float)
         if load.shape != self.shape:
             raise ValueError(f"load of shape {load.shape} on a grid of shape {self.shape}")
-        return self.from_spectrum(self.spectrum_of(load))
+        if self.periodic:
+            return self.from_spectrum(self.spectrum_of(load))
+        (nx, ny), (fx, fy) = self.shape, self.fft_shape
+        if self._work is None:
+            self._work = np.empty((fx, fy // 2 + 1), dtype=complex)
+        work = self._work
+        work[:nx] = sfft.rfft(load, n=fy, axis=1, workers=-1)
+        work[nx:] = 0.0
+        work = sfft.fft(work, axis=0, overwrite_x=True, workers=-1)
+        work *= self._factor
+        work = sfft.ifft(work, axis=0, overwrite_x=True, workers=-1)
+        return sfft.irfft(work[:nx], n=fy, axis=1, workers=-1)[:, :ny]
 
 
 def _periodic_wavevectors(shape, dx: float, dy: float):
