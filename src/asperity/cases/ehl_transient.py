@@ -155,9 +155,10 @@ class TransientSolverSpec(CaseModel):
     """Relative convergence tolerance per time step."""
     max_sweeps: Annotated[int, Field(ge=1, le=100_000)] = 400
     """Sweep limit per time step."""
-    refresh: Annotated[int, Field(ge=1, le=1000)] = 3
+    refresh: Annotated[int, Field(ge=1, le=1000)] | None = None
     """Sweeps between refreshes of the far-field deflection at the start of a timestep (every
-    sweep once the step's residual is below 0.3)."""
+    sweep once the step's residual is below 0.3); default 3, 1 for the row solve of a line
+    contact."""
     acceleration: Annotated[int, Field(ge=0, le=20)] | None = None
     """Memory of the Anderson acceleration of the refresh cycles (0: off; default 3 with line
     relaxation)."""

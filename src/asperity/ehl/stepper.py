@@ -35,7 +35,8 @@ from .solver import (
     check_damping,
 )
 
-__all__ = ["BLOWN_UP_FLOOR", "BLOWN_UP_RISE", "BLOWN_UP_SWEEPS", "DIVERGED", "MIX_BELOW",
+__all__ = ["BLOWN_UP_FLOOR", "BLOWN_UP_RISE", "BLOWN_UP_SWEEPS", "DIVERGED", "LINE_REFRESH",
+           "MIX_BELOW",
            "REFRESH_EVERY_SWEEP_BELOW", "UNDAMPED_BELOW",
            "FixedPointCheck", "StepOptions", "StepReport", "TimeStepper", "reynolds_operator"]
 
@@ -79,6 +80,16 @@ REFRESH_EVERY_SWEEP_BELOW = 0.3
 #: benchmark at the seed's spacing 14.70 against 13.97 (0.1: 14.20, 0.3: 14.40); undamped
 #: from the start it took 20.77 (docs/ehl-transient.md, "Cost").
 UNDAMPED_BELOW = 1e-2
+
+#: Sweeps between far-field refreshes of the row solve of a line contact (point contacts: 3).
+#: A single row's FFT refresh costs little more than the call's overheads, and with a refresh
+#: every 3 sweeps a smooth, lightly loaded roller (Moes M = 5.3, L = 21) blew up at the first
+#: try of a step, its changes growing 2.5-3 times per sweep within a refresh cycle. At every
+#: sweep: the roller 21.5 -> 17.1 sweeps per step and no step relaxed again; the rough
+#: ``holmes-rough-AA-line`` 21.2 -> 19.6 (10.4 -> 9.9 s); a user's Newtonian spur reducer
+#: (1984 steps) 12 -> 9 failed steps, 142 -> 133 s; a 20,160-step smooth line 9.9 -> 9.0
+#: sweeps per step at the same wall time (docs/ehl-transient.md, "Session 32").
+LINE_REFRESH = 1
 
 #: Rise of the residual, over its best of the try, at which an undamped step takes the
 #: oscillation damping back for the rest of the try. A user's Newtonian gear contact (line,
@@ -145,10 +156,11 @@ class StepOptions:
 
     @classmethod
     def for_problem(cls, problem, *, method=None, theta=0.5, near=2, tol=1e-4, max_sweeps=400,
-                    refresh=3, acceleration=None, load_gain=None, damping=0.7) -> StepOptions:
+                    refresh=None, acceleration=None, load_gain=None, damping=0.7) -> StepOptions:
         """Options for ``problem`` with its defaults (see :func:`asperity.ehl.solve_transient`).
 
         ``method`` None: line relaxation (a line contact's one row solved at once).
+        ``refresh`` None: 1 for the row solve of a line contact (``LINE_REFRESH``), else 3.
         ``acceleration`` None: 3 with line relaxation, 0 with the point update. ``load_gain``
         None: ``0.15 min(1, b/a)`` (point contact), 0.03 (line contact).
 
@@ -167,6 +179,8 @@ class StepOptions:
         load_gain = check_positive("load_gain", load_gain)
         damping = check_damping(damping)
         max_sweeps = check_int("max_sweeps", max_sweeps, 1)
+        if refresh is None:
+            refresh = LINE_REFRESH if line and method == "line" else 3
         refresh = check_int("refresh", refresh, 1)
         near = check_int("near", near, 0)
         if acceleration is None:

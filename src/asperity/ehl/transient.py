@@ -389,7 +389,7 @@ def solve_transient(
     near: int = 2,
     tol: float = 1e-4,
     max_iter: int = 400,
-    refresh: int = 3,
+    refresh: int | None = None,
     acceleration: int | None = None,
     load_gain: float | None = None,
     damping: float = 0.7,
@@ -449,9 +449,10 @@ def solve_transient(
         then with the load gain halved, up to twice
         (:meth:`~asperity.ehl.stepper.TimeStepper.advance`), so it can take five times as
         many.
-    refresh : int
+    refresh : int, optional
         Sweeps between FFT refreshes of the far field and the edge films at the start of a
-        step, until a refresh cycle ends below a residual of
+        step (default 3; 1 for the row solve of a line contact,
+        :data:`~asperity.ehl.stepper.LINE_REFRESH`), until a refresh cycle ends below a residual of
         :data:`~asperity.ehl.stepper.REFRESH_EVERY_SWEEP_BELOW`; then at every sweep. 1 from
         the first step that does not converge with it (``refresh_intervals`` of the result).
     acceleration : int, optional

@@ -140,10 +140,11 @@ def _fallback_notes(case, problem, res) -> list[str]:
     again. Past :data:`MAX_FALLBACK_NOTES` steps relaxed again the rest are counted in one
     note (a user's gear case relaxed 41 steps again, a wall of notes over the results)."""
     options = StepOptions.for_problem(problem, method=case.solver.method,
+                                      refresh=case.solver.refresh,
                                       load_gain=case.solver.load_gain)
     update = "row solve" if options.method == "line" else "point update"
     relaxed_again = np.flatnonzero(res.tries[:res.steps_done] > 1) + 1
-    own = (case.solver.refresh, options.load_gain, False)
+    own = (options.refresh, options.load_gain, False)
     notes = []
     previous, since = own, 0
     for step in range(res.steps_done):
