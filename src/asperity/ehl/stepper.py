@@ -36,8 +36,7 @@ from .solver import (
 )
 
 __all__ = ["BLOWN_UP_FLOOR", "BLOWN_UP_RISE", "BLOWN_UP_SWEEPS", "DIVERGED", "LINE_REFRESH",
-           "MIX_BELOW",
-           "REFRESH_EVERY_SWEEP_BELOW", "UNDAMPED_BELOW",
+           "MIX_BELOW", "REFRESH_EVERY_SWEEP_BELOW", "UNDAMPED_BELOW",
            "FixedPointCheck", "StepOptions", "StepReport", "TimeStepper", "reynolds_operator"]
 
 #: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
