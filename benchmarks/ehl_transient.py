@@ -24,7 +24,7 @@ Cost): an estimate, not a run.
 ``asperity run`` does (figures and files aside): wall time against the 8 min goal of issue 17,
 steps, sweeps per step in the warm-up and counting phases, and the results compared in
 docs/ehl-transient.md (contact-time fraction, largest pressure and contact count rate, steady
-central film). Long: 27-43 min on 2 cores, with the speed of this shared machine.
+central film). Long: 20-43 min on 2 cores, with the speed of this shared machine.
 
 Like the command line, the benchmark keeps freed memory for reuse
 (:func:`asperity.memory.retain_freed_memory`); ``--default-allocator`` times without it.
