@@ -174,7 +174,7 @@ def main():
     parser.add_argument("--meshes", default="131x29,261x57,571x201")
     parser.add_argument("--steps", type=int, default=60, help="rough steps timed per mesh")
     parser.add_argument("--full", action="store_true",
-                        help="also run the full paper case end to end (27-43 min)")
+                        help="also run the full paper case end to end (20-43 min)")
     parser.add_argument("--default-allocator", action="store_true",
                         help="leave glibc's malloc thresholds alone (the CLI raises them)")
     args = parser.parse_args()
