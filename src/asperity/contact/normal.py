@@ -35,7 +35,6 @@ from dataclasses import dataclass
 
 import numba
 import numpy as np
-import scipy.fft as sfft
 
 from ..elastic import grid_spacing, normal_influence, normal_operator
 from ..errors import InputError, check_positive
@@ -211,20 +210,14 @@ def _update(p, g, t, tau):
 
 
 class _Transforms:
-    """Real FFTs on the operator's grid, pruned for the zero-padded (non-periodic) case.
-
-    The forward transform of a load that is zero outside the physical ``nx`` x ``ny`` quarter
-    of the padded grid transforms only the ``nx`` non-zero rows along y; the inverse keeps only
-    those rows before the last transform (DC-FFT, Liu, Wang & Liu 2000). The layout is that of
-    ``scipy.fft.rfft2`` on the FFT grid, so :attr:`Convolution.spectrum` applies unchanged.
-    """
+    """The operator's transforms (:meth:`Convolution.spectrum_of`, :meth:`Convolution.inverse`,
+    pruned for the zero-padded case) with the kernel's real spectrum, the energy weights of
+    Parseval's sum and a kept buffer for the kernel product."""
 
     def __init__(self, op):
-        self.shape = op.shape
-        self.fft_shape = op.fft_shape
-        self.periodic = op.periodic
+        self.op = op
         self.kernel = np.ascontiguousarray(op.spectrum.real)
-        fx, fy = self.fft_shape
+        fx, fy = op.fft_shape
         # Parseval in rfft layout: columns 1 .. (fy - 1) // 2 stand for two conjugate columns
         weight = np.full(fy // 2 + 1, 2.0)
         weight[0] = 1.0
@@ -234,20 +227,12 @@ class _Transforms:
         self._product = np.empty(self.kernel.shape, dtype=complex)
 
     def forward(self, a):
-        if self.periodic:
-            return sfft.rfft2(a, workers=-1)
-        fx, fy = self.fft_shape
-        rows = sfft.rfft(a, n=fy, axis=1, workers=-1)
-        return sfft.fft(rows, n=fx, axis=0, workers=-1, overwrite_x=True)
+        return self.op.spectrum_of(a)
 
     def displacement(self, load_spectrum):
         """K p on the grid (C-contiguous) from the spectrum of p."""
         product = np.multiply(load_spectrum, self.kernel, out=self._product)
-        if self.periodic:
-            return sfft.irfft2(product, s=self.fft_shape, workers=-1, overwrite_x=True)
-        fx, fy = self.fft_shape
-        rows = sfft.ifft(product, axis=0, workers=-1, overwrite_x=True)[: self.shape[0]]
-        return np.ascontiguousarray(sfft.irfft(rows, n=fy, axis=1, workers=-1)[:, : self.shape[1]])
+        return np.ascontiguousarray(self.op.inverse(product))
 
 
 def _validate(gap0, x, y, load, approach):

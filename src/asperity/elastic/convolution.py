@@ -64,12 +64,7 @@ class Convolution:
         if spectrum.shape != expected:
             raise ValueError(f"spectrum shape {spectrum.shape} does not match grid {expected}")
         self.spectrum = spectrum
-        # An even kernel (Love's coefficients, the EHL film kernel) has a real spectrum (to
-        # round-off): __call__ multiplies by its real part, half the work of a complex product
-        scale = np.abs(spectrum).max(initial=0.0)
-        even = np.abs(np.imag(spectrum)).max(initial=0.0) <= 1e-12 * scale
-        self._factor = np.ascontiguousarray(np.real(spectrum)) if even else spectrum
-        self._work = None
+        self._work = self._factor = None  # __call__'s buffer and kernel product, on first use
 
     @classmethod
     def from_coefficients(cls, coefficient, dx: float, dy: float, shape, periodic: bool):
@@ -88,17 +83,23 @@ class Convolution:
         kernel = np.asarray(coefficient(X, Y), dtype=float)
         return cls(sfft.rfft2(kernel, workers=-1), (nx, ny), periodic)
 
-    def spectrum_of(self, load: np.ndarray) -> np.ndarray:
+    def spectrum_of(self, load: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Forward transform of a load on the grid (zero-padded when non-periodic).
 
         Non-periodic: the real transforms along y run over the ``nx`` loaded rows only (the
         padding rows are zero), then the complex ones along x over the padded length; the
-        result equals ``rfft2(load, s=fft_shape)``.
+        result equals ``rfft2(load, s=fft_shape)``. With ``out`` (complex, the spectrum's
+        shape) the x-transforms run in place in it and it is returned.
         """
         if self.periodic:
             return sfft.rfft2(load, workers=-1)
-        rows = sfft.rfft(load, n=self.fft_shape[1], axis=1, workers=-1)
-        return sfft.fft(rows, n=self.fft_shape[0], axis=0, overwrite_x=True, workers=-1)
+        (nx, _), (fx, fy) = self.shape, self.fft_shape
+        rows = sfft.rfft(load, n=fy, axis=1, workers=-1)
+        if out is None:
+            return sfft.fft(rows, n=fx, axis=0, overwrite_x=True, workers=-1)
+        out[:nx] = rows
+        out[nx:] = 0.0
+        return sfft.fft(out, axis=0, overwrite_x=True, workers=-1)
 
     def from_spectrum(self, load_spectrum: np.ndarray) -> np.ndarray:
         """Displacement on the grid from a load spectrum (kernel product, inverse FFT, crop).
@@ -120,28 +121,27 @@ class Convolution:
     def __call__(self, load: np.ndarray) -> np.ndarray:
         """Convolve: the displacement due to ``load`` on the grid.
 
-        Non-periodic: the transforms of :meth:`spectrum_of` and :meth:`inverse` in one
-        complex buffer on the FFT grid that the instance keeps (the x-transforms in place, the
-        kernel product in place, by the real spectrum of an even kernel), so that a solver
-        that convolves at every iteration allocates no padded complex arrays: 5.5 against
-        8.7 ms on 801 x 201 cells (an EHL refresh). The buffer makes an instance not
-        re-entrant: one thread per instance.
+        Non-periodic: :meth:`spectrum_of` and :meth:`inverse` in one complex buffer on the FFT
+        grid that the instance keeps, the kernel product in place (by the real spectrum of an
+        even kernel), so that a solver that convolves at every iteration allocates no padded
+        complex arrays: 5.5 against 8.7 ms on 801 x 201 cells (an EHL refresh). The buffer
+        makes an instance not re-entrant: one thread per instance.
         """
         load = np.asarray(load, dtype=float)
         if load.shape != self.shape:
             raise ValueError(f"load of shape {load.shape} on a grid of shape {self.shape}")
         if self.periodic:
             return self.from_spectrum(self.spectrum_of(load))
-        (nx, ny), (fx, fy) = self.shape, self.fft_shape
         if self._work is None:
-            self._work = np.empty((fx, fy // 2 + 1), dtype=complex)
-        work = self._work
-        work[:nx] = sfft.rfft(load, n=fy, axis=1, workers=-1)
-        work[nx:] = 0.0
-        work = sfft.fft(work, axis=0, overwrite_x=True, workers=-1)
+            self._work = np.empty(self.spectrum.shape, dtype=complex)
+            # an even kernel (Love's coefficients, the EHL film kernel) has a real spectrum
+            # (to round-off): its real part, half the work of a complex product
+            spectrum = self.spectrum
+            even = np.abs(np.imag(spectrum)).max() <= 1e-12 * np.abs(spectrum).max()
+            self._factor = np.ascontiguousarray(np.real(spectrum)) if even else spectrum
+        work = self.spectrum_of(load, out=self._work)
         work *= self._factor
-        work = sfft.ifft(work, axis=0, overwrite_x=True, workers=-1)
-        return sfft.irfft(work[:nx], n=fy, axis=1, workers=-1)[:, :ny]
+        return self.inverse(work)
 
 
 def _periodic_wavevectors(shape, dx: float, dy: float):
