@@ -134,6 +134,7 @@ class GPUState:
         self.last_change = cp.zeros_like(self.P)
         self.has_last = 0
         self.damping = state.damping
+        self.relaxation = 1.0
         self.derivatives = False
 
     @property
@@ -181,7 +182,10 @@ class GPUState:
 
     def sweep(self, method="line"):
         """Flow factors (with slopes once per refresh while ``lag_derivatives``), the zebra
-        line sweep, damping; returns (max |dP|, max |dH|) on the host."""
+        line sweep, damping; returns (max |dP|, max |dH|) on the host. The under-relaxation
+        of the stepper's last fallback is not in the CUDA kernels."""
+        if self.relaxation != 1.0:
+            raise NotImplementedError("the CUDA sweep has no under-relaxation (relaxation 1 only)")
         cp = self.cp
         self.flow(not (self.derivatives and self.lag_derivatives))
         self.derivatives = True

@@ -200,11 +200,29 @@ def test_damping_scales_only_the_reversing_changes():
     assert 0 < reverse.sum() < reverse.size
     expected_p = np.where(reverse, before_p + 0.7 * (p - before_p), p)
     expected_h = np.where(reverse, before_h + 0.7 * (h - before_h), h)
-    damp_oscillations(p, h, before_p, before_h, last, 0.7, True)
+    damp_oscillations(p, h, before_p, before_h, last, 0.7, True, 1.0)
     np.testing.assert_allclose(p, expected_p, rtol=1e-15)
     np.testing.assert_allclose(h, expected_h, rtol=1e-15)
     np.testing.assert_allclose(last, expected_p - before_p, rtol=1e-12)
     p2, h2 = p + 1.0, h.copy()
-    damp_oscillations(p2, h2, p, h, last, 0.7, False)  # no previous change: nothing damped
+    damp_oscillations(p2, h2, p, h, last, 0.7, False, 1.0)  # no previous change: nothing damped
     np.testing.assert_array_equal(p2, p + 1.0)
     np.testing.assert_allclose(last, 1.0)
+
+
+def test_relaxation_scales_every_change_and_the_reversing_ones_again():
+    """Under-relaxation 0.5 moves every node to before + 0.5 * change, a reversing node to
+    before + 0.5 * 0.7 * change (independent expressions of the two factors)."""
+    rng = np.random.default_rng(8)
+    before_p, before_h = rng.uniform(0, 1, (2, 9, 4))
+    new_p = before_p + rng.standard_normal((9, 4))
+    new_h = before_h + rng.standard_normal((9, 4))
+    last = rng.standard_normal((9, 4))
+    reverse = (new_p - before_p) * last < 0
+    assert 0 < reverse.sum() < reverse.size
+    factor = np.where(reverse, 0.35, 0.5)
+    p, h = new_p.copy(), new_h.copy()
+    damp_oscillations(p, h, before_p, before_h, last, 0.7, True, 0.5)
+    np.testing.assert_allclose(p - before_p, factor * (new_p - before_p), rtol=1e-12)
+    np.testing.assert_allclose(h - before_h, factor * (new_h - before_h), rtol=1e-12)
+    np.testing.assert_allclose(last, p - before_p, rtol=1e-12)

@@ -174,14 +174,16 @@ def test_ehl_max_sweeps_is_the_old_spelling_of_max_iter():
     np.testing.assert_array_equal(old.pressure, new.pressure)
     with pytest.raises(TypeError, match="both"):
         solve_steady(prob, nx=33, max_iter=30, max_sweeps=30)
-    # refresh 1: an unconverged step is relaxed again with half the load gain, twice, each
-    # try limited to max_iter sweeps; later steps keep the quartered gain and are not retried
+    # refresh 1: an unconverged step is relaxed again with half the load gain, twice, then
+    # under-relaxed, each try limited to max_iter sweeps; later steps keep the quartered gain
+    # and the under-relaxation and are not retried
     options = dict(nx=33, counting_steps=2, warmup_steps=0, steady=new, refresh=1)
     new = solve_transient(prob, max_iter=3, **options)
     with pytest.warns(DeprecationWarning, match="solve_transient: 'max_sweeps'"):
         old = solve_transient(prob, max_sweeps=3, **options)
-    assert list(new.sweeps) == [9, 3]
+    assert list(new.sweeps) == [12, 3]
     np.testing.assert_allclose(new.load_gains, 0.03 / 4)
+    np.testing.assert_allclose(new.relaxation, 0.5)
     np.testing.assert_array_equal(old.sweeps, new.sweeps)
     np.testing.assert_array_equal(old.pressure, new.pressure)
 

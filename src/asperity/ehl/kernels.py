@@ -28,8 +28,8 @@ row of nodes at once, with the Reynolds x-couplings, the deflection Laplacian in
 2 x 2 (p_i, h_i) blocks, and a y-line update (:func:`column_sweep`) that solves every
 ``x = const`` column with the y-couplings implicit, for cells that are not long across the
 entrainment direction (docs/ehl-robustness.md, "Square cells").
-:func:`damp_oscillations` damps a sweep's oscillating changes and :func:`far_field` evaluates
-``efar`` at a far-field refresh.
+:func:`damp_oscillations` damps a sweep's oscillating changes (and under-relaxes them all)
+and :func:`far_field` evaluates ``efar`` at a far-field refresh.
 """
 
 from __future__ import annotations
@@ -488,22 +488,27 @@ def line_sweep(p, h, eps_x, eps_y, rho, efar, rhs_t, lam, dx, dy, theta, mass, c
 
 
 @numba.njit(cache=True, parallel=True)
-def damp_oscillations(p, h, p_before, h_before, last_change, damping, has_last):
-    """Scale by ``damping`` the change of a sweep at nodes where p moves against its last change.
+def damp_oscillations(p, h, p_before, h_before, last_change, damping, has_last, relaxation):
+    """Scale by ``damping`` the change of a sweep at nodes where p moves against its last
+    change, and by ``relaxation`` the change at every node.
 
     ``p, h`` hold the sweep's result and ``p_before, h_before`` the iterate it started from;
-    where ``(p - p_before) * last_change < 0`` (and ``has_last``), p and h are moved back to
-    ``before + damping * (new - before)``. ``last_change`` becomes this sweep's (damped) change
-    of p. All arrays share one shape and are updated in place.
+    p and h are moved back to ``before + factor * (new - before)`` with ``factor =
+    relaxation``, times ``damping`` where ``(p - p_before) * last_change < 0`` (and
+    ``has_last``). ``last_change`` becomes this sweep's (damped) change of p. All arrays share
+    one shape and are updated in place.
     """
     nx, ny = p.shape
     for j in numba.prange(ny):  # x-fastest fields (asperity.ehl.solver.EHLState)
         for i in range(nx):
             change = p[i, j] - p_before[i, j]
+            factor = relaxation
             if has_last and change * last_change[i, j] < 0.0:
-                change *= damping
+                factor *= damping
+            if factor != 1.0:
+                change *= factor
                 p[i, j] = p_before[i, j] + change
-                h[i, j] = h_before[i, j] + damping * (h[i, j] - h_before[i, j])
+                h[i, j] = h_before[i, j] + factor * (h[i, j] - h_before[i, j])
             last_change[i, j] = change
 
 

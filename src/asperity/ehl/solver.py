@@ -161,6 +161,9 @@ class EHLState:
     damping : float
         Factor on the change of P and H at nodes that oscillate from sweep to sweep
         (:meth:`sweep`); 1 switches it off.
+    relaxation : float
+        Factor on the change of P and H at every node (under-relaxation, :meth:`sweep`); 1
+        (default) switches it off.
     density_newton : bool
         Whether the x-line relaxation takes the density's Newton term (:meth:`_sweep`);
         on by default, off in the transient solver.
@@ -217,6 +220,7 @@ class EHLState:
         self.efar = np.zeros(shape)
         self.refreshes = 0
         self.damping = 1.0
+        self.relaxation = 1.0
         self.density_newton = True
         self.y_lines = False
         self._p_before = np.empty(shape, order="F")
@@ -321,16 +325,18 @@ class EHLState:
         Oscillation damping: at nodes where this sweep changes P with the opposite sign to the
         previous sweep (a node alternating between two states, e.g. cavitated and fluid, or two
         values of its lagged flow factor ``eps(p, h)`` that drive its neighbours), the changes
-        of P and H are scaled by ``damping``. The fixed point is unchanged; the returned
-        changes are the undamped ones. :meth:`start_iteration` forgets the previous change.
+        of P and H are scaled by ``damping``; with ``relaxation`` < 1 the changes at every node
+        are scaled by it as well (under-relaxation). The fixed point is unchanged; the returned
+        changes are the sweep's own, before either factor. :meth:`start_iteration` forgets the
+        previous change.
         """
-        if self.damping >= 1.0:
+        if self.damping >= 1.0 and self.relaxation >= 1.0:
             return self._sweep(method)
         np.copyto(self._p_before, self.P)
         np.copyto(self._h_before, self.H)
         dp, dh = self._sweep(method)
         damp_oscillations(self.P, self.H, self._p_before, self._h_before, self._last_change,
-                          self.damping, self._has_change)
+                          self.damping, self._has_change, self.relaxation)
         self._has_change = True
         return dp, dh
 

@@ -156,8 +156,9 @@ class StepHistory:
         ``refresh_intervals`` (sweeps between refreshes at the step's end), ``load_gains``
         (the load gain at the step's end), ``density_newton`` (whether the row solve kept the
         density's Newton term at the step's end), ``tries`` (relaxations of the step, 1 at
-        the first try), ``y_lines`` (its last relaxation added y-line sweeps); NaN, 0 or
-        False for steps not done.
+        the first try), ``y_lines`` (its last relaxation added y-line sweeps),
+        ``relaxation`` (the factor on every change of a sweep at the step's end, 1: none);
+        NaN, 0 or False for steps not done.
     centre : dict of ndarray
         ``centre_pressure``, ``centre_film``, ``centre_surface1``, ``centre_surface2`` along
         y = 0 at the snapshot steps, shape ``(len(snapshot_steps), nx)``.
@@ -175,7 +176,8 @@ class StepHistory:
                        "load_gains": np.full(steps, np.nan),
                        "density_newton": np.zeros(steps, dtype=bool),
                        "tries": np.zeros(steps, dtype=np.int64),
-                       "y_lines": np.zeros(steps, dtype=bool)}
+                       "y_lines": np.zeros(steps, dtype=bool),
+                       "relaxation": np.full(steps, np.nan)}
         self.centre = {name: np.full((self.snapshot_steps.size, nx), np.nan) for name in
                        ("centre_pressure", "centre_film", "centre_surface1", "centre_surface2")}
 
@@ -195,6 +197,7 @@ class StepHistory:
         self.record["density_newton"][n] = report.density_newton
         self.record["tries"][n] = report.tries
         self.record["y_lines"][n] = report.y_lines
+        self.record["relaxation"][n] = report.relaxation
 
     def wants_snapshot(self, step: int) -> bool:
         """Whether the centre line of step ``step`` is kept."""

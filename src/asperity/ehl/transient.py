@@ -192,6 +192,9 @@ class TransientResult(SolverResult):
     y_lines : ndarray of bool
         Per step: relaxed once more with y-line sweeps after failing with every setting
         (:attr:`~asperity.ehl.stepper.TimeStepper.can_add_y_lines`).
+    relaxation : ndarray
+        Per step: the factor on every node's change of a sweep as the step ended (1: none;
+        :data:`~asperity.ehl.stepper.UNDER_RELAXATION` after the last fallback).
     fixed_point_pressure, fixed_point_film : float
         How far the last step is from the fixed point of its equations: the largest change of
         p (in Hertz pressures) and of h (in central-film estimates) when it is relaxed on to a
@@ -258,6 +261,7 @@ class TransientResult(SolverResult):
     density_newton: np.ndarray
     tries: np.ndarray
     y_lines: np.ndarray
+    relaxation: np.ndarray
     fixed_point_pressure: float
     fixed_point_film: float
     fixed_point_sweeps: int
@@ -581,7 +585,8 @@ def solve_transient(
             stepper.resume_settings(int(history.record["refresh_intervals"][start - 1]),
                                     float(history.record["load_gains"][start - 1]),
                                     bool(history.record["density_newton"][start - 1]),
-                                    start - 1 - retried[-1] if retried.size else start)
+                                    start - 1 - retried[-1] if retried.size else start,
+                                    float(history.record["relaxation"][start - 1]))
     else:
         if steady is None:
             steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,

@@ -76,6 +76,9 @@ def _dataset(case, problem, res) -> xr.Dataset:
                           "relaxations of the step (1: converged at the first try)"),
         "y_lines": variable("step", res.y_lines.astype("i1"), "1",
                             "step relaxed once more with y-line sweeps (1) or not (0)"),
+        "relaxation": variable("step", res.relaxation, "1",
+                               "factor on every change of a sweep (1: none; under-relaxed "
+                               "in the last fallback)"),
         "film_counts": variable("film_bin", res.film_counts, "1",
                                 "film thickness histogram over the counting period"),
         "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
@@ -116,8 +119,8 @@ def _listed(items: list[str]) -> str:
 
 
 def _setting_changes(start, end, update: str) -> tuple[str, str]:
-    """The settings ``(refresh, load gain, density term)`` that differ between ``start`` and
-    ``end``, as the report names them before and after."""
+    """The settings ``(refresh, load gain, density term, relaxation)`` that differ between
+    ``start`` and ``end``, as the report names them before and after."""
     before, after = [], []
     if end[0] != start[0]:
         before.append(f"the far field refreshed every {start[0]} sweeps")
@@ -129,6 +132,11 @@ def _setting_changes(start, end, update: str) -> tuple[str, str]:
     if end[1] != start[1]:
         before.append(f"the load gain {start[1]:.3g}")
         after.append(f"the load gain {end[1]:.3g}")
+    if end[3] != start[3]:
+        before.append("each sweep's change applied in full" if start[3] == 1.0
+                      else f"each sweep's change under-relaxed by {start[3]:.3g}")
+        after.append(f"each sweep's change under-relaxed by {end[3]:.3g}" if end[3] != 1.0
+                     else "each sweep's change applied in full")
     return _listed(before), _listed(after)
 
 
@@ -144,7 +152,7 @@ def _fallback_notes(case, problem, res) -> list[str]:
                                       load_gain=case.solver.load_gain)
     update = "row solve" if options.method == "line" else "point update"
     relaxed_again = np.flatnonzero(res.tries[:res.steps_done] > 1) + 1
-    own = (options.refresh, options.load_gain, False)
+    own = (options.refresh, options.load_gain, False, 1.0)
     notes = []
     previous, since = own, 0
     for step in range(res.steps_done):
@@ -155,9 +163,9 @@ def _fallback_notes(case, problem, res) -> list[str]:
                                     "after the last step relaxed again, the case's own settings "
                                     "were taken up again."))
         now = (int(res.refresh_intervals[step]), float(res.load_gains[step]),
-               bool(res.density_newton[step]))
+               bool(res.density_newton[step]), float(res.relaxation[step]))
         if res.tries[step] > 1:
-            changed = (start[0] != now[0]) + (start[1] != now[1]) + (start[2] != now[2])
+            changed = sum(a != b for a, b in zip(start, now, strict=True))
             text = f"Step {step + 1} did not converge"
             if changed:
                 before, after = _setting_changes(start, now, update)
@@ -178,7 +186,8 @@ def _fallback_notes(case, problem, res) -> list[str]:
     listed = ", ".join(str(s) for s in rest[:10]) + (", ..." if rest.size > 10 else "")
     return [text for step, text in notes if step <= last] + [
         f"{rest.size} more steps were relaxed again ({listed}): result.nc's tries, "
-        "refresh_interval, load_gain and density_newton give every step's settings."]
+        "refresh_interval, load_gain, density_newton and relaxation give every step's "
+        "settings."]
 
 
 def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
