@@ -345,7 +345,7 @@ def test_the_stepper_goes_back_to_the_run_settings_after_steps_without_a_retry(
         solve_transient(problem, checkpoint=path, checkpoint_every=8, callback=kill, **args)
     resumed = solve_transient(problem, checkpoint=path, checkpoint_every=8, resume=True,
                               **args)
-    for name in ("pressure", "sweeps", "tries", "refresh_intervals", "max_pressure"):
+    for name in ("pressure", "sweeps", "tries", "refresh_intervals", "max_pressure", "relaxation"):
         np.testing.assert_array_equal(getattr(resumed, name), getattr(res, name))
 
     case = _bump(surface2={"kind": "smooth"}, speeds={"xi": 0.0}, grid={"nx": 129, "ny": 129},
@@ -409,6 +409,27 @@ def test_a_step_that_fails_with_the_density_term_is_relaxed_again_with_the_densi
     assert not report.converged and report.density_newton
     assert report.relaxation == UNDER_RELAXATION
     assert report.tries == 4 and report.y_lines is True
+
+
+def test_a_resumed_run_takes_up_the_under_relaxation_its_last_step_ended_with(smooth_fine):
+    """A checkpoint's step that ended under-relaxed (the last fallback) gives the resumed
+    stepper that setting; NaN (a checkpoint written before it was recorded) or 1 leaves the
+    run's own."""
+    problem, domain = smooth_fine
+    x, y = problem.grid(33, 33, domain)
+    options = StepOptions.for_problem(problem)
+
+    def fresh():
+        return TimeStepper(problem, x, y, options, 0.5 * (x[1] - x[0]) / problem.u1,
+                           problem.film_estimate() / problem.film_scale)
+
+    resumed = fresh()
+    resumed.resume_settings(3, options.load_gain, False, 5, UNDER_RELAXATION)
+    assert resumed.options.relaxation == UNDER_RELAXATION and resumed.since_retry == 5
+    for value in (np.nan, 1.0):
+        plain = fresh()
+        plain.resume_settings(3, options.load_gain, False, 5, value)
+        assert plain.options == options
 
 
 @pytest.mark.parametrize("ny, rescued", [(65, True), (17, False)])
