@@ -495,8 +495,8 @@ def damp_oscillations(p, h, p_before, h_before, last_change, damping, has_last, 
     ``p, h`` hold the sweep's result and ``p_before, h_before`` the iterate it started from;
     p and h are moved back to ``before + factor * (new - before)`` with ``factor =
     relaxation``, times ``damping`` where ``(p - p_before) * last_change < 0`` (and
-    ``has_last``). ``last_change`` becomes this sweep's (damped) change of p. All arrays share
-    one shape and are updated in place.
+    ``has_last``). ``last_change`` becomes this sweep's change of p as scaled. All arrays
+    share one shape and are updated in place.
     """
     nx, ny = p.shape
     for j in numba.prange(ny):  # x-fastest fields (asperity.ehl.solver.EHLState)

@@ -106,7 +106,7 @@ REDAMP_RISE = 2.0
 #: 10-30 GPa) failed 9 of its 1,984 steps: each try ran into an exact limit cycle of the
 #: active set, with changes of 1.5-12 p_h per sweep to its end, and neither the far field
 #: implicit over the whole row (``near`` 127) nor the other fallbacks broke it. Under-relaxed
-#: by 0.5, steps 1,250-1,280 all converged at their first try, 32-294 sweeps each
+#: by 0.5, steps 1,251-1,280 all converged at their first try, 32-294 sweeps each
 #: (docs/ehl-transient.md, "Session 33").
 UNDER_RELAXATION = 0.5
 
