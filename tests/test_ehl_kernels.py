@@ -188,16 +188,23 @@ def test_density_newton_term_is_the_wedge_derivative(rough_state):
     assert checked > 100
 
 
+def _sweep_changes(seed):
+    """A random iterate before a sweep, the sweep's result and the previous change of p on
+    9 x 4 nodes, and where the change reverses sign (some nodes, not all)."""
+    rng = np.random.default_rng(seed)
+    before_p, before_h = rng.uniform(0, 1, (2, 9, 4))
+    new_p = before_p + rng.standard_normal((9, 4))
+    new_h = before_h + rng.standard_normal((9, 4))
+    last = rng.standard_normal((9, 4))
+    reverse = (new_p - before_p) * last < 0
+    assert 0 < reverse.sum() < reverse.size
+    return before_p, before_h, new_p, new_h, last, reverse
+
+
 def test_damping_scales_only_the_reversing_changes():
     """Nodes whose p change reverses sign are moved back to before + damping * change (p and
     h); the others keep the sweep's result; the recorded change is the damped one."""
-    rng = np.random.default_rng(5)
-    before_p, before_h = rng.uniform(0, 1, (2, 9, 4))
-    p = before_p + rng.standard_normal((9, 4))
-    h = before_h + rng.standard_normal((9, 4))
-    last = rng.standard_normal((9, 4))
-    reverse = (p - before_p) * last < 0
-    assert 0 < reverse.sum() < reverse.size
+    before_p, before_h, p, h, last, reverse = _sweep_changes(5)
     expected_p = np.where(reverse, before_p + 0.7 * (p - before_p), p)
     expected_h = np.where(reverse, before_h + 0.7 * (h - before_h), h)
     damp_oscillations(p, h, before_p, before_h, last, 0.7, True, 1.0)
@@ -213,13 +220,7 @@ def test_damping_scales_only_the_reversing_changes():
 def test_relaxation_scales_every_change_and_the_reversing_ones_again():
     """Under-relaxation 0.5 moves every node to before + 0.5 * change, a reversing node to
     before + 0.5 * 0.7 * change (independent expressions of the two factors)."""
-    rng = np.random.default_rng(8)
-    before_p, before_h = rng.uniform(0, 1, (2, 9, 4))
-    new_p = before_p + rng.standard_normal((9, 4))
-    new_h = before_h + rng.standard_normal((9, 4))
-    last = rng.standard_normal((9, 4))
-    reverse = (new_p - before_p) * last < 0
-    assert 0 < reverse.sum() < reverse.size
+    before_p, before_h, new_p, new_h, last, reverse = _sweep_changes(8)
     factor = np.where(reverse, 0.35, 0.5)
     p, h = new_p.copy(), new_h.copy()
     damp_oscillations(p, h, before_p, before_h, last, 0.7, True, 0.5)
