@@ -169,9 +169,25 @@ def full_case(name="holmes-rough-CC-paper"):
           f"{summary['steady_central_film_thickness_m'] * 1e6:.4f} um")
 
 
+def mesh_list(text):
+    """The ``--meshes`` option: ``"NXxNY,..."`` as ``[(nx, ny), ...]``; empty entries are
+    skipped, so ``--meshes "" --full`` runs the full case alone."""
+    meshes = []
+    for entry in filter(None, (m.strip() for m in text.split(","))):
+        try:
+            nx, ny = (int(v) for v in entry.split("x"))
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"expected meshes as NXxNY separated by commas (e.g. 571x201), got {entry!r}"
+            ) from None
+        meshes.append((nx, ny))
+    return meshes
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--meshes", default="131x29,261x57,571x201")
+    parser.add_argument("--meshes", type=mesh_list, default="131x29,261x57,571x201",
+                        help="meshes NXxNY, comma-separated (empty: none)")
     parser.add_argument("--steps", type=int, default=60, help="rough steps timed per mesh")
     parser.add_argument("--full", action="store_true",
                         help="also run the full paper case end to end (20-43 min)")
@@ -182,10 +198,18 @@ def main():
     print(f"freed memory retained for reuse (asperity.memory, as the CLI does): {retained}; "
           f"{numba.get_num_threads()} threads")
     rows = []
-    for mesh in args.meshes.split(","):
-        nx, ny = (int(v) for v in mesh.split("x"))
+    for nx, ny in args.meshes:
         rows.append(rough_steps(nx, ny, args.steps))
-        print(f"{mesh}: {args.steps} rough steps timed", flush=True)
+        print(f"{nx}x{ny}: {args.steps} rough steps timed", flush=True)
+    if rows:
+        mesh_table(rows)
+    if args.full:
+        full_case()
+
+
+def mesh_table(rows):
+    """Print the work units, the cost per node and work unit and the paper case's estimate
+    of the timed meshes (:func:`rough_steps`)."""
     for row, (t_sweep, t_refresh) in zip(rows, unit_costs([r["state"] for r in rows], "line"),
                                          strict=True):
         work_units(row, t_sweep, t_refresh)
@@ -210,8 +234,6 @@ def main():
                   f"wall cost {wall:.3f} s/step, {minutes:.0f} min; at its CPU cost "
                   f"{cpu:.3f} CPU s/step over 2 cores, {cpu_minutes:.0f} min (a lower bound for "
                   f"2 free cores); goal {GOAL_MINUTES} min")
-    if args.full:
-        full_case()
 
 
 if __name__ == "__main__":
