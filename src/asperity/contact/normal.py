@@ -216,7 +216,9 @@ class _Transforms:
 
     def __init__(self, op):
         self.op = op
-        self.kernel = np.ascontiguousarray(op.spectrum.real)
+        self.kernel = op.even_spectrum  # Love's coefficients are even in x and y
+        if self.kernel is None:
+            raise ValueError("the normal contact solver needs an even kernel (a real spectrum)")
         fx, fy = op.fft_shape
         # Parseval in rfft layout: columns 1 .. (fy - 1) // 2 stand for two conjugate columns
         weight = np.full(fy // 2 + 1, 2.0)

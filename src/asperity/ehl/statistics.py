@@ -214,8 +214,9 @@ class StepHistory:
         return {**self.record, **self.centre}
 
     def restore(self, arrays):
-        """Set the records from :meth:`arrays` output; a checkpoint without the refresh
-        counts or intervals (written before they were recorded) leaves them at 0."""
+        """Set the records from :meth:`arrays` output; a record the checkpoint lacks (written
+        before it was recorded: the refresh counts or intervals, the relaxation) keeps its
+        value for steps not done (0 or NaN)."""
         for name, values in (*self.record.items(), *self.centre.items()):
             if name in arrays:
                 values[...] = arrays[name]

@@ -64,7 +64,8 @@ class Convolution:
         if spectrum.shape != expected:
             raise ValueError(f"spectrum shape {spectrum.shape} does not match grid {expected}")
         self.spectrum = spectrum
-        self._work = self._factor = None  # __call__'s buffer and kernel product, on first use
+        self._work = None  # __call__'s buffer, on first use
+        self._even = None  # even_spectrum, on first use
 
     @classmethod
     def from_coefficients(cls, coefficient, dx: float, dy: float, shape, periodic: bool):
@@ -101,6 +102,17 @@ class Convolution:
         out[nx:] = 0.0
         return sfft.fft(out, axis=0, overwrite_x=True, workers=-1)
 
+    @property
+    def even_spectrum(self) -> np.ndarray | None:
+        """The kernel's spectrum as a real (C-contiguous) array when the kernel is even in x
+        and y (Love's coefficients, the EHL film kernel: imaginary part below 1e-12 of the
+        largest value), else None. A product with it is half the work of a complex one."""
+        if self._even is None:
+            spectrum = self.spectrum
+            even = np.abs(np.imag(spectrum)).max() <= 1e-12 * np.abs(spectrum).max()
+            self._even = np.ascontiguousarray(np.real(spectrum)) if even else False
+        return self._even if self._even is not False else None
+
     def from_spectrum(self, load_spectrum: np.ndarray) -> np.ndarray:
         """Displacement on the grid from a load spectrum (kernel product, inverse FFT, crop).
 
@@ -134,13 +146,9 @@ class Convolution:
             return self.from_spectrum(self.spectrum_of(load))
         if self._work is None:
             self._work = np.empty(self.spectrum.shape, dtype=complex)
-            # an even kernel (Love's coefficients, the EHL film kernel) has a real spectrum
-            # (to round-off): its real part, half the work of a complex product
-            spectrum = self.spectrum
-            even = np.abs(np.imag(spectrum)).max() <= 1e-12 * np.abs(spectrum).max()
-            self._factor = np.ascontiguousarray(np.real(spectrum)) if even else spectrum
         work = self.spectrum_of(load, out=self._work)
-        work *= self._factor
+        even = self.even_spectrum
+        work *= self.spectrum if even is None else even
         return self.inverse(work)
 
 
