@@ -34,6 +34,15 @@ def test_units_are_converted_to_si():
     assert len(x) == 32 and x[0] == pytest.approx(-0.3e-3 + 0.3e-3 / 32)
 
 
+def test_an_unnamed_body_is_not_called_steel():
+    """A body named by the user keeps its name; one left unnamed is a neutral "material" in
+    the reports, whatever its moduli (a user's glass disc was listed as steel)."""
+    named = 'poisson_ratio = 0.21\nname = "BK7 glass"'
+    case = load_case(BASE.replace("poisson_ratio = 0.3", named))
+    assert case.body2.material().name == "BK7 glass"
+    assert case.body1.material().name == "material"
+
+
 @pytest.mark.parametrize(
     "old, new, field",
     [

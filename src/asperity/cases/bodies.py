@@ -23,8 +23,9 @@ class MaterialSpec(CaseModel):
     """Young's modulus E of the body."""
     poisson_ratio: Annotated[float, Field(gt=-1.0, le=0.5)] = 0.3
     """Poisson's ratio nu of the body."""
-    name: str = "steel"
-    """Name of the material, shown in reports."""
+    name: str = "material"
+    """Name of the material, shown in reports (not implied by the moduli: a glass disc left
+    unnamed is not called steel)."""
     hardness: Quantity("pressure", gt=0) | None = None
     """Indentation hardness; contact pressures above it make the run warn that the elastic answer is
     not physical there."""
