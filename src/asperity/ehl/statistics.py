@@ -95,6 +95,10 @@ class ContactStatistics:
         Timesteps with contact at one or more nodes.
     film_counts : ndarray of int64
         Film histogram over ``region`` and the accumulated timesteps.
+    least_film : ndarray
+        The film (m) of the accumulated timestep with the least film at any node (the first
+        such step), NaN before the first: where the reported minimum film sits and how the
+        mesh resolves it.
     """
 
     def __init__(self, shape, film_edges, region):
@@ -104,6 +108,8 @@ class ContactStatistics:
         self.steps = 0
         self.steps_with_contact = 0
         self.film_counts = np.zeros(self.film_edges.size - 1, dtype=np.int64)
+        self.least_film = np.full(shape, np.nan)
+        self._least = np.inf  # least_film's least value
 
     def add(self, film, contact):
         """Accumulate one timestep: film (m) and the contact mask (True where ``h = 0``)."""
@@ -113,6 +119,10 @@ class ContactStatistics:
         edges = self.film_edges
         values = np.clip(film[self.region], edges[0], edges[-1])
         self.film_counts += np.histogram(values, edges)[0]
+        least = film.min()
+        if least < self._least:
+            self._least = least
+            self.least_film[...] = film
 
     def contact_time_fraction(self) -> float:
         """Fraction of the accumulated timesteps with contact at one or more nodes (Table 2)."""
@@ -126,14 +136,18 @@ class ContactStatistics:
         """The accumulator as plain arrays (for a checkpoint)."""
         return {"stat_count": self.count, "stat_steps": np.int64(self.steps),
                 "stat_steps_with_contact": np.int64(self.steps_with_contact),
-                "stat_film_counts": self.film_counts}
+                "stat_film_counts": self.film_counts, "stat_least_film": self.least_film}
 
     def restore(self, arrays):
-        """Set the accumulator from :meth:`arrays` output."""
+        """Set the accumulator from :meth:`arrays` output (a checkpoint written before the
+        least film was kept leaves it NaN until a later step sets it)."""
         self.count = np.array(arrays["stat_count"], dtype=np.int64)
         self.steps = int(arrays["stat_steps"])
         self.steps_with_contact = int(arrays["stat_steps_with_contact"])
         self.film_counts = np.array(arrays["stat_film_counts"], dtype=np.int64)
+        if "stat_least_film" in arrays:
+            self.least_film = np.array(arrays["stat_least_film"], dtype=float)
+            self._least = np.nanmin(self.least_film, initial=np.inf)
 
 
 class StepHistory:

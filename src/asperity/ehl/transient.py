@@ -173,6 +173,9 @@ class TransientResult(SolverResult):
         Per step (index ``step - 1``): largest p (Pa) and smallest h (m) over the domain.
     film_edges, film_counts : ndarray
         Histogram of h over the Hertz contact area and the counting period (bins in m).
+    least_film : ndarray
+        h (m) at the counting step with the least film at any node, ``[ix, iy]`` (NaN
+        without counting steps): where the minimum film of :meth:`summary` sits.
     flow_x, flow_y : ndarray
         Lubricant flow per unit width at the last step, m^2/s (:func:`flow_vectors`).
     snapshot_steps : ndarray of int
@@ -244,6 +247,7 @@ class TransientResult(SolverResult):
     min_film: np.ndarray
     film_edges: np.ndarray
     film_counts: np.ndarray
+    least_film: np.ndarray
     flow_x: np.ndarray
     flow_y: np.ndarray
     snapshot_steps: np.ndarray
@@ -282,6 +286,7 @@ class TransientResult(SolverResult):
         "pressure": ("Pa", "pressure at the last step"),
         "film": ("m", "film thickness at the last step"),
         "steady_film": ("m", "film thickness of the smooth steady start"),
+        "least_film": ("m", "film thickness at the counting step with the least film"),
         "surface1": ("m", "height of surface 1 at the last step"),
         "surface2": ("m", "height of surface 2 at the last step"),
         "flow_x": ("m2 s-1", "lubricant flow per unit width along x"),
@@ -650,7 +655,8 @@ def solve_transient(
         steps=total, steps_done=steps_done, pressure=p, film=h, surface1=z1, surface2=z2,
         contact_count=stats.count, contact_count_rate=stats.count_rate(dt),
         contact_time_fraction=stats.contact_time_fraction(),
-        film_edges=film_edges, film_counts=stats.film_counts, flow_x=qx, flow_y=qy,
+        film_edges=film_edges, film_counts=stats.film_counts, least_film=stats.least_film,
+        flow_x=qx, flow_y=qy,
         snapshot_steps=snaps, iterations=int(record["sweeps"].sum()),
         converged=bool(steady_converged and steps_done == total and done.all()),
         residual=float(np.nanmax(record["residuals"])) if steps_done else float("nan"),

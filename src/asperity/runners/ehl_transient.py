@@ -55,6 +55,8 @@ def _dataset(case, problem, res) -> xr.Dataset:
         "film": variable(xy, res.film, "m", "film thickness at the last step"),
         "steady_film": variable(xy, res.steady_film, "m",
                                 "film thickness of the smooth steady start"),
+        "least_film": variable(xy, res.least_film, "m",
+                               "film thickness at the counting step with the least film"),
         "surface1": variable(xy, res.surface1, "m", "height of surface 1 at the last step"),
         "surface2": variable(xy, res.surface2, "m", "height of surface 2 at the last step"),
         "flow_x": variable(xy, res.flow_x, "m2 s-1", "lubricant flow per unit width along x"),
@@ -299,14 +301,20 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     # an unconverged steady start's film would set the inlet and mesh advice: the formula's
     film = res.steady_central_film if res.steady_converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
+    b = None if line else problem.b
+    touching = []
     if np.isfinite(res.steady_film).all():  # contacts without roughness, counted all the same
-        b = None if line else problem.b
         touching = diagnostics.smooth_start_contact(res.steady_film, res.x, res.y, problem.a,
                                                     b, res.contact_film)
         trust += touching
         if touching:  # most often the side lobes, too narrow for the mesh: how to refine
             trust += diagnostics.ehl_minimum_film_mesh(res.steady_film, res.x, res.y,
                                                        problem.a, b)
+    least = res.least_film
+    if not touching and np.isfinite(least).all() and least.min() > res.contact_film:
+        # the reported minimum film without contact, at its step: a feature that crosses the
+        # side lobes of a point contact is as thin as the mesh across y lets the lobes be
+        trust += diagnostics.ehl_minimum_film_mesh(least, res.x, res.y, problem.a, b)
     trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps,
