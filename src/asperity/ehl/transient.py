@@ -295,6 +295,16 @@ class TransientResult(SolverResult):
         "min_film": ("m", "minimum film per step", ("step",)),
         "sweeps": ("1", "relaxation sweeps per step", ("step",)),
         "step_converged": ("1", "step converged (1) or not (0)", ("step",)),
+        "refresh_interval": ("1", "relaxation sweeps between far-field refreshes at the start "
+                             "of the step", ("step",), "refresh_intervals"),
+        "load_gain": ("1", "separation shift per sweep per relative load error", ("step",),
+                      "load_gains"),
+        "density_newton": ("1", "row solve with the density's Newton term (1) or the density "
+                           "lagged (0)", ("step",)),
+        "tries": ("1", "relaxations of the step (1: converged at the first try)", ("step",)),
+        "y_lines": ("1", "step relaxed once more with y-line sweeps (1) or not (0)", ("step",)),
+        "relaxation": ("1", "factor on every change of a sweep (1: none; under-relaxed in the "
+                       "last fallback)", ("step",)),
         "film_counts": ("1", "film thickness histogram over the counting period", ("film_bin",)),
         "centre_pressure": ("Pa", "pressure on the centre line y = 0", ("snapshot", "x")),
         "centre_film": ("m", "film on the centre line y = 0", ("snapshot", "x")),
@@ -303,8 +313,10 @@ class TransientResult(SolverResult):
     }
 
     def coordinates(self) -> dict:
-        """x, y, the step number, the snapshot steps and the film-histogram bin centres."""
-        return {**super().coordinates(),
+        """x (entrainment) and y (transverse), the step number, the snapshot steps and the
+        film-histogram bin centres."""
+        return {"x": (self.x, "m", "x, entrainment direction"),
+                "y": (self.y, "m", "y, transverse direction"),
                 "step": (np.arange(1, self.steps + 1), "1", "time step"),
                 "snapshot": (self.snapshot_steps, "1", "step of the snapshot"),
                 "film_bin": (0.5 * (self.film_edges[1:] + self.film_edges[:-1]), "m",

@@ -38,69 +38,19 @@ MAX_FALLBACK_NOTES = 8
 
 
 def _dataset(case, problem, res) -> xr.Dataset:
-    a = problem.a
-    coords = {"x": variable("x", res.x, "m", "x, entrainment direction"),
-              "y": variable("y", res.y, "m", "y, transverse direction"),
-              "step": variable("step", np.arange(1, res.steps + 1), "1", "time step"),
-              "snapshot": variable("snapshot", res.snapshot_steps, "1", "step of the snapshot"),
-              "film_bin": variable("film_bin", 0.5 * (res.film_edges[1:] + res.film_edges[:-1]),
-                                   "m", "film thickness bin centre")}
-    xy = ("x", "y")
-    data = {
-        "contact_count_rate": variable(xy, res.contact_count_rate, "ms-1",
-                                       "contact count rate Q per ms of counting time"),
-        "contact_count": variable(xy, res.contact_count, "1",
-                                  "number of counting steps with contact at the node"),
-        "pressure": variable(xy, res.pressure, "Pa", "pressure at the last step"),
-        "film": variable(xy, res.film, "m", "film thickness at the last step"),
-        "steady_film": variable(xy, res.steady_film, "m",
-                                "film thickness of the smooth steady start"),
-        "least_film": variable(xy, res.least_film, "m",
-                               "film thickness at the counting step with the least film"),
-        "surface1": variable(xy, res.surface1, "m", "height of surface 1 at the last step"),
-        "surface2": variable(xy, res.surface2, "m", "height of surface 2 at the last step"),
-        "flow_x": variable(xy, res.flow_x, "m2 s-1", "lubricant flow per unit width along x"),
-        "flow_y": variable(xy, res.flow_y, "m2 s-1", "lubricant flow per unit width along y"),
-        "max_pressure": variable("step", res.max_pressure, "Pa", "maximum pressure per step"),
-        "min_film": variable("step", res.min_film, "m", "minimum film per step"),
-        "sweeps": variable("step", res.sweeps, "1", "relaxation sweeps per step"),
-        "step_converged": variable("step", res.step_converged.astype("i1"), "1",
-                                   "step converged (1) or not (0)"),
-        "refresh_interval": variable("step", res.refresh_intervals, "1",
-                                     "relaxation sweeps between far-field refreshes "
-                                     "at the start of the step"),
-        "load_gain": variable("step", res.load_gains, "1",
-                              "separation shift per sweep per relative load error"),
-        "density_newton": variable("step", res.density_newton.astype("i1"), "1",
-                                   "row solve with the density's Newton term (1) or the "
-                                   "density lagged (0)"),
-        "tries": variable("step", res.tries, "1",
-                          "relaxations of the step (1: converged at the first try)"),
-        "y_lines": variable("step", res.y_lines.astype("i1"), "1",
-                            "step relaxed once more with y-line sweeps (1) or not (0)"),
-        "relaxation": variable("step", res.relaxation, "1",
-                               "factor on every change of a sweep (1: none; under-relaxed "
-                               "in the last fallback)"),
-        "film_counts": variable("film_bin", res.film_counts, "1",
-                                "film thickness histogram over the counting period"),
-        "centre_pressure": variable(("snapshot", "x"), res.centre_pressure, "Pa",
-                                    "pressure on the centre line y = 0"),
-        "centre_film": variable(("snapshot", "x"), res.centre_film, "m",
-                                "film on the centre line y = 0"),
-        "centre_surface1": variable(("snapshot", "x"), res.centre_surface1, "m",
-                                    "surface 1 height on the centre line"),
-        "centre_surface2": variable(("snapshot", "x"), res.centre_surface2, "m",
-                                    "surface 2 height on the centre line"),
-    }
-    return xr.Dataset(data, coords=coords, attrs={
+    """result.nc: the result's variables (:meth:`TransientResult.to_dataset`) with the run's
+    attributes."""
+    dataset = res.to_dataset()
+    dataset.attrs = {
         "title": case.title, "analysis": "ehl-transient", "Conventions": "CF-1.8",
         "timestep_s": res.dt, "warmup_steps": res.warmup_steps,
         "counting_steps": res.counting_steps, "steps_done": res.steps_done,
-        "hertz_a_m": a, "converged": int(res.converged),
+        "hertz_a_m": problem.a, "converged": int(res.converged),
         "fixed_point_pressure": res.fixed_point_pressure,
         "fixed_point_film": res.fixed_point_film,
         "fixed_point_sweeps": res.fixed_point_sweeps,
-        "fixed_point_settled": int(res.fixed_point_settled)})
+        "fixed_point_settled": int(res.fixed_point_settled)}
+    return dataset
 
 
 def _outcome(res, step: int, settings: int = 1) -> str:
