@@ -171,6 +171,36 @@ def test_flow_vectors_have_an_arrow_scale_and_equal_axes():
     assert ax.get_aspect() == 1.0
 
 
+@pytest.mark.parametrize("b_over_a", [3.9, 9.5])
+def test_maps_of_a_long_ellipse_are_compressed_across_and_say_so(b_over_a):
+    """The seed's gear contact (b/a = 3.9, its domain 3.9 times taller than wide) is drawn to
+    scale; a ball bearing's race contact (b/a = 9.5) was a strip a sixth as wide as its colour
+    bar: its maps are drawn 5 times taller than wide, the Hertz ellipse on the page that much
+    taller than wide, and the y labels name the compression (9.5 / 5 = 1.9 times)."""
+    import numpy as np
+
+    from asperity.plotting.ehl import contour_maps
+    from asperity.plotting.ehl_transient import plot_contact_rate, plot_flow_vectors
+
+    a = 1e-4
+    x, y, p, h, a, b = _ellipse_fields(a=a, b=b_over_a * a)
+    result, problem = _transient_result()
+    result.x, result.y, result.film = x, y, h
+    result.flow_x, result.flow_y = 25.0 * h, 2.5 * h
+    result.contact_count_rate = np.zeros_like(h)
+    problem.b = b
+    to_scale = b_over_a <= 5.0
+    axes = contour_maps(x, y, p, h, a, b, 0.5e-6).axes[:2]
+    axes += [plot_contact_rate(result, problem).axes[0],
+             plot_flow_vectors(result, problem).axes[0]]
+    for ax in axes:
+        ellipse = next(ln for ln in ax.get_lines() if ln.get_label() == "Hertz contact")
+        assert _displayed_aspect(ax, ellipse) == pytest.approx(
+            b_over_a if to_scale else 5.0, rel=0.02)
+    for ax in (axes[0], axes[2], axes[3]):
+        assert ax.get_ylabel() == ("y / a" if to_scale else "y / a  (compressed 1.9 times)")
+
+
 def test_case_file_in_imperial_units_reports_imperial_beside_si(tmp_path):
     case = tmp_path / "imperial.toml"
     case.write_text('''analysis = "normal"

@@ -1,7 +1,8 @@
 """Figures of a steady EHL solution in the style of the mixed-EHL seed's Fig. 2.
 
 Contour maps of pressure (GPa) and film thickness (um) over x/a and y/a on equal axes, so that
-the Hertz ellipse (drawn heavy) looks like the ellipse it is; profiles along the entrainment
+the Hertz ellipse (drawn heavy) looks like the ellipse it is (y compressed, and labelled so,
+for a domain more than ``MAX_MAP_ASPECT`` times taller than wide); profiles along the entrainment
 centre line y = 0 (pressure and film on their own axes, Hertz pressure dashed); and a
 transverse section at x = 0 that shows the side constrictions of a point contact.
 """
@@ -11,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from .style import hertz_outline, new_figure, plt
+from .style import hertz_outline, map_aspect, map_ylabel, new_figure, plt
 
 __all__ = ["contour_maps", "centre_line_profiles", "transverse_section"]
 
@@ -26,7 +27,9 @@ def _film_levels(film_um, h_c_um):
 
 def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     """Pressure (GPa, left) and film (um, right) contours over x/a, y/a on equal axes, the
-    Hertz ellipse heavy (it looks like the ellipse it is: b/a tall).
+    Hertz ellipse heavy (it looks like the ellipse it is: b/a tall); a domain more than
+    :data:`~asperity.plotting.style.MAX_MAP_ASPECT` times taller than wide is drawn with y
+    compressed to that ratio (:func:`~asperity.plotting.style.map_aspect`).
 
     Parameters
     ----------
@@ -47,7 +50,8 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     """
     xa, ya = np.asarray(x) / a, np.asarray(y) / a
     X, Y = np.meshgrid(xa, ya, indexing="ij")
-    tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))  # height / width of a panel
+    aspect = map_aspect(xa, ya)
+    tall = aspect * float(np.ptp(ya) / max(np.ptp(xa), 1e-12))  # height / width of a panel
     height = float(np.clip(3.4 * tall, 2.4, 7.5))
     width = float(np.clip(height / tall, 2.0, 4.5))
     fig, (ax_p, ax_h) = plt.subplots(1, 2, figsize=(2 * width + 3.2, height + 1.2),
@@ -57,7 +61,7 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     filled = ax_p.contourf(X, Y, p_gpa, levels=levels, cmap="magma_r")
     ax_p.contour(X, Y, p_gpa, levels=levels[1::2], colors="k", linewidths=0.4)
     fig.colorbar(filled, ax=ax_p, label="pressure (GPa)", shrink=0.9)
-    ax_p.set(xlabel="x / a  (entrainment ->)", ylabel="y / a", title="pressure (GPa)")
+    ax_p.set(xlabel="x / a  (entrainment ->)", ylabel=map_ylabel(aspect), title="pressure (GPa)")
 
     h_um = np.asarray(film) * 1e6
     h_levels = _film_levels(h_um, central_film * 1e6)
@@ -68,7 +72,7 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     ax_h.set(xlabel="x / a  (entrainment ->)", title="film thickness (um)")
     for ax in (ax_p, ax_h):
         hertz_outline(ax, b / a, label="Hertz contact")
-        ax.set_aspect("equal")
+        ax.set_aspect(aspect)
     fig.legend(*ax_p.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
                frameon=False)
     fig.suptitle(title, fontsize=11)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from .style import hertz_outline, new_figure
+from .style import hertz_outline, map_aspect, map_ylabel, new_figure
 
 __all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
            "plot_film_histogram", "plot_flow_vectors", "surfaces_below"]
@@ -17,7 +17,7 @@ def plot_contact_rate(result, problem):
     an empty scale (a title, not a box on the map, which a long narrow contact's map is too
     narrow to hold)."""
     xa, ya = result.x / problem.a, result.y / problem.a
-    fig, ax = _map_figure(xa, ya)
+    fig, ax, aspect = _map_figure(xa, ya)
     X, Y = np.meshgrid(xa, ya, indexing="ij")
     q = result.contact_count_rate
     if q.max() > 0.0:
@@ -30,8 +30,8 @@ def plot_contact_rate(result, problem):
         ax.set_title("no contact in the\ncounting period", fontsize=9)
     hertz_outline(ax, getattr(problem, "b", problem.a) / problem.a, label="Hertz contact")
     ax.set_xlabel("x / a  (entrainment ->)")
-    ax.set_ylabel("y / a")
-    ax.set_aspect("equal")
+    ax.set_ylabel(map_ylabel(aspect))
+    ax.set_aspect(aspect)
     fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
                frameon=False)
     return fig
@@ -126,7 +126,7 @@ def plot_flow_vectors(result, problem, arrows=(14, 12)):
         About how many arrows along x and along y.
     """
     xa, ya = result.x / problem.a, result.y / problem.a
-    fig, ax = _map_figure(xa, ya)
+    fig, ax, aspect = _map_figure(xa, ya)
     X, Y = np.meshgrid(xa, ya, indexing="ij")
     h_um = result.film * 1e6
     b_a = getattr(problem, "b", problem.a) / problem.a
@@ -151,19 +151,21 @@ def plot_flow_vectors(result, problem, arrows=(14, 12)):
                      labelpos="E", coordinates="axes", color="k", fontproperties={"size": 8})
     hertz_outline(ax, b_a, label="Hertz contact")
     ax.set_xlabel("x / a  (entrainment ->)")
-    ax.set_ylabel("y / a")
-    ax.set_aspect("equal")
+    ax.set_ylabel(map_ylabel(aspect))
+    ax.set_aspect(aspect)
     fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", fontsize=8,
                frameon=False)
     return fig
 
 
 def _map_figure(xa, ya):
-    """A figure for a map over x/a, y/a on equal axes, sized to the domain's shape."""
-    tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
+    """A figure for a map over x/a, y/a, sized to the domain's shape as drawn, and the axes'
+    aspect (:func:`~asperity.plotting.style.map_aspect`: to scale unless very tall)."""
+    aspect = map_aspect(xa, ya)
+    tall = aspect * float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
     height = float(np.clip(3.6 * tall, 2.4, 5.5))
     width = float(np.clip(height / tall, 2.2, 6.0))
-    return new_figure(width + 1.8, height + 1.1)
+    return *new_figure(width + 1.8, height + 1.1), aspect
 
 
 def _round_125(value: float) -> float:

@@ -9,7 +9,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-__all__ = ["hertz_outline", "new_figure", "plt"]
+__all__ = ["MAX_MAP_ASPECT", "hertz_outline", "map_aspect", "map_ylabel", "new_figure", "plt"]
+
+#: Tallest height-to-width ratio of a contour map drawn to scale. A taller domain (a long
+#: ellipse: a ball bearing's race contact, b/a = 5-10, on its default domain 4 a by 4 b) is
+#: drawn with its y-axis compressed to this ratio, and its y label says by how much; drawn to
+#: scale, a user's 6205 inner-race contact (b/a = 9.5) was a strip a sixth as wide as its
+#: colour bar. The seed's gear contact (b/a = 3.9) is drawn to scale.
+MAX_MAP_ASPECT = 5.0
 
 
 def new_figure(width: float = 6.4, height: float = 4.2, **kwargs):
@@ -22,3 +29,18 @@ def hertz_outline(ax, b_over_a: float = 1.0, label: str | None = None):
     ``b_over_a = 1`` for axes x/a, y/b, where it is the unit circle)."""
     t = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(np.cos(t), b_over_a * np.sin(t), "k-", lw=2.2, label=label)
+
+
+def map_aspect(xa, ya) -> float:
+    """Axes aspect (page length of a unit of y over that of a unit of x) for a map over the
+    node coordinates ``xa``, ``ya`` (in the same unit): 1, drawn to scale, unless the domain
+    is more than :data:`MAX_MAP_ASPECT` times taller than wide, then that ratio over the
+    domain's."""
+    tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
+    return 1.0 if tall <= MAX_MAP_ASPECT else MAX_MAP_ASPECT / tall
+
+
+def map_ylabel(aspect: float, label: str = "y / a") -> str:
+    """The y label of a map drawn with ``aspect`` (:func:`map_aspect`): ``label``, with the
+    compression named when the map is not to scale."""
+    return label if aspect == 1.0 else f"{label}  (compressed {1.0 / aspect:.2g} times)"

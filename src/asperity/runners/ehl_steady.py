@@ -210,8 +210,8 @@ def _figures(title, problem, res, line):
             lambda: contour_maps(res.x, res.y, res.pressure, res.film, a, b, res.central_film,
                                  title),
             "Pressure (GPa, left) and film thickness (um, right) contours over x/a and y/a on "
-            "equal axes; the heavy ellipse is the Hertzian dry contact area (cf. Holmes et al. "
-            "2005, Fig. 2).",
+            "equal axes (y compressed where its label says so); the heavy ellipse is the "
+            "Hertzian dry contact area (cf. Holmes et al. 2005, Fig. 2).",
         )
         figures["transverse"] = (
             lambda: transverse_section(res.y, p_x0, h_x0, b, f"{title}: section x = 0"),
