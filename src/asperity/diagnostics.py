@@ -1022,7 +1022,9 @@ MIN_CELLS_PER_CORRELATION_LENGTH = 2.0
 
 
 def roughness_resolution(label: str, correlation_length: float, x, y,
-                         min_cells: float = MIN_CELLS_PER_CORRELATION_LENGTH) -> list[str]:
+                         min_cells: float = MIN_CELLS_PER_CORRELATION_LENGTH,
+                         correlation_length_y: float | None = None,
+                         along_x: bool = True) -> list[str]:
     """A generated roughness whose correlation length is shorter than a couple of cells.
 
     The surface is generated on the grid: with fewer than ``min_cells`` cells per
@@ -1035,26 +1037,45 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
     label : str
         The surface, e.g. ``"roughness"``.
     correlation_length : float
-        The surface's correlation length, m.
+        The surface's correlation length, m (along x, and across y unless
+        ``correlation_length_y`` is given).
     x, y : ndarray
         Cell-centre coordinates, m.
     min_cells : float
         Smallest acceptable correlation length in cells.
+    correlation_length_y : float, optional
+        Correlation length across y of an anisotropic surface, m: each direction is then
+        judged on its own cells (a transient run's cells are several times longer across y
+        than along x).
+    along_x : bool
+        False: judge the cells across y only (with ``correlation_length_y``): a transient
+        run's surface is sampled finer than the mesh along x, where
+        :func:`unresolved_roughness` judges it, and generated on the mesh's rows across y.
 
     Returns
     -------
     list of str
         At most one line.
     """
-    cell = max(_spacing(x), _spacing(y) if len(y) > 1 else 0.0)
-    cells = correlation_length / cell
+    if correlation_length_y is None:
+        cell = max(_spacing(x), _spacing(y) if len(y) > 1 else 0.0)
+        directions = [("", correlation_length, cell)]
+    else:
+        directions = [(" along x", correlation_length, _spacing(x))] if along_x else []
+        if len(y) > 1:
+            directions.append((" across y", correlation_length_y, _spacing(y)))
+    if not directions:
+        return []
+    where, ell, cell = min(directions, key=lambda d: d[1] / d[2])
+    cells = ell / cell
     if not cells < min_cells:
         return []
-    return [f"{label}: correlation_length = {correlation_length * 1e6:.3g} um is "
-            f"{cells:.2g} cells of {cell * 1e6:.3g} um (limit {min_cells:g} cells), so the mesh, "
-            "not the surface, sets the asperity size and the real contact area and asperity "
-            f"pressures depend on the mesh; use cells <= {correlation_length / 4 * 1e6:.2g} um "
-            "and check that the answer no longer moves"]
+    key = "correlation_length_y" if where == " across y" else "correlation_length"
+    return [f"{label}: {key} = {ell * 1e6:.3g} um is {cells:.2g} cells of {cell * 1e6:.3g} um"
+            f"{where} (limit {min_cells:g} cells), so the mesh, not the surface, sets the "
+            "asperity size and the real contact area and asperity pressures depend on the "
+            f"mesh; use cells <= {ell / 4 * 1e6:.2g} um{where} and check that the answer no "
+            "longer moves"]
 
 
 #: Sampling interval of a measured roughness file, in grid spacings, above which the file is

@@ -30,7 +30,12 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
-from ..ehl.transient import FEATURE_CELLS_ACROSS, FEATURE_CELLS_ALONG, default_warmup_steps
+from ..ehl.transient import (
+    FEATURE_CELLS_ACROSS,
+    FEATURE_CELLS_ALONG,
+    ROUGHNESS_CELLS,
+    default_warmup_steps,
+)
 from ..errors import InputError
 from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import build_surface
@@ -56,7 +61,10 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
     ``amplitude`` and ``half_width`` on a smooth surface, its centre ``lead`` upstream of the
     inlet at the start: the probes of Venner & Lubrecht, Kaneta, Ai & Cheng;
     :mod:`asperity.surfaces.features`). Profiles vary
-    along x (the rolling direction) and are extruded across y. ``scale`` multiplies the
+    along x (the rolling direction) and are extruded across y; a gaussian or self-affine
+    surface of a point contact is a topography over the mesh's rows (isotropic, or with
+    ``correlation_length_y`` along y: a long one gives ridges across the rolling direction),
+    a profile for a line contact. ``scale`` multiplies the
     heights (the seed's sqrt(2) x C); ``lowpass`` removes wavelengths shorter than that many
     mesh spacings (ISO Gaussian filter) when the mesh cannot resolve them; ``waviness`` adds a
     sinusoid along y (transverse waviness) or x. The surface keys are those of
@@ -106,8 +114,9 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
 
         Built by :func:`asperity.surfaces.recipe.build_surface` on cells of ``spacing`` m;
         ``dx`` is the mesh spacing (of ``lowpass``), ``y`` the mesh's cell centres across x (of
-        a dent, a bump or a transverse waviness). None for a smooth surface without waviness.
-        A feature is placed by :meth:`feature_lead` of ``warmup_travel`` (m).
+        a dent, a bump, a transverse waviness, and the rows of a gaussian or self-affine
+        topography, which has the mesh's spacing across). None for a smooth surface without
+        waviness. A feature is placed by :meth:`feature_lead` of ``warmup_travel`` (m).
         """
         if self.kind == "smooth" and self.waviness is None:
             return None
@@ -116,7 +125,12 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
             # the surface enters the inlet end first: its last cell centre arrives at t = 0
             end = (np.ceil(length / spacing) - 0.5) * spacing
             changes["position"] = max(end - self.feature_lead(warmup_travel), 0.0)
-        return build_surface(surface_recipe(self, **changes), length, spacing, y=y)
+        recipe = surface_recipe(self, **changes)
+        if self.kind in ("gaussian", "self-affine") and y.size > 1:
+            # a topography over the mesh's rows, periodic across the domain's width
+            dy = float(y[1] - y[0])
+            return build_surface(recipe, length, (spacing, dy), width=y.size * dy, y=y)
+        return build_surface(recipe, length, spacing, y=y)
 
 
 class TimeSpec(CaseModel):
@@ -207,9 +221,16 @@ class EHLTransientCase(EHLCaseBase):
         (None: no feature): a feature's half-width over
         :data:`~asperity.ehl.transient.FEATURE_CELLS_ALONG` along x and (dent, bump)
         :data:`~asperity.ehl.transient.FEATURE_CELLS_ACROSS` across; a waviness's wavelength
-        over twice ``FEATURE_CELLS_ALONG`` along its direction."""
+        over twice ``FEATURE_CELLS_ALONG`` along its direction; a gaussian topography's
+        correlation lengths over :data:`~asperity.ehl.transient.ROUGHNESS_CELLS` along x and
+        across y (its heights are generated on the mesh's rows)."""
         along, across = [], []
         for spec in (self.surface1, self.surface2):
+            if spec.kind == "gaussian":
+                along.append(spec.correlation_length / ROUGHNESS_CELLS)
+                if not self.contact.line:
+                    across.append((spec.correlation_length_y or spec.correlation_length)
+                                  / ROUGHNESS_CELLS)
             if spec.kind == "feature":
                 along.append(spec.half_width / FEATURE_CELLS_ALONG)
                 if spec.feature not in STRAIGHT_FEATURES:

@@ -56,7 +56,7 @@ from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
 from .stepper import StepOptions, TimeStepper
 
 __all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "FIXED_POINT_LIMIT", "HISTOGRAM_RQ",
-           "TransientResult", "default_warmup_steps", "solve_transient"]
+           "ROUGHNESS_CELLS", "TransientResult", "default_warmup_steps", "solve_transient"]
 
 #: Mesh cells per half-width of a single feature along x (the rolling direction) and across
 #: y that a case's default mesh gives it (:meth:`asperity.ehl.PointContact.default_nodes`
@@ -65,6 +65,13 @@ __all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "FIXED_POINT_LIMIT", "
 #: contact (docs/ehl-transient.md, "The default mesh of a transient case").
 FEATURE_CELLS_ALONG = 8
 FEATURE_CELLS_ACROSS = 3
+
+#: Mesh cells per correlation length (along x and across y) that a case's default mesh gives
+#: a gaussian topography: twice the limit below which the mesh check warns
+#: (:data:`asperity.diagnostics.MIN_CELLS_PER_CORRELATION_LENGTH`; between 2 and about 4 cells
+#: the real contact area and the asperity pressures still move with the mesh,
+#: docs/references.md, "Roughness on the mesh").
+ROUGHNESS_CELLS = 4
 
 #: Largest change of p (in Hertz pressures) and of h (in central films) that relaxing a run's
 #: converged last step on may bring before the result warns (:meth:`TransientResult.

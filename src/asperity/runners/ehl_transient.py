@@ -279,7 +279,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
 
 
 def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> list[str]:
-    """Roughness the mesh cannot resolve, or that ``lowpass`` removed, per surface."""
+    """Roughness the mesh cannot resolve (shorter than a few cells along x; a gaussian
+    topography's correlation length across y), or that ``lowpass`` removed, per surface."""
     dx = x[1] - x[0]
     specs = (case.surface1, case.surface2)
     raw = surfaces
@@ -297,6 +298,10 @@ def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> lis
         else:
             lines += diagnostics.unresolved_roughness(f"surface{k}", surf.z,
                                                       surf.x[1] - surf.x[0], dx)
+        if spec.kind == "gaussian":  # generated on the mesh's rows across y
+            lines += diagnostics.roughness_resolution(
+                f"surface{k}", spec.correlation_length, x, y, along_x=False,
+                correlation_length_y=spec.correlation_length_y or spec.correlation_length)
     return lines
 
 

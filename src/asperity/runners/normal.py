@@ -127,7 +127,8 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
         if ell is None and rough.kind == "ground":
             ell = GROUND_CORRELATION_LENGTH
         if ell is not None:
-            lines += diagnostics.roughness_resolution("roughness", ell, x, y)
+            lines += diagnostics.roughness_resolution(
+                "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y)
     if on_grid is not None and on_grid.file_spacing is not None:
         lines += [*on_grid.warnings,
                   *diagnostics.coarse_roughness_file("roughness", on_grid.file_spacing, x, y)]

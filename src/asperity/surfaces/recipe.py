@@ -34,8 +34,8 @@ Kinds and the parameters they use:
 :class:`SurfaceBuild`), for the notes of a run.
 
 Every kind then takes, in this order: ``lowpass_wavelength`` (the cut-off of an ISO 16610-21
-Gaussian filter applied to a profile), ``scale`` (a factor on the heights) and ``waviness`` (a
-sinusoid added to the scaled heights).
+Gaussian filter applied to a profile, or along x to each row of a topography), ``scale`` (a
+factor on the heights) and ``waviness`` (a sinusoid added to the scaled heights).
 """
 
 from __future__ import annotations
@@ -247,15 +247,16 @@ def _made(recipe: SurfaceRecipe, length: float, spacing, width, y):
                                     acf=recipe.acf, seed=recipe.seed)
         ell = (recipe.correlation_length,
                recipe.correlation_length_y or recipe.correlation_length)
-        return gaussian_topography((length, width), spacing, recipe.rms, ell, acf=recipe.acf,
-                                   seed=recipe.seed)
+        return _on_rows(gaussian_topography((length, width), spacing, recipe.rms, ell,
+                                            acf=recipe.acf, seed=recipe.seed), y)
     if kind == "self-affine":
         options = {"rms_height": recipe.rms, "rms_slope": recipe.rms_slope,
                    "rolloff_wavelength": recipe.rolloff_wavelength,
                    "short_cutoff": recipe.short_cutoff, "seed": recipe.seed}
         if width is None:
             return self_affine_profile(length, h, recipe.hurst, **options)
-        return self_affine_topography((length, width), spacing, recipe.hurst, **options)
+        return _on_rows(self_affine_topography((length, width), spacing, recipe.hurst,
+                                               **options), y)
     if kind == "ground":
         ell = {} if recipe.correlation_length is None else {
             "correlation_length": recipe.correlation_length}
@@ -278,16 +279,25 @@ def _made(recipe: SurfaceRecipe, length: float, spacing, width, y):
     return Profile(cell_centres(n, h), np.zeros(n), periodic=True)
 
 
+def _on_rows(topography: Topography, y) -> Topography:
+    """A generated topography with its rows at the cell centres ``y`` (m) instead of from 0:
+    the rows of the grid it was generated for (``width = y.size dy``, its period across)."""
+    if y is None:
+        return topography
+    return Topography(topography.x, np.asarray(y, dtype=float), topography.z,
+                      periodic=topography.periodic)
+
+
 def _finished(recipe: SurfaceRecipe, surf, y):
-    """The low-pass filter, scale and waviness of the recipe applied to ``surf``."""
-    if isinstance(surf, Profile):
-        z = np.asarray(surf.z)
-        if recipe.lowpass_wavelength:
-            z = gaussian_filter(z, surf.x, recipe.lowpass_wavelength, periodic=surf.periodic)
-        if recipe.scale != 1.0 or recipe.lowpass_wavelength:
-            surf = surf.with_heights(recipe.scale * z)
-    elif recipe.scale != 1.0:
-        surf = surf.with_heights(recipe.scale * np.asarray(surf.z))
+    """The low-pass filter (along x), scale and waviness of the recipe applied to ``surf``."""
+    z = np.asarray(surf.z)
+    if recipe.lowpass_wavelength:
+        def along_x(heights):
+            return gaussian_filter(heights, surf.x, recipe.lowpass_wavelength,
+                                   periodic=surf.periodic)
+        z = along_x(z) if z.ndim == 1 else np.stack([along_x(row) for row in z.T], axis=1)
+    if recipe.scale != 1.0 or recipe.lowpass_wavelength:
+        surf = surf.with_heights(recipe.scale * z)
     if recipe.waviness is not None:
         w = recipe.waviness
         if isinstance(surf, Profile) and w.direction == "y" and y is not None:
@@ -333,9 +343,10 @@ def build_surface(recipe: SurfaceRecipe, length: float, spacing, *, width: float
         Width along y (m): a gaussian or self-affine kind then makes a topography instead of a
         profile. Profile kinds (ground, builtin, turned) ignore it.
     y : array_like, optional
-        Cell-centre coordinates across x: the grid of a dent or bump, and the ``y`` over which a
+        Cell-centre coordinates across x: the grid of a dent or bump, the ``y`` over which a
         profile is extruded when a waviness varies along y (without it, such a waviness is an
-        error).
+        error), and the rows of a gaussian or self-affine topography (with ``width`` its
+        ``y.size`` times its spacing across).
 
     Returns
     -------
