@@ -21,6 +21,7 @@ import tomllib
 from asperity import diagnostics
 from asperity.cases import load_case
 from asperity.ehl.transient import ROUGHNESS_CELLS
+from asperity.errors import InputError
 from asperity.runners import run_case
 from asperity.surfaces import Profile, Topography
 
@@ -175,3 +176,20 @@ def test_a_run_with_a_topography_on_rows_too_coarse_says_so():
     entered = disc[np.abs(disc).max(axis=1) > 0.0]
     assert len(entered) >= 2
     assert entered.std(axis=1).mean() > 0.5 * entered.std() > 0.0
+
+
+def test_a_self_affine_topography_gets_rows_for_its_shortest_wavelength():
+    """A self-affine disc (H = 0.8, Sq 0.05 um, roll-off 50 um, short cut-off 10 um) is
+    generated on the mesh's rows, which must be at most half its shortest wavelength apart:
+    the default mesh gives it four rows per short cut-off, and a grid of the user's own with
+    rows 12.4 um apart is refused in one line that names the key and the rows."""
+    keys = {"kind": "self-affine", "hurst": 0.8, "rms": "0.05 um",
+            "rolloff_wavelength": "50 um", "short_cutoff": "10 um"}
+    data = tomllib.loads(DISC)
+    data["surface2"] = keys
+    x, y, (_, disc) = _setup(load_case(data))
+    assert y[1] - y[0] <= 10e-6 / ROUGHNESS_CELLS * (1 + 1e-9)
+    assert isinstance(disc, Topography)
+    with pytest.raises(InputError, match=r"short_cutoff: expected at least two of the mesh's "
+                                         r"row spacings across y \(2\.476e-05 m\).*grid\.ny"):
+        _setup(load_case(data), grid=(129, 41))

@@ -129,6 +129,11 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
         if self.kind in ("gaussian", "self-affine") and y.size > 1:
             # a topography over the mesh's rows, periodic across the domain's width
             dy = float(y[1] - y[0])
+            if self.short_cutoff is not None and self.short_cutoff < 2.0 * dy:
+                raise InputError("short_cutoff", "at least two of the mesh's row spacings "
+                                 f"across y ({2.0 * dy:.4g} m), where a point contact's "
+                                 "self-affine topography is generated; or more rows (grid.ny)",
+                                 self.short_cutoff)
             return build_surface(recipe, length, (spacing, dy), width=y.size * dy, y=y)
         return build_surface(recipe, length, spacing, y=y)
 
@@ -223,7 +228,8 @@ class EHLTransientCase(EHLCaseBase):
         :data:`~asperity.ehl.transient.FEATURE_CELLS_ACROSS` across; a waviness's wavelength
         over twice ``FEATURE_CELLS_ALONG`` along its direction; a gaussian topography's
         correlation lengths over :data:`~asperity.ehl.transient.ROUGHNESS_CELLS` along x and
-        across y (its heights are generated on the mesh's rows)."""
+        across y, a self-affine topography's ``short_cutoff`` over it across y (their heights
+        are generated on the mesh's rows)."""
         along, across = [], []
         for spec in (self.surface1, self.surface2):
             if spec.kind == "gaussian":
@@ -231,6 +237,9 @@ class EHLTransientCase(EHLCaseBase):
                 if not self.contact.line:
                     across.append((spec.correlation_length_y or spec.correlation_length)
                                   / ROUGHNESS_CELLS)
+            if spec.kind == "self-affine" and spec.short_cutoff is not None \
+                    and not self.contact.line:
+                across.append(spec.short_cutoff / ROUGHNESS_CELLS)
             if spec.kind == "feature":
                 along.append(spec.half_width / FEATURE_CELLS_ALONG)
                 if spec.feature not in STRAIGHT_FEATURES:
