@@ -74,7 +74,8 @@ EXAMPLES = {
 EXTRA = {
     "extra-moving:builtin-wav": "fa99ca5d0dfb6877",
     "extra-moving:bump": "20b12f2529ec9c0f",
-    "extra-moving:gauss": "fb57d3e226857c5d",
+    # session 35: a gaussian moving surface of a point contact is a topography on the rows
+    "extra-moving:gauss": "c4c90ae5577287df",
     "extra-moving:ground": "5ef66dea0aa68314",
     "extra-moving:ridge": "e9e23665271e8f2f",
     "extra-moving:smooth-wav": "a6ffc0bf9b14a7fd",
@@ -82,7 +83,9 @@ EXTRA = {
     "extra-roughness:builtin-wavx": "6398eec993335bfe",
     "extra-roughness:builtin-wavy": "a6585c42a9286b34",
     "extra-roughness:g-aniso": "e9f7d679579e9aa4",
-    "extra-roughness:gauss-wav": "1bf6382b1078f587",
+    # session 35: its rows labelled with the grid's own cell centres (the waviness's phase
+    # moved by round-off: 8.5e-22 m of 4.8e-6 m)
+    "extra-roughness:gauss-wav": "606062a827bc5193",
     "extra-roughness:ground-wav": "bacc7bbfb469dbad",
     "extra-roughness:sa-rms": "264c7121e86096e5",
     "extra-roughness:sa-slope": "7e5dcb68d9115e28",
@@ -262,9 +265,11 @@ def test_one_schema_of_surface_keys_across_tables():
     x = (np.arange(1000) + 0.5) * h
     on_grid = surface_heights(RoughnessSpec(**keys), x, x[:2])
     np.testing.assert_allclose(on_grid[:, 1], analysed.z, rtol=1e-9, atol=1e-15)
-    # kinds and reading keys now shared: a self-affine moving surface; unit only for a file
+    # kinds and reading keys now shared: a self-affine moving surface (a profile on a line
+    # contact's single row; tests/test_ehl_transient_topography.py: a point contact's rows);
+    # unit only for a file
     rough = MovingSurfaceSpec(kind="self-affine", hurst=0.8, rms=0.2e-6, seed=1)
-    assert rough.build(length, h, np.array([-1e-6, 1e-6]), h).z.shape == (1000,)
+    assert rough.build(length, h, np.zeros(1), h).z.shape == (1000,)
     with pytest.raises(ValueError, match="for a measured file"):
         MovingSurfaceSpec(kind="gaussian", rms=1e-7, correlation_length=1e-5, unit="um")
 
