@@ -8,6 +8,7 @@ import time
 
 import numpy as np
 import pytest
+import tomllib
 import xarray as xr
 
 from asperity.cases import load_case
@@ -184,6 +185,54 @@ def test_a_run_stopped_by_a_diverged_step_says_so(monkeypatch):
     stopped = [w for w in out.warnings if w.startswith("steps: the run stopped at step 7 of 40")]
     assert len(stopped) == 1 and "no step was counted" in stopped[0]
     assert not out.converged
+
+
+def test_a_run_that_fails_step_after_step_stops_and_says_so(monkeypatch, tmp_path):
+    """A user's cam-nose line contact (Eyring 4 MPa, slide/roll 0.1) whose smooth steady start
+    had not converged failed each of its first 700 steps with every fallback, 800-2,000
+    sweeps each, and would have run for hours. A run now stops once ``GIVE_UP_STEPS`` (10)
+    steps in a row fail, and says why and what to check; nine in a row and a converged step
+    do not stop it. Here steps 3-12 (or 3-11) are reported unconverged (finite residual)."""
+    from asperity.ehl import stepper as stepper_module
+    from asperity.ehl.transient import GIVE_UP_STEPS
+    from asperity.runners import run_case
+
+    advance = stepper_module.TimeStepper.advance
+
+    def failing(last):
+        calls = {"n": 0}
+
+        def step(self, phi):
+            report = advance(self, phi)
+            calls["n"] += 1
+            if 3 <= calls["n"] <= last:
+                return report._replace(converged=False, residual=0.2)
+            return report
+        return step
+
+    monkeypatch.setattr(stepper_module.TimeStepper, "advance", failing(2 + GIVE_UP_STEPS))
+    out = run_case(load_case(CASE))  # 10 warm-up steps, 30 counted
+    assert out.dataset.attrs["steps_done"] == 12
+    stopped = [w for w in out.warnings if w.startswith("steps: the run stopped at step 12 of "
+                                                       "40: its last 10 steps did not converge")]
+    assert len(stopped) == 1 and "smooth steady start" in stopped[0]
+    assert not out.converged
+    # its report shows the centre line of the last snapshot it reached (step 11 of 11, 21,
+    # 30, 40; drawing step 40's raised on NaN axis limits), and none when it reached none
+    out.write(tmp_path / "one")
+    assert (tmp_path / "one" / "centre_line.png").is_file()
+    late = tomllib.loads(CASE)
+    late["time"] = {**late.get("time", {}), "warmup_steps": 20}
+    monkeypatch.setattr(stepper_module.TimeStepper, "advance", failing(2 + GIVE_UP_STEPS))
+    out = run_case(load_case(late))
+    assert out.dataset.attrs["steps_done"] == 12
+    out.write(tmp_path / "none")
+    assert (tmp_path / "none" / "report.html").is_file()
+    assert not (tmp_path / "none" / "centre_line.png").exists()
+    monkeypatch.setattr(stepper_module.TimeStepper, "advance", failing(1 + GIVE_UP_STEPS))
+    out = run_case(load_case(CASE))
+    assert out.dataset.attrs["steps_done"] == 40
+    assert not [w for w in out.warnings if "the run stopped" in w]
 
 
 BEARING_DENT = {

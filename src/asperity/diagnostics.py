@@ -1127,9 +1127,12 @@ def coarse_roughness_file(label: str, spacing, x, y,
             f"file sampled at {finer}, or a coarser grid: {grid}"]
 
 
-def stopped_run(steps_done: int, warmup_steps: int, counting_steps: int) -> list[str]:
+def stopped_run(steps_done: int, warmup_steps: int, counting_steps: int,
+                failed_in_a_row: int = 0) -> list[str]:
     """A transient run that stopped before its last step: a step diverged after every
-    fallback of the solver (:meth:`asperity.ehl.stepper.TimeStepper.advance`).
+    fallback of the solver (:meth:`asperity.ehl.stepper.TimeStepper.advance`), or
+    ``failed_in_a_row`` steps in a row (:data:`asperity.ehl.transient.GIVE_UP_STEPS`) did not
+    converge with any of them.
 
     Parameters
     ----------
@@ -1137,6 +1140,8 @@ def stopped_run(steps_done: int, warmup_steps: int, counting_steps: int) -> list
         Steps done, the diverged one included.
     warmup_steps, counting_steps : int
         The run's warm-up and counting steps.
+    failed_in_a_row : int
+        Unconverged steps at the end of the run (0: the last step diverged).
 
     Returns
     -------
@@ -1150,7 +1155,15 @@ def stopped_run(steps_done: int, warmup_steps: int, counting_steps: int) -> list
     held = ("no step was counted (counting starts after the warm-up), so every statistic is "
             "empty" if counted == 0 else
             f"the statistics hold {counted} of the {counting_steps} counting steps")
+    fallbacks = ("the far field refreshed at every sweep, the density's Newton term, the load "
+                 "gain halved, under-relaxation")
+    if failed_in_a_row:
+        return [f"steps: the run stopped at step {steps_done} of {total}: its last "
+                f"{failed_in_a_row} steps did not converge with any fallback of the solver "
+                f"({fallbacks}), and a run that fails so many in a row does not recover; "
+                f"{held}. Check first that the smooth steady start converged (run the contact "
+                "as analysis = \"ehl-steady\"), then try a finer grid, a smaller time.dt or "
+                "solver.load_gain"]
     return [f"steps: the run stopped at step {steps_done} of {total}: that step diverged after "
-            "every fallback of the solver (the far field refreshed at every sweep, the "
-            f"density's Newton term, the load gain halved); {held}. Try a smaller time.dt or "
+            f"every fallback of the solver ({fallbacks}); {held}. Try a smaller time.dt or "
             "solver.load_gain"]

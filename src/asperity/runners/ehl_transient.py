@@ -234,17 +234,25 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     notes += _fallback_notes(case, problem, res)
     from ..plotting import ehl_transient as plots
 
+    # a run that stopped early has no snapshot at the steps it did not reach: the centre line
+    # of the last one it reached, or none
+    reached = np.flatnonzero(np.isfinite(res.centre_film).all(axis=1))
     shown_index = int(np.flatnonzero(res.snapshot_steps == shown)[0])
+    if shown_index not in reached and reached.size:
+        shown_index = int(reached[-1])
     rate_plot = plots.plot_contact_rate_line if line else plots.plot_contact_rate
     figures = {
         "contact_count_rate": (lambda: rate_plot(res, problem),
                                "Contact count rate Q per ms over the contact (Figs. 4-8)."),
-        "centre_line": (lambda: plots.plot_centre_line(res, problem, shown_index),
-                        "Pressure and film on y = 0 with the two surfaces below (Fig. 3)"
-                        + (", the feature at the centre." if shown != snaps[-1] else ".")),
         "film_histogram": (lambda: plots.plot_film_histogram(res),
                            "Film thickness distribution over the counting period."),
     }
+    if reached.size:
+        centred_shown = res.snapshot_steps[shown_index] == shown != snaps[-1]
+        figures["centre_line"] = (
+            lambda: plots.plot_centre_line(res, problem, shown_index),
+            "Pressure and film on y = 0 with the two surfaces below (Fig. 3)"
+            + (", the feature at the centre." if centred_shown else "."))
     if not line:
         figures["flow_vectors"] = (lambda: plots.plot_flow_vectors(res, problem),
                                    "Film contours and lubricant flow vectors (Fig. 14).")
@@ -265,7 +273,11 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         # the reported minimum film without contact, at its step: a feature that crosses the
         # side lobes of a point contact is as thin as the mesh across y lets the lobes be
         trust += diagnostics.ehl_minimum_film_mesh(least, res.x, res.y, problem.a, b)
-    trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps)
+    unconverged = ~res.step_converged[:res.steps_done]
+    in_a_row = (res.steps_done if unconverged.all() else int(np.argmin(unconverged[::-1])))
+    stopped = np.isfinite(res.residuals[res.steps_done - 1]) if res.steps_done else False
+    trust += diagnostics.stopped_run(res.steps_done, res.warmup_steps, res.counting_steps,
+                                     in_a_row if stopped else 0)
     trust += diagnostics.unconverged_steps(res.step_converged[:res.steps_done],
                                            case.solver.tolerance, case.solver.max_sweeps,
                                            res.residuals[:res.steps_done], BLOWN_UP_FLOOR,
