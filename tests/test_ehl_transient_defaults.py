@@ -712,8 +712,9 @@ def test_an_undamped_step_that_grows_takes_the_damping_back(monkeypatch, rise, u
     every sweep: 5-6 failed; docs/ehl-transient.md). With the damping taken back when the
     residual rises above ``REDAMP_RISE`` times its best, all of the first 510 steps converge;
     never taking it back (the code before) fails them again when the last fallback (every
-    change under-relaxed, ``UNDER_RELAXATION``) is taken away, and with it they converge,
-    under-relaxed, without the damping taken back."""
+    change under-relaxed, ``UNDER_RELAXATION``) is taken away (four of the five: 506-509,
+    and 506, 507, 509, 510 since the point update's film Newton term changed the steady
+    start), and with it they converge, under-relaxed, without the damping taken back."""
     monkeypatch.setattr(stepper, "REDAMP_RISE", rise)
     monkeypatch.setattr(stepper, "UNDER_RELAXATION", under)
     res = _reducer_point_a(510)
@@ -721,7 +722,7 @@ def test_an_undamped_step_that_grows_takes_the_damping_back(monkeypatch, rise, u
     if np.isfinite(rise):
         assert failed.size == 0
     elif under == 1.0:
-        assert set(failed) >= {506, 507, 508, 509}
+        assert len(set(failed) & set(range(506, 511))) >= 4
     else:
         assert failed.size == 0
         assert np.all(res.relaxation[505:509] == UNDER_RELAXATION)
