@@ -181,6 +181,7 @@ def test_maps_of_a_long_ellipse_are_compressed_across_and_say_so(b_over_a):
 
     from asperity.plotting.ehl import contour_maps
     from asperity.plotting.ehl_transient import plot_contact_rate, plot_flow_vectors
+    from asperity.plotting.style import plt
 
     a = 1e-4
     x, y, p, h, a, b = _ellipse_fields(a=a, b=b_over_a * a)
@@ -190,15 +191,17 @@ def test_maps_of_a_long_ellipse_are_compressed_across_and_say_so(b_over_a):
     result.contact_count_rate = np.zeros_like(h)
     problem.b = b
     to_scale = b_over_a <= 5.0
-    axes = contour_maps(x, y, p, h, a, b, 0.5e-6).axes[:2]
-    axes += [plot_contact_rate(result, problem).axes[0],
-             plot_flow_vectors(result, problem).axes[0]]
+    figures = [contour_maps(x, y, p, h, a, b, 0.5e-6), plot_contact_rate(result, problem),
+               plot_flow_vectors(result, problem)]
+    axes = [*figures[0].axes[:2], figures[1].axes[0], figures[2].axes[0]]
     for ax in axes:
         ellipse = next(ln for ln in ax.get_lines() if ln.get_label() == "Hertz contact")
         assert _displayed_aspect(ax, ellipse) == pytest.approx(
             b_over_a if to_scale else 5.0, rel=0.02)
     for ax in (axes[0], axes[2], axes[3]):
         assert ax.get_ylabel() == ("y / a" if to_scale else "y / a  (compressed 1.9 times)")
+    for fig in figures:
+        plt.close(fig)
 
 
 def test_case_file_in_imperial_units_reports_imperial_beside_si(tmp_path):
