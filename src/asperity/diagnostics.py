@@ -817,8 +817,7 @@ def unresolved_roughness(label: str, z, spacing: float, dx: float) -> list[str]:
     if not total > 0 or cutoff <= 2 * spacing or z.shape[0] < 8:
         return []
     xs = spacing * np.arange(z.shape[0])
-    smooth = gaussian_filter(z, xs, cutoff, periodic=False) if z.ndim == 1 else np.stack(
-        [gaussian_filter(col, xs, cutoff, periodic=False) for col in z.T], axis=1)
+    smooth = gaussian_filter(z, xs, cutoff, periodic=False)  # along x, every row
     share = _rms(z - smooth) / total
     if share <= UNRESOLVED_RMS_SHARE:
         return []

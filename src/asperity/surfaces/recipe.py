@@ -291,11 +291,8 @@ def _on_rows(topography: Topography, y) -> Topography:
 def _finished(recipe: SurfaceRecipe, surf, y):
     """The low-pass filter (along x), scale and waviness of the recipe applied to ``surf``."""
     z = np.asarray(surf.z)
-    if recipe.lowpass_wavelength:
-        def along_x(heights):
-            return gaussian_filter(heights, surf.x, recipe.lowpass_wavelength,
-                                   periodic=surf.periodic)
-        z = along_x(z) if z.ndim == 1 else np.stack([along_x(row) for row in z.T], axis=1)
+    if recipe.lowpass_wavelength:  # along x (axis 0), every row of a topography
+        z = gaussian_filter(z, surf.x, recipe.lowpass_wavelength, periodic=surf.periodic)
     if recipe.scale != 1.0 or recipe.lowpass_wavelength:
         surf = surf.with_heights(recipe.scale * z)
     if recipe.waviness is not None:
