@@ -165,13 +165,14 @@ def test_a_mesh_coarse_across_a_gaussian_topography_is_reported():
 def test_a_run_with_a_topography_on_rows_too_coarse_says_so():
     """The user's case on a grid of its own with rows b/5 apart (a few steps): the disc that
     has entered the domain is a topography (its heights vary across y) and the run names the
-    correlation length across y that its rows cannot resolve."""
+    correlation length (the case's key) that its rows cannot resolve across y."""
     data = tomllib.loads(DISC)
     data["grid"] = {"nx": 65, "ny": 21}
     data["time"] = {"warmup_steps": 0, "counting_steps": 6}
     outcome = run_case(load_case(data))
-    lines = [w for w in outcome.warnings if "correlation_length_y" in w]
-    assert len(lines) == 1 and "across y" in lines[0]
+    lines = [w for w in outcome.warnings if "across y (limit 2 cells)" in w]
+    # the key the case set: correlation_length (isotropic), not correlation_length_y
+    assert len(lines) == 1 and lines[0].startswith("surface2: correlation_length = 15 um")
     disc = outcome.dataset["surface2"].values  # at the last step, entered at the inlet
     entered = disc[np.abs(disc).max(axis=1) > 0.0]
     assert len(entered) >= 2

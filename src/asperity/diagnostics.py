@@ -1043,11 +1043,11 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
     min_cells : float
         Smallest acceptable correlation length in cells.
     correlation_length_y : float, optional
-        Correlation length across y of an anisotropic surface, m: each direction is then
-        judged on its own cells (a transient run's cells are several times longer across y
-        than along x).
+        Correlation length across y of an anisotropic surface, m. Each direction is judged
+        on its own cells (a transient run's cells are several times longer across y than
+        along x), and the line names the worse.
     along_x : bool
-        False: judge the cells across y only (with ``correlation_length_y``): a transient
+        False: judge the cells across y only: a transient
         run's surface is sampled finer than the mesh along x, where
         :func:`unresolved_roughness` judges it, and generated on the mesh's rows across y.
 
@@ -1056,20 +1056,19 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
     list of str
         At most one line.
     """
-    if correlation_length_y is None:
-        cell = max(_spacing(x), _spacing(y) if len(y) > 1 else 0.0)
-        directions = [("", correlation_length, cell)]
-    else:
-        directions = [(" along x", correlation_length, _spacing(x))] if along_x else []
-        if len(y) > 1:
-            directions.append((" across y", correlation_length_y, _spacing(y)))
+    directions = [("correlation_length", " along x", correlation_length, _spacing(x))
+                  ] if along_x else []
+    if len(y) > 1:
+        directions.append(("correlation_length" if correlation_length_y is None else
+                           "correlation_length_y", " across y",
+                           correlation_length if correlation_length_y is None else
+                           correlation_length_y, _spacing(y)))
     if not directions:
         return []
-    where, ell, cell = min(directions, key=lambda d: d[1] / d[2])
+    key, where, ell, cell = min(directions, key=lambda d: d[2] / d[3])
     cells = ell / cell
     if not cells < min_cells:
         return []
-    key = "correlation_length_y" if where == " across y" else "correlation_length"
     return [f"{label}: {key} = {ell * 1e6:.3g} um is {cells:.2g} cells of {cell * 1e6:.3g} um"
             f"{where} (limit {min_cells:g} cells), so the mesh, not the surface, sets the "
             "asperity size and the real contact area and asperity pressures depend on the "

@@ -313,7 +313,7 @@ def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> lis
         if spec.kind == "gaussian":  # generated on the mesh's rows across y
             lines += diagnostics.roughness_resolution(
                 f"surface{k}", spec.correlation_length, x, y, along_x=False,
-                correlation_length_y=spec.correlation_length_y or spec.correlation_length)
+                correlation_length_y=spec.correlation_length_y)
     return lines
 
 
