@@ -88,6 +88,21 @@ def test_periodic_patch_width_also_across_the_boundary(shift):
     assert width == pytest.approx(0.6, abs=2 / n)
 
 
+def test_periodic_strips_the_same_on_every_row_are_judged_along_x_only():
+    """A profile repeated across y on a flat: every patch is a strip across the whole period
+    by design, and a wider period would change nothing, so only x is judged (strips 20 % of
+    the period wide: silent). The same strips broken on one row do span y by contact and are
+    reported."""
+    x = y = _cells(64, 1.0)
+    strips = np.zeros((64, 64), dtype=bool)
+    strips[10:23, :] = strips[40:53, :] = True
+    assert dg.periodic_contact(strips, x, y) == []
+    broken = strips.copy()
+    broken[10:23, 5] = False
+    lines = dg.periodic_contact(broken, x, y)
+    assert len(lines) == 1 and "along y" in lines[0]
+
+
 def test_periodic_patch_below_half_the_period_is_silent():
     x = y = _cells(64, 1.0)
     assert dg.periodic_contact(_hertz(x, y, 0.2) > 0, x, y) == []

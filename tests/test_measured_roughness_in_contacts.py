@@ -105,6 +105,24 @@ def test_form_degree_zero_removes_the_mean_only(tmp_path):
     assert any("tilt of 5 mrad along x is kept" in n for n in rough.notes)
 
 
+def test_heights_in_nm_declared_um_are_doubted(tmp_path):
+    """A trace whose heights are in nm under a 'z_um' column: its rms slope (Rdq, forward
+    differences) is 2 pi A / (sqrt(2) lambda) = 0.0178 as measured and 1000 times that as
+    read, above the plausible 1. The contact case says so and names z_unit, as ``asperity
+    surface stats`` does; the same trace in um is silent."""
+    x = H * np.arange(N)
+    nm = _trace(tmp_path, _cosine(x) * 1e3, name="trace.csv")  # nm values in a um column
+    assert nm.exists()
+    doubt = [w for w in _run(tmp_path, SPHERE).warnings if "rms slope" in w]
+    assert len(doubt) == 1 and doubt[0].startswith("roughness.path: Rdq: rms slope")
+    assert 'z_unit = "nm"' in doubt[0]
+    rdq = float(doubt[0].split("rms slope ")[1].split()[0])
+    assert rdq == pytest.approx(1e3 * 2 * np.pi * AMPLITUDE / (np.sqrt(2) * WAVELENGTH),
+                                rel=0.01)
+    _trace(tmp_path, _cosine(x), name="trace.csv")
+    assert not any("rms slope" in w for w in _run(tmp_path, SPHERE).warnings)
+
+
 def test_absolute_positions_are_taken_from_the_start(tmp_path):
     """An export with x from 12.5 mm gives the heights of the same trace from 0."""
     x = H * np.arange(N)

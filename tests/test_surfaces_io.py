@@ -89,6 +89,23 @@ def test_text_errors_name_the_file_and_line(tmp_path):
         write_surface(Profile(np.arange(3.0), np.zeros(3)), tmp_path / "p.abc")
 
 
+def test_decimal_commas_with_a_comma_separator_are_refused(tmp_path):
+    """A European export whose separator is the comma too: the header names 2 columns and each
+    line has 4 fields. Read as a 4-column height matrix it came out as a surface with Sa of
+    14.8 km; it is refused, saying why and how to export instead. The same numbers with ';'
+    read."""
+    bad = tmp_path / "euro.csv"
+    bad.write_text("x_mm,z_um\n0,0000,2,90296\n0,0005,2,86233\n0,0010,2,82629\n")
+    with pytest.raises(InputError, match=r"euro\.csv: expected one field per column.*"
+                                         r"2 names.*4 fields.*decimal commas.*';'"):
+        read_surface(bad)
+    good = tmp_path / "euro-semicolon.csv"
+    good.write_text("x_mm;z_um\n0,0000;2,90296\n0,0005;2,86233\n0,0010;2,82629\n")
+    p = read_surface(good)
+    assert p.z == pytest.approx([2.90296e-6, 2.86233e-6, 2.82629e-6])
+    assert p.spacing == pytest.approx(0.5e-6)
+
+
 def test_instrument_formats_need_surface_topography(tmp_path, monkeypatch):
     (tmp_path / "scan.x3p").write_bytes(b"PK")
     monkeypatch.setitem(sys.modules, "SurfaceTopography", None)  # import fails

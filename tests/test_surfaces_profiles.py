@@ -107,6 +107,16 @@ def test_iso4288_cutoff_from_the_profile():
     assert cutoff_for_ra(0.01e-6) == 0.08e-3 and cutoff_for_ra(20e-6) == 8e-3
 
 
+def test_iso4288_cutoff_nearest_held_when_the_profile_is_short():
+    """Ra = 14 um asks for 8 mm (Table 1: (10, 80] um), which a 6 mm profile cannot hold with
+    run-in and run-out (8 mm alone is longer); the nearest held, 2.5 mm, is used and named,
+    not the 0.8 mm the search began with."""
+    amp = 14e-6 * math.pi / 2
+    fam = profile_families(trace(6e-3, lambda x: amp * np.sin(2 * np.pi * x / 100e-6)))
+    assert fam.cutoff == pytest.approx(2.5e-3)
+    assert any("asks for 8 mm" in w and "used 2.5 mm" in w for w in fam.warnings)
+
+
 def test_lambda_s_only_where_the_spacing_allows():
     assert lambda_s_for(0.8e-3, 0.5e-6)[0] == pytest.approx(2.5e-6)
     assert lambda_s_for(2.5e-3, 1.5e-6)[0] == pytest.approx(8e-6)

@@ -213,6 +213,9 @@ def _patch_widths(contact) -> list[tuple[float, float]]:
 def periodic_contact(contact, x, y) -> list[str]:
     """A periodic contact that fills its cell, or one patch wider than half the period.
 
+    A contact that is the same on every row (a profile repeated across y on a flat, a plane
+    problem) is judged along x only: its strips span y by design.
+
     Parameters
     ----------
     contact : ndarray of bool, shape (nx, ny)
@@ -236,6 +239,10 @@ def periodic_contact(contact, x, y) -> list[str]:
     if not widths:
         return []
     wx, wy = max(w[0] for w in widths), max(w[1] for w in widths)
+    if np.array_equal(c, np.broadcast_to(c[:, :1], c.shape)):
+        wy = 0.0  # the same along every row (a profile repeated across y on a flat): the
+        # patches are strips across the whole period by design, and a longer one would not
+        # change them
     axis, width = ("x", wx) if wx >= wy else ("y", wy)
     if width <= PATCH_PERIOD_FRACTION:
         return []

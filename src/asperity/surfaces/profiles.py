@@ -149,7 +149,9 @@ def _unheld_cutoff(wanted: float, fitting: list, profile: Profile) -> str:
 def _iso4288_cutoff(p: np.ndarray, profile: Profile, lambda_s, notes: list,
                     warnings: list) -> float:
     """ISO 4288 clause 7: the cut-off whose Ra range holds the Ra measured with it (with the
-    lambda_s that goes with each cut-off, so that the Ra named is the one reported)."""
+    lambda_s that goes with each cut-off, so that the Ra named is the one reported). Where
+    the profile does not hold the cut-off asked for, the held one nearest to it (the longest,
+    or for a coarse spacing the shortest) is measured with and used, with a warning."""
     fitting = [cut for _, cut in CUTOFFS if _fits(cut, profile)]
     if not fitting:
         need = "one ISO 4288 cut-off (0.08 mm)" if profile.periodic else (
@@ -171,6 +173,10 @@ def _iso4288_cutoff(p: np.ndarray, profile: Profile, lambda_s, notes: list,
                          f"{ra * 1e6:.4g} um measured with it lies in its range)")
             return cutoff
         if wanted not in fitting:
+            held = fitting[-1] if wanted > fitting[-1] else fitting[0]  # nearest to wanted
+            if held != cutoff:
+                cutoff = held
+                continue
             reason, advice = _unheld_cutoff(wanted, fitting, profile)
             warnings.append(f"lambda_c: ISO 4288 asks for {wanted * 1e3:g} mm (Ra = "
                             f"{ra * 1e6:.4g} um) but {reason}; used {cutoff * 1e3:g} mm; "

@@ -145,6 +145,22 @@ def _row(text: str) -> tuple[list[float], list[str]] | None:
     return values, fields
 
 
+_INTEGER = re.compile(r"^[+-]?\d+$")
+_DIGITS = re.compile(r"^\d+([eE][+-]?\d+)?$")
+
+
+def _decimal_commas(names: list[str], line: str, rows: list[list[str]]) -> bool:
+    """Whether comma-separated column ``names`` over data lines of twice as many fields read
+    as numbers written with decimal commas and a comma separator (``x_mm,z_um`` over
+    ``0,0005,2,86233``): every pair of fields an integer part and its digits."""
+    if (len(names) < 2 or "," not in line or "\t" in line or ";" in line
+            or any(_value(f, False) is not None for f in names)):
+        return False
+    return all(len(row) == 2 * len(names)
+               and all(_INTEGER.match(row[k]) and _DIGITS.match(row[k + 1])
+                       for k in range(0, len(row), 2)) for row in rows)
+
+
 def read_table(path: Path) -> TextTable:
     """Read a text export's header and data block (see the module docstring).
 
@@ -200,5 +216,12 @@ def read_table(path: Path) -> TextTable:
         if len(fields) == width and all(_value(f, False) is None for f in fields):
             names = fields
             header_lines = [h for h in header_lines if h is not line]
+        elif _decimal_commas(fields, line, tokens):
+            raise InputError(str(path), f"one field per column named in the header line "
+                             f"{line.strip()!r}: its {len(fields)} names are separated by "
+                             f"commas and each data line has {width} fields, as decimal "
+                             "commas with a comma separator give (line "
+                             f"{start + 1}: {lines[start].strip()!r}); export with ';' or "
+                             "tab separators, or with decimal points")
     pairs = header_pairs([line for line in header_lines if line.strip()])
     return TextTable(data, names, pairs, resolution, start + 1)
