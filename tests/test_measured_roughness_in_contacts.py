@@ -245,3 +245,61 @@ def test_a_moving_surface_file_is_levelled_too(tmp_path):
     surf = MovingSurfaceSpec(kind="file", path=str(path)).build(1e-3, H, np.zeros(1), 2e-6)
     np.testing.assert_allclose(surf.z, _cosine(surf.x), rtol=0, atol=1e-12)
     assert math.isclose(float(np.mean(surf.z)), 0.0, abs_tol=1e-15)
+
+
+ROLLER = """analysis = "ehl-transient"
+[body1]
+youngs_modulus = "210 GPa"
+[body2]
+youngs_modulus = "210 GPa"
+[contact]
+type = "line"
+radius = "4 mm"
+load_per_length = "500 kN/m"
+[speeds]
+u = "5 m/s"
+xi = 0.05
+[lubricant]
+eta0 = "0.02 Pa s"
+alpha = "18 1/GPa"
+[grid]
+nx = 129
+[time]
+warmup_steps = 1
+counting_steps = 2
+[surface2]
+kind = "file"
+path = "trace.csv"
+"""
+
+
+def test_a_moving_surface_file_reports_its_units_and_doubts_them(tmp_path):
+    """A bearing engineer's race trace in a transient line contact: the notes name the units
+    read and the form removed; heights in nm under a 'z_um' column (Rdq 1000 times the
+    cosine's 2 pi A / (sqrt(2) lambda) = 0.0178) are doubted first, naming surface2.path and
+    z_unit (before, the run diverged at step 31 with advice on the inlet and the time step)."""
+    x = H * np.arange(N)
+    _trace(tmp_path, OFFSET + TILT * x + _cosine(x))
+    out = _run(tmp_path, ROLLER)
+    named = [n for n in out.notes if n.startswith("surface2.path (trace.csv):")]
+    assert any("heights in um" in n for n in named) and any("x in mm" in n for n in named)
+    # the mean height removed: 12 um + 5 mrad times the trace's mid-point, 0.49975 mm
+    assert any("offset 14.5 um" in n and "tilt 5 mrad" in n for n in named)
+    assert not any("rms slope" in w for w in out.warnings)
+    _trace(tmp_path, (OFFSET + TILT * x + _cosine(x)) * 1e3)
+    first = _run(tmp_path, ROLLER).warnings[0]
+    assert first.startswith("surface2.path: Rdq: rms slope") and 'z_unit = "nm"' in first
+    # of the levelled heights: the cosine's alone, the tilt removed with the mean line
+    assert float(first.split("rms slope ")[1].split()[0]) == pytest.approx(
+        1e3 * 2 * np.pi * AMPLITUDE / (np.sqrt(2) * WAVELENGTH), rel=0.01)
+
+
+def test_a_moving_surface_file_too_short_for_the_run_is_refused_naming_it(tmp_path):
+    """The trace must feed the whole run from the inlet: 0.2 mm against the 0.816 mm the
+    slower surface travels in 541 steps of 0.5 dx / u_1 (dx = 4 b / 128 on the default
+    domain -2.5b..1.5b, b = 148.6 um; u_2 = 4.875 m/s)."""
+    _trace(tmp_path, _cosine(H * np.arange(400)))
+    with pytest.raises(InputError, match=r"surface2\.path: expected a trace at least "
+                                         r"[0-9.]+ mm long.*trace\.csv is 0\.1995 mm.*"
+                                         r"time\.counting_steps"):
+        _run(tmp_path, ROLLER.replace("warmup_steps = 1", "warmup_steps = 600"))

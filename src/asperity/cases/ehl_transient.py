@@ -25,6 +25,7 @@ per surface, the time stepping and the per-step solver options of
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Annotated, Literal
 
 import numpy as np
@@ -38,7 +39,7 @@ from ..ehl.transient import (
 )
 from ..errors import InputError
 from ..surfaces.features import STRAIGHT_FEATURES
-from ..surfaces.recipe import build_surface
+from ..surfaces.recipe import SurfaceBuild, build_surface_record
 from .ehl import EHLCaseBase, EHLGridSpec
 from .fields import CaseModel, Quantity
 from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
@@ -110,13 +111,23 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
 
     def build(self, length: float, spacing: float, y: np.ndarray, dx: float,
               warmup_travel: float = 0.0):
-        """The surface (Profile, Topography or None), at least ``length`` m long along x.
+        """The surface (Profile, Topography or None), at least ``length`` m long along x: the
+        surface of :meth:`build_record`."""
+        built = self.build_record(length, spacing, y, dx, warmup_travel)
+        return None if built is None else built.surface
 
-        Built by :func:`asperity.surfaces.recipe.build_surface` on cells of ``spacing`` m;
-        ``dx`` is the mesh spacing (of ``lowpass``), ``y`` the mesh's cell centres across x (of
-        a dent, a bump, a transverse waviness, and the rows of a gaussian or self-affine
-        topography, which has the mesh's spacing across). None for a smooth surface without
-        waviness. A feature is placed by :meth:`feature_lead` of ``warmup_travel`` (m).
+    def build_record(self, length: float, spacing: float, y: np.ndarray, dx: float,
+                     warmup_travel: float = 0.0) -> SurfaceBuild | None:
+        """The surface with what a measured file's reading said and the form removed from it
+        (:class:`~asperity.surfaces.recipe.SurfaceBuild`), or None for a smooth surface without
+        waviness.
+
+        Built by :func:`asperity.surfaces.recipe.build_surface_record` on cells of ``spacing``
+        m, at least ``length`` m long along x (a file has its own length); ``dx`` is the mesh
+        spacing (of ``lowpass``), ``y`` the mesh's cell centres across x (of a dent, a bump, a
+        transverse waviness, and the rows of a gaussian or self-affine topography, which has
+        the mesh's spacing across). A feature is placed by :meth:`feature_lead` of
+        ``warmup_travel`` (m).
         """
         if self.kind == "smooth" and self.waviness is None:
             return None
@@ -134,8 +145,22 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
                                  f"across y ({2.0 * dy:.4g} m), where a point contact's "
                                  "self-affine topography is generated; or more rows (grid.ny)",
                                  self.short_cutoff)
-            return build_surface(recipe, length, (spacing, dy), width=y.size * dy, y=y)
-        return build_surface(recipe, length, spacing, y=y)
+            return build_surface_record(recipe, length, (spacing, dy), width=y.size * dy,
+                                        y=y)
+        return build_surface_record(recipe, length, spacing, y=y)
+
+
+def _check_trace_length(key: str, path: str, surface, travel: float, warmup: int,
+                        counting: int):
+    """Refuse a measured trace shorter than the ``travel`` (m) its surface makes in the run:
+    the solver feeds the surface in from the inlet and has no heights for the rest."""
+    have = float(surface.x[-1] - surface.x[0])
+    if travel > have:
+        raise InputError(key, f"a trace at least {travel * 1e3:.4g} mm long, as far as its "
+                         f"surface travels in the run's {warmup} warm-up and {counting} "
+                         f"counting steps ({Path(path).name} is {have * 1e3:.4g} mm): measure "
+                         "a longer trace, or shorten the run (time.warmup_steps, "
+                         "time.counting_steps)")
 
 
 class TimeSpec(CaseModel):
@@ -313,21 +338,39 @@ class EHLTransientCase(EHLCaseBase):
 
     def surfaces(self, problem, x: np.ndarray, y: np.ndarray, warmup: int, total: int,
                  dt: float):
-        """The two surfaces (Profile, Topography or None) of a run of ``total`` steps of
-        ``dt`` s on the mesh ``x``, ``y`` (m): long enough to feed the whole run (at least the
-        built-in profiles' own 5 mm, so that short runs use the standard realisation) and
-        sampled at a quarter of the mesh spacing (0.5 um at most); a feature placed by
-        :meth:`MovingSurfaceSpec.feature_lead` to enter when counting starts after ``warmup``
-        steps."""
+        """The two surfaces (Profile, Topography or None) of :meth:`surface_records`."""
+        return [None if built is None else built.surface
+                for built in self.surface_records(problem, x, y, warmup, total, dt)]
+
+    def surface_records(self, problem, x: np.ndarray, y: np.ndarray, warmup: int, total: int,
+                        dt: float) -> list[SurfaceBuild | None]:
+        """The two surfaces of a run of ``total`` steps of ``dt`` s on the mesh ``x``, ``y``
+        (m), with what a measured file's reading said (:meth:`MovingSurfaceSpec.build_record`):
+        long enough to feed the whole run (at least the built-in profiles' own 5 mm, so that
+        short runs use the standard realisation) and sampled at a quarter of the mesh spacing
+        (0.5 um at most); a feature placed by :meth:`MovingSurfaceSpec.feature_lead` to enter
+        when counting starts after ``warmup`` steps.
+
+        Raises
+        ------
+        InputError
+            A measured file, not periodic, shorter than its surface travels in the run (naming
+            ``surfaceK.path``, with the length needed and what to change).
+        """
         dx = x[1] - x[0]
         spacing = min(0.5e-6, dx / 4)
         out = []
-        for spec, u in ((self.surface1, problem.u1), (self.surface2, problem.u2)):
+        for k, (spec, u) in enumerate(((self.surface1, problem.u1),
+                                       (self.surface2, problem.u2)), start=1):
             length = max(5e-3, abs(u) * dt * total + (x[-1] - x[0]) + 20 * dx)
             travel = abs(u) * dt * warmup
             if spec.kind == "feature":
                 length = max(length, spec.feature_lead(travel) + 2 * spec.half_width)
-            out.append(spec.build(length, spacing, y, dx, warmup_travel=travel))
+            built = spec.build_record(length, spacing, y, dx, warmup_travel=travel)
+            if built is not None and spec.kind == "file" and not built.surface.periodic:
+                _check_trace_length(f"surface{k}.path", spec.path, built.surface,
+                                    abs(u) * dt * total, warmup, total - warmup)
+            out.append(built)
         return out
 
     @model_validator(mode="after")

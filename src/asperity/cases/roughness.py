@@ -355,8 +355,8 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
     name = Path(spec.path).name
     surf, read = built.surface, built.reading.surface
     xs = _from_start(surf.x, len(x), dx, surf.periodic, "x", f"{label}.path ({name})")
-    notes = [f"{label}.path ({name}): {note}" for note in built.reading.notes]
-    notes.append(f"{label}.path ({name}): {built.form.describe()}")
+    notes, warnings = built.file_report(f"{label}.path", name)
+    notes = list(notes)
     origin = _file_origin(read.x)
     if origin != 0.0:
         notes.append(f"{label}.path ({name}): positions taken from the file's start: its x = "
@@ -366,24 +366,8 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
     else:
         z = _on_grid(surf, xs, _from_start(surf.y, len(y), dy, surf.periodic, "y",
                                            f"{label}.path ({name})"))
-    warnings = (*built.reading.warnings, *built.reading.slope_warnings(*_rms_slope(surf)))
     return GridRoughness(spec.scale * z, tuple(float(h) for h in np.atleast_1d(read.spacing)),
-                         tuple(notes), tuple(f"{label}.path: {w}" for w in warnings))
-
-
-def _rms_slope(surf) -> tuple[str, float]:
-    """Rdq (profile) or Sdq (topography) of a measured file's heights by forward differences,
-    for the doubt on its units that ``asperity surface stats`` raises too: heights in nm read
-    as um give slopes a thousand times too steep, which the contact would take without
-    complaint. Missing points are left out; a kept form (tilt) counts, as it is in the
-    contact."""
-    z = np.asarray(surf.z, dtype=float)
-    if isinstance(surf, Profile):
-        return "Rdq", float(np.sqrt(np.nanmean((np.diff(z) / surf.spacing) ** 2)))
-    dx, dy = surf.spacing
-    gx = np.diff(z, axis=0)[:, :-1] / dx
-    gy = np.diff(z, axis=1)[:-1, :] / dy
-    return "Sdq", float(np.sqrt(np.nanmean(gx**2 + gy**2)))
+                         tuple(notes), warnings)
 
 
 def _length(value: float) -> str:

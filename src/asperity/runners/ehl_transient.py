@@ -174,7 +174,9 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     dt = case.time.dt if case.time.dt is not None else 0.5 * (x[1] - x[0]) / u_max
     warmup, counting = case.steps(problem, x, dt)
     total = warmup + counting
-    rough1, rough2 = case.surfaces(problem, x, y, warmup, total, dt)
+    records = case.surface_records(problem, x, y, warmup, total, dt)
+    rough1, rough2 = (None if built is None else built.surface for built in records)
+    file_notes, file_warnings = _file_reports(case, records)
     snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
     shown = snaps[-1]  # the centre-line figure's step: the last, or a feature at x = 0
     centred = [int(np.rint(-start / step))
@@ -231,7 +233,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         notes.append(f"{bad} of {res.steps_done} steps did not reach the tolerance "
                      f"{case.solver.tolerance:g} within {case.solver.max_sweeps} sweeps; the "
                      "statistics include them.")
-    notes += _fallback_notes(case, problem, res)
+    notes += [*file_notes, *_fallback_notes(case, problem, res)]
     from ..plotting import ehl_transient as plots
 
     # a run that stopped early has no snapshot at the steps it did not reach: the centre line
@@ -286,8 +288,22 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
     trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
-                   converged=res.converged, notes=notes, warnings=trust,
+                   converged=res.converged, notes=notes,
+                   warnings=[*file_warnings, *trust],  # the file's doubts explain the rest
                    chosen=chosen_mesh(case, problem, x, y))
+
+
+def _file_reports(case, records) -> tuple[list[str], list[str]]:
+    """The notes (units read, form removed) and warnings (the reader's, a doubt on the units)
+    of the surfaces read from measured files (:meth:`SurfaceBuild.file_report`)."""
+    notes, lines = [], []
+    for k, (spec, built) in enumerate(zip((case.surface1, case.surface2), records,
+                                          strict=True), start=1):
+        if built is not None and spec.kind == "file":
+            more, doubts = built.file_report(f"surface{k}.path", Path(spec.path).name)
+            notes += more
+            lines += doubts
+    return notes, lines
 
 
 def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> list[str]:

@@ -51,6 +51,7 @@ from .parameters import (
     autocorrelation_length,
     power_spectrum,
     residual_heights,
+    rms_gradient,
     roughness_parameters,
 )
 from .profiles import profile_families, profile_parameters
@@ -92,6 +93,7 @@ __all__ = [
     "residual_heights",
     "rk_parameters",
     "roughness_along",
+    "rms_gradient",
     "roughness_parameters",
     "section_height_difference",
     "self_affine_profile",

@@ -27,6 +27,7 @@ __all__ = [
     "autocorrelation_length",
     "power_spectrum",
     "residual_heights",
+    "rms_gradient",
     "roughness_parameters",
 ]
 
@@ -96,6 +97,34 @@ def _amplitude(r, prefix: str, scale: float) -> dict:
         f"{prefix}p": float(r.max()),
         f"{prefix}v": float(-r.min()),
     }
+
+
+def rms_gradient(surface) -> tuple[str, float]:
+    """The rms slope of a profile (Rdq) or topography (Sdq) by forward differences of its
+    heights as they are: no mean line or plane removed (a tilt counts, as it does in a
+    contact) and missing (NaN) points left out, so that it exists for any surface, a flat or
+    tilted one included (:func:`roughness_parameters` refuses those).
+
+    ``Rdq = sqrt(<(dz/dx)^2>)``; ``Sdq = sqrt(<(dz/dx)^2 + (dz/dy)^2>)`` over the nodes where
+    both forward differences exist (ISO 25178-2's Sdq, as in :func:`roughness_parameters`).
+
+    Returns
+    -------
+    (str, float)
+        ``("Rdq", value)`` or ``("Sdq", value)``; NaN without two points along each axis.
+    """
+    z = np.asarray(surface.z, dtype=float)
+    with np.errstate(all="ignore"):
+        if z.ndim == 1:
+            if z.size < 2:
+                return "Rdq", float("nan")
+            return "Rdq", float(np.sqrt(np.nanmean((np.diff(z) / surface.spacing) ** 2)))
+        if min(z.shape) < 2:
+            return "Sdq", float("nan")
+        dx, dy = surface.spacing
+        gx = np.diff(z, axis=0)[:, :-1] / dx
+        gy = np.diff(z, axis=1)[:-1, :] / dy
+        return "Sdq", float(np.sqrt(np.nanmean(gx**2 + gy**2)))
 
 
 def roughness_parameters(heights, x=None, y=None, *, periodic=False) -> dict:

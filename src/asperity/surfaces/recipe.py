@@ -58,6 +58,7 @@ from .generate import (
 from .ground import builtin_profile, transverse_ground_profile
 from .io import Reading, read_measured
 from .machining import turned_profile, turned_profile_dynamic
+from .parameters import rms_gradient
 from .topography import Profile, Topography, cell_centres
 
 __all__ = ["KINDS", "FormRemoval", "SurfaceBuild", "SurfaceRecipe", "Waviness", "build_surface",
@@ -185,6 +186,22 @@ class SurfaceBuild:
     surface: Profile | Topography
     reading: Reading | None = None
     form: FormRemoval | None = None
+
+    def file_report(self, key: str, name: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
+        """Notes and warnings of a measured file for a case, each naming ``key`` (the case's
+        ``path`` key, e.g. ``"surface2.path"``): the reader's notes (the units read and where
+        from) and the form removed, under ``"key (name)"``; the reader's warnings and its doubt
+        on the units when the rms slope (:func:`~asperity.surfaces.rms_gradient` of the
+        built heights) is implausible (:meth:`Reading.slope_warnings`): heights in nm read as
+        um give slopes a thousand times too steep, which a contact solver takes without
+        complaint. Both empty for a surface that was not read from a file."""
+        if self.reading is None:
+            return (), ()
+        notes = [f"{key} ({name}): {note}" for note in self.reading.notes]
+        if self.form is not None:
+            notes.append(f"{key} ({name}): {self.form.describe()}")
+        doubts = self.reading.slope_warnings(*rms_gradient(self.surface))
+        return tuple(notes), tuple(f"{key}: {w}" for w in (*self.reading.warnings, *doubts))
 
 
 def _tilt(surface) -> tuple[float, ...]:
