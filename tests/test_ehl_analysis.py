@@ -508,3 +508,24 @@ def test_a_short_inlet_is_reported_once():
                      "y_max": 1.5})
     inlet = [w for w in out.warnings if "inlet" in w]
     assert len(inlet) == 1 and inlet[0].startswith("inlet: x_min = -1.2 a")
+
+
+def test_a_stalled_steady_solve_is_told_what_helps():
+    """A user's roller bearing (1025 nodes, 4 grids) stopped after 5,460 sweeps, its residual
+    stalled at 1.8e-5 against the tolerance 1e-5, far below the 40,000-sweep limit: the note
+    says it stalled at 1.8 times the tolerance and that more sweeps do not help, and offers
+    1e-4. A solve that used up its sweeps is told to raise them instead."""
+    from types import SimpleNamespace
+
+    from asperity.runners.ehl_steady import stall_advice
+
+    case = SimpleNamespace(solver=SimpleNamespace(tolerance=1e-5, sweep_limit=lambda line:
+                                                  40_000 if line else 5_000))
+    line = np.zeros(1)
+    stalled = stall_advice(case, SimpleNamespace(sweeps=5460, residual=1.77e-5, y=line))
+    assert "stalled at 1.8 times the tolerance 1e-05" in stalled
+    assert "solver.tolerance (e.g. 0.0001)" in stalled and "more sweeps do not help" in stalled
+    spent = stall_advice(case, SimpleNamespace(sweeps=40_000, residual=1.77e-5, y=line))
+    assert "Raise solver.max_sweeps (now 40000)" in spent
+    far = stall_advice(case, SimpleNamespace(sweeps=5460, residual=3e-3, y=line))
+    assert "Raise solver.max_sweeps" in far and "stalled" not in far

@@ -218,3 +218,29 @@ def test_a_line_contact_takes_the_straight_features_only(feature, accepted):
     sign = -1.0 if feature == "groove" else 1.0
     assert sign * surf.z[np.argmax(np.abs(surf.z))] == pytest.approx(0.2e-6, rel=0.02)
     assert case.feature_spacing()[1] is None          # nothing across y to resolve
+
+
+@pytest.mark.parametrize("half_width, warned", [("32 um", False), ("150 um", True)])
+def test_a_feature_wider_than_the_contact_is_reported(half_width, warned):
+    """The example's ball contact has a = b = 106.8 um (Hertz: a^3 = 3 F R / (4 E*), 15 N,
+    R = 12.5 mm, E* = 115.4 GPa). A dent of 32 um half-width passes through it; one of 150 um
+    reshapes the contact, and the run says so naming surface1.half_width; one 1.5 times as
+    wide as the domain across y (4 a) is cut off at the sides, said too (a user's 2 mm dent
+    in a 0.67 mm contact ran 2,552 steps without a word). Two steps on the example's mesh."""
+    from asperity.runners import run_case
+
+    data = tomllib.loads(example_text("dent-rolling"))
+    data["surface1"]["half_width"] = half_width
+    data["grid"].update(nx=65, ny=17)
+    data["time"].update(counting_steps=2, snapshots=1)
+    lines = [w for w in run_case(load_case(data)).warnings
+             if w.startswith("surface1.half_width")]
+    a = (3 * 15.0 * 0.0125 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
+    assert a == pytest.approx(106.8e-6, rel=1e-3)
+    assert bool(lines) == warned
+    if warned:
+        assert "wider than the contact" in lines[0] and f"a = {a * 1e6:.4g} um" in lines[0]
+    data["surface1"]["half_width"] = "330 um"  # 660 um across, the domain 4 a = 427 um wide
+    lines = [w for w in run_case(load_case(data)).warnings
+             if w.startswith("surface1.half_width")]
+    assert len(lines) == 2 and "wider than the domain across y" in lines[1]

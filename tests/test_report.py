@@ -324,6 +324,9 @@ x_max = "0.5 mm"
     assert _parameter(html, "grid.y_min") == "-2 Hertz semi-axes"
     assert _parameter(html, "grid.nx") == f"{data.sizes['x']} (chosen for the contact)"
     assert _parameter(html, "grid.ny") == f"{data.sizes['y']} (chosen for the contact)"
+    # the grids of the sequence, as result.nc lists their shapes: not the key's default of 1
+    grids = data.attrs["levels"].count("(") - 1
+    assert grids > 1 and _parameter(html, "solver.levels") == f"{grids} (chosen for the contact)"
 
 
 def test_plain_numbers_of_a_case_show_their_unit():

@@ -20,7 +20,12 @@ from ..ehl.solver import Y_LINES_BELOW
 from ..references import ehl_steady_comparisons, film_formulas, lubricant_laws
 from ..results import Outcome, variable
 
-__all__ = ["chosen_mesh", "ehl_warnings", "run"]
+__all__ = ["STALLED_WITHIN", "chosen_mesh", "ehl_warnings", "run", "stall_advice"]
+
+#: A steady solve that stopped before its sweep limit with a residual below this many times
+#: its tolerance stalled near a solution (:func:`stall_advice`).
+STALLED_WITHIN = 10.0
+
 
 def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
@@ -85,7 +90,8 @@ def run(case, progress=None) -> Outcome:
                      f"{lubricant_laws(lub)}, so they are shown for orientation only.")
     if not res.converged:
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
-                     f"(residual {res.residual:.2e}); the numbers above are not trustworthy.")
+                     f"(residual {res.residual:.2e}); the numbers above are not trustworthy."
+                     + stall_advice(case, res))
     if not line and (res.y_lines or not res.converged):
         notes += _cell_advice(res)
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
@@ -98,8 +104,28 @@ def run(case, progress=None) -> Outcome:
     trust += collapse
     if not collapse:  # a collapsed film's friction is the collapse's, not the Newtonian law's
         trust += diagnostics.newtonian_traction(res.friction_coefficient, lub.newtonian)
+    chosen = chosen_mesh(case, problem, res.x, res.y)
+    if "levels" not in case.solver.model_fields_set:  # the grid sequence chosen with the mesh
+        chosen["solver.levels"] = len(res.levels)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=trust, chosen=chosen_mesh(case, problem, res.x, res.y))
+                   warnings=trust, chosen=chosen)
+
+
+def stall_advice(case, res) -> str:
+    """What to change for a steady solve that stopped short of its tolerance: a residual that
+    stalled within ``STALLED_WITHIN`` times the tolerance, before the sweep limit, is a
+    solution close to converged whose last digits the iteration cannot settle (a user's roller
+    bearing stopped at 1.8e-5 against 1e-5 after 5,460 sweeps, its central film 4 % from Moes's
+    formula); more sweeps would not help there."""
+    tol, limit = case.solver.tolerance, case.solver.sweep_limit(res.y.size == 1)
+    if res.sweeps >= limit or not res.residual < STALLED_WITHIN * tol:
+        return (f" Raise solver.max_sweeps (now {limit}) if the residual was still falling, "
+                "else check the inlet and the mesh (grid.nx, solver.levels).")
+    return (f" It stalled at {res.residual / tol:.2g} times the tolerance {tol:g}: close to a "
+            "solution, but not one; loosen solver.tolerance (e.g. "
+            f"{10 ** np.ceil(np.log10(res.residual)):g}) if that is accurate enough, or change "
+            "the mesh (grid.nx, solver.levels) or the inlet (grid.x_min); more sweeps do not "
+            "help.")
 
 
 def _cell_advice(res) -> list[str]:
@@ -176,12 +202,13 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None) 
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
     lines += mesh
-    if not mesh:  # enough cells for the Hertz zone: are they fine enough for the film?
-        # the film formula's film, as for the default mesh: a starved or unconverged film
-        # would ask for a mesh of the wrong film
-        lines += diagnostics.ehl_film_mesh(x, hz.a, problem.film_estimate() / problem.film_scale)
-        if smooth_film is not None:  # (a rough film's minimum is its asperity contacts)
-            lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
+    # fine enough for the film? Also where the Hertz zone has too few cells, whose advice
+    # alone asked for nx >= 41 where the film needs 209 (a user's nx = 33: -93 % on the film).
+    # The film formula's film, as for the default mesh: a starved or unconverged film would
+    # ask for a mesh of the wrong film
+    lines += diagnostics.ehl_film_mesh(x, hz.a, problem.film_estimate() / problem.film_scale)
+    if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
+        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])

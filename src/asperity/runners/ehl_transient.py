@@ -347,6 +347,7 @@ def _feature_warnings(case, problem, x, y, warmup, total, dt) -> list[str]:
                 dx if along else None, None if along else dy,
                 min_across=diagnostics.FEATURE_MIN_CELLS_ALONG)
     for label, spec, start, step in case.feature_tracks(problem, x, dt, warmup):
+        lines += _feature_size(label, spec, problem, y)
         lines += diagnostics.unresolved_feature(
             label, f"{spec.feature} half-width", spec.half_width, dx,
             None if spec.feature in STRAIGHT_FEATURES else dy)
@@ -354,3 +355,29 @@ def _feature_warnings(case, problem, x, y, warmup, total, dt) -> list[str]:
                                              start + total * step, problem.a, step, warmup,
                                              total - warmup)
     return lines
+
+
+def _feature_size(label: str, spec, problem, y) -> list[str]:
+    """A single feature wider than the contact (its half-width above the smaller Hertz
+    semi-axis) or than the domain across y: a user's dent of 2 mm half-width in a contact of
+    a = 0.67 mm, b = 0.28 mm ran 2,552 steps without a word. Such a feature reshapes the
+    whole contact instead of passing through it, which the feature statistics and mesh advice
+    do not expect."""
+    a = problem.a
+    b = None if isinstance(problem, LineContact) else problem.b
+    smaller = a if b is None else min(a, b)
+    lines = []
+    if spec.half_width > smaller:
+        axes = f"a = {a * 1e6:.4g} um" + ("" if b is None else f", b = {b * 1e6:.4g} um")
+        lines.append(f"{label}.half_width: the {spec.feature} ({spec.half_width * 1e6:.4g} um) "
+                     f"is wider than the contact ({axes}; limit: the smaller semi-axis): it "
+                     "changes the contact as a whole rather than passing through it; for a "
+                     "feature the size of the contact give its shape as waviness or form, or "
+                     "check the half-width's unit")
+    if b is not None and spec.feature not in STRAIGHT_FEATURES and \
+            2.0 * spec.half_width > y[-1] - y[0]:
+        lines.append(f"{label}.half_width: the {spec.feature} ({2e6 * spec.half_width:.4g} um "
+                     f"across) is wider than the domain across y ({(y[-1] - y[0]) * 1e6:.4g} "
+                     "um): it is cut off at the sides (grid.y_min, grid.y_max)")
+    return lines
+
