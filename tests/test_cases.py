@@ -79,3 +79,46 @@ def test_every_example_validates_and_documents_itself():
 def test_unknown_example_lists_the_valid_names():
     with pytest.raises(InputError, match="gear-dry-hertz"):
         example_text("no-such-example")
+
+
+TOROID = """analysis = "ehl-steady"
+[body1]
+youngs_modulus = "210 GPa"
+[body2]
+youngs_modulus = "210 GPa"
+[contact]
+type = "point"
+rx = "30 mm"
+ry = "8 mm"
+load = "863 N"
+[speeds]
+u = "10 m/s"
+[lubricant]
+eta0 = "0.02 Pa s"
+alpha = "28 1/GPa"
+"""
+
+
+def test_a_bare_pressure_viscosity_coefficient_is_refused_before_it_runs():
+    """A traction-drive user's ``alpha = 28`` (meant 1/GPa, read as 1/Pa): its film estimate
+    of 1.4 m asked for a default mesh of 542,009 x 42,345 nodes, and the run was killed for
+    memory after 57 s without a word. Now one line names the key and the unit to write; the
+    same contact with its unit validates."""
+    load_case(TOROID)
+    with pytest.raises(InputError) as exc:
+        load_case(TOROID.replace('alpha = "28 1/GPa"', "alpha = 28"))
+    message = str(exc.value)
+    assert message.startswith("lubricant.alpha: expected a pressure-viscosity coefficient")
+    assert 'write "20 1/GPa"' in message and "\n" not in message
+
+
+def test_a_steady_default_mesh_beyond_the_node_limit_is_refused():
+    """The traction drive with a 1 Pa s oil at 100 m/s and alpha = 900 1/GPa (within the
+    coefficient's range): a film of millimetres whose default mesh of 7,913 x 617 nodes is
+    more than a run here can hold; refused naming the default mesh and what to check, as the
+    transient case does, instead of running out of memory."""
+    huge = TOROID.replace('eta0 = "0.02 Pa s"', 'eta0 = "1 Pa s"').replace(
+        'u = "10 m/s"', 'u = "100 m/s"').replace('alpha = "28 1/GPa"', 'alpha = "900 1/GPa"')
+    with pytest.raises(InputError, match=r"expected at most 644004 nodes, got \d+ \(the "
+                                         r"default mesh \d+ x \d+ .*set grid\.nx"):
+        load_case(huge)

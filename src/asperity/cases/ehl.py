@@ -50,6 +50,8 @@ from .bodies import MaterialSpec
 from .fields import CaseHeader, CaseModel, Quantity
 
 __all__ = [
+    "ALPHA_MAX",
+    "MAX_NODES",
     "ContactSpec",
     "EHLCaseBase",
     "EHLGridSpec",
@@ -57,7 +59,30 @@ __all__ = [
     "LubricantSpec",
     "SolverSpec",
     "SpeedSpec",
+    "check_node_count",
 ]
+
+
+#: Most nodes of an EHL case's mesh (four times the seed's 801 x 201).
+MAX_NODES = 801 * 201 * 4
+
+
+def check_node_count(nx: int, ny: int, chosen: bool):
+    """Refuse a mesh of more than :data:`MAX_NODES` nodes (as a validator's ValueError);
+    ``chosen``: the default mesh the contact's film and features asked for, which says which
+    keys to set. A steady case whose bare ``alpha = 28`` (1/Pa) made a 1.4 m film estimate
+    asked for 542,009 x 42,345 nodes and ran out of memory without a word."""
+    if nx * ny > MAX_NODES:
+        why = "" if not chosen else (
+            f" (the default mesh {nx} x {ny} for the contact's film and the surfaces' "
+            "features; check the lubricant's and the contact's units, or set grid.nx and "
+            "grid.ny)")
+        raise ValueError(f"expected at most {MAX_NODES} nodes, got {nx * ny}{why}")
+
+
+#: Largest pressure-viscosity coefficient a case takes, 1/Pa (1000 1/GPa, twenty times that
+#: of a traction fluid): above it a bare number in 1/Pa was meant in 1/GPa.
+ALPHA_MAX = 1e-6
 
 
 class LubricantSpec(CaseModel):
@@ -74,7 +99,8 @@ class LubricantSpec(CaseModel):
     eta0: Quantity("viscosity", gt=0)
     """Viscosity at ambient pressure."""
     alpha: Quantity("inverse_pressure", ge=0)
-    """Pressure-viscosity coefficient (e.g. "11.1 1/GPa")."""
+    """Pressure-viscosity coefficient, at most 1000 1/GPa (e.g. "11.1 1/GPa"; a bare number
+    is 1/Pa)."""
     viscosity_model: Literal["roelands", "barus"] = "roelands"
     """Viscosity law: "roelands" (constants kappa, chi) or "barus"."""
     kappa: Quantity("viscosity", gt=0) = ROELANDS_KAPPA
@@ -91,6 +117,18 @@ class LubricantSpec(CaseModel):
     """Dowson-Higginson constant lambda."""
     tau0: Quantity("pressure", gt=0) | None = None
     """Eyring stress (absent or "none": Newtonian)."""
+
+    @field_validator("alpha")
+    @classmethod
+    def _plausible_alpha(cls, value):
+        # mineral and synthetic oils lie at 5-40 1/GPa, traction fluids up to ~50; a bare
+        # "alpha = 28" is 28 1/Pa, whose film estimate of 1.4 m made a default mesh of 542,009
+        # x 42,345 nodes that ran out of memory without a word
+        if value > ALPHA_MAX:
+            raise ValueError(f"expected a pressure-viscosity coefficient of at most "
+                             f"{ALPHA_MAX * 1e9:g} 1/GPa (oils: 5-50 1/GPa; a bare number is "
+                             "in 1/Pa: write \"20 1/GPa\")")
+        return value
 
     @field_validator("tau0", mode="before")
     @classmethod
@@ -474,7 +512,11 @@ class EHLSteadyCase(EHLCaseBase):
                     f"{self.solver.levels} (e.g. {8 * step + 1}, {16 * step + 1}, "
                     f"{32 * step + 1}); got {n}")
         try:
-            self.problem()
+            problem = self.problem()
         except InputError as exc:
             raise ValueError(f"expected {exc.expected} ({exc.field})") from None
+        options = self.solve_options(problem)
+        nx, ny = (options["nx"], options["ny"]) if options["nx"] is not None else \
+            problem.default_nodes(options["domain"])
+        check_node_count(nx, ny if not line else 1, self.regime_nodes)
         return self

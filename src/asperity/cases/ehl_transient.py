@@ -40,7 +40,7 @@ from ..ehl.transient import (
 from ..errors import InputError
 from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import SurfaceBuild, build_surface_record
-from .ehl import EHLCaseBase, EHLGridSpec
+from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
 from .fields import CaseModel, Quantity
 from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
 
@@ -383,11 +383,7 @@ class EHLTransientCase(EHLCaseBase):
         except InputError as exc:
             raise ValueError(f"expected {exc.expected} ({exc.field})") from None
         nx, ny, _ = self.mesh(problem)
-        if nx * ny > 801 * 201 * 4:
-            chosen = "" if self.grid.nodes_given else (
-                f" (the default mesh {nx} x {ny} for the contact's film and the surfaces' "
-                "features; set grid.nx and grid.ny)")
-            raise ValueError(f"expected at most {801 * 201 * 4} nodes, got {nx * ny}{chosen}")
+        check_node_count(nx, ny, not self.grid.nodes_given)
         u1, u2 = self.speeds.surface_speeds()
         for k, (spec, u) in enumerate(((self.surface1, u1), (self.surface2, u2)), start=1):
             rough = spec.kind != "smooth" or spec.waviness is not None
