@@ -224,3 +224,31 @@ def test_formula_input_validation():
         dowson_higginson_line(527e3, RX, SPEED, float("nan"), ALPHA, E_RED)
     # isoviscous (alpha = 0) is allowed where the formula covers it
     assert moes_line(527e3, RX, SPEED, ETA0, 0.0, E_RED).central > 0
+
+
+def test_a_contact_long_along_the_rolling_direction_is_compared_with_chittenden():
+    """A traction drive's contact (Rx 30 mm, Ry 8 mm: k = b/a = 0.42 < 1, outside
+    Hamrock-Dowson's 1 <= k <= 8) gets Chittenden's films (a user's toroid, computed by hand:
+    639.8 and 331.6 nm from U, G, W on Rx with E' = E / (1 - nu^2) = 230.8 GPa), not
+    Hamrock-Dowson's; the gear case (k = 3.9) keeps Hamrock-Dowson's."""
+    from asperity.ehl import Lubricant, PointContact
+    from asperity.materials import Material
+    from asperity.references import film_formulas
+
+    steel = Material(210e9, 0.3)
+    oil = Lubricant(0.02, 28e-9, viscosity_model="barus", compressible=False)
+    toroid = PointContact(0.030, 0.008, 863.14, 10.0, 10.0, steel, steel, oil)
+    films = film_formulas(toroid)
+    assert "hamrock_dowson_central_film_m" not in films
+    e = 210e9 / (1 - 0.3**2)
+    u, g, w = 0.02 * 10.0 / (e * 0.030), 28e-9 * e, 863.14 / (e * 0.030**2)
+    base = 0.030 * u**0.68 * g**0.49 * w**-0.073
+    ratio = (0.008 / 0.030) ** (2 / 3)
+    assert films["chittenden_central_film_m"] == pytest.approx(
+        4.31 * base * (1 - np.exp(-1.23 * ratio)), rel=1e-9)
+    assert films["chittenden_minimum_film_m"] == pytest.approx(
+        3.68 * base * (1 - np.exp(-0.67 * ratio)), rel=1e-9)
+    assert films["chittenden_central_film_m"] == pytest.approx(639.8e-9, rel=1e-3)
+    gear = PointContact(RX, RY, LOAD, SPEED, SPEED, steel, steel, oil)
+    assert "hamrock_dowson_central_film_m" in film_formulas(gear)
+    assert "chittenden_central_film_m" not in film_formulas(gear)

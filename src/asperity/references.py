@@ -251,15 +251,18 @@ def film_formulas(problem) -> dict[str, float]:
 
     Line contact: Moes (1992) central film, and Dowson-Higginson (1977) minimum film when the
     pressure-viscosity coefficient is positive. Point contact: Nijenbanning, Venner & Moes
-    (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and
-    Hamrock-Dowson (1977) central and minimum films when alpha > 0.
+    (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with
+    alpha > 0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers
+    1 <= k <= 8), Chittenden et al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the
+    major axis: a traction drive's contact, where Hamrock-Dowson was shown before).
 
     Returns
     -------
     dict
         Summary key (``moes_central_film_m``, ``dowson_higginson_minimum_film_m``,
         ``nijenbanning_central_film_m``, ``hamrock_dowson_central_film_m``,
-        ``hamrock_dowson_minimum_film_m``) -> film thickness, m.
+        ``hamrock_dowson_minimum_film_m``, ``chittenden_central_film_m``,
+        ``chittenden_minimum_film_m``) -> film thickness, m.
     """
     lub = problem.lubricant
     args = (problem.mean_speed, lub.viscosity, lub.pressure_viscosity, problem.reduced_modulus)
@@ -274,10 +277,15 @@ def film_formulas(problem) -> dict[str, float]:
     if problem.ry >= problem.rx:
         values["nijenbanning_central_film_m"] = formulas.nijenbanning_point(
             problem.load, problem.rx, problem.ry, *args).central
-    if lub.pressure_viscosity > 0:
+    if lub.pressure_viscosity > 0 and problem.ry >= problem.rx:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
                       hamrock_dowson_minimum_film_m=hd.minimum)
+    elif lub.pressure_viscosity > 0:  # entrainment along the major axis (k < 1): outside
+        # Hamrock-Dowson's fit (1 <= k <= 8), inside Chittenden's (ry/rx from about 1/50)
+        ch = formulas.chittenden_point(problem.load, problem.rx, problem.ry, *args)
+        values.update(chittenden_central_film_m=ch.central,
+                      chittenden_minimum_film_m=ch.minimum)
     return values
 
 
@@ -291,6 +299,10 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
                                       "hamrock-dowson-point"),
     "hamrock_dowson_minimum_film_m": ("minimum film", "minimum_film", "Hamrock-Dowson (1977)",
                                       "hamrock-dowson-point"),
+    "chittenden_central_film_m": ("central film", "central_film",
+                                  "Chittenden, Dowson, Dunn & Taylor (1985)", "chittenden-point"),
+    "chittenden_minimum_film_m": ("minimum film", "minimum_film",
+                                  "Chittenden, Dowson, Dunn & Taylor (1985)", "chittenden-point"),
 }
 # The central-film fits (Moes, Nijenbanning) are checked at 5 % when the lubricant is their own
 # model; Dowson-Higginson and Hamrock-Dowson are regressions over other solutions: shown only.

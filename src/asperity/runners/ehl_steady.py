@@ -95,7 +95,7 @@ def run(case, progress=None) -> Outcome:
     if not line and (res.y_lines or not res.converged):
         notes += _cell_advice(res)
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
-        "moes_central_film_m"))
+        "chittenden_central_film_m", summary.get("moes_central_film_m")))
     # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
     # the inlet advice of ehl_inlet_length; the formula's film is the better guess then
     film = res.central_film if res.converged else problem.film_estimate()
