@@ -233,8 +233,12 @@ def test_a_feature_wider_than_the_contact_is_reported(half_width, warned):
     data["surface1"]["half_width"] = half_width
     data["grid"].update(nx=65, ny=17)
     data["time"].update(counting_steps=2, snapshots=1)
-    lines = [w for w in run_case(load_case(data)).warnings
+    said = []
+    lines = [w for w in run_case(load_case(data), progress=lambda *a: said.append(a)).warnings
              if w.startswith("surface1.half_width")]
+    # before the steady start, the run's size and what it will cost
+    assert said[0][:2] == (0, 2) and "2 steps on 65 x 17 nodes" in said[0][2]
+    assert "about a minute or less" in said[0][2]
     a = (3 * 15.0 * 0.0125 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
     assert a == pytest.approx(106.8e-6, rel=1e-3)
     assert bool(lines) == warned

@@ -29,12 +29,17 @@ from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
 from .ehl_steady import chosen_mesh, ehl_warnings
 
-__all__ = ["CHECKPOINTS", "run"]
+__all__ = ["CHECKPOINTS", "SECONDS_PER_NODE_STEP", "run"]
 
 #: This runner takes ``workdir`` and ``resume`` (see :func:`asperity.runners.run_case`).
 CHECKPOINTS = True
 #: Steps relaxed again that get a note of their own in the report; the rest are counted.
 MAX_FALLBACK_NOTES = 8
+#: Wall seconds per node and time step of a transient run on 2 cores, for the estimate shown
+#: before it starts: the seed's gear case 1.9e-6 (801 x 201 nodes, 4,428 steps, 23 min), a
+#: ball bearing with a dent 1.6e-6 (513 x 889, 1,124 steps, 13.4 min; docs/ehl-transient.md,
+#: Cost, and session 35's user cases).
+SECONDS_PER_NODE_STEP = 2e-6
 
 
 def _dataset(case, problem, res) -> xr.Dataset:
@@ -195,6 +200,9 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             if partial is not None:
                 write_netcdf(partial, Path(workdir) / "result.nc")
 
+    if progress is not None:  # what the run will cost, before the steady start
+        progress(0, total, f"steady start; then {total} steps on {nx} x {ny} nodes, "
+                           f"{_expected_duration(nx * ny * total)}")
     with warnings.catch_warnings():  # the steady start's inlet warning: see ehl_warnings
         warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
         res = solve_transient(
@@ -291,6 +299,18 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
                    converged=res.converged, notes=notes,
                    warnings=[*file_warnings, *trust],  # the file's doubts explain the rest
                    chosen=chosen_mesh(case, problem, x, y))
+
+
+def _expected_duration(node_steps: int) -> str:
+    """The wall time a run of ``node_steps`` (nodes times steps) takes on 2 cores, in words:
+    about ``SECONDS_PER_NODE_STEP`` each, within a factor of 2 either way (docs/ehl-transient.md,
+    Cost). A user's long-ellipse dent case ran 1025 x 169 nodes for 2,087 steps with nothing
+    to say that it would take a quarter of an hour."""
+    minutes = node_steps * SECONDS_PER_NODE_STEP / 60
+    if minutes < 1:
+        return "about a minute or less on 2 cores"
+    return (f"roughly {minutes:.2g} min on 2 cores ({minutes / 2:.2g}-{2 * minutes:.2g}; a "
+            "coarser grid to try the case first)")
 
 
 def _file_reports(case, records) -> tuple[list[str], list[str]]:
