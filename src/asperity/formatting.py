@@ -75,7 +75,8 @@ _SUFFIXES = (("_deg", "deg"), ("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "
 #: Words of summary keys written out (whole words only).
 _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "nijenbanning": "Nijenbanning", "dowson": "Dowson", "higginson": "Higginson",
-          "hamrock": "Hamrock", "roelands": "Roelands", "eyring": "Eyring", "iso": "ISO",
+          "hamrock": "Hamrock", "chittenden": "Chittenden", "roelands": "Roelands",
+          "eyring": "Eyring", "iso": "ISO",
           "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
           "b": "b", "x": "x", "y": "y"}
 
