@@ -248,3 +248,30 @@ def test_a_feature_wider_than_the_contact_is_reported(half_width, warned):
     lines = [w for w in run_case(load_case(data)).warnings
              if w.startswith("surface1.half_width")]
     assert len(lines) == 2 and "wider than the domain across y" in lines[1]
+
+
+def test_a_feature_run_draws_its_film_change_step_by_step():
+    """The film-snapshot figure of a dent run marks the dent's centre at each recorded step
+    where the dent's surface is deepest on y = 0 (read off the recorded surface, not the
+    track that placed it), within a mesh spacing; the centre-line film change is drawn
+    against the smooth steady film."""
+    from asperity.runners import run_case
+
+    data = tomllib.loads(example_text("dent-sliding"))
+    data["grid"].update(nx=65, ny=17)
+    data["time"].update(counting_steps=120, snapshots=4)
+    out = run_case(load_case(data))
+    assert "film_snapshots" in out.figures
+    fig = out.figures["film_snapshots"][0]()
+    ds = out.dataset
+    a = load_case(data).problem().a
+    x = ds.x.values / a
+    markers = [line for line in fig.axes[0].get_lines() if line.get_marker() == "v"]
+    deepest = [x[int(np.argmin(z))] for z in ds["centre_surface1"].values
+               if np.ptp(z) > 0 and 0 < int(np.argmin(z)) < x.size - 1]
+    assert len(markers) == len(deepest) >= 2
+    for line, xd in zip(markers, deepest, strict=True):
+        assert float(line.get_xdata()[0]) == pytest.approx(xd, abs=x[1] - x[0])
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)

@@ -8,7 +8,8 @@ from matplotlib.ticker import MaxNLocator
 from .style import hertz_outline, map_aspect, map_ylabel, new_figure
 
 __all__ = ["plot_centre_line", "plot_contact_rate", "plot_contact_rate_line",
-           "plot_film_histogram", "plot_flow_vectors", "surfaces_below"]
+           "plot_film_histogram", "plot_film_snapshots", "plot_flow_vectors",
+           "surfaces_below"]
 
 
 def plot_contact_rate(result, problem):
@@ -73,6 +74,50 @@ def plot_centre_line(result, problem, index=-1, offset=None):
                ["pressure p", "film h", "surfaces (offset)", "Hertz width"],
                loc="outside lower center", ncols=4, fontsize=8, frameon=False)
     ax.set_title(f"step {int(result.snapshot_steps[index])}")
+    return fig
+
+
+def plot_film_snapshots(result, problem, feature_positions):
+    """The film change on y = 0 at every recorded step, against the smooth steady film,
+    stacked upwards in time, with each step's feature centre marked on its baseline: where
+    the film change a dent or bump makes travels against the feature itself (with sliding, at
+    the mean speed rather than the feature's; Venner & Lubrecht 1994, Kaneta et al. 1993), as
+    such runs are drawn in the literature.
+
+    ``feature_positions`` maps a label (``"surface1"``) to the feature centre's x (m) at each
+    recorded step (``result.snapshot_steps``). Films in nm; the steps are set apart by the
+    largest change, so that they do not overlap.
+    """
+    fig, ax = new_figure()
+    x = result.x / problem.a
+    j = int(np.argmin(np.abs(result.y)))
+    change = (result.centre_film - result.steady_film[:, j]) * 1e9
+    shown = np.isfinite(change).all(axis=1)
+    spread = float(np.max(np.abs(change[shown]))) if shown.any() else 1.0
+    gap = 1.1 * max(spread, 1e-3)
+    ax.axvspan(-1.0, 1.0, color="0.92", zorder=0, label="Hertz width")
+    markers, marked = ["v", "^"], set()
+    for n, step in enumerate(result.snapshot_steps):
+        if not shown[n]:
+            continue
+        level = n * gap
+        ax.axhline(level, color="0.75", lw=0.5, zorder=1)
+        ax.plot(x, change[n] + level, color="tab:blue", lw=1.2, zorder=2)
+        ax.text(x[-1], level, f" step {int(step)}", fontsize=7, va="center")
+        for k, (label, centres) in enumerate(feature_positions.items()):
+            xc = centres[n] / problem.a
+            if x[0] <= xc <= x[-1]:
+                ax.plot([xc], [level], marker=markers[k % 2], color="tab:red", ms=6,
+                        ls="none", zorder=3,
+                        label=None if label in marked else f"{label}: feature centre")
+                marked.add(label)
+    ax.set_xlim(x[0], x[-1] + 0.14 * (x[-1] - x[0]))
+    ax.set_xlabel("x / a")
+    ax.set_ylabel(f"film change on y = 0 (nm), steps {gap:.3g} nm apart")
+    ax.set_yticks([])
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=3,
+               fontsize=8, frameon=False)
+    ax.set_title("film h - smooth steady film, at the recorded steps (time upwards)", fontsize=9)
     return fig
 
 

@@ -263,6 +263,15 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             lambda: plots.plot_centre_line(res, problem, shown_index),
             "Pressure and film on y = 0 with the two surfaces below (Fig. 3)"
             + (", the feature at the centre." if centred_shown else "."))
+    tracks = case.feature_tracks(problem, x, dt, warmup)
+    if tracks and reached.size > 1:  # where a feature's film change travels, step by step
+        positions = {label: start + step * res.snapshot_steps
+                     for label, _, start, step in tracks}
+        figures["film_snapshots"] = (
+            lambda: plots.plot_film_snapshots(res, problem, positions),
+            "The film on y = 0 at the recorded steps, the feature's centre marked below each: "
+            "the film change moves with the feature in rolling, at the mean speed with "
+            "sliding.")
     if not line:
         figures["flow_vectors"] = (lambda: plots.plot_flow_vectors(res, problem),
                                    "Film contours and lubricant flow vectors (Fig. 14).")
