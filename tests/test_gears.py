@@ -320,3 +320,67 @@ def test_mixed_friction_between_the_lambda_limits():
     assert f == pytest.approx([1.0, 1.0, 0.5, 0.0, 0.0], abs=1e-15)
     assert asperity_share(2.5, 2.0, 4.0) == pytest.approx(0.75)
     assert mixed_friction(0.04, 0.1, 0.5) == pytest.approx(0.07)
+
+
+def _tip_thickness_by_hand(z, m, x_pair, alpha_deg=20.0):
+    """Spur pair without backlash: inv alpha_w by root finding (scipy, not the package's
+    inverse), a_w, ISO 21771's tip alteration k, d_a = d + 2 m (1 + x + k); the tooth thickness
+    at the tip s_a = d_a (s/d + inv alpha - inv alpha_a), s = m (pi/2 + 2 x tan alpha)."""
+    alpha = math.radians(alpha_deg)
+    z1, z2 = z
+    inv_w = involute(alpha) + 2 * math.tan(alpha) * sum(x_pair) / (z1 + z2)
+    alpha_w = optimize.brentq(lambda a: math.tan(a) - a - inv_w, 1e-3, 1.4, xtol=1e-15)
+    a0 = m * (z1 + z2) / 2
+    aw = a0 * math.cos(alpha) / math.cos(alpha_w)
+    k = min(0.0, (aw - a0) / m - sum(x_pair))
+    out = []
+    for zi, xi in zip(z, x_pair, strict=True):
+        d = zi * m
+        da = d + 2 * m * (1 + xi + k)
+        s = m * (math.pi / 2 + 2 * xi * math.tan(alpha))
+        alpha_a = math.acos(d * math.cos(alpha) / da)
+        out.append(da * (s / d + involute(alpha) - involute(alpha_a)))
+    return out
+
+
+def test_a_nearly_pointed_tip_is_warned():
+    """A user's z 19/56 m 4 pair with x = 1.5 on the pinion was accepted in silence: its tip
+    is 0.0574 mm thick by the involute formula, 0.0144 m_n, below the 0.2 m_n design minimum;
+    a line names gear.profile_shift / gear.tip_diameter and the thickness. The same pair with
+    x = +-0.3 (0.56 and 0.82 m_n) and the FZG pair are not warned."""
+    pointed = GearPair((19, 56), 4e-3, 20 * DEG, 0.0, (1.5, 0.0), 30e-3)
+    s_hand = _tip_thickness_by_hand((19, 56), 4e-3, (1.5, 0.0))
+    assert s_hand[0] == pytest.approx(0.0574e-3, rel=2e-3)
+    assert np.array(pointed.tip_thickness) == pytest.approx(s_hand, rel=1e-9)
+    lines = pointed.design_warnings()
+    assert len(lines) == 1
+    assert lines[0].startswith("gear.profile_shift / gear.tip_diameter: the pinion tip")
+    assert f"{s_hand[0] * 1e3:.4g} mm = {s_hand[0] / 4e-3:.3g} m_n" in lines[0]
+    assert "0.2 m_n" in lines[0]
+    shifted = GearPair((19, 56), 4e-3, 20 * DEG, 0.0, (0.3, -0.3), 30e-3)
+    s_hand = _tip_thickness_by_hand((19, 56), 4e-3, (0.3, -0.3))
+    assert np.array(shifted.tip_thickness) == pytest.approx(s_hand, rel=1e-9)
+    assert min(s_hand) > 0.2 * 4e-3
+    assert shifted.design_warnings() == [] and fzg_c().design_warnings() == []
+
+
+def test_helical_tip_thickness_in_the_normal_section():
+    """s_an = s_at cos(beta_a), tan(beta_a) = tan(beta) d_a / d: at d_a = d it is the
+    transverse thickness times cos(beta); the warning judges s_an against 0.2 m_n."""
+    g = helical()
+    for s_at, s_an, da, d in zip(g.tip_thickness, g.normal_tip_thickness, g.da, g.d,
+                                 strict=True):
+        beta_a = math.atan(math.tan(15 * DEG) * da / d)
+        assert s_an == pytest.approx(s_at * math.cos(beta_a), rel=1e-12)
+        assert s_an < s_at
+
+
+def test_mixed_friction_without_the_ehl_traction():
+    """A NaN EHL traction (a Newtonian film's, left out) makes the mixed friction NaN where
+    the film carries load, but not where the asperities carry all of it (f = 1: mu = mu_b;
+    0 * NaN must not leak in)."""
+    mu = mixed_friction(np.array([np.nan, np.nan, 0.04]), 0.1, np.array([1.0, 0.5, 0.5]))
+    assert mu[0] == 0.1 and math.isnan(mu[1]) and mu[2] == pytest.approx(0.07)
+    theta = flash_temperature(np.array([np.nan, 0.0, 1e9]), 1e-4, 5.0, 5.0, 12_700.0,
+                              12_700.0)
+    assert math.isnan(theta[0]) and theta[1] == 0.0 and theta[2] > 0

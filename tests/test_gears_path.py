@@ -29,6 +29,8 @@ STEEL = Material(206e9, 0.3)
 #: Newtonian, Barus, incompressible: the assumptions of the film formulas
 NEWTONIAN = Lubricant(viscosity=0.0166, pressure_viscosity=1.7e-8, viscosity_model="barus",
                       compressible=False)
+#: The same with the Eyring stress of the example's oil: a bounded traction
+EYRING = Lubricant(viscosity=0.0166, pressure_viscosity=1.7e-8, eyring_stress=5e6)
 FZG = GearPair((16, 24), 4.5e-3, 20 * DEG, 0.0, (0.1817, 0.1715), 14e-3,
                centre_distance=91.5e-3)
 OMEGA = 2170 * 2 * math.pi / 60
@@ -258,8 +260,9 @@ def test_flash_temperature_at_a_path_point_by_blok_load_route():
     number is that of the slower flank."""
     rho = FZG.points["C"] + 0.5 * (FZG.points["D"] - FZG.points["C"])
     res = solve_path(FZG, np.array([rho]), pinion_speed=OMEGA, torque=302.0, body1=STEEL,
-                     body2=STEEL, lubricant=NEWTONIAN, roughness=0.42e-6,
+                     body2=STEEL, lubricant=EYRING, roughness=0.42e-6,
                      mesh=EHLMesh(nx=97, levels=1, damping=0.3))
+    assert 0.0 < res.friction[0] <= 0.1
     rho2 = FZG.t1t2 - rho
     radius = rho * rho2 / (rho + rho2)
     w = 302.0 / FZG.rb[0] / FZG.face_width
@@ -275,48 +278,71 @@ def test_flash_temperature_at_a_path_point_by_blok_load_route():
     assert res.peclet[0] == pytest.approx(min(u1, u2) * a / (2 * kappa), rel=1e-10)
 
 
-def test_newtonian_gear_friction_is_reported():
-    """The small gear case with smooth flanks (Ra 0.05 um, so the film carries the load at
-    every point: lambda above the full-film limit) and without its Eyring stress: the
-    Newtonian wall stress eta du/h at the pressure-raised viscosity gives a mean friction
-    coefficient far above a dry contact's, and the report names lubricant.tau0; with
-    tau0 = 5 MPa it does not. (With the case's Ra 0.3 um every point is in boundary
-    lubrication, the friction is the boundary 0.1 and the EHL value does not enter.)"""
+def test_newtonian_gear_friction_is_left_out():
+    """The small gear case with smooth flanks (Ra 0.05 um: lambda above 1, so the film carries
+    load, at every point) and without its Eyring stress: the Newtonian wall stress eta du/h at the
+    pressure-raised viscosity is no traction (it gave a mean friction coefficient above 1 and
+    flash temperatures of millions of K, reported as results). Now the EHL traction, the
+    friction and the temperatures are NaN, the summary's maximum flash temperature and mean
+    friction are NaN (not the maximum of what is left), a hand-off at "max-flash" is refused,
+    and one lubricant.tau0 line says what was left out. With tau0 = 5 MPa all are numbers."""
     from asperity.runners import run_case
+    from asperity.runners.gear import handoff, solve
 
     smooth = GEAR_CASE.replace('ra = "0.3 um"', 'ra = "0.05 um"')
-    newtonian = run_case(load_case(smooth.replace('tau0 = "5 MPa"\n', "")))
-    assert newtonian.summary["mean_friction_coefficient"] > 1.0
-    assert sum(w.startswith("lubricant.tau0:") for w in newtonian.warnings) == 1
-    assert "Newtonian" in newtonian.dataset.ehl_friction.attrs["long_name"]
+    case = load_case(smooth.replace('tau0 = "5 MPa"\n', ""))
+    newtonian = run_case(case)
+    ds = newtonian.dataset
+    assert np.isnan(ds.ehl_friction).all() and np.isnan(ds.friction).all()
+    assert np.isnan(ds.flash_temperature).all() and np.isnan(ds.contact_temperature).all()
+    assert math.isnan(newtonian.summary["mean_friction_coefficient"])
+    assert math.isnan(newtonian.summary["maximum_flash_temperature_k"])
+    assert newtonian.summary["minimum_lambda"] > 1.0      # the film results stay
+    lines = [w for w in newtonian.warnings if w.startswith("lubricant.tau0:")]
+    assert len(lines) == 1 and "left out" in lines[0] and "at the 5 of 5 loaded" in lines[0]
+    assert "Newtonian" in ds.ehl_friction.attrs["long_name"]
+    result, _ = solve(case)
+    with pytest.raises(InputError, match="lubricant.tau0"):
+        handoff(case, result, "max-flash")
     eyring = run_case(load_case(smooth))
-    assert eyring.summary["mean_friction_coefficient"] < 0.1
+    assert 0.0 < eyring.summary["mean_friction_coefficient"] < 0.1
+    assert np.isfinite(eyring.dataset.flash_temperature).all()
     assert not any(w.startswith("lubricant.tau0:") for w in eyring.warnings)
     assert "Eyring" in eyring.dataset.ehl_friction.attrs["long_name"]
 
 
-def test_newtonian_traction_hidden_by_the_boundary_share_is_reported():
-    """With the case's Ra 0.3 um every point is in boundary lubrication, so the mixed
-    friction is the boundary 0.1 and its mean hides the Newtonian EHL value; the EHL
-    traction itself (the dataset's ehl_friction, drawn in the report) is still far above any
-    traction, so the warning names lubricant.tau0, and the figure draws it on a log axis
-    labelled Newtonian."""
+def test_newtonian_boundary_points_keep_the_boundary_friction():
+    """With the case's Ra 0.3 um every point is in boundary lubrication (lambda < 1), where
+    the film carries nothing: the friction is the boundary 0.1 and the flash temperature
+    Blok's with mu = 0.1, Newtonian or not (NaN * 0 does not leak in); the EHL traction
+    is still left out and said so, and the figure says so in its legend instead of drawing
+    a "traction" of 1e4 on a log axis."""
     from asperity.runners import run_case
 
     newtonian = run_case(load_case(GEAR_CASE.replace('tau0 = "5 MPa"\n', "")))
-    assert newtonian.summary["mean_friction_coefficient"] == pytest.approx(0.1, rel=1e-6)
-    assert float(newtonian.dataset.ehl_friction.max()) > 1.0
-    assert sum(w.startswith("lubricant.tau0:") for w in newtonian.warnings) == 1
+    ds = newtonian.dataset
+    assert float(ds.specific_film.max()) < 1.0
+    assert ds.friction.values == pytest.approx(np.full(5, 0.1), rel=1e-12)
+    assert newtonian.summary["mean_friction_coefficient"] == pytest.approx(0.1, rel=1e-12)
+    assert np.isnan(ds.ehl_friction).all()
+    # Blok with mu_b = 0.1 from the dataset's own a, p_H and speeds (semi-elliptic source)
+    b = math.sqrt(45.0 * 7850.0 * 460.0)
+    q = 0.1 * math.pi / 4 * ds.hertz_pressure * abs(ds.sliding_speed)
+    blok = 1.11153 * q * np.sqrt(2 * ds.hertz_a) / (b * np.sqrt(abs(ds.u1))
+                                                    + b * np.sqrt(abs(ds.u2)))
+    assert ds.flash_temperature.values == pytest.approx(blok.values, rel=1e-4, abs=1e-9)
+    lines = [w for w in newtonian.warnings if w.startswith("lubricant.tau0:")]
+    assert len(lines) == 1 and "at the 0 of 5 loaded" in lines[0]
     draw, _caption = newtonian.figures["path_friction_temperature"]
     ax = draw().axes[0]
-    assert ax.get_yscale() == "log"
-    assert "Newtonian" in ax.get_legend().get_texts()[0].get_text()
+    assert ax.get_yscale() == "linear"
+    assert "left out" in ax.get_legend().get_texts()[0].get_text()
 
 
 @pytest.mark.parametrize("speed, rad_per_s", [
     ("2170 rpm", 2170 * 2 * math.pi / 60), ("2170 min^-1", 2170 * 2 * math.pi / 60),
     ("2170 1/min", 2170 * 2 * math.pi / 60), ("36 rev/s", 36 * 2 * math.pi),
-    ("227 rad/s", 227.0), (227.0, 227.0)])
+    ("227 rad/s", 227.0)])
 def test_pinion_speed_units(speed, rad_per_s):
     """DIN 1301's "min^-1" counts revolutions like "rpm" (it was read as 1/60 rad/s per unit,
     2 pi times too slow, silently)."""
@@ -330,3 +356,177 @@ def test_a_per_second_speed_without_a_turn_is_refused(speed):
     """"36 Hz" may be revolutions or radians per second; it was taken as 36 rad/s."""
     with pytest.raises(InputError, match=r"operation\.speed: expected a unit that says what"):
         load_case(GEAR_CASE.replace('speed = "2170 rpm"', f'speed = "{speed}"'))
+
+
+@pytest.mark.parametrize("speed", ["1450", "'1450'", "227.0"])
+def test_a_bare_pinion_speed_is_refused(speed):
+    """A bare 1450 meant in rpm was read as 1450 rad/s (13 846 rpm, 9.55 times the speed
+    meant) and ran to exit 0; it is refused like "25 Hz", with the units to write."""
+    text = GEAR_CASE.replace('speed = "2170 rpm"', f"speed = {speed}".replace("'", '"'))
+    with pytest.raises(InputError) as info:
+        load_case(text)
+    message = str(info.value)
+    assert message.startswith("operation.speed: expected a rotational speed with its unit")
+    assert "'1500 rpm'" in message and "'157 rad/s'" in message and "\n" not in message
+
+
+def _pitch_hertz_pressure(torque):
+    """Hertz pressure at the FZG pair's pitch point by hand: single contact there, so
+    w' = T / (r_b1 b); radii r_wi sin(alpha_w); p = sqrt(w' E* / (pi R)), E* = E / (2 (1 -
+    nu^2)) for two steel bodies (Johnson eq. 4.45)."""
+    r1 = 0.5 * FZG.dw[0] * math.sin(FZG.alpha_wt)
+    r2 = 0.5 * FZG.dw[1] * math.sin(FZG.alpha_wt)
+    w = torque / FZG.rb[0] / FZG.face_width
+    e_star = 206e9 / (2 * (1 - 0.3**2))
+    return math.sqrt(w * e_star / (math.pi * r1 * r2 / (r1 + r2)))
+
+
+def test_a_negative_film_is_not_a_converged_solution():
+    """A torque typed in N m for kN m (302 000 N m on the FZG pair): Hertz pressure 52 GPa by
+    hand, and the steady solver ended with a minimum film of -2.3 nm that it called converged
+    (a user's spur pair: -1.31 nm, lambda -0.0018, flash temperature 17 320 K, exit 0). Such a
+    point is not converged, and a line names the film, the torque and the pressure; the
+    pressure is flagged beyond what case-hardened flanks carry."""
+    res = solve_path(FZG, np.array([FZG.points["C"]]), pinion_speed=OMEGA, torque=302e3,
+                     body1=STEEL, body2=STEEL, lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1))
+    p_hand = _pitch_hertz_pressure(302e3)
+    assert res.hertz_pressure[0] == pytest.approx(p_hand, rel=1e-9)
+    assert p_hand > 50e9
+    assert res.minimum_film[0] <= 0.0
+    assert not res.converged[0]
+    film = [w for w in res.warnings if "minimum film is zero or negative" in w]
+    assert len(film) == 1 and "operation.torque" in film[0]
+    assert f"{p_hand / 1e9:.3g} GPa" in film[0]
+    assert not any("did not converge" in w for w in res.warnings)   # not "refine the mesh"
+    torque = [w for w in res.warnings if w.startswith("operation.torque:")]
+    assert len(torque) == 1 and "302000 N m" in torque[0] and "2.5 GPa" in torque[0]
+
+
+@pytest.mark.parametrize("hardness, expect", [(None, "operation.torque:"), (2.0e9, "pressure:"),
+                                              (3.5e9, None)])
+def test_hertz_pressure_beyond_case_hardened_flanks(hardness, expect):
+    """1000 N m on the FZG pair: 3.01 GPa at the pitch point by hand (film still positive).
+    Without a hardness that is above the 2.5 GPa case-hardened flanks carry (ISO 6336-5
+    sigma_Hlim 1500-1650 MPa times the static life factor 1.6) and the line names
+    operation.torque; with a hardness given the pressure is judged by it instead."""
+    body = Material(206e9, 0.3, "steel", hardness)
+    res = solve_path(FZG, np.array([FZG.points["C"]]), pinion_speed=OMEGA, torque=1000.0,
+                     body1=body, body2=body, lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1))
+    p_hand = _pitch_hertz_pressure(1000.0)
+    assert res.hertz_pressure[0] == pytest.approx(p_hand, rel=1e-9)
+    assert 2.5e9 < p_hand < 3.5e9
+    assert res.converged[0] and res.minimum_film[0] > 0
+    flagged = [w for w in res.warnings if w.startswith(("operation.torque:", "pressure:"))]
+    if expect is None:
+        assert flagged == []
+    else:
+        # one line naming the torque, or the hardness line of each body (body1, body2)
+        assert len(flagged) == (1 if hardness is None else 2)
+        for line in flagged:
+            assert line.startswith(expect)
+            assert f"{p_hand / 1e9:.3g} GPa" in line or f"{p_hand / 1e9:.4g} GPa" in line
+    # the FZG example's own load (302 N m, 1.66 GPa) is not flagged
+    assert _pitch_hertz_pressure(302.0) < 2.5e9
+
+
+def test_a_nearly_pointed_tip_is_warned_in_the_run():
+    """The user's z 19/56 pair with x = 1.5 on the pinion (tip thickness 0.0144 m_n, below
+    the 0.2 m_n design minimum; test_gears checks the value by the involute formula) runs
+    with a line naming gear.profile_shift / gear.tip_diameter among the run's warnings."""
+    pair = GearPair((19, 56), 4e-3, 20 * DEG, 0.0, (1.5, 0.0), 30e-3)
+    res = solve_path(pair, np.array([pair.points["C"]]), pinion_speed=OMEGA, torque=400.0,
+                     body1=STEEL, body2=STEEL, lubricant=EYRING, roughness=0.7e-6,
+                     mesh=EHLMesh(nx=97, levels=1))
+    tip = [w for w in res.warnings if w.startswith("gear.profile_shift / gear.tip_diameter:")]
+    assert len(tip) == 1 and "pinion" in tip[0] and "0.2 m_n" in tip[0]
+
+
+@pytest.mark.parametrize("key, bare, hint", [
+    ("normal_module", "4", "4 mm"), ("face_width", "30", "30 mm"),
+    ("centre_distance", "150", "150 mm"), ("tip_diameter", "[84, 118.36]", "84 mm"),
+    ("tip_relief", "[10, 0]", "10 um"), ("crowning", "[0, 20]", "20 um")])
+def test_a_bare_gear_length_is_refused_as_metres(key, bare, hint):
+    """A bare number is metres: normal_module = 4 was a 4 m module (two minutes of solves,
+    then exit 3 advising a finer mesh), face_width = 30 a 30 m face, centre_distance = 150
+    a 150 m centre distance (contact ratio -12 696). Each is outside its key's plausible range
+    and refused in one line that says a bare number is metres and how to write it."""
+    lines = [line for line in GEAR_CASE.splitlines() if not line.startswith(f"{key} =")]
+    at = lines.index("[gear]") + 1
+    text = "\n".join(lines[:at] + [f"{key} = {bare}"] + lines[at:]) + "\n"
+    with pytest.raises(InputError) as info:
+        load_case(text)
+    message = str(info.value)
+    assert message.startswith(f"gear.{key}")
+    assert f'(a bare number is metres: write "{hint}")' in message and "\n" not in message
+
+
+def test_gear_lengths_in_range_are_kept():
+    """SI numbers and lengths with units inside the ranges pass unchanged: the FZG pair as
+    numbers in m equals the FZG pair in mm."""
+    numbers = (GEAR_CASE.replace('"4.5 mm"', "0.0045").replace('"14 mm"', "0.014")
+               .replace('"91.5 mm"', "0.0915"))
+    a, b = load_case(numbers).gear, load_case(GEAR_CASE).gear
+    assert (a.normal_module, a.face_width, a.centre_distance) == pytest.approx(
+        (4.5e-3, 14e-3, 91.5e-3), rel=1e-12)
+    assert (b.normal_module, b.face_width, b.centre_distance) == pytest.approx(
+        (4.5e-3, 14e-3, 91.5e-3), rel=1e-12)
+    with pytest.raises(InputError, match=r"gear\.normal_module: expected a length from "
+                                         r"0\.05 mm to 100 mm, got '4 m'"):
+        load_case(GEAR_CASE.replace('"4.5 mm"', '"4 m"'))
+
+
+def test_a_bare_pressure_viscosity_coefficient_is_refused():
+    """alpha = 17 is 17 1/Pa (a billion times a gear oil's 17 1/GPa); a user's gear path ran
+    five solves for 100 s to exit 3 with it. The shared [lubricant] table refuses it in one
+    line (cases/ehl.py); a gear case gets the same."""
+    with pytest.raises(InputError) as info:
+        load_case(GEAR_CASE.replace('alpha = "17 1/GPa"', "alpha = 17"))
+    message = str(info.value)
+    assert message.startswith("lubricant.alpha: expected a pressure-viscosity coefficient")
+    assert "1/Pa" in message and "\n" not in message
+    assert load_case(GEAR_CASE.replace('alpha = "17 1/GPa"', "alpha = 1.7e-8")
+                     ).lubricant.alpha == pytest.approx(17e-9, rel=1e-12)
+
+
+def test_figures_step_at_b_and_d_and_say_what_they_draw():
+    """The load (and Hertz pressure) jump at B and D is drawn as a step: the curve holds both
+    sides at the roll angle of B and of D, the two-pair side 2/3 of the single-pair load
+    T / (r_b1 b) (ISO/TR 13989-1), the pressure there sqrt(2/3) of it (line contact). The
+    band B-D has a legend entry, lambda's axis names sigma, the temperature axis is deg C
+    with the flash rise in K on the right."""
+    from asperity.plotting.gear import (
+        conditions_figure,
+        film_figure,
+        friction_temperature_figure,
+        step_curve,
+    )
+
+    res = solve_path(FZG, FZG.path(5), pinion_speed=OMEGA, torque=302.0, body1=STEEL,
+                     body2=STEEL, lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1))
+    single = 302.0 / FZG.rb[0] / FZG.face_width
+    x, w = step_curve(res, res.load)
+    rb1 = FZG.rb[0]
+    for key in "BD":
+        angle = math.degrees(FZG.points[key] / rb1)
+        both = np.sort(w[np.abs(x - angle) < 1e-9])
+        assert both == pytest.approx([2 / 3 * single, single], rel=1e-9)
+    x, p = step_curve(res, res.hertz_pressure, 0.5)
+    angle = math.degrees(FZG.points["B"] / rb1)
+    both = np.sort(p[np.abs(x - angle) < 1e-9])
+    assert both[0] / both[1] == pytest.approx(math.sqrt(2 / 3), rel=1e-9)
+    assert x.size == 7 and np.all(np.diff(x) >= 0)
+    fig = conditions_figure(res, "t")
+    labels = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert "single tooth contact B-D" in labels
+    fig = film_figure(res, "t", "sigma = sqrt(Ra1² + Ra2²)")
+    assert "single tooth contact B-D" in [t.get_text() for t in
+                                          fig.axes[0].get_legend().get_texts()]
+    assert "sqrt(Ra1² + Ra2²) = 0.42 um" in fig.axes[1].get_ylabel()
+    fig = friction_temperature_figure(res, "t", 90.0)
+    temp = fig.axes[1]
+    assert temp.get_ylabel() == "temperature (deg C)"
+    rise = [c.get_ylabel() for c in temp.child_axes]
+    assert rise == ["flash temperature rise (K)"]

@@ -44,7 +44,7 @@ import math
 import re
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import BeforeValidator, Field, field_validator, model_validator
 
 from ..errors import InputError
 from ..gears.geometry import GearPair
@@ -59,7 +59,79 @@ from .fields import CaseHeader, CaseModel, Quantity
 __all__ = ["GearCase", "GearSpec", "HandoffSpec", "OperationSpec"]
 
 Angle = Quantity("angle")
-Length = Quantity("length", ge=0)
+
+
+def _mm(value: float) -> str:
+    """A length in m written for a message ("20 m", "0.05 mm", "50 um")."""
+    if value >= 1.0:
+        return f"{value:g} m"
+    return f"{value * 1e3:g} mm" if value >= 1e-5 else f"{value * 1e6:g} um"
+
+
+def _bare_hint(value, low: float, high: float) -> str:
+    """How to write a bare number too large in metres: with the unit ("mm", else "um") that
+    brings it into ``low .. high``, else in mm."""
+    number = float(value)
+    for scale, unit in ((1e-3, "mm"), (1e-6, "um")):
+        if low <= number * scale <= high:
+            return f"{number:g} {unit}"
+    return f"{number:g} mm"
+
+
+def _bare(value) -> bool:
+    """Whether a case-file value is a number without a unit (``4``, ``"4"``)."""
+    if isinstance(value, bool):
+        return False
+    if isinstance(value, int | float):
+        return True
+    try:
+        float(value)
+    except (TypeError, ValueError):
+        return False
+    return True
+
+
+def GearLength(low: float, high: float, *, inclusive_low: bool = True):  # noqa: N802
+    """A length field of a gear (SI m) held to a plausible range ``low .. high``.
+
+    A bare number is metres (``normal_module = 4`` is 4 m): a value outside the range is
+    refused in one line that says so and how to write it (``"4 mm"``). The range stands in the
+    field's constraints too (``ge``/``gt`` and ``le``).
+    """
+    if low > 0:
+        span = f"from {_mm(low)} to {_mm(high)}"
+    else:
+        span = f"from 0 to {_mm(high)}" if inclusive_low else f"above 0, up to {_mm(high)}"
+
+    def convert(value):
+        try:
+            si = to_si(value, "length", "")
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected}") from None
+        inside = (si >= low if inclusive_low else si > low) and si <= high
+        if not inside:
+            hint = _bare_hint(value, low, high) if _bare(value) and si > high else ""
+            note = f' (a bare number is metres: write "{hint}")' if hint else ""
+            raise ValueError(f"expected a length {span}{note}")
+        return si
+
+    convert.__name__ = "to_gear_length"
+    bound = {"ge": low} if inclusive_low else {"gt": low}
+    return Annotated[float, BeforeValidator(convert),
+                     Field(json_schema_extra={"dimension": "length"}, le=high, **bound)]
+
+
+#: Plausible ranges of the gear lengths (m): a slip of the unit (a bare number is metres) falls
+#: outside them. Modules of 0.05 mm (watch gears) to 100 mm (mill drives); face widths, centre
+#: distances and tip diameters of the largest girth gears; tip relief and crowning of a few um
+#: to a few tens of um in practice.
+MODULE_RANGE = (0.05e-3, 100e-3)
+FACE_WIDTH_MAX = 2.0
+CENTRE_DISTANCE_MAX = 20.0
+TIP_DIAMETER_MAX = 20.0
+MODIFICATION_MAX = 1e-3
+_Modification = GearLength(0.0, MODIFICATION_MAX)
+_Tip = GearLength(0.0, TIP_DIAMETER_MAX, inclusive_low=False)
 
 
 class GearSpec(CaseModel):
@@ -67,24 +139,24 @@ class GearSpec(CaseModel):
 
     teeth: tuple[Annotated[int, Field(ge=5, le=1000)], Annotated[int, Field(ge=5, le=1000)]]
     """Numbers of teeth [pinion, wheel]."""
-    normal_module: Quantity("length", gt=0)
-    """Normal module m_n."""
+    normal_module: GearLength(*MODULE_RANGE)
+    """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres)."""
     pressure_angle: Quantity("angle", gt=0) = math.radians(20.0)
     """Normal pressure angle (e.g. "20 deg")."""
     helix_angle: Angle = 0.0
     """Helix angle at the reference circle (0: spur gears)."""
     profile_shift: tuple[float, float] = (0.0, 0.0)
     """Profile shift coefficients [pinion, wheel]."""
-    face_width: Quantity("length", gt=0)
-    """Face width."""
-    centre_distance: Quantity("length", gt=0) | None = None
-    """Centre distance (default from the profile shifts)."""
-    tip_diameter: tuple[Quantity("length", gt=0), Quantity("length", gt=0)] | None = None
-    """Tip diameters [pinion, wheel] (default ISO 21771 with tip alteration)."""
-    tip_relief: tuple[Length, Length] = (0.0, 0.0)
-    """Tip relief [pinion, wheel]."""
-    crowning: tuple[Length, Length] = (0.0, 0.0)
-    """Crowning heights [pinion, wheel] (nonzero: an elliptical contact)."""
+    face_width: GearLength(0.0, FACE_WIDTH_MAX, inclusive_low=False)
+    """Face width, up to 2 m ("30 mm"; a bare number is metres)."""
+    centre_distance: GearLength(0.0, CENTRE_DISTANCE_MAX, inclusive_low=False) | None = None
+    """Centre distance, up to 20 m (default from the profile shifts)."""
+    tip_diameter: tuple[_Tip, _Tip] | None = None
+    """Tip diameters [pinion, wheel], up to 20 m (default ISO 21771 with tip alteration)."""
+    tip_relief: tuple[_Modification, _Modification] = (0.0, 0.0)
+    """Tip relief [pinion, wheel], 0 to 1 mm ("10 um")."""
+    crowning: tuple[_Modification, _Modification] = (0.0, 0.0)
+    """Crowning heights [pinion, wheel], 0 to 1 mm (nonzero: an elliptical contact)."""
 
     @model_validator(mode="after")
     def _valid(self):
@@ -109,16 +181,29 @@ _TURNING = {"radian", "degree", "turn", "revolution", "revolutions_per_minute"}
 _SPEED_EXAMPLES = "'1500 rpm', '1500 min^-1', '25 rev/s' or '157 rad/s'"
 
 
+_BARE_SPEED = (f"expected a rotational speed with its unit: {_SPEED_EXAMPLES} (a bare number "
+               "may be rpm or rad/s, a factor 9.55)")
+
+
 def _rotational_speed(value):
     """The pinion speed in rad/s.
 
-    A plain number is rad/s. Per-minute units ("2170 rpm", "2170 1/min", "2170 min^-1") count
-    revolutions; units with a turn or an angle ("25 rev/s", "227 rad/s") convert as such. A
-    per-second unit that names no turn ("25 Hz", "227 1/s") is refused: it may count
+    Per-minute units ("2170 rpm", "2170 1/min", "2170 min^-1") count revolutions; units with a
+    turn or an angle ("25 rev/s", "227 rad/s") convert as such. A bare number ("1450") and a
+    per-second unit that names no turn ("25 Hz", "227 1/s") are refused: the one may be rpm or
+    rad/s (a bare 1450 meant in rpm was read as 1450 rad/s, 9.55 times too fast), the other
     revolutions or radians (a factor 2 pi; "25 Hz" was read as 25 rad/s).
     """
     if not isinstance(value, str):
-        return to_si(value, "frequency", "speed")
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            raise ValueError(_BARE_SPEED)
+        raise ValueError(f"expected a rotational speed such as {_SPEED_EXAMPLES}")
+    try:
+        float(value)
+    except ValueError:
+        pass
+    else:  # "1450": a bare number in a string
+        raise ValueError(_BARE_SPEED)
     match = _PER_MINUTE.fullmatch(value)
     if match:
         try:
@@ -128,8 +213,6 @@ def _rotational_speed(value):
     text = re.sub(r"\brev\b|\br\b|\brps\b", "turn", value.replace("rps", "turn/s"))
     try:
         q = registry().Quantity(text.strip())
-        if q.dimensionless:  # "227": rad/s, as a plain number
-            return to_si(float(q.magnitude), "frequency", "speed")
         turning = bool(_TURNING & {name for name, _ in q.unit_items()})
         rad_per_s = float(q.to("rad/s").magnitude)
     except Exception:  # pint raises many kinds on odd text
@@ -141,14 +224,15 @@ def _rotational_speed(value):
 
 
 class OperationSpec(CaseModel):
-    """``[operation]``: pinion ``torque``, pinion ``speed`` (rpm, or rad/s), the
+    """``[operation]``: pinion ``torque``, pinion ``speed`` (with its unit: rpm, rad/s), the
     ``bulk_temperature`` of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     torque: Quantity("moment", gt=0)
     """Pinion torque."""
     speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s"})]
-    """Pinion speed: "2170 rpm", "2170 min^-1", "36 rev/s" or "227 rad/s"; a plain number is
-    rad/s; "25 Hz" and "227 1/s" are refused (revolutions or radians?)."""
+    """Pinion speed with its unit: "2170 rpm", "2170 min^-1", "36 rev/s" or "227 rad/s"; a
+    bare number (rpm or rad/s?), "25 Hz" and "227 1/s" (revolutions or radians?) are
+    refused."""
     bulk_temperature: Annotated[float, Field(gt=-100, lt=1000,
                                              json_schema_extra={"unit": "°C"})] = 90.0
     """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""

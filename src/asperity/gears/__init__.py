@@ -2,7 +2,7 @@
 contact, Blok's flash temperature, and the steady EHL film, lambda and friction at every
 position (:func:`solve_path`)."""
 
-from .geometry import GearPair, inverse_involute, involute
+from .geometry import MIN_TIP_THICKNESS, GearPair, inverse_involute, involute
 from .handoff import (
     LINE_MAX_SWEEPS,
     NODES_PER_CORRELATION,
@@ -14,7 +14,14 @@ from .handoff import (
 from .kinematics import Kinematics, kinematics
 from .loading import hertz_along_path, load_per_length, load_sharing, normal_force
 from .mixed import asperity_share, composite_roughness, mixed_friction
-from .path import EHLMesh, GearPathResult, Thermal, contact_problem, solve_path
+from .path import (
+    PLAUSIBLE_HERTZ_PRESSURE,
+    EHLMesh,
+    GearPathResult,
+    Thermal,
+    contact_problem,
+    solve_path,
+)
 from .thermal import (
     FLASH_CONSTANTS,
     flash_temperature,
@@ -23,7 +30,8 @@ from .thermal import (
 )
 
 __all__ = [
-    "FLASH_CONSTANTS", "LINE_MAX_SWEEPS", "NODES_PER_CORRELATION", "EHLMesh", "GearPair",
+    "FLASH_CONSTANTS", "LINE_MAX_SWEEPS", "MIN_TIP_THICKNESS", "NODES_PER_CORRELATION",
+    "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPair",
     "GearPathResult", "Kinematics", "Thermal",
     "asperity_share", "composite_roughness", "contact_problem", "flash_temperature",
     "hertz_along_path", "involute", "inverse_involute", "kinematics", "load_per_length",

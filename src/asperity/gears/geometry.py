@@ -31,7 +31,12 @@ import numpy as np
 
 from ..errors import InputError, check_positive
 
-__all__ = ["GearPair", "involute", "inverse_involute"]
+__all__ = ["MIN_TIP_THICKNESS", "GearPair", "involute", "inverse_involute"]
+
+#: Normal tooth thickness at the tip, in normal modules, below which a pair is warned about
+#: (a common design minimum: a thinner tip chips, and a case-hardened one hardens through;
+#: docs/gears.md). Only a tip of thickness 0 or less is refused.
+MIN_TIP_THICKNESS = 0.2
 
 
 def involute(angle):
@@ -249,6 +254,36 @@ class GearPair:
     t1t2 = _derived("t1t2", "Length T1T2 = a_w sin alpha_wt of the line of action, m.")
     pbt = _derived("pbt", "Transverse base pitch pi m_t cos alpha_t, m.")
     tip_thickness = _derived("tip_thickness", "Transverse tooth thickness at the tips, m.")
+
+    @property
+    def normal_tip_thickness(self) -> tuple[float, float]:
+        """Normal tooth thickness at the tips, s_an = s_at cos(beta_a) with
+        tan(beta_a) = tan(beta) d_a / d (pinion, wheel), m."""
+        tan_b = math.tan(self.helix_angle)
+        return tuple(s * math.cos(math.atan(tan_b * da / d)) for s, da, d in
+                     zip(self.tip_thickness, self.da, self.d, strict=True))
+
+    def design_warnings(self) -> list[str]:
+        """Lines about a valid but doubtful design: a nearly pointed tip (normal tip thickness
+        below :data:`MIN_TIP_THICKNESS` m_n; the case keys named are ``gear.profile_shift`` and
+        ``gear.tip_diameter``).
+
+        Returns
+        -------
+        list of str
+            One line per gear whose tip is too thin.
+        """
+        lines = []
+        mn = self.normal_module
+        for name, s_an in zip(("pinion", "wheel"), self.normal_tip_thickness, strict=True):
+            if s_an < MIN_TIP_THICKNESS * mn:
+                lines.append(
+                    f"gear.profile_shift / gear.tip_diameter: the {name} tip is nearly pointed: "
+                    f"tooth thickness at the tip {s_an * 1e3:.4g} mm = {s_an / mn:.3g} m_n, "
+                    f"below {MIN_TIP_THICKNESS:g} m_n (a common design minimum; a thinner tip "
+                    "chips, and case-hardened it hardens through); reduce the "
+                    f"{name} profile shift or tip diameter")
+        return lines
 
     @property
     def ratio(self) -> float:

@@ -74,6 +74,10 @@ def point_index(result: GearPathResult, at: str, roll_angle: float | None = None
     if at == "min-lambda":
         return critical["minimum_lambda"]
     if at == "max-flash":
+        if critical["maximum_flash_temperature"] is None:
+            raise InputError("at", '"pitch", "min-lambda" or a roll angle: the flash '
+                             "temperature is unknown along the path (a Newtonian lubricant: set "
+                             "lubricant.tau0)", at)
         return critical["maximum_flash_temperature"]
     raise InputError("at", '"pitch", "min-lambda", "max-flash" or a roll angle', at)
 

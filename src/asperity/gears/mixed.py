@@ -44,7 +44,24 @@ def asperity_share(specific_film, boundary_lambda: float = 1.0, full_film_lambda
 
 
 def mixed_friction(ehl_friction, boundary_friction: float, share):
-    """mu = (1 - f) mu_EHL + f mu_b."""
+    """mu = (1 - f) mu_EHL + f mu_b.
+
+    Parameters
+    ----------
+    ehl_friction : array_like
+        EHL traction coefficient mu_EHL; NaN where it is unknown (a Newtonian film).
+    boundary_friction : float
+        Boundary friction coefficient mu_b.
+    share : array_like
+        Asperity load share f in [0, 1].
+
+    Returns
+    -------
+    ndarray
+        mu; where f = 1 it is mu_b even if mu_EHL is NaN (the film carries nothing there),
+        elsewhere NaN with mu_EHL.
+    """
     mu_b = check_positive("boundary_friction", boundary_friction, allow_zero=True)
     f = np.asarray(share, dtype=float)
-    return (1.0 - f) * np.asarray(ehl_friction, dtype=float) + f * mu_b
+    mixed = (1.0 - f) * np.asarray(ehl_friction, dtype=float) + f * mu_b
+    return np.where(f >= 1.0, mu_b, mixed)

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import diagnostics
 from ..ehl import formulas, solve_steady
 from ..ehl.lubricant import Lubricant
 from ..ehl.problem import LineContact, PointContact
@@ -31,7 +32,14 @@ from .loading import hertz_along_path, load_sharing
 from .mixed import asperity_share, mixed_friction
 from .thermal import flash_temperature, peclet_number, thermal_contact_coefficient
 
-__all__ = ["EHLMesh", "GearPathResult", "Thermal", "contact_problem", "solve_path"]
+__all__ = ["PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPathResult", "Thermal",
+           "contact_problem", "solve_path"]
+
+#: Largest Hertz pressure of a gear flank taken as plausible when neither body gives a
+#: hardness, Pa: about the static (short-life) permissible contact stress of case-hardened
+#: steel, sigma_Hlim 1500-1650 MPa (ISO 6336-5) times the static life factor 1.6 (ISO 6336-2);
+#: above it a torque typed in the wrong unit is the likelier cause (docs/gears.md).
+PLAUSIBLE_HERTZ_PRESSURE = 2.5e9
 
 
 @dataclass(frozen=True)
@@ -83,7 +91,9 @@ class GearPathResult:
     ``central_film``, ``minimum_film`` from the solver and ``formula_*`` from the film
     formulas; ``specific_film`` lambda; ``ehl_friction``, ``asperity_share``, ``friction``;
     ``flash_temperature`` (K) and ``contact_temperature`` (deg C); ``converged`` and
-    ``sweeps`` per solve.
+    ``sweeps`` per solve (a solve whose minimum film is not positive counts as not converged).
+    With a Newtonian lubricant (no Eyring stress) ``ehl_friction`` is NaN, and so are
+    ``friction`` and the temperatures wherever the film carries part of the load.
     """
 
     pair: GearPair
@@ -114,12 +124,16 @@ class GearPathResult:
 
     def critical(self) -> dict:
         """Index of the minimum lambda, maximum flash temperature and maximum Hertz pressure
-        (ignoring unloaded positions)."""
+        (ignoring unloaded positions); the flash temperature's is None when it is NaN at a
+        loaded position (a Newtonian lubricant's traction left out)."""
         loaded = self.load > 0
         lam = np.where(loaded, self.specific_film, np.inf)
         flash = np.where(loaded, self.flash_temperature, -np.inf)
+        # a loaded point without a flash temperature (a Newtonian film's traction left out)
+        # leaves the maximum unknown: None rather than the largest of the others
+        hottest = None if np.isnan(flash).any() else int(np.argmax(flash))
         return {"minimum_lambda": int(np.nanargmin(lam)),
-                "maximum_flash_temperature": int(np.nanargmax(flash)),
+                "maximum_flash_temperature": hottest,
                 "maximum_hertz_pressure": int(np.argmax(self.hertz_pressure))}
 
 
@@ -167,6 +181,26 @@ def _solve(problem, mesh: EHLMesh):
         if res.converged:
             break
     return res
+
+
+def _angles(kin: Kinematics, indices) -> str:
+    """Pinion roll angles (deg) of path positions, listed."""
+    return ", ".join(f"{math.degrees(kin.roll_angle[i]):.2f}" for i in indices)
+
+
+def _pressure_notes(p_hz, torque: float, body1: Material, body2: Material) -> list[str]:
+    """The Hertz pressure against the bodies' hardness, or without one against
+    :data:`PLAUSIBLE_HERTZ_PRESSURE`."""
+    bodies = [("body1", body1), ("body2", body2)]
+    if any(getattr(m, "hardness", None) is not None for _, m in bodies):
+        return diagnostics.above_hardness(p_hz, bodies)
+    p_max = float(np.max(p_hz))
+    if not p_max > PLAUSIBLE_HERTZ_PRESSURE:
+        return []
+    return [f"operation.torque: the maximum Hertz pressure {p_max / 1e9:.3g} GPa at the "
+            f"torque {torque:.6g} N m is above {PLAUSIBLE_HERTZ_PRESSURE / 1e9:g} GPa, more than "
+            "case-hardened steel flanks carry (docs/gears.md); check the torque and its unit "
+            "(kN m typed as N m?), or give body1/body2.hardness to judge the pressure by"]
 
 
 def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body1: Material,
@@ -230,24 +264,56 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
             converged[i], sweeps[i] = res.converged, res.total_sweeps
         if progress is not None:
             progress(i + 1, n, f"EHL at path point {i + 1} of {n}")
+    loaded = load > 0
+    # a film of zero or less is no solution of the smooth contact, whatever the residual says
+    # (a torque typed in N m for kN m: p_H 43 GPa, h_min -1.3 nm, "converged")
+    no_film = loaded & ~(np.isfinite(out["hm"]) & (out["hm"] > 0))
+    solver_failed = loaded & ~converged & ~no_film
+    converged &= ~no_film
     lam = out["hm"] / roughness
-    f_asp = asperity_share(np.where(load > 0, lam, np.inf), boundary_lambda, full_film_lambda)
-    mu = mixed_friction(np.nan_to_num(out["mu"]), boundary_friction, f_asp)
+    f_asp = asperity_share(np.where(loaded, lam, np.inf), boundary_lambda, full_film_lambda)
+    newtonian_mu = out["mu"].copy()
+    if lubricant.newtonian:
+        # eta du/h of a Newtonian film at the pressure-raised viscosity grows without bound
+        # (1e4 .. 1e13 on gear flanks): no traction, so not reported as one (docs/gears.md)
+        out["mu"][loaded] = np.nan
+    mu = mixed_friction(np.where(loaded, out["mu"], 0.0), boundary_friction, f_asp)
     b1, b2 = thermal.coefficients()
     heat = mu * 0.25 * math.pi * p_hz * np.abs(kin.sliding_speed)
     flash = flash_temperature(heat, a, kin.u1, kin.u2, b1, b2, thermal.profile)
     pe = np.minimum(*(peclet_number(u, a, k, r, c) for u, k, r, c in zip(
         (kin.u1, kin.u2), thermal.conductivity, thermal.density, thermal.specific_heat,
         strict=True)))
-    notes = []
+    notes = list(pair.design_warnings())
+    notes += _pressure_notes(p_hz, torque, body1, body2)
     if caught_lines:
         notes.append(f"EHL solver ({len(caught_lines)} warning(s) along the path), first: "
                      f"{caught_lines[0]}")
-    bad = np.flatnonzero(~converged)
+    bad = np.flatnonzero(no_film)
+    if bad.size:
+        finite = out["hm"][bad][np.isfinite(out["hm"][bad])]
+        depth = f"down to {finite.min() * 1e9:.3g} nm" if finite.size else "not finite"
+        notes.append(f"EHL solve: the minimum film is zero or negative ({depth}) at "
+                     f"{bad.size} of {n} path points "
+                     f"(roll angles {_angles(kin, bad)} deg), so they are not converged "
+                     "solutions; check operation.torque and its unit (the maximum Hertz "
+                     f"pressure is {np.max(p_hz) / 1e9:.3g} GPa), then the lubricant")
+    bad = np.flatnonzero(solver_failed)
     if bad.size:
         notes.append(f"EHL solve: {bad.size} of {n} path points did not converge (roll angles "
-                     + ", ".join(f"{math.degrees(kin.roll_angle[i]):.2f}" for i in bad)
-                     + " deg); refine [ehl] nx/levels or raise max_sweeps")
+                     f"{_angles(kin, bad)} deg); refine [ehl] nx/levels or raise max_sweeps")
+    if lubricant.newtonian and loaded.any():
+        left_out = loaded & (f_asp < 1.0)
+        raw = np.abs(newtonian_mu[loaded & np.isfinite(newtonian_mu)])
+        size = f" (here a coefficient up to {raw.max():.3g})" if raw.size else ""
+        notes.append(
+            "lubricant.tau0: the lubricant has no Eyring stress, and a Newtonian film's shear "
+            f"stress eta du/h grows without bound with the pressure-raised viscosity{size}, "
+            "so it is no traction: "
+            "the EHL friction is left out (NaN), and with it the friction and the flash and "
+            f"contact temperatures at the {int(left_out.sum())} of {int(loaded.sum())} loaded "
+            "points where the film carries load (lambda above [friction] boundary_lambda); "
+            "set lubricant.tau0 (gear oils: about 5-10 MPa) for them")
     if pair.crowned and np.nanmax(b) * 2.0 > pair.face_width:
         notes.append(f"Hertz ellipse: length 2b up to {np.nanmax(b) * 2e3:.3g} mm exceeds the "
                      f"face width {pair.face_width * 1e3:.3g} mm, so the contact is cut by the "

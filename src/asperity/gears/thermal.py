@@ -72,7 +72,7 @@ def flash_temperature(mean_heat_flux, half_width, speed1, speed2, coefficient1, 
     Returns
     -------
     ndarray
-        theta_fl, K; 0 where the flux is 0.
+        theta_fl, K; 0 where the flux is 0, NaN where it is NaN (unknown friction).
     """
     if profile not in FLASH_CONSTANTS:
         raise InputError("profile", '"semi-elliptic" or "uniform"', profile)
@@ -83,4 +83,4 @@ def flash_temperature(mean_heat_flux, half_width, speed1, speed2, coefficient1, 
     denominator = b1 * np.sqrt(np.abs(speed1)) + b2 * np.sqrt(np.abs(speed2))
     with np.errstate(invalid="ignore", divide="ignore"):
         theta = FLASH_CONSTANTS[profile] * q * np.sqrt(2.0 * a) / denominator
-    return np.where(q > 0, theta, 0.0)
+    return np.where(np.isnan(q), np.nan, np.where(q > 0, theta, 0.0))

@@ -1,7 +1,12 @@
 """Figures of a gear pair along its path of contact, against the pinion roll angle.
 
 Each panel marks the points A-E of the path (dotted verticals); the single-tooth contact zone
-B-D is shaded unless the overlap ratio reaches 1 (the load is then shared uniformly).
+B-D is shaded unless the overlap ratio reaches 1 (the load is then shared uniformly), and the
+shading has a legend entry. The load sharing of a spur pair jumps at B and D (ISO/TR 13989-1:
+2/3 outside, 1 on B..D); the load and Hertz pressure are drawn with the value on both sides of
+each jump at the same roll angle, so the jump is a step and not a ramp to the neighbouring node.
+Temperatures are drawn in deg C (bulk and contact temperature), with the flash temperature rise
+(K) as the axis on the right, so that one axis never mixes the two.
 """
 
 from __future__ import annotations
@@ -10,18 +15,22 @@ import math
 
 import numpy as np
 
+from ..gears.loading import load_sharing
 from .style import new_figure
 
-__all__ = ["conditions_figure", "film_figure", "friction_temperature_figure"]
+__all__ = ["conditions_figure", "film_figure", "friction_temperature_figure", "step_curve"]
+
+BAND_LABEL = "single tooth contact B-D"
 
 
-def _mark_points(ax, result):
-    """Dotted verticals and labels at A-E; shade B-D (single tooth contact) where it matters."""
+def _mark_points(ax, result, band_label: bool = False):
+    """Dotted verticals and labels at A-E; shade B-D (single tooth contact) where it matters,
+    with a legend entry when ``band_label``."""
     rb1 = result.pair.rb[0]
     pts = {k: math.degrees(v / rb1) for k, v in result.pair.points.items()}
     if result.pair.overlap_ratio < 1.0:  # helical pairs with full overlap share uniformly
         lo, hi = sorted((pts["B"], pts["D"]))
-        ax.axvspan(lo, hi, color="0.92", zorder=0)
+        ax.axvspan(lo, hi, color="0.92", zorder=0, label=BAND_LABEL if band_label else None)
     for name, angle in pts.items():
         ax.axvline(angle, color="0.5", ls=":", lw=0.8)
         ax.annotate(name, (angle, 1.0), xycoords=("data", "axes fraction"), ha="center",
@@ -32,8 +41,54 @@ def _angle(result):
     return np.degrees(result.kin.roll_angle)
 
 
-def film_figure(result, title):
-    """Central and minimum film (solver, formulas) and lambda against the roll angle."""
+def step_curve(result, values, exponent: float = 1.0):
+    """Roll angles (deg) and ``values`` with the load-sharing jumps at B and D as steps.
+
+    Where a path node lies on B or D (as :meth:`GearPair.path` places them), a second point
+    at the same roll angle carries the value on the two-pair side of the jump: the node's
+    value times ``(X_outside / X_node) ** exponent`` (X the load sharing factor). The load is
+    proportional to X (``exponent`` 1); the Hertz pressure to X^(1/2) in a line contact and
+    X^(1/3) in an elliptical one, at the same radius.
+
+    Parameters
+    ----------
+    result : GearPathResult
+    values : array_like
+        One value per path position.
+    exponent : float
+        Power of X the value scales with.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Roll angles and values, with the duplicated points inserted.
+    """
+    x = list(_angle(result))
+    y = list(np.asarray(values, dtype=float))
+    pair, rho = result.pair, result.kin.rho1
+    pts = pair.points
+    inserts = []
+    for key, side in (("B", -1.0), ("D", 1.0)):
+        hits = np.flatnonzero(np.abs(rho - pts[key]) <= 1e-12 * pair.t1t2)
+        if not hits.size:
+            continue
+        i = int(hits[0])
+        at, outside = load_sharing(pair, np.array([pts[key], pts[key] + side * 1e-12 * pair.pbt]))
+        if not at > 0 or abs(outside - at) <= 1e-9 * at:
+            continue
+        inserts.append((i if side < 0 else i + 1, x[i], y[i] * (outside / at) ** exponent))
+    for pos, angle, value in sorted(inserts, reverse=True):
+        x.insert(pos, angle)
+        y.insert(pos, value)
+    return np.array(x), np.array(y)
+
+
+def film_figure(result, title, sigma_label: str = "sigma the composite roughness"):
+    """Central and minimum film (solver, formulas) and lambda against the roll angle.
+
+    ``sigma_label`` says what sigma of lambda = h_min / sigma is (e.g.
+    ``"sigma = sqrt(Ra1² + Ra2²)"``); its value in um is added.
+    """
     fig, (ax, ax2) = new_figure(6.4, 6.0, nrows=2, sharex=True)
     x = _angle(result)
     ax.plot(x, result.central_film * 1e6, "C0-o", ms=3, label="central film (solver)")
@@ -43,27 +98,36 @@ def film_figure(result, title):
     ax.plot(x, result.formula_minimum * 1e6, "C1--",
             label=f"minimum ({result.formula_names[1]})")
     ax.set_ylabel("film thickness (um)")
+    _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
-    _mark_points(ax, result)
     ax.set_title(title, pad=14)
     ax2.plot(x, result.specific_film, "C2-o", ms=3)
     ax2.axhline(1.0, color="C3", lw=0.8, ls="--")
-    ax2.set_ylabel("lambda = h_min / sigma")
+    ax2.set_ylabel(f"lambda = h_min / sigma\n{sigma_label} = "
+                   f"{result.composite_roughness * 1e6:.3g} um", fontsize=9)
     ax2.set_xlabel("pinion roll angle (deg)")
     _mark_points(ax2, result)
     return fig
 
 
 def conditions_figure(result, title):
-    """Load per length (or load), Hertz pressure, rolling and sliding speeds, reduced radius."""
+    """Load per length (or load), Hertz pressure, rolling and sliding speeds, reduced radius;
+    load and pressure step at B and D (:func:`step_curve`)."""
     fig, axes = new_figure(6.4, 7.5, nrows=3, sharex=True)
     x = _angle(result)
     unit, scale = ("N/mm", 1e-3) if result.line else ("N", 1.0)
-    axes[0].plot(x, result.load * scale, "C0-o", ms=3)
+    xs, load = step_curve(result, result.load * scale)
+    axes[0].plot(xs, load, "C0-", label="normal load")
+    axes[0].plot(x, result.load * scale, "C0o", ms=3)
     axes[0].set_ylabel(f"normal load ({unit})")
     twin = axes[0].twinx()
-    twin.plot(x, result.hertz_pressure * 1e-9, "C3-", label="Hertz p_max")
+    xs, p = step_curve(result, result.hertz_pressure * 1e-9, 0.5 if result.line else 1 / 3)
+    twin.plot(xs, p, "C3-", label="Hertz p_max")
     twin.set_ylabel("Hertz pressure (GPa)", color="C3")
+    _mark_points(axes[0], result, band_label=True)
+    handles, labels = axes[0].get_legend_handles_labels()
+    more, more_labels = twin.get_legend_handles_labels()
+    axes[0].legend(handles + more, labels + more_labels, fontsize=7, loc="lower center")
     axes[1].plot(x, result.kin.u1, "C0-", label="u1 (pinion)")
     axes[1].plot(x, result.kin.u2, "C1-", label="u2 (wheel)")
     axes[1].plot(x, result.kin.sliding_speed, "C2--", label="sliding u1 - u2")
@@ -72,34 +136,39 @@ def conditions_figure(result, title):
     axes[2].plot(x, result.kin.reduced_radius * 1e3, "C4-")
     axes[2].set_ylabel("reduced radius R (mm)")
     axes[2].set_xlabel("pinion roll angle (deg)")
-    for ax in axes:
+    for ax in axes[1:]:
         _mark_points(ax, result)
     axes[0].set_title(title, pad=14)
     return fig
 
 
 def friction_temperature_figure(result, title, bulk_temperature, newtonian=False):
-    """Friction coefficient (EHL traction and mixed) and flash/contact temperature.
+    """Friction coefficient (EHL traction and mixed) and the contact temperature.
 
-    ``newtonian``: the lubricant has no Eyring stress, so the EHL "traction" is a Newtonian
-    film's ``eta du / h`` (labelled so); where it exceeds 1, which no traction does, the
-    axis is logarithmic so that the mixed friction stays readable beside it.
+    ``newtonian``: the lubricant has no Eyring stress, so there is no EHL traction (it is NaN,
+    left out; :func:`asperity.gears.solve_path`): the panel says so, and the friction and
+    temperatures are drawn only where the asperities carry all the load. Temperatures: the
+    left axis is deg C (contact = bulk + flash, and the bulk), the right axis the flash
+    temperature rise in K on the same scale.
     """
     fig, (ax, ax2) = new_figure(6.4, 6.0, nrows=2, sharex=True)
     x = _angle(result)
-    law = "Newtonian, no tau0" if newtonian else "Eyring"
-    ax.plot(x, result.ehl_friction, "C0--", label=f"EHL traction ({law})")
+    if newtonian:
+        ax.plot([], [], " ", label="EHL traction left out (Newtonian: no lubricant.tau0)")
+    else:
+        ax.plot(x, result.ehl_friction, "C0--", label="EHL traction (Eyring)")
     ax.plot(x, result.friction, "C0-o", ms=3, label="with boundary share")
-    if np.nanmax(result.ehl_friction) > 1.0:
-        ax.set_yscale("log")
     ax.set_ylabel("friction coefficient")
+    _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
-    _mark_points(ax, result)
     ax.set_title(title, pad=14)
-    ax2.plot(x, result.flash_temperature, "C3-o", ms=3, label="flash temperature (K)")
-    ax2.plot(x, result.contact_temperature, "C1-", label="contact temperature (deg C)")
+    ax2.plot(x, result.contact_temperature, "C3-o", ms=3,
+             label="contact temperature = bulk + flash")
     ax2.axhline(bulk_temperature, color="0.4", lw=0.8, ls="--", label="bulk temperature")
-    ax2.set_ylabel("temperature")
+    ax2.set_ylabel("temperature (deg C)")
+    rise = ax2.secondary_yaxis("right", functions=(lambda t: t - bulk_temperature,
+                                                   lambda d: d + bulk_temperature))
+    rise.set_ylabel("flash temperature rise (K)")
     ax2.set_xlabel("pinion roll angle (deg)")
     ax2.legend(fontsize=7)
     _mark_points(ax2, result)

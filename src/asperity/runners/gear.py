@@ -14,7 +14,6 @@ import time
 import numpy as np
 import xarray as xr
 
-from .. import diagnostics
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness
@@ -112,8 +111,9 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "formula_minimum_film": (result.formula_minimum, "m",
                                  f"minimum film ({result.formula_names[1]})"),
         "specific_film": (result.specific_film, "1", "lambda = h_min / composite roughness"),
-        "ehl_friction": (result.ehl_friction, "1", "EHL traction coefficient (Newtonian: "
-                         "no Eyring stress)" if newtonian else "EHL traction coefficient (Eyring)"),
+        "ehl_friction": (result.ehl_friction, "1", "EHL traction coefficient (Newtonian, no "
+                         "Eyring stress: left out, NaN)" if newtonian
+                         else "EHL traction coefficient (Eyring)"),
         "asperity_share": (result.asperity_share, "1", "load share on asperities"),
         "friction": (result.friction, "1", "friction coefficient"),
         "flash_temperature": (result.flash_temperature, "K", "Blok flash temperature"),
@@ -132,6 +132,15 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     i_lam, i_fl, i_p = (crit[k] for k in ("minimum_lambda", "maximum_flash_temperature",
                                           "maximum_hertz_pressure"))
     i_c = point_index(result, "pitch")
+    if i_fl is None:  # unknown somewhere along the path (a Newtonian film): not a maximum
+        hottest = {"maximum_flash_temperature_k": math.nan,
+                   "maximum_contact_temperature_c": math.nan,
+                   "maximum_flash_temperature_roll_angle_deg": math.nan,
+                   "maximum_flash_temperature_distance_from_pitch_m": math.nan}
+    else:
+        hottest = {"maximum_flash_temperature_k": float(result.flash_temperature[i_fl]),
+                   "maximum_contact_temperature_c": float(result.contact_temperature[i_fl]),
+                   **_at(result, i_fl, "maximum_flash_temperature")}
     rb1 = pair.rb[0]
     summary = {
         "transverse_contact_ratio": pair.contact_ratio,
@@ -145,16 +154,16 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "composite_roughness_m": result.composite_roughness,
         "minimum_lambda": float(result.specific_film[i_lam]),
         **_at(result, i_lam, "minimum_lambda"),
-        "maximum_flash_temperature_k": float(result.flash_temperature[i_fl]),
-        "maximum_contact_temperature_c": float(result.contact_temperature[i_fl]),
-        **_at(result, i_fl, "maximum_flash_temperature"),
+        **hottest,
         "maximum_hertz_pressure_pa": float(result.hertz_pressure[i_p]),
         **_at(result, i_p, "maximum_hertz_pressure"),
         "minimum_film_m": float(np.nanmin(result.minimum_film)),
         "pitch_central_film_m": float(result.central_film[i_c]),
         "pitch_minimum_film_m": float(result.minimum_film[i_c]),
         "pitch_lambda": float(result.specific_film[i_c]),
-        "mean_friction_coefficient": float(np.nanmean(result.friction[result.load > 0])),
+        # NaN when any loaded point's friction is unknown (a Newtonian film): a mean of the
+        # boundary points alone would pass for the path's
+        "mean_friction_coefficient": float(np.mean(result.friction[result.load > 0])),
         "points": int(kin.rho1.size),
         "ehl_solves_converged": int(result.converged.sum()),
         "ehl_wall_time_s": seconds,
@@ -184,23 +193,38 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
 
     figures = {
-        "path_film": (lambda: film_figure(result, title),
+        "path_film": (lambda: film_figure(result, title, _sigma_label(case)),
                       "Central and minimum film from the steady EHL solver (solid) and the "
-                      "film formulas (dashed), and lambda, against the pinion roll angle; A-E "
+                      "film formulas (dashed), and lambda = h_min / sigma (sigma the composite "
+                      "roughness named on the axis), against the pinion roll angle; A-E "
                       "marked, single tooth contact B-D shaded."),
         "path_conditions": (lambda: conditions_figure(result, title),
-                            "Load and Hertz pressure, rolling and sliding speeds and the "
-                            "reduced radius along the path of contact."),
+                            "Load and Hertz pressure (stepping at B and D, where the load "
+                            "sharing jumps), rolling and sliding speeds and the reduced radius "
+                            "along the path of contact."),
         "path_friction_temperature": (
             lambda: friction_temperature_figure(result, title,
                                                 case.operation.bulk_temperature, newtonian),
-            "Friction coefficient (EHL traction and with the boundary share) and Blok's flash "
-            "temperature and the contact temperature along the path."),
+            "Friction coefficient (EHL traction and with the boundary share) and the contact "
+            "temperature (deg C, bulk + Blok's flash temperature; the flash temperature rise "
+            "in K on the right axis) along the path."
+            + (" Newtonian lubricant: the EHL traction is left out, and friction and "
+               "temperatures are drawn only where the asperities carry all the load."
+               if newtonian else "")),
     }
-    trust = list(result.warnings) + diagnostics.newtonian_traction(
-        float(np.nanmax(result.ehl_friction)), newtonian)
+    # solve_path's lines include the lubricant.tau0 line of a Newtonian film (its traction
+    # left out) and the minimum film <= 0 of an implausible load
+    trust = list(result.warnings)
     return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
                    notes=notes, warnings=trust)
+
+
+def _sigma_label(case) -> str:
+    """What sigma of lambda = h_min / sigma is in this case ("rss of Ra": sqrt(Ra1^2 + Ra2^2))."""
+    name = "Ra" if case.roughness.parameter == "ra" else "Rq"
+    if case.roughness.combination == "rss":
+        return f"sigma = sqrt({name}1² + {name}2²)"
+    return f"sigma = ({name}1 + {name}2)/2"
 
 
 def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, str]:
