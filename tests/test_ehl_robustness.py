@@ -120,6 +120,14 @@ def _roller(M=None, tau0=None, xi=0.0):
     return LineContact(6.2e-3, 450e3 * M / prob.M, u1, u2, STEEL, STEEL, lub)
 
 
+def _roller_low_sliding(tau0=None, xi=0.05):
+    """A user's roller on its inner race (docs/ehl-robustness.md, "Not in the table",
+    session 36): steel on steel, R = 4 mm, 500 kN/m, 5 m/s, 0.02 Pa s, alpha = 18 1/GPa,
+    Roelands + Dowson-Higginson (M = 36.8, L = 15.9), Eyring ``tau0`` at slide/roll ``xi``."""
+    lub = Lubricant(0.02, 1.8e-8, eyring_stress=tau0)
+    return LineContact(4e-3, 500e3, 5.0 * (1 + xi / 2), 5.0 * (1 - xi / 2), STEEL, STEEL, lub)
+
+
 def _gear():
     """The seed's gear case (Holmes et al. 2005, Table 1): Roelands, DH, Eyring 10 MPa."""
     u, xi = 25.0, 0.25
@@ -160,6 +168,9 @@ CASES = [
     ("roller M=10 Roelands+DH", lambda: _roller(10), "roelands"),
     ("roller M=50 Roelands+DH", lambda: _roller(50), "roelands"),
     ("roller Eyring 10 MPa xi=0.25", lambda: _roller(tau0=10e6, xi=0.25), "roelands"),
+    # session 36: a user's roller at low sliding, converged by the refresh fallback
+    # (solver.LINE_RETRY_REFRESH; before: 972 nm, load error -10 %, not converged)
+    ("roller 500 kN/m Eyring 10 MPa xi=0.05", lambda: _roller_low_sliding(10e6), "roelands"),
     ("ball steel 15 N Roelands", lambda: _ball(15.0, STEEL), "roelands"),
     ("ball steel 15 N Eyring 5 MPa xi=0.5", lambda: _ball(15.0, STEEL, 5e6, 0.5), "roelands"),
     ("ball glass 30 N Eyring 5 MPa xi=0.5", lambda: _ball(30.0, GLASS, 5e6, 0.5), "roelands"),
