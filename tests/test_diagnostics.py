@@ -451,3 +451,53 @@ def test_roughness_correlation_length_in_cells():
 def test_roughness_of_two_and_a_half_cells_is_silent():
     x = y = (np.arange(64) + 0.5) * 4e-6
     assert dg.roughness_resolution("roughness", 10e-6, x, y) == []
+
+
+# ---------------------------------------------------------------- measured files on the grid
+def test_a_grid_coarser_than_the_file_is_reported_with_the_nodes_it_needs():
+    """A 1 um map on 2 um cells (128 over 256 um): the grid takes every other point; the line
+    names both spacings, the slopes as given and nx >= 256 (256 um over 1 um). A grid of the
+    file's own spacing, or of 1.5 times it, is silent."""
+    x = y = _cells(128, 256e-6)
+    lines = dg.decimated_roughness_file("roughness", (1e-6, 1e-6), x, y, 0.118, 0.101)
+    assert len(lines) == 1 and lines[0].startswith("roughness.path: the grid is coarser")
+    assert "dx = 2 um, 2 times the file's 1 um" in lines[0]
+    assert "0.101 against the file's 0.118 (-14%)" in lines[0]
+    assert "grid.nx >= 256 and grid.ny >= 256" in lines[0]
+    fine = _cells(256, 256e-6)
+    assert dg.decimated_roughness_file("roughness", (1e-6, 1e-6), fine, fine, 0.1, 0.1) == []
+    assert dg.decimated_roughness_file("roughness", (1e-6, 1e-6), _cells(171, 256e-6),
+                                       _cells(171, 256e-6), 0.1, 0.1) == []
+
+
+def test_a_coarse_file_at_exactly_the_limit_is_silent():
+    """A 1 um file on 0.5 um cells is twice as coarse: at the limit, not above it (the
+    spacing 256 um / 512 came out 4.99999999999985e-7 and the line told the user to use
+    the nx the case had)."""
+    x = y = _cells(512, 256e-6)
+    assert dg.coarse_roughness_file("roughness", (1e-6, 1e-6), x, y) == []
+    assert dg.coarse_roughness_file("roughness", (1.01e-6, 1e-6), x, y) != []
+
+
+def test_a_surface_that_is_not_periodic_on_a_periodic_grid_is_reported():
+    """Sines of whole periods over the cell are periodic: the jump across the boundary is
+    one of the neighbours' (silent). A window of 7.25 periods ends at a crest and steps by
+    about A there, against neighbours' rms 2 pi 7.25 A / (sqrt(2) 256) = 0.126 A (a ratio
+    of about 8): reported along x, naming the fix. On a grid 16 times finer than the file
+    (each point repeated) the jump between neighbouring cells is mostly 0, so the inner
+    jumps are taken over the file's interval, 16 cells."""
+    n = 256
+    i = np.arange(n)
+    whole = np.sin(2 * np.pi * 8 * i / n)[:, None] * np.ones((1, 16))
+    assert dg.periodic_seam("roughness", 1e-6 * whole) == []
+    window = np.sin(2 * np.pi * 7.25 * i / n)[:, None] * np.ones((1, 16))
+    lines = dg.periodic_seam("roughness", 1e-6 * window)
+    assert len(lines) == 1 and "across the x boundary" in lines[0]
+    assert "across the y boundary" not in lines[0] and "grid.periodic = false" in lines[0]
+    ratio = float(lines[0].split("um rms across the x boundary, ")[1].split(" times")[0])
+    step = abs(window[0, 0] - window[-1, 0])
+    assert step == pytest.approx(1.0, abs=0.02)
+    assert ratio == pytest.approx(step / (2 * np.pi * 7.25 / (np.sqrt(2) * n)), rel=0.02)
+    fine = np.repeat(whole, 16, axis=0)  # steps of 16 cells: neighbours mostly equal
+    assert dg.periodic_seam("roughness", 1e-6 * fine) != []
+    assert dg.periodic_seam("roughness", 1e-6 * fine, lags=(16, 1)) == []

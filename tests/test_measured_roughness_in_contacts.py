@@ -113,14 +113,14 @@ def test_heights_in_nm_declared_um_are_doubted(tmp_path):
     x = H * np.arange(N)
     nm = _trace(tmp_path, _cosine(x) * 1e3, name="trace.csv")  # nm values in a um column
     assert nm.exists()
-    doubt = [w for w in _run(tmp_path, SPHERE).warnings if "rms slope" in w]
+    doubt = [w for w in _run(tmp_path, SPHERE).warnings if "Rdq: rms slope" in w]
     assert len(doubt) == 1 and doubt[0].startswith("roughness.path: Rdq: rms slope")
     assert 'z_unit = "nm"' in doubt[0]
     rdq = float(doubt[0].split("rms slope ")[1].split()[0])
     assert rdq == pytest.approx(1e3 * 2 * np.pi * AMPLITUDE / (np.sqrt(2) * WAVELENGTH),
                                 rel=0.01)
     _trace(tmp_path, _cosine(x), name="trace.csv")
-    assert not any("rms slope" in w for w in _run(tmp_path, SPHERE).warnings)
+    assert not any("Rdq: rms slope" in w for w in _run(tmp_path, SPHERE).warnings)
 
 
 def test_absolute_positions_are_taken_from_the_start(tmp_path):
@@ -303,3 +303,22 @@ def test_a_moving_surface_file_too_short_for_the_run_is_refused_naming_it(tmp_pa
                                          r"[0-9.]+ mm long.*trace\.csv is 0\.1995 mm.*"
                                          r"time\.counting_steps"):
         _run(tmp_path, ROLLER.replace("warmup_steps = 1", "warmup_steps = 600"))
+
+
+def test_a_grid_coarser_than_the_file_is_reported_with_the_slope_it_loses(tmp_path):
+    """The 0.5 um trace of a 50 um cosine on the sphere's 6.25 um cells: the grid keeps one
+    point in 12.5, and the rms slope by forward differences falls by the sampling's factor
+    sin(pi d / lambda) / (pi d / lambda) = 0.9745 (d = 6.25 um); the line gives both slopes
+    and nx >= 800 (0.4 mm over 0.5 um), and a note says how the heights were sampled."""
+    _trace(tmp_path, _cosine(H * np.arange(N)))
+    out = _run(tmp_path, SPHERE)
+    lines = [w for w in out.warnings if w.startswith("roughness.path: the grid is coarser")]
+    assert len(lines) == 1 and "grid.nx >= 800" in lines[0]
+    grid, given = (float(v) for v in lines[0].split("its rms slope is ")[1]
+                   .split(" (")[0].split(" against the file's "))
+    d = 0.4e-3 / 64  # (both slopes printed to 3 digits: their ratio to about 1 %)
+    assert grid / given == pytest.approx(np.sin(np.pi * d / WAVELENGTH) / (np.pi * d / WAVELENGTH),
+                                         abs=0.012)
+    assert given == pytest.approx(2 * np.pi * AMPLITUDE / (np.sqrt(2) * WAVELENGTH), rel=0.01)
+    assert any("sampled by cubic spline at the grid's cell centres (6.25 um apart)"
+               " from the file's points (0.5 um apart)" in n for n in out.notes)

@@ -9,6 +9,7 @@ its own start, and a grid longer than the file is refused (:func:`roughness_on_g
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
@@ -18,6 +19,7 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..errors import InputError
+from ..surfaces.parameters import rms_gradient
 from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface, build_surface_record
 from ..surfaces.topography import Profile
 from .fields import CaseModel, Quantity, existing_file
@@ -271,12 +273,28 @@ class GridRoughness:
         the reader assumed.
     warnings : tuple of str
         The reader's reasons to doubt the file (heights implausible in metres).
+    file_slope : float or None
+        A measured file's rms slope (Rdq or Sdq of its levelled heights times ``scale``,
+        :func:`~asperity.surfaces.rms_gradient`), to set the grid's against; None for the
+        other kinds.
     """
 
     heights: np.ndarray
     file_spacing: tuple[float, ...] | None = None
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    file_slope: float | None = None
+
+    def sampling_cells(self, x, y) -> tuple[int, int]:
+        """The file's sampling interval in grid cells along x and y (at least 1; 1 for a
+        surface not read from a file, and across y for a profile repeated across it)."""
+        if self.file_spacing is None:
+            return 1, 1
+        cells = []
+        for h, coord in zip((*self.file_spacing, None)[:2], (x, y), strict=True):
+            d = float(coord[1] - coord[0]) if len(coord) > 1 else math.inf
+            cells.append(1 if h is None else max(1, round(h / d)))
+        return cells[0], cells[1]
 
 
 def roughness_on_grid(spec: RoughnessSpec, x, y, label: str = "roughness") -> GridRoughness:
@@ -366,8 +384,15 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
     else:
         z = _on_grid(surf, xs, _from_start(surf.y, len(y), dy, surf.periodic, "y",
                                            f"{label}.path ({name})"))
-    return GridRoughness(spec.scale * z, tuple(float(h) for h in np.atleast_1d(read.spacing)),
-                         tuple(notes), warnings)
+    spacing = tuple(float(h) for h in np.atleast_1d(read.spacing))
+    if not all(math.isclose(h, d, rel_tol=1e-6) for h, d in zip(spacing, (dx, dy),
+                                                                strict=False)):
+        apart = " by ".join(f"{h * 1e6:.4g} um" for h in spacing)
+        cells = " by ".join(f"{d * 1e6:.4g} um" for d in (dx, dy)[:len(spacing)])
+        notes.append(f"{label}.path ({name}): heights sampled by cubic spline at the grid's "
+                     f"cell centres ({cells} apart) from the file's points ({apart} apart)")
+    return GridRoughness(spec.scale * z, spacing, tuple(notes), warnings,
+                         spec.scale * rms_gradient(surf)[1])
 
 
 def _length(value: float) -> str:

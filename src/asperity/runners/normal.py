@@ -108,18 +108,24 @@ def run(case, progress=None) -> Outcome:
 
 
 def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
-    """Trust checks: domain, mesh, roughness on the mesh (a measured file: its sampling and
-    the reader's doubts) and hardness (:mod:`asperity.diagnostics`)."""
+    """Trust checks (:mod:`asperity.diagnostics`): a measured file's doubts first (the
+    reader's and its units', its sampling against the grid's), a surface that is not periodic
+    on a periodic grid, then domain, mesh, roughness on the mesh and hardness."""
     size = None
+    lines = [] if on_grid is None else diagnostics.measured_file_on_grid("roughness", on_grid,
+                                                                         x, y)
+    if on_grid is not None and case.grid.periodic:
+        lines += diagnostics.periodic_seam("roughness", on_grid.heights,
+                                           on_grid.sampling_cells(x, y))
     if case.grid.periodic:
-        lines = diagnostics.periodic_contact(res.contact, x, y)
+        lines += diagnostics.periodic_contact(res.contact, x, y)
     else:
         rx, ry = case.geometry.radii()
         load = case.loading.load if case.loading.load is not None else res.load
         if np.isfinite(rx) and np.isfinite(ry) and load > 0.0:
             h = hertz_point(load, rx, ry, body1, body2)
             size = (2.0 * h.a, 2.0 * h.b)
-        lines = diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
+        lines += diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
     lines += diagnostics.contact_resolution(res.contact, x, y, expected_size=size)
     rough = case.roughness
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
@@ -129,7 +135,4 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
         if ell is not None:
             lines += diagnostics.roughness_resolution(
                 "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y)
-    if on_grid is not None and on_grid.file_spacing is not None:
-        lines += [*on_grid.warnings,
-                  *diagnostics.coarse_roughness_file("roughness", on_grid.file_spacing, x, y)]
     return lines + diagnostics.above_hardness(res.pressure, [("body1", body1), ("body2", body2)])

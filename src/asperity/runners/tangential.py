@@ -235,12 +235,11 @@ def _figures(case, fld, res, path):
 
 
 def _file_warnings(fld) -> list[str]:
-    """A measured roughness file's doubts: the reader's, and sampling coarser than the grid."""
+    """A measured roughness file's doubts (:func:`asperity.diagnostics.measured_file_on_grid`)."""
     rough = fld.roughness
-    if rough is None or rough.file_spacing is None:
+    if rough is None:
         return []
-    return [*rough.warnings, *diagnostics.coarse_roughness_file(
-        "pressure.roughness", rough.file_spacing, fld.x, fld.y)]
+    return diagnostics.measured_file_on_grid("pressure.roughness", rough, fld.x, fld.y)
 
 
 def _coupling_note(body1, body2, mu) -> list[str]:
