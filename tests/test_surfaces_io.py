@@ -149,3 +149,49 @@ def test_reads_x3p_through_surface_topography(tmp_path, topography):
     assert isinstance(back, Topography) and back.shape == topography.shape
     np.testing.assert_allclose(back.z, topography.z, rtol=1e-6, atol=1e-6 * 0.3e-6)
     assert back.spacing == pytest.approx(topography.spacing, rel=1e-9)
+
+
+def _map_file(tmp_path, z_um, name="map.txt"):
+    """A profiler's areal export: pixel size and height unit in the header, a line per y."""
+    path = tmp_path / name
+    np.savetxt(path, z_um.T, header="Pixel size: 1 um\nZ unit: um", comments="# ")
+    return path
+
+
+def test_heights_read_1000_times_too_small_are_doubted(tmp_path):
+    """A map in um (Sq 0.3 um, rms slope about 0.05) given z_unit = nm: Sq 0.3 nm and a slope
+    a thousand times too small, flatter than any machined surface, so the reading doubts the
+    unit; read as it says, the same map is not doubted, nor is a superfinished one (Sq 20 nm,
+    slope about 0.004)."""
+    from asperity.surfaces import read_measured, rms_gradient
+
+    rough = gaussian_topography((64e-6, 64e-6), (1e-6, 1e-6), 0.3e-6, 8e-6, seed=3)
+    path = _map_file(tmp_path, rough.z * 1e6)
+    wrong = read_measured(path, z_unit="nm")
+    name, slope = rms_gradient(wrong.surface)
+    assert slope == pytest.approx(rms_gradient(rough)[1] * 1e-3, rel=1e-3) and slope < 1e-3
+    doubt = wrong.slope_warnings(name, slope)
+    assert len(doubt) == 1 and "flatter than machined surfaces" in doubt[0]
+    assert "z_unit" in doubt[0]
+    right = read_measured(path)
+    assert right.slope_warnings(*rms_gradient(right.surface)) == ()
+    fine = gaussian_topography((64e-6, 64e-6), (1e-6, 1e-6), 20e-9, 8e-6, seed=3)
+    smooth = read_measured(_map_file(tmp_path, fine.z * 1e6, "fine.txt"))
+    assert rms_gradient(smooth.surface)[1] > 1e-3
+    assert smooth.slope_warnings(*rms_gradient(smooth.surface)) == ()
+
+
+def test_a_spacing_given_over_the_headers_is_warned(tmp_path):
+    """A spacing given for a file whose header has its own pixel size replaces it, with a
+    warning naming both (a user's 2 um over 1 um doubled the map's size in silence); the
+    same spacing as the header's is quiet."""
+    from asperity.surfaces import read_measured
+
+    rough = gaussian_topography((32e-6, 32e-6), (1e-6, 1e-6), 0.3e-6, 8e-6, seed=3)
+    path = _map_file(tmp_path, rough.z * 1e6)
+    given = read_measured(path, spacing=2e-6)
+    assert given.surface.spacing == pytest.approx((2e-6, 2e-6))
+    assert [w for w in given.warnings if w.startswith(
+        "spacing: the spacing given (2 um) replaces the header's (1 um)")]
+    assert not [w for w in read_measured(path, spacing=1e-6).warnings
+                if w.startswith("spacing")]
