@@ -250,3 +250,28 @@ def test_nearly_flat_periodic_full_contact_converges():
     k = 2 * np.pi / length
     expected = mean - contact_modulus(BODY, BODY) * k * amp / 2 * np.cos(k * X)
     np.testing.assert_allclose(res.pressure, expected, rtol=0, atol=1e-9 * mean)
+
+
+def test_a_rough_case_reports_greenwood_tripp_and_a_flat_its_mean_separation():
+    """The rough-sphere example (R = 10 mm, E* = 115.4 GPa, 10 N: a0 = 148.1 um by Hertz,
+    a0^3 = 3 F R / (4 E*)) reports Greenwood & Tripp's alpha = sigma R / a0^2 with the rms of
+    the heights it ran on; the rough flat reports its mean separation, which on a periodic
+    cell is minus the approach (the elastic displacement of a periodic cell has zero mean)."""
+    from asperity.cases import load_case
+    from asperity.cases.roughness import roughness_on_grid
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    case = load_case(example_text("rough-sphere-normal"))
+    out = run_case(case)
+    e_star = case.body1.youngs_modulus / (2 * (1 - case.body1.poisson_ratio**2))
+    load = out.summary["load_n"]
+    a0 = (3 * load * 0.01 / (4 * e_star)) ** (1 / 3)
+    assert out.summary["hertz_a_m"] == pytest.approx(a0, rel=1e-9)
+    sigma = np.std(roughness_on_grid(case.roughness, *case.grid.coordinates()).heights)
+    assert out.summary["greenwood_tripp_alpha"] == pytest.approx(sigma * 0.01 / a0**2,
+                                                                  rel=1e-9)
+    flat = run_case(load_case(example_text("rough-flat-normal")))
+    assert flat.summary["mean_separation_m"] == pytest.approx(-flat.summary["approach_m"],
+                                                              rel=1e-9)
+    assert "greenwood_tripp_alpha" not in flat.summary

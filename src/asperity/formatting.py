@@ -76,6 +76,7 @@ _SUFFIXES = (("_deg", "deg"), ("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "
 _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "nijenbanning": "Nijenbanning", "dowson": "Dowson", "higginson": "Higginson",
           "hamrock": "Hamrock", "chittenden": "Chittenden", "roelands": "Roelands",
+          "greenwood": "Greenwood", "tripp": "Tripp",
           "eyring": "Eyring", "iso": "ISO",
           "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
           "b": "b", "x": "x", "y": "y"}

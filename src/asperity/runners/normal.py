@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import xarray as xr
 
@@ -57,9 +59,11 @@ def run(case, progress=None) -> Outcome:
         "residual": float(res.residual),
         "converged": bool(res.converged),
     }
+    rx, ry = case.geometry.radii()
+    if not np.isfinite(rx):  # a nominally flat interface: its mean separation (Persson's u)
+        summary["mean_separation_m"] = float(np.mean(res.gap))
     comparisons = []
     reference_line = None
-    rx, ry = case.geometry.radii()
     curved = np.isfinite(rx) and res.load > 0.0  # (no load: a solve that lost its contact)
     if curved and case.roughness is None:
         h = hertz_point(res.load, rx, ry, body1, body2)
@@ -81,6 +85,11 @@ def run(case, progress=None) -> Outcome:
                        hertz_approach_m=h.approach)
     elif curved:  # rough: show how far roughness takes the contact from smooth Hertz
         h = hertz_point(res.load, rx, ry, body1, body2)
+        sigma = float(np.std(rough.heights))
+        # Greenwood & Tripp's roughness parameter sigma R / a0^2 (docs/references.md)
+        summary.update(greenwood_tripp_alpha=sigma * math.sqrt(rx * ry) / (h.a * h.b),
+                       hertz_a_m=float(h.a), hertz_b_m=float(h.b),
+                       hertz_max_pressure_pa=float(h.p_max))
         src, note = cite("smooth Hertz", "hertz"), "rough vs smooth, not a check"
         comparisons += [
             Comparison("maximum pressure", summary["max_pressure_pa"], h.p_max, src, "Pa",
