@@ -501,3 +501,33 @@ def test_a_surface_that_is_not_periodic_on_a_periodic_grid_is_reported():
     fine = np.repeat(whole, 16, axis=0)  # steps of 16 cells: neighbours mostly equal
     assert dg.periodic_seam("roughness", 1e-6 * fine) != []
     assert dg.periodic_seam("roughness", 1e-6 * fine, lags=(16, 1)) == []
+
+
+def _hertz_sphere(load, radius, e_star):
+    """Hertz's closed forms of a sphere: a = (3 P R / 4 E*)^(1/3), p0 = 3 P / (2 pi a^2)."""
+    a = (3.0 * load * radius / (4.0 * e_star)) ** (1.0 / 3.0)
+    return a, 3.0 * load / (2.0 * math.pi * a * a)
+
+
+def test_hertz_validity_flags_a_large_soft_contact_and_unchecked_strain():
+    """A user's steel ball (R 6 mm, 210 GPa, nu 0.3) on PTFE (0.5 GPa, nu 0.46) at 200 N:
+    E* = 0.6325 GPa, a = 1.125 mm (a/R = 0.1875), p0 = 75.5 MPa (p0/E* = 0.119), no
+    hardness: both limits passed. The same ball on steel (E* = 115.4 GPa): a/R = 0.033,
+    p0/E* = 0.021, silent."""
+    e_ptfe = 1.0 / ((1 - 0.3**2) / 210e9 + (1 - 0.46**2) / 0.5e9)
+    a, p0 = _hertz_sphere(200.0, 6e-3, e_ptfe)
+    assert a / 6e-3 == pytest.approx(0.1875, abs=5e-4)
+    lines = dg.hertz_validity(a, 6e-3, p0, e_ptfe, hardness_given=False)
+    assert len(lines) == 2 and all(w.startswith("pressure:") for w in lines)
+    size, strain = lines
+    assert f"is {a / 6e-3:.3g} of the radius" in size and "limit a/R = 0.1" in size
+    assert "reduce the load" in size and "too soft for half-space theory" in size
+    assert f"p0/E* = {p0 / e_ptfe:.3g}" in strain and "limit 0.05" in strain
+    assert "plasticity was not checked" in strain and "body1.hardness" in strain
+    # a hardness given: the pressure is checked against it instead (above_hardness)
+    assert dg.hertz_validity(a, 6e-3, p0, e_ptfe, hardness_given=True) == [size]
+    e_steel = 1.0 / (2 * (1 - 0.3**2) / 210e9)
+    a, p0 = _hertz_sphere(200.0, 6e-3, e_steel)
+    assert dg.hertz_validity(a, 6e-3, p0, e_steel) == []
+    # at the limits exactly: silent
+    assert dg.hertz_validity(0.1, 1.0, 0.05, 1.0) == []

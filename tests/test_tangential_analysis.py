@@ -1,6 +1,7 @@
 """The tangential analysis: case files, runner, Seireg ch. 3 examples, one-line input errors."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -69,7 +70,8 @@ def test_spaced_case_2_reproduces_the_books_slip_pattern(outcomes):
     assert s["region_2_stick_fraction"] == 0.0 < s["region_1_stick_fraction"]
     assert s["center_of_rotation_x_m"] < 0.0
     assert abs(s["center_of_rotation_y_m"]) < 1e-9
-    assert s["path_gross_slip_step"] == s["path_steps"] - 1  # 784 in lbf > 771 in lbf
+    # counted from 1 (result.nc's step coordinate): the last step
+    assert s["path_gross_slip"] and s["path_gross_slip_step"] == s["path_steps"]  # 784 > 771
     rotation = out.dataset["path_rotation"].values[:-1]
     assert np.all(np.diff(rotation) > 0)  # the compliance curve rises monotonically
 
@@ -103,7 +105,7 @@ def test_relative_and_per_body_rotation_against_lubkin_and_the_book(outcomes):
 def test_fixed_rotation_path_shares_the_force_and_slips_at_mu_p(outcomes):
     out = outcomes["seireg-squares-tangential"]
     ds, s = out.dataset, out.summary
-    assert s["path_gross_slip_step"] == s["path_steps"] - 1  # 1296 lbf = mu (p1 + p2) A
+    assert s["path_gross_slip_step"] == s["path_steps"]  # 1296 lbf = mu (p1 + p2) A, last step
     assert s["rotation_rad"] == 0.0 and "reaction_moment_nm" in s
     fy = ds["path_region_force_y"].values[:-1]
     applied = ds["path_force_y"].values[:-1]
@@ -327,11 +329,11 @@ def test_lp_on_the_books_combined_case_2_warns_why():
     assert any("Why: method lp" in n for n in out.notes)
 
 
-def _ball(force="30 N", **tables):
+def _ball(force="30 N", mu=0.3, **tables):
     """A user's 10 mm steel ball on a steel flat, 200 N, mu = 0.3 (a = 186.6 um,
     p0 = 2.742 GPa; Cattaneo-Mindlin: delta = 3 mu N (2 - nu) / (16 G a)
     [1 - (1 - Q / mu N)^(2/3)], the relative shift of the two bodies)."""
-    data = {"analysis": "tangential", "title": "10 mm ball", "mu": 0.3,
+    data = {"analysis": "tangential", "title": "10 mm ball", "mu": mu,
             "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
             "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
             "pressure": {"source": "hertz", "load": "200 N", "rx": "5 mm"},
@@ -391,16 +393,189 @@ def test_the_fretting_loop_is_drawn_with_signed_shifts():
     assert shift[top] * 1e-6 == pytest.approx(_mindlin_shift(54.0), rel=0.01)  # um
 
 
-def test_dissimilar_bodies_say_why_mindlin_differs():
+def _mindlin_pair(q, e1, nu1, e2=210e9, nu2=0.3, mu=0.3, n=200.0, radius=5e-3):
+    """Mindlin's uncoupled shift and stick radius of a pair (Johnson eqs. 7.38, 7.42):
+    delta = 3 mu N / (16 a) [(2 - nu1)/G1 + (2 - nu2)/G2] [1 - (1 - Q/mu N)^(2/3)],
+    c = a (1 - Q/mu N)^(1/3), a = (3 N R / 4 E*)^(1/3)."""
+    e_star = 1.0 / ((1 - nu1**2) / e1 + (1 - nu2**2) / e2)
+    a = (3 * n * radius / (4 * e_star)) ** (1 / 3)
+    compliance = sum((2 - nu) * 2 * (1 + nu) / e for e, nu in ((e1, nu1), (e2, nu2)))
+    f = q / (mu * n)
+    return (3 * mu * n / (16 * a) * compliance * (1 - (1 - f) ** (2 / 3)),
+            a * (1 - f) ** (1 / 3))
+
+
+def _signed_percent(line, after):
+    match = re.search(re.escape(after) + r"[^%]*?([+-][0-9.]+) %", line)
+    assert match, line
+    return float(match.group(1))
+
+
+def test_dissimilar_bodies_warn_with_their_own_numbers():
     """Aluminium (70 GPa, nu 0.33) on steel: Dundurs beta = 0.117 (from the constants:
-    [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / [2 ((1 - nu1)/G1 + (1 - nu2)/G2)]). The coupled
-    solution's shift at 0.5 mu N is 5.6 % above Mindlin's (beta = 0), which the report marked
-    "differs" with no reason; identical steels written in two units get the per-body rows
-    and no coupling note."""
+    [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / [2 ((1 - nu1)/G1 + (1 - nu2)/G2)]), beta/mu = 0.39.
+    The coupled solution differs from Mindlin by design (shift +5.6 %, stick radius -7 % at
+    0.5 mu N); that was only an HTML note with an aluminium sphere's numbers hard-coded, shown
+    for PTFE too. Now a warning above |beta|/mu = 0.1 with the pair's own numbers, set here
+    against Mindlin's closed form; a note below it; nothing for identical steels."""
     out = _ball(body1={"youngs_modulus": "70 GPa", "poisson_ratio": 0.33})
-    note = next(n for n in out.notes if n.startswith("Dissimilar bodies"))
-    assert "beta = 0.117," in note
+    (line,) = [w for w in out.warnings if w.startswith("body1, body2:")]
+    assert "beta = 0.117," in line and "|beta|/mu = 0.39 (limit 0.1)" in line
+    assert "by design" in line and "one step from zero" in line
+    assert "compare with the closed forms only for similar materials" in line
+    shift, c = _mindlin_pair(30.0, 70e9, 0.33)
+    stated = _signed_percent(line, "the shift is")
+    assert stated == pytest.approx(100 * (out.summary["shift_m"] / shift - 1), abs=0.06)
+    assert 4.5 < stated < 6.5  # +5.6 %
+    stated = _signed_percent(line, "the stick radius")
+    assert stated == pytest.approx(100 * (out.summary["stick_radius_m"] / c - 1), abs=0.06)
+    assert -9 < stated < -5  # -7 %
+    assert not any("aluminium" in n for n in out.notes + out.warnings)
+    # |beta|/mu = 0.039 at mu = 3: a note, with this pair's numbers
+    weak = _ball(mu=3.0, body1={"youngs_modulus": "70 GPa", "poisson_ratio": 0.33},
+                 grid={"nx": 32, "ny": 32})
+    assert not any(w.startswith("body1, body2:") for w in weak.warnings)
+    note = next(n for n in weak.notes if n.startswith("Dissimilar bodies"))
+    assert "|beta|/mu = 0.039" in note and "from Mindlin's" in note and "aluminium" not in note
     steel = _ball(body1={"youngs_modulus": "30457.92 ksi"},
                   body2={"youngs_modulus": "30.45792e6 psi"})
     assert not any(n.startswith("Dissimilar") for n in steel.notes)
+    assert not any(w.startswith("body1, body2") for w in steel.warnings)
     assert "shift_per_body_m" in steel.summary
+
+
+def test_gross_slip_is_a_warning_that_names_the_load_and_its_ratio():
+    """force = "30000 N" on the 200 N ball (meant 30 N or 30 kN on a bigger joint): 500 times
+    mu P = 60 N. It said "gross slip yes", "Converged." and exit 0 with no warning; the
+    gross-slip text was only a note. Now one warning naming loading.force, the ratio to mu P
+    and, above 3 times, the unit hint; 1.5 mu P gets the partial-slip hint instead, and a
+    moment twice Lubkin's gross-slip moment 3 pi mu P a / 16 names loading.moment."""
+    (line,) = [w for w in _ball("30000 N", grid={"nx": 32, "ny": 32}).warnings
+               if w.startswith("loading")]
+    assert line.startswith("loading.force: the force 30 kN is 500 times the gross-slip force "
+                           "60 N, the friction capacity mu P (limit")
+    assert "check the force and its unit (kN typed as N?), mu and the load" in line
+    (line,) = [w for w in _ball(f"{1.5 * 0.3 * 200} N", grid={"nx": 32, "ny": 32}).warnings
+               if w.startswith("loading")]
+    assert "is 1.5 times" in line and "kN typed" not in line
+    assert "lower loading.force below the gross-slip load" in line
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    a = (3 * 200 * 5e-3 / (4 * e_star)) ** (1 / 3)
+    m_gs = 3 * math.pi * 0.3 * 200 * a / 16  # 6.6 N mm
+    out = _ball("0 N", loading={"moment": f"{2 * m_gs} N*m"}, grid={"nx": 32, "ny": 32})
+    (line,) = [w for w in out.warnings if w.startswith("loading")]
+    assert line.startswith("loading.moment: the moment") and "is 2 times" in line
+    assert "3 pi mu P a / 16" in line
+    # below the capacity: no such warning
+    assert not [w for w in _ball("30 N", grid={"nx": 32, "ny": 32}).warnings
+                if w.startswith("loading")]
+
+
+def test_gross_slip_fails_a_strict_run(tmp_path):
+    """`asperity run --strict` passed the 500 mu P case (exit 0); warnings exit 3."""
+    from typer.testing import CliRunner
+
+    from asperity.cli import app
+
+    case = tmp_path / "kn.toml"
+    case.write_text('analysis = "tangential"\nmu = 0.3\n[body1]\nyoungs_modulus = "210 GPa"\n'
+                    '[body2]\nyoungs_modulus = "210 GPa"\n[pressure]\nsource = "hertz"\n'
+                    'load = "200 N"\nrx = "6 mm"\n[loading]\nforce = "30000 N"\n[grid]\n'
+                    "nx = 16\nny = 16\n")
+    result = CliRunner().invoke(app, ["run", str(case), "--out", str(tmp_path / "o"), "-q",
+                                      "--strict"])
+    assert result.exit_code == 3
+    assert "warning: loading.force: the force 30 kN is 500 times" in result.stderr
+
+
+def test_a_path_taken_to_gross_slip_on_purpose_reads_as_such():
+    """load_path.scale = 2.2 on 30 N in 10 steps: step 10 (66 N) passes mu P = 60 N. The
+    summary gave "path gross slip step 9" (counted from 0, against result.nc's steps 1-10)
+    and -1 for none; now the step counts from 1, "path gross slip no" says none, and the
+    applied load, below mu P, carries no warning. The compliance figure marks the gross-slip
+    force (mu P) and overlays Cattaneo-Mindlin."""
+    out = _ball("30 N", grid={"nx": 32, "ny": 32}, load_path={"steps": 10, "scale": 2.2})
+    s = out.summary
+    assert s["path_gross_slip"] is True and s["path_gross_slip_step"] == 10
+    assert out.dataset["step"].values[-1] == 10
+    assert not [w for w in out.warnings if w.startswith("loading")]
+    assert any("reaches gross slip at step 10 of 10 (steps counted from 1" in n
+               for n in out.notes)
+    ax = out.figures["compliance"][0]().axes[0]
+    (gross,) = [ln for ln in ax.lines if ln.get_label().startswith("gross slip at step 10")]
+    assert gross.get_ydata()[0] == pytest.approx(0.3 * 200, rel=1e-6)
+    (closed,) = [ln for ln in ax.lines if ln.get_label() == "Cattaneo-Mindlin"]
+    shift, force = closed.get_data()
+    k = int(np.argmin(abs(force - 33.0)))  # step 5 of 6.6 N each
+    assert force[k] == pytest.approx(33.0)
+    assert shift[k] * 1e-6 == pytest.approx(_mindlin_shift(33.0), rel=1e-9)
+    assert force.max() == pytest.approx(60.0)  # the curve ends at mu P
+    assert "load_sharing" not in out.figures  # one region: nothing shared
+    none = _ball("30 N", grid={"nx": 32, "ny": 32}, load_path={"steps": 2})
+    assert none.summary["path_gross_slip"] is False
+    assert "path_gross_slip_step" not in none.summary
+
+
+def test_a_large_soft_contact_warns_that_hertz_does_not_hold():
+    """Steel ball (R 6 mm) on PTFE (0.5 GPa, nu 0.46), 200 N, no hardness: a/R = 0.1875 and
+    p0/E* = 0.119 (Hertz: a = (3 P R / 4 E*)^(1/3), p0 = 3 P / (2 pi a^2),
+    E* = 0.6325 GPa) ran "Converged." with no warning."""
+    out = _ball(pressure={"rx": "6 mm"}, body2={"youngs_modulus": "0.5 GPa",
+                                                "poisson_ratio": 0.46},
+                grid={"nx": 32, "ny": 32})
+    e_star = 1 / ((1 - 0.09) / 210e9 + (1 - 0.46**2) / 0.5e9)
+    a = (3 * 200 * 6e-3 / (4 * e_star)) ** (1 / 3)
+    p0 = 3 * 200 / (2 * math.pi * a * a)
+    lines = [w for w in out.warnings if w.startswith("pressure:")]
+    assert any(f"is {a / 6e-3:.3g} of the radius" in w for w in lines)  # 0.188
+    assert any(f"p0/E* = {p0 / e_star:.3g}" in w and "give body1.hardness" in w for w in lines)
+    # the steel ball: neither
+    assert not [w for w in _ball(grid={"nx": 32, "ny": 32}).warnings
+                if w.startswith("pressure:")]
+
+
+def test_a_domain_that_leaves_the_contact_out_names_the_key_that_does():
+    """x_extent = 0.5 mm from x_start = 0 left half the contact (a = 186.6 um) out and named
+    grid.x_extent with the semi-axis in m. Now the start is named, lengths in mm, and the
+    bound it gives (rounded outward) runs."""
+    a_mm = (3 * 200 * 5e-3 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3) * 1e3  # 0.1866
+    with pytest.raises(InputError) as exc:
+        _ball(grid={"x_extent": "0.5 mm", "x_start": "0 mm"})
+    assert str(exc.value) == (
+        f"grid.x_start: domain 0 to 0.5 mm does not cover the contact -{a_mm:.3g} to "
+        f"{a_mm:.3g} mm; set x_start <= -0.187 mm or leave it out")
+    with pytest.raises(InputError, match=r"^grid\.x_extent: domain -0\.15 to 0\.15 mm .*set "
+                                         r"x_extent >= 0\.374 mm or leave it out$"):
+        _ball(grid={"x_extent": "0.3 mm"})
+    with pytest.raises(InputError, match=r"^grid\.y_start: "):
+        _ball(grid={"y_start": "-0.1 mm"})
+    ok = _ball(grid={"nx": 32, "ny": 32, "x_extent": "0.5 mm", "x_start": "-0.187 mm"})
+    assert ok.converged
+
+
+def test_round_off_is_reported_as_zero_and_the_stick_radius_is_given():
+    """A force alone printed "rotation 5.6e-13 urad", "region 1 moment 9e-17 N mm",
+    "moment center x -1.7e-12 nm"; a moment alone "center of rotation x 1.7e-10 nm". Below
+    1e-9 of their scale they are 0. The stick zone's equivalent radius sqrt(A_stick / pi) is
+    given: Cattaneo-Mindlin's c = a (1 - Q / mu N)^(1/3) = 148.1 um at 0.5 mu N, and Lubkin's
+    (asperity.contact.reference) under a moment."""
+    from asperity.contact.reference import lubkin_stick_radius
+    from asperity.formatting import summary_rows
+
+    out = _ball("30 N")
+    s = out.summary
+    assert s["rotation_rad"] == 0.0 and s["region_1_moment_nm"] == 0.0
+    assert s["moment_center_x_m"] == 0.0 and s["moment_center_y_m"] == 0.0
+    row = next(r for r in summary_rows(s) if r.key == "rotation_rad")
+    assert row.text == "0 rad"
+    a = (3 * 200 * 5e-3 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
+    dx = 2.1 * a / 64
+    assert s["stick_radius_m"] == pytest.approx(a * 0.5 ** (1 / 3), abs=1.5 * dx)
+    p0 = 3 * 200 / (2 * math.pi * a * a)
+    moment = 0.5 * 3 * math.pi * 0.3 * 200 * a / 16
+    twist = _ball("0 N", loading={"moment": f"{moment} N*m"}).summary
+    assert twist["center_of_rotation_x_m"] == 0.0 == twist["center_of_rotation_y_m"]
+    assert twist["shift_m"] == 0.0 and twist["rotation_rad"] > 0
+    assert twist["stick_radius_m"] == pytest.approx(lubkin_stick_radius(moment, a, 0.3, p0),
+                                                    abs=1.5 * dx)
+    assert "stick_radius_m" not in _ball("90 N", grid={"nx": 32, "ny": 32}).summary

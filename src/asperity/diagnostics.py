@@ -67,6 +67,9 @@ __all__ = [
     "unconverged_steps",
     "unresolved_feature",
     "unresolved_roughness",
+    "HERTZ_SIZE_LIMIT",
+    "HERTZ_STRAIN_LIMIT",
+    "hertz_validity",
 ]
 
 #: Contact fraction of a periodic cell above which the contact "fills the cell".
@@ -1314,3 +1317,62 @@ def stopped_run(steps_done: int, warmup_steps: int, counting_steps: int,
     return [f"steps: the run stopped at step {steps_done} of {total}: that step diverged after "
             f"every fallback of the solver ({fallbacks}); {held}. Try a smaller time.dt or "
             "solver.load_gain"]
+
+
+#: Contact semi-axis over the radius of relative curvature above which Hertz's small-contact
+#: (half-space) assumption fails: the surfaces are no longer nearly flat over the contact.
+HERTZ_SIZE_LIMIT = 0.1
+#: Peak Hertz pressure over the contact modulus, p0 / E*, above which plasticity is likely
+#: for metals and polymers (a strain of about 5 %; a hardened steel first yields near
+#: p0 / E* = 0.02-0.03, which only its hardness can tell: bodyN.hardness, above_hardness).
+HERTZ_STRAIN_LIMIT = 0.05
+
+
+def hertz_validity(a: float, radius: float, p0: float, e_star: float,
+                   hardness_given: bool = False) -> list[str]:
+    """Whether a Hertz contact is small and elastic enough for half-space theory.
+
+    Two checks of the contact's own numbers, independent of the grid:
+
+    - ``a / radius > HERTZ_SIZE_LIMIT``: the contact is not small against the bodies' radius
+      of relative curvature (Hertz's assumption; the half-space solution, and every
+      frictional closed form built on it, no longer holds);
+    - with no hardness given, ``p0 / e_star > HERTZ_STRAIN_LIMIT``: strains of several per
+      cent, at which metals and polymers yield, and nothing checked it.
+
+    Parameters
+    ----------
+    a : float
+        Contact semi-axis, m (for an ellipse the one with the larger ratio to its radius).
+    radius : float
+        Radius of relative curvature along that semi-axis, m.
+    p0 : float
+        Maximum Hertz pressure, Pa.
+    e_star : float
+        Contact modulus E*, Pa (:func:`asperity.materials.contact_modulus`).
+    hardness_given : bool
+        Whether every deformable body gives a hardness (the pressure is then checked against
+        it by :func:`above_hardness`, and the strain check here is skipped).
+
+    Returns
+    -------
+    list of str
+        At most two lines, each starting ``pressure:``.
+    """
+    lines = []
+    size = a / radius
+    if size > HERTZ_SIZE_LIMIT:
+        lines.append(f"pressure: the Hertz contact semi-axis a = {a * 1e3:.4g} mm is "
+                     f"{size:.3g} of the radius of relative curvature R = {radius * 1e3:.4g} mm "
+                     f"(limit a/R = {HERTZ_SIZE_LIMIT:g}): Hertz's small-contact assumption "
+                     "fails, and with it the half-space solution and its closed forms; reduce "
+                     "the load (pressure.load), or the body is too soft for half-space theory "
+                     "(a large-deformation model is needed)")
+    strain = p0 / e_star
+    if not hardness_given and strain > HERTZ_STRAIN_LIMIT:
+        lines.append(f"pressure: p0/E* = {strain:.3g} (p0 = {p0 / 1e6:.4g} MPa, E* = "
+                     f"{e_star / 1e9:.4g} GPa; limit {HERTZ_STRAIN_LIMIT:g}): strains of "
+                     "several per cent, at which metals and polymers yield, and plasticity was "
+                     "not checked (no hardness given); give body1.hardness and body2.hardness "
+                     "to check it, or reduce the load")
+    return lines

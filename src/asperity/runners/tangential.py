@@ -20,7 +20,14 @@ from .. import diagnostics
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact.load_path import proportional_path, tangential_load_path
+from ..contact.reference import (
+    cattaneo_mindlin,
+    gross_slip_moment_hertz,
+    lubkin_stick_radius,
+    lubkin_twist,
+)
 from ..errors import InputError
+from ..formatting import format_quantity
 from ..materials import contact_modulus, coupling_compliance
 from ..references import tangential_comparisons
 from ..results import Outcome, variable
@@ -48,6 +55,45 @@ class _Field:
         return (self.x[1] - self.x[0]) * (self.y[1] - self.y[0])
 
 
+def _length(value: float, unit: str) -> str:
+    """A length in ``unit`` ("mm" or "um"), three significant digits, no float noise."""
+    return f"{value * (1e3 if unit == 'mm' else 1e6):.3g}"
+
+
+def _bound(value: float, unit: str, up: bool) -> str:
+    """A bound in ``unit`` rounded outward to three significant digits (so that the value
+    shown passes the check it is quoted for)."""
+    v = value * (1e3 if unit == "mm" else 1e6)
+    if v == 0.0:
+        return "0"
+    factor = 10.0 ** (2 - math.floor(math.log10(abs(v))))
+    v = (math.ceil(v * factor) if up else math.floor(v * factor)) / factor
+    return f"{v:.3g}"
+
+
+def _check_domain(grid, axis: str, coord, half: float) -> None:
+    """Refuse a domain along ``axis`` that leaves part of the contact (-half, half) out,
+    naming the key that does: ``{axis}_start`` when the given start lies inside the contact,
+    else ``{axis}_extent`` (too short from its start, or centred and narrower than the
+    contact)."""
+    edge = 0.5 * (coord[1] - coord[0])
+    lo, hi = coord[0] - edge, coord[-1] + edge
+    slack = 1e-9 * edge
+    if lo <= -half + slack and hi >= half - slack:
+        return
+    unit = "mm" if max(abs(lo), abs(hi), half) >= 1e-4 else "um"
+    shown = "µm" if unit == "um" else unit
+    start = getattr(grid, f"{axis}_start")
+    what = (f"domain {_length(lo, unit)} to {_length(hi, unit)} {shown} does not cover the "
+            f"contact {_length(-half, unit)} to {_length(half, unit)} {shown}")
+    if start is not None and lo > -half + slack:
+        raise InputError(f"grid.{axis}_start", "", problem=(
+            f"{what}; set {axis}_start <= {_bound(-half, unit, False)} {shown} or leave it out"))
+    need = half - lo if start is not None else 2.0 * half
+    raise InputError(f"grid.{axis}_extent", "", problem=(
+        f"{what}; set {axis}_extent >= {_bound(need, unit, True)} {shown} or leave it out"))
+
+
 def _hertz_field(case, body1, body2):
     """Hertz pressure at the cell centres, scaled so that the discrete load is the applied one."""
     spec = case.pressure
@@ -55,11 +101,8 @@ def _hertz_field(case, body1, body2):
     h = hertz_point(spec.load, rx, ry, body1, body2)
     margin = 1.05 if spec.source == "hertz" else 1.5
     x, y = case.grid.coordinates((-margin * h.a, margin * h.a, -margin * h.b, margin * h.b))
-    for key, coord, half in (("x_extent", x, h.a), ("y_extent", y, h.b)):
-        edge = 0.5 * (coord[1] - coord[0]) * (1.0 + 1e-9)
-        if coord[0] - edge > -half or coord[-1] + edge < half:
-            raise InputError(f"grid.{key}", f"a domain covering the contact (semi-axis {half:.4g}"
-                                            " m about the origin)")
+    _check_domain(case.grid, "x", x, h.a)
+    _check_domain(case.grid, "y", y, h.b)
     X, Y = np.meshgrid(x, y, indexing="ij")
     if spec.source == "normal":
         rough = None if spec.roughness is None else roughness_on_grid(
@@ -100,49 +143,74 @@ def _field(case, body1, body2) -> _Field:
 # --- outputs --------------------------------------------------------------------------------
 
 
+#: Below this fraction of its scale a summary value is round-off and reported as 0 (a
+#: force's twist of 5.6e-19 rad beside a shift of 0.9 um over a 0.2 mm contact).
+ROUND_OFF = 1e-9
+
+
+def _zeroed(value: float, scale: float) -> float:
+    """``value``, or 0.0 when it is round-off of zero at ``scale`` (:data:`ROUND_OFF`)."""
+    value = float(value)
+    return 0.0 if abs(value) <= ROUND_OFF * scale else value
+
+
 def _summary(case, fld, res, applied, identical):
+    contact_area = float((fld.pressure > 0).sum() * fld.cell_area)
+    # equivalent contact radius: the length scale (the domain's if nothing touches)
+    size = math.sqrt(contact_area / math.pi) or float(np.ptp(fld.x) + np.ptp(fld.y))
+    force, moment = math.hypot(*applied[:2]), abs(applied[2])
+    force_scale, moment_scale = force + moment / size, force * size + moment
     s = {
         "normal_load_n": float(fld.pressure.sum() * fld.cell_area),
-        "contact_area_m2": float((fld.pressure > 0).sum() * fld.cell_area),
+        "contact_area_m2": contact_area,
         "friction_capacity_n": float((fld.mu * fld.pressure).sum() * fld.cell_area),
         "force_x_n": applied[0], "force_y_n": applied[1], "moment_nm": applied[2],
         "gross_slip": bool(res.gross_slip),
         "load_capacity": float(res.load_capacity),
         "stick_fraction": float(res.stick.sum() / max((res.labels > 0).sum(), 1)),
     }
+    if not res.gross_slip and res.stick.any():
+        s["stick_radius_m"] = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
     # undefined quantities are left out, not NaN: the rigid motion in gross slip, the centre
-    # of a motion without rotation
+    # of a motion without rotation; round-off (a force's twist, a moment's shift) is 0
     if not res.gross_slip:
-        s.update(shift_x_m=float(res.shift[0]), shift_y_m=float(res.shift[1]),
-                 shift_m=float(math.hypot(*res.shift)), rotation_rad=float(res.rotation))
+        shift = math.hypot(*res.shift)
+        motion = shift + abs(res.rotation) * size  # the largest displacement it causes
+        s.update(shift_x_m=_zeroed(res.shift[0], motion), shift_y_m=_zeroed(res.shift[1], motion),
+                 shift_m=_zeroed(shift, motion),
+                 rotation_rad=_zeroed(res.rotation, motion / size))
         if identical:
             s["shift_per_body_m"] = 0.5 * s["shift_m"]
             s["rotation_per_body_rad"] = 0.5 * s["rotation_rad"]
     if np.all(np.isfinite(res.centre_of_rotation)):
-        s.update(center_of_rotation_x_m=float(res.centre_of_rotation[0]),
-                 center_of_rotation_y_m=float(res.centre_of_rotation[1]))
+        far = max(size, float(np.max(np.abs(res.centre_of_rotation))))
+        s.update(center_of_rotation_x_m=_zeroed(res.centre_of_rotation[0], far),
+                 center_of_rotation_y_m=_zeroed(res.centre_of_rotation[1], far))
     if math.isfinite(res.load_capacity):
         if any(applied[:2]):
-            s["gross_slip_force_n"] = float(res.load_capacity * math.hypot(*applied[:2]))
+            s["gross_slip_force_n"] = float(res.load_capacity * force)
         if applied[2] != 0.0 and case.loading.rotation == "free":
-            s["gross_slip_moment_nm"] = float(res.load_capacity * abs(applied[2]))
+            s["gross_slip_moment_nm"] = float(res.load_capacity * moment)
     if res.gross_slip:
-        s.update(excess_force_x_n=float(res.excess[0]), excess_force_y_n=float(res.excess[1]),
-                 excess_moment_nm=float(res.excess[2]))
+        s.update(excess_force_x_n=_zeroed(res.excess[0], force_scale),
+                 excess_force_y_n=_zeroed(res.excess[1], force_scale),
+                 excess_moment_nm=_zeroed(res.excess[2], moment_scale))
     if case.loading.rotation == "fixed":
-        s["reaction_moment_nm"] = float(res.reaction_moment)
+        s["reaction_moment_nm"] = _zeroed(res.reaction_moment, moment_scale)
     for reg in res.regions:
         k = reg.label
-        s.update({f"region_{k}_force_x_n": float(reg.force[0]),
-                  f"region_{k}_force_y_n": float(reg.force[1]),
-                  f"region_{k}_moment_nm": float(reg.moment),
+        s.update({f"region_{k}_force_x_n": _zeroed(reg.force[0], force_scale),
+                  f"region_{k}_force_y_n": _zeroed(reg.force[1], force_scale),
+                  f"region_{k}_moment_nm": _zeroed(reg.moment, moment_scale),
                   f"region_{k}_capacity_n": float(reg.capacity),
                   f"region_{k}_stick_fraction": float(reg.stick_fraction)})
     s.update(regions=len(res.regions), iterations=int(res.iterations),
              residual=float(res.residual), convolutions=int(res.convolutions),
              converged=bool(res.converged))
     # the reference point of the moment (loading.center, or the centre of the normal load)
-    s.update(moment_center_x_m=float(res.centre[0]), moment_center_y_m=float(res.centre[1]))
+    far = max(size, float(np.max(np.abs(res.centre))))
+    s.update(moment_center_x_m=_zeroed(res.centre[0], far),
+             moment_center_y_m=_zeroed(res.centre[1], far))
     return s
 
 
@@ -205,7 +273,7 @@ def _dataset(case, fld, res, path):
         "iterations": res.iterations, "converged": int(res.converged)})
 
 
-def _figures(case, fld, res, path):
+def _figures(case, fld, res, path, body1, body2):
     from ..plotting import tangential as tplot
 
     x, y = fld.x, fld.y
@@ -220,18 +288,111 @@ def _figures(case, fld, res, path):
                             "Normal pressure from solve_normal, held fixed.")
     if path is None:
         return figs
-    figs["compliance"] = (lambda: tplot.compliance_curves(path),
+    closed = _mindlin_compliance(case, fld, path, body1, body2)
+    figs["compliance"] = (lambda: tplot.compliance_curves(path, closed_form=closed),
                           "Compliance along the load path: force vs relative rigid shift and "
-                          "moment vs relative twist.")
-    figs["slip_progression"] = (lambda: tplot.slip_progression(path, x, y),
-                                "Stick-zone borders at the successive load steps.")
-    figs["load_sharing"] = (lambda: tplot.load_sharing(path),
-                            "Force and moment carried by each contact region along the path.")
+                          "moment vs relative twist" + (
+                              f", with {closed[2]} (dashed)" if closed is not None else "")
+                          + ("; the gross-slip load dotted" if path.gross_slip_step >= 0
+                             else "") + ".")
+    fraction, label = _path_fraction(case, fld, res, path)
+    figs["slip_progression"] = (
+        lambda: tplot.slip_progression(path, x, y, load_fraction=fraction,
+                                       fraction_label=label),
+        "Stick-zone borders along the first loading, coloured by the load"
+        + (f" ({label})" if label else "") + ".")
+    if path.region_moment.shape[1] > 1:  # one region carries the whole load: nothing to share
+        figs["load_sharing"] = (lambda: tplot.load_sharing(path),
+                                "Force and moment carried by each contact region along the "
+                                "path.")
     if case.loading.rotation == "free" and np.any(np.isfinite(path.centre_of_rotation)):
         figs["center_of_rotation"] = (
             lambda: tplot.centre_of_rotation_curve(path, res.centre),
             "Centre of rotation relative to the moment's reference point vs the moment.")
     return figs
+
+
+def _uniform_mu(case, fld) -> bool:
+    return bool(np.all(fld.mu == case.mu))
+
+
+def _circular_hertz(case, fld) -> bool:
+    h = fld.hertz
+    return (case.pressure.source == "hertz" and h is not None
+            and abs(h.a - h.b) <= 1e-9 * h.a and _uniform_mu(case, fld))
+
+
+def _path_fraction(case, fld, res, path):
+    """Each path step's load over the gross-slip load along the applied load, and its label
+    (``Q / (mu P)`` for a force alone); ``(None, None)`` when the capacity is unknown."""
+    applied = np.array([*case.loading.vector(), case.loading.moment])
+    t = float(res.load_capacity)
+    j = int(np.argmax(np.abs(applied)))
+    if not (math.isfinite(t) and t > 0 and applied[j] != 0):
+        return None, None
+    fraction = path.loads[:, j] / (t * applied[j])
+    force, moment = math.hypot(*applied[:2]), applied[2]
+    if moment == 0.0:
+        mu_p = float((fld.mu * fld.pressure).sum() * fld.cell_area)
+        label = "Q / (mu P)" if math.isclose(t * force, mu_p, rel_tol=1e-6) else "Q / Q_gross"
+    elif force == 0.0:
+        label = "M / M_gross"
+    else:
+        label = "load / gross-slip load"
+    return fraction, label
+
+
+def _masing_curve(steps, virgin, capacity, points=16):
+    """Shift against force along a history of forces ``steps`` (from zero) by Masing's rule.
+
+    The first loading follows ``virgin`` (odd: ``sign(Q) virgin(|Q|)``); after a reversal at
+    ``(Q_r, delta_r)`` the shift is ``delta_r + 2 virgin((Q - Q_r)/2)`` (Mindlin & Deresiewicz
+    1953; Johnson eq. 7.56). The curve stops at ``|Q| = capacity`` (gross slip).
+    """
+    qs = np.concatenate([[0.0], np.asarray(steps, dtype=float)])
+    force, shift = [0.0], [0.0]
+    q_r = d_r = direction = 0.0
+    first = True
+    for q0, q1 in zip(qs[:-1], qs[1:], strict=True):
+        d = float(np.sign(q1 - q0))
+        if d == 0.0:
+            continue
+        if direction and d != direction:
+            q_r, d_r, first = q0, shift[-1], False
+        direction = d
+        for q in np.linspace(q0, q1, points + 1)[1:]:
+            if abs(q) > capacity:  # gross slip: the curve ends at the capacity
+                q = math.copysign(capacity, q)
+            if first:
+                delta = math.copysign(virgin(abs(q)), q)
+            else:
+                delta = d_r + d * 2.0 * virgin(min(0.5 * abs(q - q_r), capacity))
+            force.append(q)
+            shift.append(delta)
+            if abs(q) >= capacity:
+                return np.array(shift), np.array(force)
+    return np.array(shift), np.array(force)
+
+
+def _mindlin_compliance(case, fld, path, body1, body2):
+    """The closed-form compliance curve of the path (shift, force along the largest force,
+    label) where it applies: a circular Hertz contact of similar bodies (beta = 0) under a
+    force alone; else None."""
+    if (not _circular_hertz(case, fld) or case.loading.moment != 0.0
+            or abs(_dundurs_beta(body1, body2)) >= 1e-3):
+        return None
+    h = fld.hertz
+    force = np.hypot(path.loads[:, 0], path.loads[:, 1])
+    e = path.loads[np.argmax(force), :2] / force.max()
+    capacity = case.mu * h.load
+
+    def virgin(q):
+        return cattaneo_mindlin(h.load, min(q, capacity), case.mu, h.a, body1, body2).shift
+
+    shift, along = _masing_curve(path.loads[:, :2] @ e, virgin, capacity)
+    reversed_ = case.load_path.history != "load"
+    label = "Cattaneo-Mindlin" + (" / Mindlin-Deresiewicz (Masing)" if reversed_ else "")
+    return shift, along, label
 
 
 def _file_warnings(fld) -> list[str]:
@@ -242,27 +403,147 @@ def _file_warnings(fld) -> list[str]:
     return diagnostics.measured_file_on_grid("pressure.roughness", rough, fld.x, fld.y)
 
 
-def _coupling_note(body1, body2, mu) -> list[str]:
+def _dundurs_beta(body1, body2) -> float:
+    """Dundurs' beta of the pair, E* [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / 4."""
+    return contact_modulus(body1, body2) * coupling_compliance(body1, body2) / 4.0
+
+
+#: |beta| / mu above which the coupling of dissimilar bodies is a warning, not a note.
+COUPLING_WARNING = 0.1
+
+
+def _percent(value: float, reference: float) -> str:
+    return f"{100.0 * (value / reference - 1.0):+.2g} %"
+
+
+def _coupling_effect(case, fld, res, body1, body2) -> str:
+    """What the coupling does to this solution against the uncoupled closed form that applies
+    (Cattaneo-Mindlin under a force, Lubkin under a moment, circular Hertz), in words."""
+    if res.gross_slip or not _circular_hertz(case, fld):
+        return ""
+    h, mu = fld.hertz, case.mu
+    force, moment = math.hypot(*case.loading.vector()), abs(case.loading.moment)
+    stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
+    if moment == 0.0 and 0.0 < force < mu * h.load:
+        cm = cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+        shift = math.hypot(*res.shift)
+        text = (f"at Q = {force / (mu * h.load):.2g} mu P the shift is "
+                f"{format_quantity(shift, 'm')}, {_percent(shift, cm.shift)} from Mindlin's "
+                f"{format_quantity(cm.shift, 'm')}")
+        c = cm.stick_radius
+    elif force == 0.0 and case.loading.rotation == "free" and 0.0 < moment < (
+            gross_slip_moment_hertz(mu, h.load, h.a)):
+        c = lubkin_stick_radius(moment, h.a, mu, h.p_max)
+        twist, ref = abs(res.rotation), lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
+        text = (f"the twist is {format_quantity(twist, 'rad')}, {_percent(twist, ref)} from "
+                f"Lubkin's {format_quantity(ref, 'rad')}")
+    else:
+        return ""
+    if stick > 0.0:
+        text += (f", the stick radius {format_quantity(stick, 'm')}, "
+                 f"{_percent(stick, c)} from {format_quantity(c, 'm')}")
+    return text
+
+
+def _coupling(case, fld, res, body1, body2) -> tuple[list[str], list[str]]:
     """Dissimilar bodies: the pressure's tangential displacement is in the solution, not in
-    the closed forms it is compared with (docs/tangential.md, "Dissimilar materials")."""
-    beta = contact_modulus(body1, body2) * coupling_compliance(body1, body2) / 4.0
+    the closed forms it is compared with (docs/tangential.md, "Dissimilar materials").
+
+    Returns (notes, warnings): a warning when |beta|/mu > :data:`COUPLING_WARNING`, else a
+    note; the effect on this solution is computed for the actual pair.
+    """
+    beta = _dundurs_beta(body1, body2)
     if abs(beta) < 1e-3:
+        return [], []
+    ratio = abs(beta) / float(np.max(fld.mu))
+    effect = _coupling_effect(case, fld, res, body1, body2)
+    here = f"; here {effect}" if effect else ""
+    what = ("the solution includes the tangential displacement of the whole pressure "
+            "(Goodman), applied in one step from zero, which Cattaneo-Mindlin and Lubkin "
+            "(beta = 0) leave out, so it differs from their closed forms by design")
+    if ratio > COUPLING_WARNING:
+        return [], [f"body1, body2: dissimilar materials, Dundurs beta = {beta:.3g}, "
+                    f"|beta|/mu = {ratio:.2g} (limit {COUPLING_WARNING:g}): {what}{here}; "
+                    "compare with the closed forms only for similar materials (beta = 0), and "
+                    "for a joint clamped first and loaded tangentially after treat both as "
+                    "estimates (neither follows the history of the normal loading)"]
+    return [f"Dissimilar bodies (Dundurs beta = {beta:.3g}, |beta|/mu = {ratio:.2g}): {what}, "
+            f"by an amount set by beta/mu{here}."], []
+
+
+def _gross_slip_warning(case, fld, res, applied) -> list[str]:
+    """The applied load beyond the friction capacity: its ratio to the gross-slip load and
+    what to check (a ratio above 3 is more likely a wrong unit than a design)."""
+    if not res.gross_slip:
         return []
-    ratio = abs(beta) / float(np.max(mu))
-    return [f"Dissimilar bodies (Dundurs beta = {beta:.3g}, beta/mu = {ratio:.2g}): the solution "
-            "includes the tangential displacement of the pressure, applied at once (not along "
-            "the history of the normal loading), which Cattaneo-Mindlin and Lubkin (beta = 0) "
-            "leave out; their shifts, twists and stick zones differ from it by an amount set by "
-            "beta/mu (an aluminium sphere on steel, beta/mu = 0.39: shift +5.6 %, stick area "
-            "54.5 against 63 % at Q = 0.5 mu N)."]
+    force, moment = math.hypot(*applied[:2]), abs(applied[2])
+    t = float(res.load_capacity)
+    ratio = 1.0 / t if t > 0 else math.inf
+    free = case.loading.rotation == "free"
+    keys = [k for k, on in (("loading.force", force > 0), ("loading.moment",
+                                                           moment > 0 and free)) if on]
+    mu_p = float((fld.mu * fld.pressure).sum() * fld.cell_area)
+    if force > 0 and "loading.moment" not in keys:
+        cap = (", the friction capacity mu P" if math.isclose(t * force, mu_p, rel_tol=1e-6)
+               else f" (mu P = {format_quantity(mu_p, 'N')})")
+        what = (f"the force {format_quantity(force, 'N')} is {ratio:.3g} times the gross-slip "
+                f"force {format_quantity(t * force, 'N')}{cap}")
+        hint = "check the force and its unit (kN typed as N?), mu and the load"
+    elif force == 0:
+        cap = ""
+        if _circular_hertz(case, fld):
+            gs = gross_slip_moment_hertz(case.mu, fld.hertz.load, fld.hertz.a)
+            cap = f", 3 pi mu P a / 16 = {format_quantity(gs, 'N*m')} for this Hertz circle"
+        what = (f"the moment {format_quantity(moment, 'N*m')} is {ratio:.3g} times the "
+                f"gross-slip moment {format_quantity(t * moment, 'N*m')}{cap}")
+        hint = "check the moment and its unit (N m typed for N mm?), mu and the load"
+    else:
+        what = (f"the force {format_quantity(force, 'N')} with the moment "
+                f"{format_quantity(moment, 'N*m')} is {ratio:.3g} times the gross-slip load "
+                f"along it ({format_quantity(t * force, 'N')} with "
+                f"{format_quantity(t * moment, 'N*m')}; mu P = {format_quantity(mu_p, 'N')})")
+        hint = "check the force, the moment and their units, mu and the load"
+    if ratio <= 3.0:
+        hint = (f"for partial slip lower {' and '.join(keys)} below the gross-slip load, or "
+                "raise mu or the normal load")
+    return [f"{', '.join(keys)}: {what} (limit: at most 1 time it): friction cannot carry the "
+            "load, the contact slides as a whole (gross slip): there is no shift, twist or "
+            f"stick zone, only the full-slip traction; {hint}"]
+
+
+def _validity_warnings(case, fld, body1, body2) -> list[str]:
+    """Hertz's assumptions (small contact, elastic strains) for a Hertz-built pressure
+    (:func:`asperity.diagnostics.hertz_validity`)."""
+    h = fld.hertz
+    if h is None:
+        return []
+    rx, ry = case.pressure.radii()
+    a, radius = max(((h.a, rx), (h.b, ry)), key=lambda ar: ar[0] / ar[1])
+    given = all(b.hardness is not None for b in (body1, body2) if not b.rigid)
+    return diagnostics.hertz_validity(a, radius, h.p_max, h.modulus, given)
 
 
 def _path_summary(path):
-    out = {"path_steps": len(path.loads), "path_gross_slip_step": int(path.gross_slip_step),
-           "path_iterations": int(path.iterations), "path_converged": bool(path.converged)}
+    # steps count from 1, as the step coordinate of result.nc; no gross slip: no step
+    out = {"path_steps": len(path.loads), "path_gross_slip": bool(path.gross_slip_step >= 0)}
+    if path.gross_slip_step >= 0:
+        out["path_gross_slip_step"] = int(path.gross_slip_step) + 1
+    out.update(path_iterations=int(path.iterations), path_converged=bool(path.converged))
     if math.isfinite(path.dissipated_energy):  # a closed cycle
         out["path_dissipated_energy_j"] = float(path.dissipated_energy)
     return out
+
+
+def _path_note(case, path, planned: int) -> list[str]:
+    """Where a load path reached gross slip (on purpose with load_path.scale > 1)."""
+    if path.gross_slip_step < 0:
+        return []
+    t = float(path.final.load_capacity)
+    over = f", {1.0 / t:.3g} times the gross-slip load there" if t > 0 else ""
+    return [f"The load path reaches gross slip at step {path.gross_slip_step + 1} of {planned} "
+            f"(steps counted from 1, as result.nc's step coordinate){over} "
+            f"(load_path.scale = {case.load_path.scale:g}); the path stops there: that step has "
+            "the full-slip traction and no shift."]
 
 
 def run(case, progress=None) -> Outcome:
@@ -299,6 +580,7 @@ def run(case, progress=None) -> Outcome:
         path = tangential_load_path(fld.pressure, fld.x, fld.y, fld.mu, body1, body2, loads,
                                     centre=case.loading.center, tol=case.tolerance,
                                     callback=step_cb, rotation=case.loading.rotation)
+        planned = len(loads)
     summary = _summary(case, fld, res, applied, identical)
     if path is not None:
         summary.update(_path_summary(path))
@@ -309,12 +591,16 @@ def run(case, progress=None) -> Outcome:
         notes.append(case.reference.note)
     if identical:
         notes.append(_PER_BODY_NOTE)
-    notes += _coupling_note(body1, body2, fld.mu)
+    coupling_notes, coupling_warnings = _coupling(case, fld, res, body1, body2)
+    notes += coupling_notes
     if res.gross_slip:
         notes.append(
             f"Gross slip: friction carries at most {res.load_capacity:.4g} times the applied "
-            f"load; the excess is Fx {res.excess[0]:.4g} N, Fy {res.excess[1]:.4g} N, "
-            f"M {res.excess[2]:.4g} N m. The traction shown is the full-slip traction.")
+            f"load; the excess is Fx {summary['excess_force_x_n']:.4g} N, Fy "
+            f"{summary['excess_force_y_n']:.4g} N, M {summary['excess_moment_nm']:.4g} N m. "
+            "The traction shown is the full-slip traction.")
+    if path is not None:
+        notes += _path_note(case, path, planned)
     if math.hypot(fx, fy) > 0:
         notes.append(f"The force acts at {math.degrees(case.loading.direction):.4g} deg from +x "
                      "(loading.direction); the moment is about "
@@ -342,12 +628,16 @@ def run(case, progress=None) -> Outcome:
         notes.append("A step of the load path did not converge; the path is not trustworthy.")
     # prescribed pressures (Hertz, uniform regions) lie inside the grid by construction; a
     # normal solve's contact can be cut off by it
-    trust = (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
-             if case.pressure.source == "normal" else [])
+    trust = _gross_slip_warning(case, fld, res, applied)
+    trust += (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
+              if case.pressure.source == "normal" else [])
     trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
     trust += _file_warnings(fld)
     trust += diagnostics.above_hardness(fld.pressure, [("body1", body1), ("body2", body2)])
+    trust += _validity_warnings(case, fld, body1, body2)
+    trust += coupling_warnings
     if res.reason and not res.converged:  # the solver's own account of its failure (lp)
         trust.append(res.reason)
-    return Outcome(_dataset(case, fld, res, path), summary, _figures(case, fld, res, path),
-                   comparisons, converged=converged, notes=notes, warnings=trust)
+    return Outcome(_dataset(case, fld, res, path), summary,
+                   _figures(case, fld, res, path, body1, body2), comparisons,
+                   converged=converged, notes=notes, warnings=trust)
