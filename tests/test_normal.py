@@ -275,3 +275,29 @@ def test_a_rough_case_reports_greenwood_tripp_and_a_flat_its_mean_separation():
     assert flat.summary["mean_separation_m"] == pytest.approx(-flat.summary["approach_m"],
                                                               rel=1e-9)
     assert "greenwood_tripp_alpha" not in flat.summary
+
+
+def test_rough_asperity_pressures_without_a_hardness_are_noted_and_one_hardness_is_one_line():
+    """The rough flat's largest pressure is above 0.05 E* (E* = E / (2 (1 - nu^2)) = 115.4
+    GPa for its two steel bodies): with no hardness given the report notes that plasticity
+    was not checked. Given the same hardness for both bodies, the hardness is exceeded and
+    said once, naming both, not twice."""
+    import tomllib
+
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    data = tomllib.loads(example_text("rough-flat-normal"))
+    out = run_case(load_case(data))
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    ratio = out.summary["max_pressure_pa"] / e_star
+    assert ratio > 0.05
+    noted = [n for n in out.notes if "plasticity was not checked" in n]
+    assert len(noted) == 1 and f"is {ratio:.3g} E*" in noted[0]
+    for body in ("body1", "body2"):
+        data[body]["hardness"] = "6 GPa"
+    hard = run_case(load_case(data))
+    lines = [w for w in hard.warnings if w.startswith("pressure:")]
+    assert len(lines) == 1 and "hardness of body1 and body2" in lines[0]
+    assert not [n for n in hard.notes if "plasticity was not checked" in n]

@@ -332,24 +332,27 @@ def above_hardness(pressure, materials: Iterable) -> list[str]:
     Returns
     -------
     list of str
-        One line per body whose hardness is exceeded.
+        One line per hardness exceeded (bodies of the same material and hardness share it).
     """
     p = np.asarray(pressure, dtype=float)
     in_contact = np.count_nonzero(p > 0)
     if not in_contact:
         return []
     p_max = float(p.max())
-    lines = []
+    exceeded: dict = {}  # bodies of one material and hardness share a line
     for label, material in materials:
         hardness = getattr(material, "hardness", None)
         if hardness is None or p_max <= hardness:
             continue
+        exceeded.setdefault((hardness, material.name), []).append(label)
+    lines = []
+    for (hardness, name), labels in exceeded.items():
         share = np.count_nonzero(p > hardness) / in_contact
         lines.append(f"pressure: the maximum {p_max / 1e9:.4g} GPa exceeds the hardness of "
-                     f"{label} ({material.name}) on {_pct(share)} of the contact area (limit: "
-                     f"the hardness, {hardness / 1e9:.4g} GPa); the elastic answer is not "
-                     "physical there (the body yields): lower the load, or treat the result as "
-                     "an elastic bound")
+                     f"{' and '.join(labels)} ({name}) on {_pct(share)} of the contact area "
+                     f"(limit: the hardness, {hardness / 1e9:.4g} GPa); the elastic answer is "
+                     "not physical there (the body yields): lower the load, or treat the "
+                     "result as an elastic bound")
     return lines
 
 
@@ -1329,7 +1332,7 @@ HERTZ_STRAIN_LIMIT = 0.05
 
 
 def hertz_validity(a: float, radius: float, p0: float, e_star: float,
-                   hardness_given: bool = False) -> list[str]:
+                   hardness_given: bool = False, load_key: str = "pressure.load") -> list[str]:
     """Whether a Hertz contact is small and elastic enough for half-space theory.
 
     Two checks of the contact's own numbers, independent of the grid:
@@ -1353,6 +1356,8 @@ def hertz_validity(a: float, radius: float, p0: float, e_star: float,
     hardness_given : bool
         Whether every deformable body gives a hardness (the pressure is then checked against
         it by :func:`above_hardness`, and the strain check here is skipped).
+    load_key : str
+        The case key of the load, which the size check names.
 
     Returns
     -------
@@ -1366,7 +1371,7 @@ def hertz_validity(a: float, radius: float, p0: float, e_star: float,
                      f"{size:.3g} of the radius of relative curvature R = {radius * 1e3:.4g} mm "
                      f"(limit a/R = {HERTZ_SIZE_LIMIT:g}): Hertz's small-contact assumption "
                      "fails, and with it the half-space solution and its closed forms; reduce "
-                     "the load (pressure.load), or the body is too soft for half-space theory "
+                     f"the load ({load_key}), or the body is too soft for half-space theory "
                      "(a large-deformation model is needed)")
     strain = p0 / e_star
     if not hardness_given and strain > HERTZ_STRAIN_LIMIT:

@@ -10,6 +10,7 @@ import xarray as xr
 from .. import diagnostics
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
+from ..materials import contact_modulus
 from ..references import cite
 from ..results import Comparison, Outcome, variable
 from ..surfaces.ground import GROUND_CORRELATION_LENGTH
@@ -112,6 +113,7 @@ def run(case, progress=None) -> Outcome:
         f"(residual {res.residual:.2e}); the numbers above are not trustworthy."]
     if rough is not None:
         notes += rough.notes
+    notes += _unchecked_plasticity(case, res, body1, body2)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=_warnings(case, res, x, y, body1, body2, rough))
 
@@ -144,4 +146,41 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
         if ell is not None:
             lines += diagnostics.roughness_resolution(
                 "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y)
-    return lines + diagnostics.above_hardness(res.pressure, [("body1", body1), ("body2", body2)])
+    return lines + _plasticity(case, res, body1, body2)
+
+
+def _plasticity(case, res, body1, body2) -> list[str]:
+    """The pressures against the bodies' hardness (:func:`diagnostics.above_hardness`) and,
+    with no hardness given, a smooth Hertz contact's validity
+    (:func:`diagnostics.hertz_validity`: small against its radius, small strains)."""
+    bodies = [("body1", body1), ("body2", body2)]
+    lines = diagnostics.above_hardness(res.pressure, bodies)
+    rx, ry = case.geometry.radii()
+    if case.roughness is None and np.isfinite(rx) and res.load > 0.0:
+        h = hertz_point(res.load, rx, ry, body1, body2)
+        a, radius = max((h.a, rx), (h.b, ry), key=lambda pair: pair[0] / pair[1])
+        lines += diagnostics.hertz_validity(a, radius, h.p_max, contact_modulus(body1, body2),
+                                            _hardness_given(body1, body2),
+                                            load_key="loading.load")
+    return lines
+
+
+def _hardness_given(body1, body2) -> bool:
+    return all(getattr(m, "hardness", None) is not None for m in (body1, body2))
+
+
+def _unchecked_plasticity(case, res, body1, body2) -> list[str]:
+    """A note for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
+    with no hardness given: its asperities would yield, which nothing checked (a user's rough
+    flat reported asperity pressures of 10-29 GPa, 0.09-0.25 E*, between steel bodies without
+    a word). A note, not a warning: the elastic answer is what such a case asks for, and
+    nearly every elastic rough contact's asperities are that loaded (about E* Sdq / 2)."""
+    e_star = contact_modulus(body1, body2)
+    p_max = float(res.pressure.max())
+    if case.roughness is None or _hardness_given(body1, body2) or \
+            not p_max > diagnostics.HERTZ_STRAIN_LIMIT * e_star:
+        return []
+    return [f"The largest pressure, {p_max / 1e9:.4g} GPa, is {p_max / e_star:.3g} E* (E* = "
+            f"{e_star / 1e9:.4g} GPa): asperities yield at such pressures and plasticity was "
+            "not checked (no hardness given); give body1.hardness and body2.hardness to see "
+            "where, or read the pressures and the real contact area as elastic bounds."]
