@@ -1,6 +1,7 @@
 """The command line: the default run writes its files; bad input is one line and exit 2."""
 
 import json
+import math
 import subprocess
 import sys
 
@@ -122,3 +123,121 @@ def test_starved_inlet_is_one_warning_line(tmp_path):
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
     assert summary["warnings"] == [lines[0].removeprefix("warning: ")]
     assert "Converged." not in proc.stdout
+
+
+def _turned(tmp_path, feed):
+    case = tmp_path / f"turned_{feed}.toml"
+    case.write_text(f'analysis = "surface"\n[surface]\nkind = "turned"\nfeed = "{feed} mm"\n'
+                    'nose_radius = "0.4 mm"\nlength = "4 mm"\n')
+    return runner.invoke(app, ["run", str(case), "--out", str(tmp_path / str(feed)), "--quiet"])
+
+
+def test_turned_feed_up_to_twice_the_nose_radius(tmp_path):
+    """f = 2 r = 0.8 mm runs (it ended "error: z: expected finite heights"), its Rt the arcs'
+    r less the valley half a cell off the grid; at f = 0.79 mm eq. (4.1)'s f^2/(8 r) = 195 um
+    is 42 % below the arcs' 337 um, which a warning says with both numbers."""
+    import math
+
+    result = _turned(tmp_path, 0.8)
+    assert result.exit_code == 0, result.output
+    summary = json.loads((tmp_path / "0.8" / "summary.json").read_text())
+    r, h = 0.4e-3, summary["spacing_m"]
+    assert summary["rt_m"] == pytest.approx(math.sqrt(r * r - h * h / 4), rel=1e-9)
+    assert summary["kinematic_rt_arc_m"] == pytest.approx(r, rel=1e-12)
+
+    result = _turned(tmp_path, 0.79)
+    assert result.exit_code == 0, result.output
+    f = 0.79e-3
+    arc = r - math.sqrt(r * r - f * f / 4)
+    lines = [ln for ln in result.output.splitlines() if ln.startswith("warning: kinematic Rt")]
+    assert len(lines) == 1, result.output
+    assert f"= {f * f / (8 * r) * 1e6:.4g} um is 42.1 % below" in lines[0]
+    assert f"r - sqrt(r^2 - f^2/4) = {arc * 1e6:.4g} um" in lines[0]
+    summary = json.loads((tmp_path / "0.79" / "summary.json").read_text())
+    assert summary["kinematic_rt_arc_m"] == pytest.approx(arc, rel=1e-12)
+    assert summary["rt_m"] == pytest.approx(arc, rel=1e-4)
+    result = _turned(tmp_path, 0.2)   # 1.6 % low: no warning
+    assert result.exit_code == 0 and "warning: kinematic Rt" not in result.output
+
+
+def _steps_of(model):
+    """(nx, ny, steps) as the transient runner states them before its steady start."""
+    import re
+
+    from asperity.runners import ehl_transient
+
+    said = []
+
+    def progress(done, total=None, description=None):
+        said.append(description)
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        ehl_transient.run(model, progress=progress)
+    steps, nx, ny = re.search(r"then (\d+) steps on (\d+) x (\d+) nodes", said[0]).groups()
+    return int(nx), int(ny), int(steps)
+
+
+def test_sweep_says_its_cases_and_time_before_it_starts_and_stops_in_one_line(tmp_path,
+                                                                             monkeypatch):
+    """Before it runs a study says how many cases and, for transient cases, their time on
+    2 cores (nodes x steps x 2e-6 s); stopped, it says so in one line with the command that
+    goes on, and no case is recorded as failed."""
+    import asperity.sweep
+    from asperity.cases import load_case
+    from asperity.runners.ehl_transient import SECONDS_PER_NODE_STEP
+
+    study = tmp_path / "study.toml"
+    study.write_text('title = "t"\nbase = "holmes-rough-CC"\n[[axis]]\nname = "mesh"\n'
+                     'keys = ["grid.nx", "grid.ny", "time.warmup_steps", "time.counting_steps"]\n'
+                     'values = [[257, 65, 100, 1000], [513, 129, 100, 1000]]\n')
+    spec = asperity.sweep.load_study(study)
+    seconds = [math.prod(_steps_of(load_case(case))) * SECONDS_PER_NODE_STEP
+               for _, case, _ in spec.cases]
+
+    def stopped(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(asperity.sweep, "run_study", stopped)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["sweep", str(study), "--out", str(out), "--serial", "-q"])
+    assert result.exit_code == 130, result.output
+    lines = result.output.splitlines()
+    assert lines[0] == (f"t: 2 cases (cross); estimated {sum(seconds) / 60:.2g} min on 2 cores "
+                        f"in all (within a factor of 2; {max(seconds) / 60:.2g} min for the "
+                        "longest case)")
+    assert lines[-1] == (f"stopped: SIGINT with 0 of 2 cases finished (kept in {out}/cases); "
+                         f"run the same command again to go on: asperity sweep {study} --out "
+                         f"{out} --serial --quiet")
+    assert "Traceback" not in result.output
+
+
+def test_sweep_stopped_by_sigterm_says_so_in_one_line(tmp_path):
+    """SIGTERM (a batch system's stop) printed no stop line; now the one line, exit 143."""
+    import signal
+    import time
+
+    (tmp_path / "base.toml").write_text(
+        'analysis = "normal"\n[body1]\nyoungs_modulus = "210 GPa"\n[body2]\n'
+        'youngs_modulus = "210 GPa"\n[geometry]\nshape = "sphere"\nrx = "10 mm"\n[loading]\n'
+        'load = "20 N"\n[grid]\nnx = 32\nny = 32\nx_extent = "0.5 mm"\ny_extent = "0.5 mm"\n')
+    study = tmp_path / "study.toml"
+    study.write_text('base = "base.toml"\n[[axis]]\nkey = "loading.load"\n'
+                     'range = {start = 5, stop = 40, num = 200, unit = "N"}\n')
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "asperity.cli", "sweep", str(study), "--out",
+                             str(out), "--serial", "--quiet"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while time.time() < deadline and len(list(out.glob("cases/*/status.json"))) < 2:
+        time.sleep(0.02)
+    assert proc.poll() is None, "the study ended before it could be stopped"
+    proc.send_signal(signal.SIGTERM)
+    _, stderr = proc.communicate(timeout=120)
+    assert proc.returncode == 128 + signal.SIGTERM, stderr
+    lines = [ln for ln in stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("stopped: SIGTERM with "), stderr
+    assert lines[0].endswith(f"run the same command again to go on: asperity sweep {study} "
+                             f"--out {out} --serial --quiet")
+    states = {json.loads(p.read_text())["state"] for p in out.glob("cases/*/status.json")}
+    assert states == {"done"}

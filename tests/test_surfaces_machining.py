@@ -88,3 +88,55 @@ def test_dynamic_model_input_errors():
         roughness_along(turned_profile(FEED, RADIUS, 1e-3, 1e-6), 1e-2)
     with pytest.raises(InputError, match="parameter"):
         roughness_along(turned_profile(FEED, RADIUS, 1e-3, 1e-6), 2e-4, "Sa")
+
+
+def test_feed_of_twice_the_nose_radius_has_rt_of_the_radius():
+    """f = 2 r (0.8 mm, 0.4 mm): the arcs meet at their ends, the cusp height is r. The ends
+    were left out of the envelope, the cusps covered by no arc (heights of inf, "z: expected
+    finite heights")."""
+    f, r = 0.8e-3, 0.4e-3
+    h = f / 201  # the cusps on cell centres, the valleys half a cell beside the nearest ones
+    profile = turned_profile(f, r, 20 * f, h)
+    assert np.all(np.isfinite(profile.z))
+    exact = r - (r - np.sqrt(r * r - (h / 2) ** 2))  # cusp at r, valley sampled h/2 off
+    assert roughness_parameters(profile)["Rt"] == pytest.approx(exact, rel=1e-9)
+    from asperity.surfaces.machining import arc_peak_to_valley
+
+    assert arc_peak_to_valley(f, r) == r
+    assert kinematic_peak_to_valley(f, r) == pytest.approx(r / 2, rel=1e-15)   # f^2 / (8 r)
+
+
+def test_parabola_error_against_the_arcs():
+    """Eq. (4.1)'s f^2/(8 r) against r - sqrt(r^2 - f^2/4): 42 % low at f = 0.79 mm,
+    r = 0.4 mm (195.03 um against 336.95 um); 5 % at the feed limit 4 r sqrt(0.05 * 0.95)."""
+    from asperity.surfaces.machining import (
+        PARABOLA_TOLERANCE,
+        arc_peak_to_valley,
+        parabola_error,
+        parabola_feed_limit,
+    )
+
+    f, r = 0.79e-3, 0.4e-3
+    arc = r - np.sqrt(r * r - f * f / 4)
+    assert arc_peak_to_valley(f, r) == pytest.approx(336.9524e-6, rel=1e-6)
+    assert arc_peak_to_valley(f, r) == pytest.approx(arc, rel=1e-14)
+    assert parabola_error(f, r) == pytest.approx(1 - f * f / (8 * r) / arc, rel=1e-12)
+    assert parabola_error(f, r) == pytest.approx(0.4212, abs=1e-4)
+    assert parabola_error(0.2e-3, 0.4e-3) == pytest.approx(
+        1 - 0.2e-3**2 / 3.2e-3 / (0.4e-3 - np.sqrt(0.4e-3**2 - 0.1e-3**2)), rel=1e-12)
+    limit = parabola_feed_limit(r)
+    assert limit == pytest.approx(0.8718 * r, rel=1e-4)
+    assert parabola_error(limit, r) == pytest.approx(PARABOLA_TOLERANCE, rel=1e-12)
+
+
+def test_feed_above_the_limit_is_refused_in_mm():
+    """The limit in mm, sin(kappa_e) named only where an angle was given (it said
+    "f <= 2 r sin(kappa_e) = 0.0008 m ... got 0.0009000000000000001")."""
+    with pytest.raises(InputError) as exc:
+        kinematic_peak_to_valley(0.9e-3, 0.4e-3)
+    assert str(exc.value) == ("feed: expected at most 2 r = 0.8 mm (r = 0.4 mm), feed marks "
+                              "formed by the nose radius (Seireg eq. 4.1), got 0.9 mm")
+    with pytest.raises(InputError) as exc:
+        turned_profile(0.5e-3, 0.4e-3, 5e-3, 1e-6, end_relief_angle=np.radians(30))
+    assert "2 r sin(kappa_e) = 0.4 mm (r = 0.4 mm, kappa_e = 30 deg)" in str(exc.value)
+    assert str(exc.value).endswith("got 0.5 mm")

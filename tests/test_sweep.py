@@ -436,3 +436,172 @@ def test_study_shows_cases_with_warnings_or_without_convergence(tmp_path, monkey
     assert "note bad" in html and "<h2>Warnings</h2>" in html
     assert "<li>case 0000: mesh: the contact is resolved by 5 cells" in html
     assert "not converged</span>" in html and "1 warning (below)" in html
+
+
+def _error(tmp_path, axes, mode="cross") -> str:
+    with pytest.raises(InputError) as exc:
+        _study(tmp_path, axes, mode)
+    return str(exc.value)
+
+
+def test_log_range_from_zero_is_one_line_naming_its_start(tmp_path):
+    """A log range must start and stop above zero; numpy's "Geometric sequence cannot include
+    zero" came out as an internal error."""
+    assert _error(tmp_path, '[[axis]]\nkey = "loading.load"\nrange = {start = 0, stop = 2, '
+                            'num = 5, scale = "log", unit = "N"}\n').startswith(
+        'axis[0].range.start: expected a number > 0 for scale = "log"')
+    assert _error(tmp_path, '[[axis]]\nkey = "loading.load"\nrange = {start = 1, stop = -2, '
+                            'num = 5, scale = "log"}\n').startswith('axis[0].range.stop: ')
+
+
+def test_key_swept_by_two_axes_is_refused_before_anything_runs(tmp_path):
+    """Both axes on loading.load: the second overrode the first in every case and study.nc
+    failed after all cases had run ("broadcasting cannot handle duplicate dimensions")."""
+    message = _error(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "10 N"]\n'
+                               '[[axis]]\nkey = "loading.load"\nvalues = ["20 N", "40 N"]\n')
+    assert message == "axis[1].key: loading.load is already swept by axis[0]"
+    message = _error(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N"]\n'
+                               '[[axis]]\nname = "both"\nkeys = ["geometry.rx", "loading.load"]\n'
+                               'values = [["5 mm", "20 N"]]\n')
+    assert message == "axis[1].keys: loading.load is already swept by axis[0]"
+
+
+def test_key_naming_a_table_says_so_and_lists_its_keys(tmp_path):
+    """key = "loading" is the table: pydantic's "expected a valid dictionary or instance of
+    LoadingSpec" did not say so."""
+    message = _error(tmp_path, '[[axis]]\nkey = "loading"\nvalues = ["5 N", "10 N"]\n')
+    assert message == ("axis[0].key: loading names a table, not a key; name a key in it "
+                       "(loading.load, loading.approach)")
+
+
+def test_bad_value_of_a_case_says_got_once(tmp_path):
+    message = _error(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "5 kg"]\n')
+    assert message.startswith("case 1 (loading.load): expected ")
+    assert message.count("got") == 1 and message.endswith("got '5 kg'")
+
+
+def test_misspelt_base_names_the_file_it_looked_for(tmp_path):
+    """A base that is neither a file nor an example: not "example: expected one of: <35
+    names>"."""
+    (tmp_path / "study.toml").write_text('base = "bse.toml"\n[[axis]]\nkey = "loading.load"\n'
+                                         'values = ["5 N"]\n')
+    with pytest.raises(InputError) as exc:
+        load_study(tmp_path / "study.toml")
+    assert str(exc.value) == (f"base: no file {(tmp_path / 'bse.toml').resolve()} and no "
+                              "built-in example of that name (asperity examples lists them)")
+
+
+def test_mixed_units_on_an_axis_are_si_numbers_and_repeats_are_refused(tmp_path):
+    """A bare number is in the key's SI unit, as in a case file: 1 N, 300 cN, 2 and 0.4 daN are
+    1, 3, 2 and 4 N (they were strings with units "1" and a categorical x axis). A value given
+    twice on a cross axis (2 and "0.2 daN", or "5 N" twice) would run the same case twice."""
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                             'values = ["1 N", "300 cN", 2.0, "0.4 daN"]\n')
+    ds = combine(study, tmp_path / "none")
+    assert ds["loading__load"].dtype == float
+    np.testing.assert_allclose(ds["loading__load"].values, [1.0, 3.0, 2.0, 4.0], rtol=1e-12)
+    assert ds["loading__load"].attrs["units"] == "N"
+    bare = combine(_study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = [5, 10]\n'),
+                   tmp_path / "none")
+    assert bare["loading__load"].attrs["units"] == "N"       # was "1"
+    message = _error(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                               'values = ["1 N", 2.0, "0.2 daN"]\n')
+    assert message == ("axis[0].values: values 1 and 2 are the same case: 2.0 and '0.2 daN' "
+                       "(both 2 N); give each value once")
+    assert _error(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "5 N"]\n') \
+        .startswith("axis[0].values: values 0 and 1 are the same case")
+    # zip pairs axes element-wise: a value may repeat there
+    assert len(_study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "5 N"]\n'
+                                '[[axis]]\nkey = "geometry.rx"\nvalues = ["5 mm", "6 mm"]\n',
+                      mode="zip").cases) == 2
+
+
+def test_unconverged_case_carries_its_reason_and_failed_cases_are_named(tmp_path, monkeypatch):
+    """A case that did not converge keeps its run's own message (a single run says "did not
+    converge in 30 sweeps ... Raise solver.max_sweeps") in status.json, study.nc, the report's
+    table and on the command line; the last line names the failed cases."""
+    from typer.testing import CliRunner
+
+    import asperity.runners
+    from asperity.cli import app
+    from asperity.report import study_status
+
+    real = asperity.runners.run_case
+    reason = ("The solver did not converge in 7 iterations (residual 3.1e-04); the numbers "
+              "above are not trustworthy. Raise solver.max_iterations.")
+
+    def uneven(case, progress=None, **folder):
+        if case.loading.load == 10.0:
+            raise RuntimeError("solver exploded")
+        outcome = real(case, progress, **folder)
+        if case.loading.load == 20.0:
+            outcome.converged = False
+            outcome.notes = ["The film formulas are fits.", reason]
+        return outcome
+
+    monkeypatch.setattr(asperity.runners, "run_case", uneven)
+    _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = [5, 10, 20]\n')
+    result = CliRunner().invoke(app, ["sweep", str(tmp_path / "study.toml"), "--out",
+                                      str(tmp_path / "out"), "--serial", "--quiet"])
+    assert result.exit_code == 3, result.output
+    output = " ".join(result.output.split())
+    assert f"case 0002 did not converge: {reason}" in output
+    assert "case 0001 failed: RuntimeError: solver exploded" in output
+    status = json.loads((tmp_path / "out" / "cases" / "0002" / "status.json").read_text())
+    assert status["convergence"] == reason
+    with xr.open_dataset(tmp_path / "out" / "study.nc") as ds:
+        assert list(ds["convergence"].values) == ["", "", reason]
+        assert study_status(ds)[1] == ("2 of 3 cases done, 1 not converged (0002), 2 with "
+                                       "warnings (0000, 0002), 1 failed (0001)")
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert "did not converge in 7 iterations (residual 3.1e-04)" in html
+
+
+def test_log_range_is_drawn_on_a_log_axis_and_study_nc_says_what_made_it(tmp_path):
+    """A range with scale = "log" is a log x axis in the study figure (it was linear below a
+    ratio of 50); study.nc carries the Conventions, the asperity version and the base case
+    as result.nc does."""
+    import asperity
+    from asperity.plotting.study import plot_study
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                             'range = {start = 1, stop = 20, num = 4, scale = "log", unit = "N"}\n')
+    out = tmp_path / "out"
+    for n, load in enumerate(np.geomspace(1, 20, 4)):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "converged": True, "summary": {"max_pressure_pa": 1e9 * load}}))
+    ds = combine(study, out)
+    assert plot_study(ds, ["max_pressure_pa"]).axes[0].get_xscale() == "log"
+    linear = combine(_study(tmp_path, '[[axis]]\nkey = "loading.load"\nrange = {start = 1, '
+                                      'stop = 20, num = 4, unit = "N"}\n'), out)
+    assert plot_study(linear, ["max_pressure_pa"]).axes[0].get_xscale() == "linear"
+    assert ds.attrs["Conventions"] == "CF-1.8"
+    assert ds.attrs["asperity_version"] == asperity.__version__
+    assert ds.attrs["base"] == str((tmp_path / "base.toml").resolve())
+    assert load_study("holmes-mesh-CC").base == "holmes-rough-CC-paper"   # an example
+
+
+def test_local_cluster_is_quiet_and_its_workers_leave_ctrl_c_to_the_command(capfd):
+    """Dask's log lines (a nanny's "Worker process still alive after 4.0 seconds, killing" at
+    a normal finish) are not printed, and the workers ignore SIGINT: Ctrl-C reaches every
+    process of the terminal's group, and each worker printed its tracebacks (about 80 lines)
+    before the command line's one line."""
+    import logging
+    import signal
+
+    from dask.distributed import Client
+
+    def ignores_sigint():
+        return signal.getsignal(signal.SIGINT) == signal.SIG_IGN
+
+    with local_cluster(1, cores=1) as cluster, Client(cluster) as client:
+        logging.getLogger("distributed.nanny").warning("Worker process still alive after 4.0 "
+                                                       "seconds, killing")
+        assert set(client.run(ignores_sigint).values()) == {True}
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # put back here
+    assert "still alive" not in capfd.readouterr().err

@@ -372,9 +372,15 @@ def _cases_table(ds, variables) -> str:
         error = str(ds["error"].isel(sel).values)
         if state == "done" and _not_converged(ds, sel):
             state = "not converged"
-        if not error and "warnings" in ds and str(ds["warnings"].isel(sel).values):
+            if "convergence" in ds:  # the case's own reason (its run's message)
+                error = str(ds["convergence"].isel(sel).values)
+        if "warnings" in ds and str(ds["warnings"].isel(sel).values):
             count = len(str(ds["warnings"].isel(sel).values).split("\n"))
-            error = f"{count} warning{'s' * (count > 1)} (below)"
+            more = f"{count} warning{'s' * (count > 1)} (below)"
+            if not error:
+                error = more
+            elif state == "not converged":
+                error = f"{error} ({more})"
         badge = ("<span class=pass>done</span>" if state == "done" else
                  f"<span class=fail>{html.escape(state)}</span>")
         rows.append(f"<tr><td>{n:04d}</td>" + "".join(f"<td>{html.escape(c)}</td>"
@@ -415,8 +421,6 @@ def study_status(ds) -> tuple[bool, str]:
     ds : xarray.Dataset
         ``study.nc`` (:func:`asperity.sweep.combine`).
     """
-    import numpy as np
-
     states = ds["state"].values.ravel()
     done, failed = int((states == "done").sum()), int((states == "failed").sum())
     ids = [f"{n:04d}" for n in range(states.size)]
@@ -426,15 +430,22 @@ def study_status(ds) -> tuple[bool, str]:
     warned = [c for c, _ in _case_warnings(ds)]
     parts = [f"{done} of {states.size} cases done"]
     if unconverged:
-        parts.append(f"{len(unconverged)} not converged ({', '.join(unconverged)})")
+        parts.append(f"{len(unconverged)} not converged ({_ids(unconverged)})")
     if warned:
-        parts.append(f"{len(warned)} with warnings ({', '.join(warned)})")
+        parts.append(f"{len(warned)} with warnings ({_ids(warned)})")
     if failed:
-        parts.append(f"{failed} failed")
-    missing = int(np.sum(states == "missing"))
+        failed_ids = [c for c, st in zip(ids, states, strict=True) if st == "failed"]
+        parts.append(f"{failed} failed ({_ids(failed_ids)})")
+    missing = [c for c, st in zip(ids, states, strict=True) if st == "missing"]
     if missing:
-        parts.append(f"{missing} missing")
+        parts.append(f"{len(missing)} missing ({_ids(missing)})")
     return done == states.size and not unconverged and not warned, ", ".join(parts)
+
+
+def _ids(chosen: list[str], limit: int = 12) -> str:
+    """Case ids as listed on a line: the first ``limit`` of them and a count of the rest."""
+    shown = ", ".join(chosen[:limit])
+    return shown + (f" and {len(chosen) - limit} more" if len(chosen) > limit else "")
 
 
 def render_study_report(ds, figure_png: bytes | None = None) -> str:

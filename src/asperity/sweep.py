@@ -10,6 +10,11 @@ A study file (TOML)::
     key = "loading.load"                # dotted path into the case
     values = ["5 N", "10 N", "20 N"]    # or: range = {start = 5, stop = 20, num = 4, unit = "N"}
 
+A bare number on an axis is in the key's SI unit, as in a case file (``[0.1, "50 cm/s"]`` on
+``speeds.u``); a ``range`` with ``scale = "log"`` starts and stops above zero. A key is swept by
+one axis only, names a key rather than a table, and in ``mode = "cross"`` takes each value once;
+the file format in full: docs/studies.md.
+
 ``unset = ["paper_contact_time_percent"]`` removes keys of the base case from every case (a
 value that holds for the base only). An axis may also set several keys together (one
 dimension, labelled points)::
@@ -35,6 +40,7 @@ import copy
 import itertools
 import json
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -46,18 +52,38 @@ from .formatting import cf_units, describe_key
 from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
 
-__all__ = ["THREAD_VARIABLES", "Study", "case_status", "combine", "load_study", "local_cluster",
-           "run_one", "run_study"]
+__all__ = ["THREAD_VARIABLES", "Study", "case_status", "combine", "convergence_message",
+           "estimated_seconds", "load_study", "local_cluster", "run_one", "run_study"]
 
 
 @dataclass(frozen=True)
 class Study:
-    """A validated study: its cases (dicts, ready for ``load_case``) and axis coordinates."""
+    """A validated study: its cases (dicts, ready for ``load_case``) and axis coordinates.
+
+    Attributes
+    ----------
+    title, mode : str
+    axes : tuple
+        Of (dimension name, keys, values as given, labels or None).
+    cases : tuple
+        Of (case id, case dict, {axis name: value}).
+    base : str
+        The base case: a built-in example's name, or the case file's absolute path.
+    units : tuple
+        Per axis, the SI unit of its key where the key is a quantity (a bare number on the
+        axis is in that unit, as in a case file), else None.
+    scales : tuple
+        Per axis, ``"log"`` for a range with ``scale = "log"``, else ``"linear"`` (the study
+        figure's x axis).
+    """
 
     title: str
     mode: str
-    axes: tuple  # of (dimension name, keys, values-as-given, labels or None)
-    cases: tuple  # of (case_id, case dict, {axis name: value})
+    axes: tuple
+    cases: tuple
+    base: str = ""
+    units: tuple = ()
+    scales: tuple = ()
 
 
 def _set_path(data: dict, dotted: str, value) -> None:
@@ -109,6 +135,11 @@ def _axis_values(axis: dict, index: int) -> list:
         scale = r.get("scale", "linear")
         if scale not in ("linear", "log"):
             raise InputError(f"{where}.range.scale", '"linear" or "log"', scale)
+        if scale == "log":  # a geometric sequence of positive numbers
+            for end, value in (("start", start), ("stop", stop)):
+                if not (math.isfinite(value) and value > 0):
+                    raise InputError(f"{where}.range.{end}", 'a number > 0 for scale = "log" '
+                                     '(or scale = "linear")', r[end])
         vals = (np.geomspace(start, stop, num) if scale == "log" else np.linspace(start, stop, num))
         unit = r.get("unit")
         return [f"{v:.12g} {unit}" if unit else float(v) for v in vals]
@@ -158,11 +189,153 @@ def _name_case(case: dict, base: str, title: str, axes: list, position: tuple) -
                                f"{base}, with {'; '.join(parts)}.")
 
 
+def _read_base(path: Path, base) -> tuple[dict, str]:
+    """The base case's TOML (a case file beside the study, else a built-in example) and the
+    name it is recorded under in study.nc."""
+    from .cases import parse_toml
+    from .examples import example_text
+
+    if not isinstance(base, str):
+        raise InputError("base", "a built-in example name or a case file path", base)
+    base_path = path.parent / base
+    if base_path.is_file():
+        return parse_toml(base_path.read_text(encoding="utf-8"), base), str(base_path.resolve())
+    try:
+        text = example_text(base)
+    except InputError:
+        raise InputError("base", "", problem=f"no file {base_path.resolve()} and no built-in "
+                         "example of that name (asperity examples lists them)") from None
+    return parse_toml(text, base), base
+
+
+def _base_keys(base_case: dict) -> dict:
+    """The keys of the base case's analysis (:func:`~asperity.cases.keys.case_keys`) by
+    dotted path; empty where the analysis is not known (the case's own check says so)."""
+    from .cases import ANALYSES
+    from .cases.keys import case_keys
+
+    model = ANALYSES.get(base_case.get("analysis")) if isinstance(
+        base_case.get("analysis"), str) else None
+    return {} if model is None else {k.key: k for k in case_keys(model)}
+
+
+def _bare(value) -> bool:
+    """Whether an axis value is a number without a unit (``1.0``, ``"1.0"``)."""
+    if isinstance(value, bool):
+        return False
+    if isinstance(value, int | float):
+        return True
+    try:
+        float(value)
+    except (TypeError, ValueError):
+        return False
+    return True
+
+
+def _check_axes(axes: list, keys: dict, mode: str) -> tuple:
+    """Refuse what would run but not answer the question; return each axis' SI unit.
+
+    A key swept by two axes (the second overrode the first in every case and the combination
+    failed after all cases had run), a key that names a table given values that are not tables,
+    bare numbers beside quantities where a bare number is not in the key's SI unit, and one
+    value twice on an axis of a cross study (the same case run twice, a coordinate that
+    selects two rows).
+    """
+    seen: dict[str, int] = {}
+    names: dict[str, int] = {}
+    units = []
+    for i, (name, axis_keys, values, _) in enumerate(axes):
+        field = f"axis[{i}].key" if len(axis_keys) == 1 else f"axis[{i}].keys"
+        for k, key in enumerate(axis_keys):
+            if key in seen:
+                raise InputError(field, "", problem=f"{key} is already swept by "
+                                 f"axis[{seen[key]}]")
+            clash = next((other for other in seen if other.startswith(key + ".")
+                          or key.startswith(other + ".")), None)
+            if clash is not None:
+                raise InputError(field, "", problem=f"{key} overlaps {clash}, which "
+                                 f"axis[{seen[clash]}] sweeps")
+            seen[key] = i
+            column = [v if len(axis_keys) == 1 else v[k] for v in values]
+            spec = keys.get(key)
+            if spec is not None and spec.type == "table" and not all(
+                    isinstance(v, dict) for v in column):
+                inside = [c.split(".", 1)[1] for c in keys if c.startswith(key + ".")
+                          and "." not in c.split(".", 1)[1]]
+                raise InputError(field, "", problem=f"{key} names a table, not a key; name a "
+                                 f"key in it ({', '.join(f'{key}.{c}' for c in inside)})")
+            if spec is not None and spec.type == "number or quantity" and \
+                    0 < sum(_bare(v) for v in column) < len(column):
+                raise InputError(f"axis[{i}].values", "", problem=f"bare numbers beside "
+                                 f"quantities for {key}, where a bare number is not in "
+                                 f"{spec.unit}; give every value with its unit, or none")
+        if name in names:
+            raise InputError(f"axis[{i}].name", "", problem=f"{name.replace('__', '.')} is "
+                             f"already the name of axis[{names[name]}]; give each axis its own "
+                             "name")
+        names[name] = i
+        unit = None
+        if len(axis_keys) == 1 and (spec := keys.get(axis_keys[0])) is not None:
+            unit = spec.unit if spec.type == "quantity" and spec.unit else None
+        units.append(unit)
+        if mode == "cross":
+            _check_distinct(i, axis_keys, values, unit, keys)
+    return tuple(units)
+
+
+def _check_distinct(i: int, axis_keys, values, unit, keys) -> None:
+    """Refuse a value given twice on an axis of a cross study (``1.0`` and ``"3.6 km/h"``
+    for a speed: both 1 m/s)."""
+    def quantity_unit(key):
+        spec = keys.get(key)
+        return spec.unit if spec is not None and spec.type == "quantity" and spec.unit else None
+
+    if len(axis_keys) == 1:
+        columns = [_normal_values(values, unit)]
+    else:
+        columns = [_normal_values([v[k] for v in values], quantity_unit(key))
+                   for k, key in enumerate(axis_keys)]
+    rows = list(zip(*columns, strict=True))
+    for n, row in enumerate(rows):
+        first = rows.index(row)
+        if first < n:
+            same = f" (both {row[0]:.6g} {unit})" if len(row) == 1 and unit and \
+                isinstance(row[0], float) else ""
+            raise InputError(f"axis[{i}].values", "", problem=f"values {first} and {n} are the "
+                             f"same case: {values[first]!r} and {values[n]!r}{same}; give each "
+                             "value once")
+
+
+def _normal_values(values: list, unit) -> list:
+    """Axis values as compared for repeats: SI numbers rounded to 12 digits where they are
+    quantities, else their text."""
+    numbers, _ = _coordinate(values, unit)
+    if np.issubdtype(numbers.dtype, np.number):
+        return [float(f"{v:.12g}") for v in numbers]
+    return [json.dumps(v, sort_keys=True, default=str) for v in values]
+
+
 def load_study(path: str | Path) -> Study:
     """Read and validate a study file (or a built-in study by name); every case is validated
-    before anything runs."""
+    before anything runs.
+
+    Parameters
+    ----------
+    path : str or path
+        A study file (TOML), or the name of a built-in study.
+
+    Returns
+    -------
+    Study
+
+    Raises
+    ------
+    InputError
+        For a bad study (naming its key: ``axis[1].key``, ``base``, ...) or a case that would
+        not run (``case 3 (speeds.u): ...``).
+    """
     from .cases import load_case, parse_toml
-    from .examples import example_text, study_text
+    from .examples import study_text
 
     path = Path(path)
     text = path.read_text(encoding="utf-8") if path.is_file() else study_text(str(path))
@@ -171,11 +344,7 @@ def load_study(path: str | Path) -> Study:
     if unknown:
         raise InputError(sorted(unknown)[0], "", problem="unknown key (check the spelling)")
     base = spec.get("base")
-    if not isinstance(base, str):
-        raise InputError("base", "a built-in example name or a case file path", base)
-    base_path = path.parent / base
-    text = base_path.read_text(encoding="utf-8") if base_path.is_file() else example_text(base)
-    base_case = parse_toml(text, base)
+    base_case, base_name = _read_base(path, base)
     _unset(base_case, spec.get("unset", []))
     mode = spec.get("mode", "cross")
     if mode not in ("cross", "zip"):
@@ -186,6 +355,7 @@ def load_study(path: str | Path) -> Study:
     axes = [_axis(ax, i) for i, ax in enumerate(axes_spec)]
     if mode == "zip" and len({len(ax[2]) for ax in axes}) != 1:
         raise InputError("axis", "axes of equal length for mode = \"zip\"")
+    units = _check_axes(axes, _base_keys(base_case), mode)
     positions = (zip(*(range(len(ax[2])) for ax in axes), strict=True) if mode == "zip"
                  else itertools.product(*(range(len(ax[2])) for ax in axes)))
     title = spec.get("title", path.stem)
@@ -200,10 +370,14 @@ def load_study(path: str | Path) -> Study:
         try:
             load_case(case)
         except InputError as exc:
-            raise InputError(f"case {n} ({exc.field})", exc.expected, exc.got,
-                             problem=str(exc).split(": ", 1)[1]) from None
+            text = str(exc)
+            problem = text[len(exc.field) + 2:] if text.startswith(f"{exc.field}: ") else text
+            raise InputError(f"case {n} ({exc.field})", exc.expected, problem=problem) from None
         cases.append((f"{n:04d}", case, dict(zip((ax[0] for ax in axes), combo, strict=True))))
-    return Study(title, mode, tuple(axes), tuple(cases))
+    scales = tuple("log" if isinstance(ax.get("range"), dict) and ax["range"].get("scale")
+                   == "log" else "linear" for ax in axes_spec)
+    return Study(title, mode, tuple(axes), tuple(cases), base=base_name, units=units,
+                 scales=scales)
 
 
 def run_one(case: dict, folder: str) -> dict:
@@ -225,10 +399,32 @@ def run_one(case: dict, folder: str) -> dict:
         write_outcome(outcome, folder, figures=False)
         status = {"state": "done", "converged": bool(outcome.converged),
                   "summary": outcome.summary, "warnings": list(outcome.warnings)}
+        if not outcome.converged:
+            status["convergence"] = convergence_message(outcome)
     except Exception as exc:  # recorded for the study, the other cases go on
         status = {"state": "failed", "error": f"{type(exc).__name__}: {exc}"}
     write_json(status, folder / "status.json")
     return status
+
+
+_UNCONVERGED = re.compile(r"\b(?:did|does|do|could) not converge|\bnot converged|"
+                          r"\bunconverged\b", re.IGNORECASE)
+
+
+def convergence_message(outcome) -> str:
+    """Why a run did not converge, in its own words: the first of its notes, else of its
+    warnings, that says so (the steady EHL runner's "The solver did not converge in 30 sweeps
+    ... Raise solver.max_sweeps ..."); a plain statement where the run gave none.
+
+    Parameters
+    ----------
+    outcome : asperity.results.Outcome
+        A run's outcome with ``converged`` False.
+    """
+    for line in [*outcome.notes, *outcome.warnings]:
+        if _UNCONVERGED.search(line):
+            return line
+    return "the solver did not converge (the run gave no reason; see the case's report)"
 
 
 def case_status(folder: str | Path) -> dict | None:
@@ -247,22 +443,70 @@ THREAD_VARIABLES = ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "OPENBLAS_NUM_THREAD
 
 
 def local_cluster(workers: int, cores: int | None = None):
-    """A Dask ``LocalCluster`` of ``workers`` single-threaded worker processes whose compiled
-    kernels share the machine's ``cores`` (default all) instead of each taking them all.
+    """A quiet Dask ``LocalCluster`` of ``workers`` single-threaded worker processes whose
+    compiled kernels share the machine's ``cores`` (default all) instead of each taking them all.
 
     Each worker starts with its numba, OpenMP and BLAS thread pools at
     ``max(1, cores // workers)`` (:data:`THREAD_VARIABLES`, set before the worker imports
     them). Without that, two workers on two cores ran their parallel sweeps on two threads
     each: four busy threads on two cores.
+
+    Dask's own log lines are silenced (a normal finish printed two "Worker process still alive
+    after 4.0 seconds, killing" warnings), and the workers ignore SIGINT: Ctrl-C reaches every
+    process of the terminal's group, and each worker printed its tracebacks (about 80 lines)
+    before the command line's one line. The caller stops the study; closing the cluster ends
+    the workers.
     """
+    import logging
     import os
+    import signal
+    import threading
 
     from dask.distributed import LocalCluster
 
     cores = (os.cpu_count() or 1) if cores is None else cores
     threads = str(max(1, cores // workers))
-    return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                        dashboard_address=None, env=dict.fromkeys(THREAD_VARIABLES, threads))
+    main = threading.current_thread() is threading.main_thread()
+    # a process started with SIGINT ignored keeps it ignored (Python installs its
+    # KeyboardInterrupt handler only where SIGINT has the default action)
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+    try:
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                            dashboard_address=None, silence_logs=logging.CRITICAL,
+                            env=dict.fromkeys(THREAD_VARIABLES, threads))
+    finally:
+        if main:
+            signal.signal(signal.SIGINT, previous)
+
+
+def estimated_seconds(case: dict) -> float | None:
+    """The wall time a case is expected to take on 2 cores, where its analysis estimates it
+    before it starts (a transient EHL case: nodes x steps x
+    :data:`~asperity.runners.ehl_transient.SECONDS_PER_NODE_STEP`, within a factor of 2
+    either way); None for the others.
+
+    The mesh, time step and step counts are the transient runner's, from the case's own
+    methods (``problem``, ``mesh``, ``steps``).
+
+    Parameters
+    ----------
+    case : dict
+        A case as the study holds it (ready for ``load_case``).
+    """
+    from .cases import load_case
+
+    if case.get("analysis") != "ehl-transient":
+        return None
+    from .runners.ehl_transient import SECONDS_PER_NODE_STEP
+
+    model = load_case(case)
+    problem = model.problem()
+    nx, ny, domain = model.mesh(problem)
+    x, _ = problem.grid(nx, ny, domain)
+    u_max = max(abs(problem.u1), abs(problem.u2))
+    dt = model.time.dt if model.time.dt is not None else 0.5 * (x[1] - x[0]) / u_max
+    warmup, counting = model.steps(problem, x, dt)
+    return nx * ny * (warmup + counting) * SECONDS_PER_NODE_STEP
 
 
 def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> xr.Dataset:
@@ -314,26 +558,41 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
 _ANGLES = {"radian", "degree", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
 
 
-def _coordinate(values: list):
+def _coordinate(values: list, unit: str | None = None):
     """Axis values as numbers in the SI unit of their dimension (and that unit, CF-style), or
-    as strings."""
+    as strings.
+
+    Parameters
+    ----------
+    values : list
+        The axis values as the study gives them: numbers, quantities (``"50 cm/s"``) or text.
+    unit : str, optional
+        The SI unit of the swept key where it is a quantity. A bare number is in that unit
+        (as in a case file); without it, in the SI unit of the axis' quantities.
+
+    Returns
+    -------
+    (ndarray, str)
+        The coordinate (floats, else strings) and its CF unit (``"1"`` for text).
+    """
     from .units import DIMENSIONS, registry
 
-    try:
-        return np.array([float(v) for v in values]), "1"
-    except (TypeError, ValueError):
-        pass
+    if all(_bare(v) or isinstance(v, bool) for v in values):
+        return np.array([float(v) for v in values]), cf_units(unit) if unit else "1"
     try:
         ureg = registry()
-        qs = [ureg.Quantity(v) for v in values]
+        qs = [ureg.Quantity(v) for v in values if not _bare(v)]
         if qs[0].dimensionless:  # pint counts angles as pure numbers: radians, or a ratio
             angle = {name for name, _ in qs[0].unit_items()} & _ANGLES
             si = "rad" if angle else "dimensionless"
         else:
             si = next(u for u in DIMENSIONS.values()
                       if u and ureg.Quantity(1, u).dimensionality == qs[0].dimensionality)
-        values = np.array([q.to(si).magnitude for q in qs], dtype=float)
-        return values, "1" if si == "dimensionless" else cf_units(si)
+        if unit and ureg.Quantity(1, unit).dimensionality == ureg.Quantity(1, si).dimensionality:
+            si = unit
+        numbers = np.array([float(v) if _bare(v) else ureg.Quantity(v).to(si).magnitude
+                            for v in values], dtype=float)
+        return numbers, "1" if si == "dimensionless" else cf_units(si)
     except Exception:  # labels that are not quantities stay strings
         return np.array([str(v) for v in values]), "1"
 
@@ -350,10 +609,14 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
                 keys.append(k)
     names = [ax[0] for ax in study.axes]
     coords = {}
-    for name, axis_keys, values, labels in study.axes:
-        arr, unit = (np.array(labels), "1") if labels is not None else _coordinate(values)
+    units = study.units or (None,) * len(study.axes)
+    scales = study.scales or ("linear",) * len(study.axes)
+    for (name, axis_keys, values, labels), key_unit, scale in zip(study.axes, units, scales,
+                                                                  strict=True):
+        arr, unit = ((np.array(labels), "1") if labels is not None
+                     else _coordinate(values, key_unit))
         coords[name] = (name if study.mode == "cross" else "case", arr,
-                        {"units": unit, "long_name": ", ".join(axis_keys)})
+                        {"units": unit, "long_name": ", ".join(axis_keys), "scale": scale})
     shape = (tuple(len(ax[2]) for ax in study.axes) if study.mode == "cross"
              else (len(study.cases),))
     dims = tuple(names) if study.mode == "cross" else ("case",)
@@ -381,6 +644,13 @@ def combine(study: Study, out: str | Path) -> xr.Dataset:
                         {"long_name": "trust warnings of the case, one per line", "units": "1"})
     data["error"] = (dims, field(lambda s: s.get("error", ""), object).astype(str),
                      {"long_name": "error message of a failed case", "units": "1"})
-    return xr.Dataset(data, coords=coords, attrs={"title": study.title, "mode": study.mode,
-                                                  "axes": ",".join(names)})
+    data["convergence"] = (dims, field(lambda s: s.get("convergence", ""), object).astype(str),
+                           {"long_name": "why a case that ran did not converge (its run's "
+                                         "message)", "units": "1"})
+    from . import __version__
+
+    attrs = {"title": study.title, "mode": study.mode, "axes": ",".join(names),
+             "Conventions": "CF-1.8", "source": "asperity", "asperity_version": __version__,
+             "base": study.base}
+    return xr.Dataset(data, coords=coords, attrs=attrs)
 

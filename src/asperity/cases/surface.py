@@ -18,6 +18,7 @@ from typing import Annotated, Literal
 from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
+from ..surfaces.machining import feed_limit, feed_within_limit
 from .fields import CaseHeader, CaseModel, Quantity
 from .roughness import MeasuredFile, SurfaceKeys
 
@@ -174,12 +175,10 @@ class SurfaceSpec(SurfaceKeys):
 
     def _check_turning(self):
         """Eq. (4.1)'s validity and a spacing that resolves the feed marks."""
-        limit = 2.0 * self.nose_radius
-        if self.end_relief_angle is not None:
-            limit *= math.sin(self.end_relief_angle)
-        if self.feed > limit:
-            raise _key_error("feed", f"f <= 2 r sin(kappa_e) = {limit:.4g} m, a feed mark formed "
-                                     "by the nose radius (Seireg eq. 4.1)", self.feed)
+        limit, rule = feed_limit(self.nose_radius, self.end_relief_angle)
+        if not feed_within_limit(self.feed, limit):  # in mm, the angle only where given
+            raise _key_error("feed", f"f <= {rule}, a feed mark formed by the nose radius "
+                             f"(Seireg eq. 4.1); got {self.feed * 1e3:.4g} mm")
         if self.natural_frequency is not None:
             spindle = self.cutting_speed / (math.pi * self.workpiece_diameter)
             if spindle > MAX_SPINDLE:

@@ -352,33 +352,120 @@ def sweep(
 ):
     """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc and
     OUT/report.html. Exits 3 when a case failed or did not converge; cases with warnings are
-    counted on the last line and listed in the report."""
-    import logging
-
+    counted on the last line and listed in the report. Before it starts it says how many cases
+    it runs and, for transient EHL cases, about how long they take; Ctrl-C or SIGTERM stops it
+    with one line (the finished cases are kept; the same command goes on)."""
     from ..report import study_status
     from ..sweep import load_study, local_cluster, run_study
-    from .progress import progress_bar
 
-    logging.getLogger("distributed").setLevel(logging.ERROR)
     spec = load_study(study)
-    console.print(f"[bold]{spec.title}[/bold]: {len(spec.cases)} cases ({spec.mode})")
-    with progress_bar(console, disable=quiet) as progress:
-        if serial:
-            ds = run_study(spec, out, progress=progress)
-        else:
-            from dask.distributed import Client
+    _check_out_dir(out)
+    again = ["asperity", "sweep", str(study), "--out", str(out)] + (
+        ["--serial"] if serial else ["--scheduler", scheduler] if scheduler else
+        ["--workers", str(workers)] if workers != 2 else []) + (["--quiet"] if quiet else [])
+    console.print(_sweep_plan(spec, out), markup=False, highlight=False, soft_wrap=True)
+    stop = []
 
-            if scheduler:
-                with Client(scheduler) as client:
-                    ds = run_study(spec, out, client=client, progress=progress)
-            else:
-                with local_cluster(workers) as cluster, Client(cluster) as client:
-                    ds = run_study(spec, out, client=client, progress=progress)
+    def interrupt(signum, _frame):  # a KeyboardInterrupt: no case records it as its error
+        stop.append(signum)
+        raise KeyboardInterrupt
+
+    handlers = {sig: signal.signal(sig, interrupt) for sig in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        ds = _run_sweep(spec, out, serial, scheduler, workers, quiet, run_study, local_cluster)
+    except KeyboardInterrupt:
+        _sweep_stopped(stop[0] if stop else signal.SIGINT, spec, out, again)
+    finally:
+        for sig, handler in handlers.items():
+            signal.signal(sig, handler)
     _, line = study_status(ds)
+    for text in _case_problems(ds):
+        err_console.print(text, markup=False, highlight=False, soft_wrap=True)
     console.print(f"wrote {out / 'study.nc'}: {line} (report: {out / 'report.html'})",
                   markup=False, highlight=False, soft_wrap=True)
     if (ds["state"] != "done").any() or (ds["converged"] == 0).any():
         raise typer.Exit(EXIT_NOT_CONVERGED)
+
+
+def _run_sweep(spec, out, serial, scheduler, workers, quiet, run_study, local_cluster):
+    """Run the study in this process, on a scheduler or on a local cluster, with a bar."""
+    from .progress import progress_bar
+
+    with progress_bar(console, disable=quiet) as progress:
+        if serial:
+            return run_study(spec, out, progress=progress)
+        import logging
+
+        from dask.distributed import Client
+
+        logging.getLogger("distributed").setLevel(logging.ERROR)  # after its own set-up
+        if scheduler:
+            with Client(scheduler) as client:
+                return run_study(spec, out, client=client, progress=progress)
+        with local_cluster(workers) as cluster, Client(cluster) as client:
+            return run_study(spec, out, client=client, progress=progress)
+
+
+def _sweep_plan(spec, out: Path) -> str:
+    """The line said before a study starts: its cases, those left to run, and where the
+    analysis estimates it, their expected time on 2 cores (a line, not a question: CI has no
+    stdin)."""
+    from ..sweep import case_status, estimated_seconds
+
+    todo = [case for cid, case, _ in spec.cases
+            if (case_status(out / "cases" / cid) or {}).get("state") != "done"]
+    total = len(spec.cases)
+    line = f"{spec.title}: {total} case{'s' * (total != 1)} ({spec.mode})"
+    if len(todo) < total:
+        line += f", {len(todo)} to run ({total - len(todo)} done before)"
+    seconds = [estimated_seconds(case) for case in todo]
+    known = [t for t in seconds if t is not None]
+    if known:
+        line += (f"; estimated {_duration(sum(known))} on 2 cores in all (within a factor of 2; "
+                 f"{_duration(max(known))} for the longest case)")
+    return line
+
+
+def _duration(seconds: float) -> str:
+    """A wall time in words: ``40 s``, ``12 min``, ``3.1 h``."""
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.2g} min"
+    return f"{seconds / 3600:.2g} h"
+
+
+def _case_problems(ds, limit: int = 5) -> list[str]:
+    """One line per failed or unconverged case (at most ``limit`` of each), with its reason."""
+    lines = []
+    states = ds["state"].values.ravel()
+    errors = ds["error"].values.ravel()
+    converged = ds["converged"].values.ravel()
+    why = ds["convergence"].values.ravel() if "convergence" in ds else [""] * states.size
+    failed = [(n, e) for n, (st, e) in enumerate(zip(states, errors, strict=True))
+              if st == "failed"]
+    stalled = [(n, w) for n, (st, c, w) in enumerate(zip(states, converged, why, strict=True))
+               if st == "done" and c == 0.0]
+    for kind, found in (("failed", failed), ("did not converge", stalled)):
+        for n, reason in found[:limit]:
+            lines.append(f"case {n:04d} {kind}: {' '.join(str(reason).split()) or 'no reason'}")
+        if len(found) > limit:
+            lines.append(f"... and {len(found) - limit} more that {kind} (report.html lists "
+                         "them)")
+    return lines
+
+
+def _sweep_stopped(signum: int, spec, out: Path, again: list[str]):
+    """Say where a stopped study is and how to go on; exit with 128 + the signal number."""
+    from ..sweep import case_status
+
+    done = sum((case_status(out / "cases" / cid) or {}).get("state") in ("done", "failed")
+               for cid, _, _ in spec.cases)
+    err_console.print(f"stopped: {signal.Signals(signum).name} with {done} of "
+                      f"{len(spec.cases)} cases finished (kept in {out}/cases); run the same "
+                      f"command again to go on: {shlex.join(again)}", markup=False,
+                      highlight=False, soft_wrap=True)
+    raise typer.Exit(128 + signum)
 
 
 def _mount_sub_apps() -> None:

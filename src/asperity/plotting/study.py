@@ -1,5 +1,6 @@
 """Figures of a parameter study: each swept result against the first axis, one line per value of
-the other axes (small multiples, one panel per result)."""
+the other axes (small multiples, one panel per result); a logarithmic x axis for an axis
+swept on a log range (``scale = "log"``) or spanning more than a factor of 50."""
 
 from __future__ import annotations
 
@@ -77,7 +78,8 @@ def plot_study(ds, variables, columns: int = 3):
                         fontsize=7, color="0.3")
         if x is None:
             ax.set_xticks(np.arange(len(labels)), labels, rotation=30, ha="right")
-        elif len(x) > 2 and np.all(x > 0) and x.max() / x.min() > 50:
+        elif np.all(x > 0) and (ds[first].attrs.get("scale") == "log"  # a log range
+                                or (len(x) > 2 and x.max() / x.min() > 50)):
             ax.set_xscale("log")
         else:  # the whole axis on every panel, also where some cases have no value
             pad = 0.05 * (np.ptp(x) or 1.0)

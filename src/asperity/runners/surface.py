@@ -24,7 +24,13 @@ from ..errors import InputError
 from ..references import cite
 from ..results import Comparison, Outcome, variable
 from ..surfaces.io import read_measured
-from ..surfaces.machining import MICROINCH
+from ..surfaces.machining import (
+    MICROINCH,
+    PARABOLA_TOLERANCE,
+    arc_peak_to_valley,
+    parabola_error,
+    parabola_feed_limit,
+)
 from ..surfaces.recipe import build_surface
 
 __all__ = ["run"]
@@ -351,8 +357,9 @@ def _turning(spec, surfaces, evaluated, turned, evaluation):
     ra_ref = f * f / (18 * math.sqrt(3) * r)
     kin = evaluated["kinematic"].primary
     summary = {"feed_m": f, "nose_radius_m": r, "kinematic_rt_m": rt_ref,
-               "kinematic_ra_m": ra_ref}
-    arc = f"circle vs parabola differ by about f^2/(16 r^2) = {100 * f * f / (16 * r * r):.2g} %"
+               "kinematic_ra_m": ra_ref, "kinematic_rt_arc_m": arc_peak_to_valley(f, r)}
+    arc = (f"the arcs' height r - sqrt(r^2 - f^2/4) is {_um(summary['kinematic_rt_arc_m'])}; "
+           f"the parabola is {100 * parabola_error(f, r):.2g} % below it (about f^2/(16 r^2))")
     comparisons = [
         Comparison("kinematic Rt of the feed marks", kin["Rt"], rt_ref,
                    cite("Seireg eq. (4.1), Rmax = f^2/(8 r)", "turning"), "m", 0.01, arc),
@@ -394,6 +401,31 @@ def _turning(spec, surfaces, evaluated, turned, evaluation):
     centres = along["kinematic"][0]
     values = np.stack([v for _, v in along.values()])
     return summary, comparisons, (centres, values, frequencies)
+
+
+def _um(length: float) -> str:
+    return f"{length * 1e6:.4g} um"
+
+
+def _parabola_warnings(feed: float, nose_radius: float) -> list[str]:
+    """A warning line where eq. (4.1)'s kinematic Rt ``f^2/(8 r)`` is more than
+    ``PARABOLA_TOLERANCE`` below the arcs' height ``r - sqrt(r^2 - f^2/4)`` (f above about
+    0.87 r); none otherwise.
+
+    Parameters
+    ----------
+    feed, nose_radius : float
+        Feed per revolution and tool nose radius (m).
+    """
+    error = parabola_error(feed, nose_radius)
+    if error <= PARABOLA_TOLERANCE:
+        return []
+    parabola, exact = feed * feed / (8 * nose_radius), arc_peak_to_valley(feed, nose_radius)
+    return [f"kinematic Rt: eq. (4.1)'s f^2/(8 r) = {_um(parabola)} is {100 * error:.3g} % below "
+            f"the arcs' height r - sqrt(r^2 - f^2/4) = {_um(exact)} at f = {feed * 1e3:.4g} mm, "
+            f"r = {nose_radius * 1e3:.4g} mm (limit {100 * PARABOLA_TOLERANCE:g} %, up to f = "
+            f"{parabola_feed_limit(nose_radius) * 1e3:.3g} mm); read kinematic_rt_arc_m (the "
+            "profile's Rt), not kinematic_rt_m or kinematic_ra_m, or use a smaller feed"]
 
 
 def _reference_ra(spec, surfaces, evaluated) -> list:
@@ -502,6 +534,9 @@ def run(case, progress=None) -> Outcome:
                          "fraction of the feed, so that the feed-mark cusps fall on grid points.")
         if turned:
             notes.append(_DYNAMIC)
+        parabola = _parabola_warnings(spec.feed, spec.nose_radius)
+    else:
+        parabola = []
     if spec.kind == "builtin":
         notes.append(_SYNTHETIC)
     if iso:
@@ -521,7 +556,7 @@ def run(case, progress=None) -> Outcome:
                      "wa/wq/wt of the waviness.")
     dataset = _dataset(case, surfaces, evaluated, along)
     figures = _figures(case, surfaces, evaluated, turned, window)
-    warnings = []
+    warnings = list(parabola)
     if reading is not None:
         notes.append(f"File read as {reading.style}.")
         notes.extend(f"Reading: {note}." for note in reading.notes)

@@ -25,8 +25,15 @@ from .topography import Profile, cell_centres
 __all__ = [
     "MICROINCH",
     "ProcessRoughness",
+    "PARABOLA_TOLERANCE",
     "TurnedSurface",
+    "arc_peak_to_valley",
+    "check_feed",
+    "feed_limit",
+    "feed_within_limit",
     "kinematic_peak_to_valley",
+    "parabola_error",
+    "parabola_feed_limit",
     "process_names",
     "process_roughness",
     "roughness_along",
@@ -98,8 +105,83 @@ def process_roughness(name: str) -> ProcessRoughness:
     raise InputError("process", f"one of: {'; '.join(process_names())}", name)
 
 
+#: Relative error of eq. (4.1)'s parabola against the arcs above which a turning result warns
+#: (from f = 0.87 r on, :func:`parabola_feed_limit`): at f = 0.79 mm, r = 0.4 mm,
+#: ``f^2/(8 r)`` = 195 um is 42 % below the arcs' 337 um.
+PARABOLA_TOLERANCE = 0.05
+
+
+def feed_limit(nose_radius, end_relief_angle=None) -> tuple[float, str]:
+    """The largest feed whose marks the nose radius alone forms, and the rule in words.
+
+    The arcs of radius r every f meet (and form the whole mark) up to ``f = 2 r``, or
+    ``f = 2 r sin(kappa_e)`` when an end cutting-edge angle kappa_e is given (Seireg eq. 4.1).
+
+    Parameters
+    ----------
+    nose_radius : float
+        Tool nose radius r (m).
+    end_relief_angle : float, optional
+        End cutting-edge (relief) angle kappa_e (rad).
+
+    Returns
+    -------
+    (float, str)
+        The limit (m) and ``"2 r = 0.8 mm (r = 0.4 mm)"`` (with the angle where given).
+    """
+    r = check_positive("nose_radius", nose_radius)
+    limit = 2.0 * r
+    rule = f"2 r = {_mm(limit)} (r = {_mm(r)})"
+    if end_relief_angle is not None:
+        kappa = check_positive("end_relief_angle", end_relief_angle)
+        limit *= math.sin(kappa)
+        rule = (f"2 r sin(kappa_e) = {_mm(limit)} (r = {_mm(r)}, kappa_e = "
+                f"{math.degrees(kappa):.4g} deg)")
+    return limit, rule
+
+
+def feed_within_limit(feed: float, limit: float) -> bool:
+    """Whether ``feed`` is at most ``limit`` (:func:`feed_limit`): a feed of exactly 2 r typed
+    in mm ("0.8 mm" for r = "0.4 mm") may land an ulp above it."""
+    return feed <= limit * (1.0 + 1e-12)
+
+
+def check_feed(feed, nose_radius, end_relief_angle=None, field: str = "feed") -> float:
+    """Refuse a feed whose marks are not formed by the nose radius alone
+    (:func:`feed_limit`); return the feed.
+
+    Parameters
+    ----------
+    feed, nose_radius : float
+        Feed per revolution f and tool nose radius r (m).
+    end_relief_angle : float, optional
+        End cutting-edge (relief) angle kappa_e (rad).
+    field : str
+        The name of the feed in the message (``surface.feed`` in a case file).
+
+    Raises
+    ------
+    InputError
+        For ``f > 2 r`` (``f > 2 r sin(kappa_e)``), saying the limit in mm.
+    """
+    f = check_positive(field, feed)
+    limit, rule = feed_limit(nose_radius, end_relief_angle)
+    if not feed_within_limit(f, limit):
+        raise InputError(field, "", problem=f"expected at most {rule}, feed marks formed by "
+                         f"the nose radius (Seireg eq. 4.1), got {_mm(f)}")
+    return f
+
+
+def _mm(length: float) -> str:
+    """A length in mm as people read it (``0.8 mm``)."""
+    return f"{length * 1e3:.4g} mm"
+
+
 def kinematic_peak_to_valley(feed, nose_radius, end_relief_angle=None) -> float:
     """Kinematic peak-to-valley roughness of turning, ``f^2 / (8 r)`` (Seireg eq. 4.1).
+
+    The parabola's approximation of the arcs' height :func:`arc_peak_to_valley`; it is low by
+    :func:`parabola_error` (1.6 % at f = r / 2, 5 % at f = 0.87 r, 42 % at f = 1.975 r).
 
     Parameters
     ----------
@@ -109,17 +191,64 @@ def kinematic_peak_to_valley(feed, nose_radius, end_relief_angle=None) -> float:
         Tool nose radius r (m).
     end_relief_angle : float, optional
         End cutting-edge (relief) angle kappa_e (rad); when given, the validity condition
-        ``f <= 2 r sin(kappa_e)`` of eq. (4.1) is checked.
+        ``f <= 2 r sin(kappa_e)`` of eq. (4.1) is checked (``f <= 2 r`` without it).
+
+    Raises
+    ------
+    InputError
+        For a feed above the limit (:func:`check_feed`).
     """
-    f = check_positive("feed", feed)
-    r = check_positive("nose_radius", nose_radius)
-    limit = 2.0 * r
-    if end_relief_angle is not None:
-        limit *= math.sin(check_positive("end_relief_angle", end_relief_angle))
-    if f > limit:
-        raise InputError("feed", f"f <= 2 r sin(kappa_e) = {limit:.4g} m for a feed mark "
-                                 "formed by the nose radius (eq. 4.1)", f)
-    return f * f / (8.0 * r)
+    f = check_feed(feed, nose_radius, end_relief_angle)
+    return f * f / (8.0 * float(nose_radius))
+
+
+def arc_peak_to_valley(feed, nose_radius) -> float:
+    """Peak-to-valley height of circular feed marks, ``r - sqrt(r^2 - f^2/4)`` (m).
+
+    The exact height of arcs of radius r every f (what :func:`turned_profile` cuts); r at
+    ``f = 2 r``.
+
+    Parameters
+    ----------
+    feed, nose_radius : float
+        Feed per revolution f and tool nose radius r (m), ``f <= 2 r``.
+    """
+    f = check_feed(feed, nose_radius)
+    r = float(nose_radius)
+    return r - math.sqrt(max(r * r - f * f / 4.0, 0.0))
+
+
+def parabola_error(feed, nose_radius) -> float:
+    """How far eq. (4.1)'s ``f^2/(8 r)`` is below the arcs' height, relative to the arcs.
+
+    ``1 - f^2/(8 r) / (r - sqrt(r^2 - f^2/4)) = (1 - sqrt(1 - f^2/(4 r^2))) / 2``, about
+    ``f^2 / (16 r^2)`` for small feeds; 1/2 at ``f = 2 r``.
+
+    Parameters
+    ----------
+    feed, nose_radius : float
+        Feed per revolution f and tool nose radius r (m), ``f <= 2 r``.
+    """
+    f = check_feed(feed, nose_radius)
+    ratio = min(f / (2.0 * float(nose_radius)), 1.0)
+    return 0.5 * (1.0 - math.sqrt(1.0 - ratio * ratio))
+
+
+def parabola_feed_limit(nose_radius, tolerance=PARABOLA_TOLERANCE) -> float:
+    """The feed at which :func:`parabola_error` reaches ``tolerance``: ``4 r sqrt(t (1 - t))``
+    (0.87 r at 5 %).
+
+    Parameters
+    ----------
+    nose_radius : float
+        Tool nose radius r (m).
+    tolerance : float
+        Relative error t of eq. (4.1), 0 < t <= 1/2.
+    """
+    t = check_positive("tolerance", tolerance)
+    if t > 0.5:
+        raise InputError("tolerance", "at most 1/2 (the parabola's error at f = 2 r)", t)
+    return 4.0 * check_positive("nose_radius", nose_radius) * math.sqrt(t * (1.0 - t))
 
 
 def _feed_mark_envelope(x, first_pass, feed, radius, offsets):
@@ -135,7 +264,9 @@ def _feed_mark_envelope(x, first_pass, feed, radius, offsets):
         k = base + j
         valid = (k >= 0) & (k < offsets.size)
         d = x - (first_pass + k * feed)
-        inside = valid & (np.abs(d) < radius)
+        # the arc's ends included (to round-off): at f = 2 r the cusps are the ends of two
+        # arcs, covered by none if the ends were left out (heights of inf)
+        inside = valid & (np.abs(d) <= radius * (1.0 + 1e-9))
         kk = np.clip(k, 0, offsets.size - 1)
         arc = offsets[kk] + radius - np.sqrt(np.maximum(radius**2 - d**2, 0.0))
         z = np.where(inside, np.minimum(z, arc), z)
