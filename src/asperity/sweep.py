@@ -51,6 +51,7 @@ from .errors import InputError
 from .formatting import cf_units, describe_key
 from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
+from .units import is_bare
 
 __all__ = ["THREAD_VARIABLES", "Study", "case_status", "combine", "convergence_message",
            "estimated_seconds", "load_study", "local_cluster", "run_one", "run_study"]
@@ -219,19 +220,6 @@ def _base_keys(base_case: dict) -> dict:
     return {} if model is None else {k.key: k for k in case_keys(model)}
 
 
-def _bare(value) -> bool:
-    """Whether an axis value is a number without a unit (``1.0``, ``"1.0"``)."""
-    if isinstance(value, bool):
-        return False
-    if isinstance(value, int | float):
-        return True
-    try:
-        float(value)
-    except (TypeError, ValueError):
-        return False
-    return True
-
-
 def _check_axes(axes: list, keys: dict, mode: str) -> tuple:
     """Refuse what would run but not answer the question; return each axis' SI unit.
 
@@ -265,7 +253,7 @@ def _check_axes(axes: list, keys: dict, mode: str) -> tuple:
                 raise InputError(field, "", problem=f"{key} names a table, not a key; name a "
                                  f"key in it ({', '.join(f'{key}.{c}' for c in inside)})")
             if spec is not None and spec.type == "number or quantity" and \
-                    0 < sum(_bare(v) for v in column) < len(column):
+                    0 < sum(is_bare(v) for v in column) < len(column):
                 raise InputError(f"axis[{i}].values", "", problem=f"bare numbers beside "
                                  f"quantities for {key}, where a bare number is not in "
                                  f"{spec.unit}; give every value with its unit, or none")
@@ -577,11 +565,11 @@ def _coordinate(values: list, unit: str | None = None):
     """
     from .units import DIMENSIONS, registry
 
-    if all(_bare(v) or isinstance(v, bool) for v in values):
+    if all(is_bare(v) or isinstance(v, bool) for v in values):
         return np.array([float(v) for v in values]), cf_units(unit) if unit else "1"
     try:
         ureg = registry()
-        qs = [ureg.Quantity(v) for v in values if not _bare(v)]
+        qs = [ureg.Quantity(v) for v in values if not is_bare(v)]
         if qs[0].dimensionless:  # pint counts angles as pure numbers: radians, or a ratio
             angle = {name for name, _ in qs[0].unit_items()} & _ANGLES
             si = "rad" if angle else "dimensionless"
@@ -590,7 +578,7 @@ def _coordinate(values: list, unit: str | None = None):
                       if u and ureg.Quantity(1, u).dimensionality == qs[0].dimensionality)
         if unit and ureg.Quantity(1, unit).dimensionality == ureg.Quantity(1, si).dimensionality:
             si = unit
-        numbers = np.array([float(v) if _bare(v) else ureg.Quantity(v).to(si).magnitude
+        numbers = np.array([float(v) if is_bare(v) else ureg.Quantity(v).to(si).magnitude
                             for v in values], dtype=float)
         return numbers, "1" if si == "dimensionless" else cf_units(si)
     except Exception:  # labels that are not quantities stay strings

@@ -12,7 +12,7 @@ from functools import lru_cache
 
 from .errors import InputError
 
-__all__ = ["DIMENSIONS", "registry", "to_si"]
+__all__ = ["DIMENSIONS", "is_bare", "registry", "to_si"]
 
 #: What a case-file field measures -> its SI unit (a pint unit string; "" for pure numbers).
 DIMENSIONS = {
@@ -77,20 +77,22 @@ def to_si(value, dimension: str, field: str) -> float:
         raise InputError(field, f"a number or a string like '1.0 {si_unit}'", value)
     if not math.isfinite(result):
         raise InputError(field, "a finite number", value)
-    if dimension == "angle" and abs(result) > 2.0 * math.pi and _is_bare(value):
+    if dimension == "angle" and abs(result) > 2.0 * math.pi and is_bare(value):
         # a bare 90 meant in degrees would be 90 rad = 116.6 deg, silently
         raise InputError(field, "an angle with its unit ('90 deg') or at most 2 pi radians as a "
                          "bare number", value)
     return result
 
 
-def _is_bare(value) -> bool:
-    """Whether a case-file value is a number without a unit (``90``, ``"90"``)."""
+def is_bare(value) -> bool:
+    """Whether a case-file value is a number without a unit (``90``, ``"90"``; not a bool)."""
+    if isinstance(value, bool):
+        return False
     if isinstance(value, int | float):
         return True
     try:
         float(value)
-    except ValueError:
+    except (TypeError, ValueError):
         return False
     return True
 

@@ -50,7 +50,7 @@ from ..errors import InputError
 from ..gears.geometry import GearPair
 from ..gears.path import EHLMesh, Thermal
 from ..materials import Material
-from ..units import registry, to_si
+from ..units import is_bare, registry, to_si
 from .bodies import MaterialSpec
 from .ehl import LubricantSpec
 from .ehl_transient import MovingSurfaceSpec, TimeSpec, TransientSolverSpec
@@ -78,19 +78,6 @@ def _bare_hint(value, low: float, high: float) -> str:
     return f"{number:g} mm"
 
 
-def _bare(value) -> bool:
-    """Whether a case-file value is a number without a unit (``4``, ``"4"``)."""
-    if isinstance(value, bool):
-        return False
-    if isinstance(value, int | float):
-        return True
-    try:
-        float(value)
-    except (TypeError, ValueError):
-        return False
-    return True
-
-
 def GearLength(low: float, high: float, *, inclusive_low: bool = True):  # noqa: N802
     """A length field of a gear (SI m) held to a plausible range ``low .. high``.
 
@@ -110,7 +97,7 @@ def GearLength(low: float, high: float, *, inclusive_low: bool = True):  # noqa:
             raise ValueError(f"expected {exc.expected}") from None
         inside = (si >= low if inclusive_low else si > low) and si <= high
         if not inside:
-            hint = _bare_hint(value, low, high) if _bare(value) and si > high else ""
+            hint = _bare_hint(value, low, high) if is_bare(value) and si > high else ""
             note = f' (a bare number is metres: write "{hint}")' if hint else ""
             raise ValueError(f"expected a length {span}{note}")
         return si
