@@ -531,3 +531,20 @@ def test_hertz_validity_flags_a_large_soft_contact_and_unchecked_strain():
     assert dg.hertz_validity(a, 6e-3, p0, e_steel) == []
     # at the limits exactly: silent
     assert dg.hertz_validity(0.1, 1.0, 0.05, 1.0) == []
+
+
+def test_a_contact_as_small_as_the_files_points_is_not_told_to_refine_past_them():
+    """One spot 10 cells across on 256 cells of a 1 um map (a user's rough flat at 1 MPa):
+    5 cells per semi-axis, under the 10 asked for; a grid of 512 cells would be finer than
+    the file's points and only interpolate, so the line says that instead of nx >= 512. A
+    generated surface (no file) is told nx >= 512."""
+    x = y = _cells(256, 256e-6)
+    spot = np.zeros((256, 256), dtype=bool)
+    spot[100:110, 100:110] = True
+    told = dg.contact_resolution(spot, x, y)
+    assert len(told) == 1 and "use nx >= 512" in told[0]
+    measured = dg.contact_resolution(spot, x, y, file_spacing=(1e-6, 1e-6))
+    assert len(measured) == 1 and "use nx" not in measured[0]
+    assert "finer grid than the file's points (1 um apart) only interpolates" in measured[0]
+    coarse_file = dg.contact_resolution(spot, x, y, file_spacing=(0.25e-6, 0.25e-6))
+    assert "use nx >= 512" in coarse_file[0]  # the file holds finer points: refine

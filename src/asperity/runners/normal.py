@@ -137,7 +137,9 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
             h = hertz_point(load, rx, ry, body1, body2)
             size = (2.0 * h.a, 2.0 * h.b)
         lines += diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
-    lines += diagnostics.contact_resolution(res.contact, x, y, expected_size=size)
+    lines += diagnostics.contact_resolution(
+        res.contact, x, y, expected_size=size,
+        file_spacing=None if on_grid is None else on_grid.file_spacing)
     rough = case.roughness
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
         ell = rough.correlation_length
