@@ -62,3 +62,23 @@ def test_path_stops_at_gross_slip_and_shares_load():
     total = path.region_force[:4].sum(axis=1)
     np.testing.assert_allclose(total[:, 0], loads[:4, 0], rtol=1e-8)
     assert np.all(np.diff(path.stick_fraction[:4]) < 0)
+
+
+def test_masing_history_follows_mindlin_deresiewicz_and_closes_its_loop():
+    """A cycle 0 -> Q* -> -Q* -> Q*: the loading branch is Cattaneo-Mindlin's shift, the
+    unloading one Johnson's eq. 7.56 (masing_unloading_shift), and the reloading branch ends
+    where the first loading did (Masing's loop closes); a history past mu P ends at mu P."""
+    peak = 0.8 * MU * P
+    shift, force = ref.masing_history([peak, -peak, peak], P, MU, A, STEEL, STEEL, points=8)
+    loading = slice(1, 9)
+    for q, d in zip(force[loading], shift[loading], strict=True):
+        assert d == pytest.approx(ref.cattaneo_mindlin(P, q, MU, A, STEEL, STEEL).shift,
+                                  rel=1e-12)
+    for q, d in zip(force[9:17], shift[9:17], strict=True):
+        assert d == pytest.approx(ref.masing_unloading_shift(q, peak, P, MU, A, STEEL, STEEL),
+                                  rel=1e-12, abs=1e-15)
+    assert force[-1] == pytest.approx(peak) and shift[-1] == pytest.approx(shift[8], rel=1e-12)
+    assert shift[16] == pytest.approx(-shift[8], rel=1e-12)  # the loop is odd
+    over, f_over = ref.masing_history([2 * MU * P], P, MU, A, STEEL, STEEL)
+    assert f_over[-1] == pytest.approx(MU * P) and over[-1] == pytest.approx(
+        ref.cattaneo_mindlin(P, MU * P, MU, A, STEEL, STEEL).shift)

@@ -42,6 +42,7 @@ __all__ = [
     "DECIMATED_FILE_FACTOR",
     "SEAM_JUMP_RATIO",
     "above_hardness",
+    "hardness_given",
     "coarse_roughness_file",
     "decimated_roughness_file",
     "contact_at_grid_edge",
@@ -328,6 +329,13 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
         return []
     return ["mesh: the contact is resolved by " + " and ".join(lines) + f" (limit {min_cells:g}"
             " cells per semi-axis); pressures and contact size are then mesh-dependent"]
+
+
+def hardness_given(materials: Iterable) -> bool:
+    """Whether every deformable body of ``materials`` (``(label, Material)`` pairs) gives a
+    hardness, so that :func:`above_hardness` judges the pressure (a rigid body needs none)."""
+    return all(getattr(m, "hardness", None) is not None for _, m in materials
+               if not getattr(m, "rigid", False))
 
 
 def above_hardness(pressure, materials: Iterable) -> list[str]:

@@ -474,7 +474,7 @@ def estimated_seconds(case: dict) -> float | None:
     either way); None for the others.
 
     The mesh, time step and step counts are the transient runner's, from the case's own
-    methods (``problem``, ``mesh``, ``steps``).
+    methods (``problem``, ``mesh``, ``timestep``, ``steps``).
 
     Parameters
     ----------
@@ -491,9 +491,7 @@ def estimated_seconds(case: dict) -> float | None:
     problem = model.problem()
     nx, ny, domain = model.mesh(problem)
     x, _ = problem.grid(nx, ny, domain)
-    u_max = max(abs(problem.u1), abs(problem.u2))
-    dt = model.time.dt if model.time.dt is not None else 0.5 * (x[1] - x[0]) / u_max
-    warmup, counting = model.steps(problem, x, dt)
+    warmup, counting = model.steps(problem, x, model.timestep(problem, x))
     return nx * ny * (warmup + counting) * SECONDS_PER_NODE_STEP
 
 

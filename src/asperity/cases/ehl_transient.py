@@ -296,6 +296,13 @@ class EHLTransientCase(EHLCaseBase):
             nx, ny = problem.default_nodes(domain, max_dx=max_dx, max_dy=max_dy)
         return nx, ny, domain
 
+    def timestep(self, problem, x: np.ndarray) -> float:
+        """The time step (s) on the mesh ``x`` (m): ``time.dt``, or the seed's
+        ``dx / (2 u_max)``."""
+        if self.time.dt is not None:
+            return self.time.dt
+        return 0.5 * (x[1] - x[0]) / max(abs(problem.u1), abs(problem.u2))
+
     def steps(self, problem, x: np.ndarray, dt: float) -> tuple[int, int]:
         """``(warmup_steps, counting_steps)`` on the mesh ``x`` (m) with timestep ``dt`` (s).
 

@@ -30,6 +30,7 @@ __all__ = [
     "rectangle_distance_integral",
     "CattaneoMindlin",
     "cattaneo_mindlin",
+    "masing_history",
     "masing_unloading_shift",
     "lubkin_moment",
     "lubkin_twist",
@@ -125,6 +126,59 @@ def masing_unloading_shift(force, peak_force, normal_load, mu, a, body1, body2):
         raise InputError("force", "-peak_force <= force <= peak_force <= mu * normal_load", force)
     peak = _cattaneo_shift(Qs, normal_load, mu, a, C)
     return peak - 2.0 * _cattaneo_shift(0.5 * (Qs - force), normal_load, mu, a, C)
+
+
+def masing_history(forces, normal_load, mu, a, body1, body2, points=16):
+    """Shift against force along a history of tangential forces from zero (Cattaneo-Mindlin
+    on the first loading, Masing's rule after each reversal), m and N.
+
+    The first loading follows ``sign(Q) delta(|Q|)`` (Johnson eq. 7.42); after a reversal at
+    ``(Q_r, delta_r)`` the shift is ``delta_r + 2 delta((Q - Q_r)/2)`` in the new direction
+    (Mindlin & Deresiewicz 1953; Johnson eq. 7.56, :func:`masing_unloading_shift` for one
+    reversal from the peak). The curve ends at ``|Q| = mu P`` (gross slip).
+
+    Parameters
+    ----------
+    forces : array_like
+        The tangential forces of the history's steps along one direction, N.
+    normal_load, mu, a, body1, body2
+        As :func:`cattaneo_mindlin`.
+    points : int
+        Points per step of the curve.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Shift (m) and force (N), from (0, 0).
+    """
+    capacity = mu * normal_load
+    compliance = tangential_compliance(body1, body2)
+
+    def virgin(q):
+        return _cattaneo_shift(min(q, capacity), normal_load, mu, a, compliance)
+
+    qs = np.concatenate([[0.0], np.asarray(forces, dtype=float)])
+    force, shift = [0.0], [0.0]
+    q_r = d_r = direction = 0.0
+    first = True
+    for q0, q1 in zip(qs[:-1], qs[1:], strict=True):
+        d = float(np.sign(q1 - q0))
+        if d == 0.0:
+            continue
+        if direction and d != direction:
+            q_r, d_r, first = q0, shift[-1], False
+        direction = d
+        for q in np.linspace(q0, q1, points + 1)[1:]:
+            q = float(np.clip(q, -capacity, capacity))  # gross slip: the curve ends there
+            if first:
+                delta = float(np.copysign(virgin(abs(q)), q))
+            else:
+                delta = d_r + d * 2.0 * virgin(0.5 * abs(q - q_r))
+            force.append(q)
+            shift.append(delta)
+            if abs(q) >= capacity:
+                return np.array(shift), np.array(force)
+    return np.array(shift), np.array(force)
 
 
 def lubkin_moment(c, a, mu, p0):

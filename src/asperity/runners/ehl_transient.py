@@ -175,8 +175,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     line = isinstance(problem, LineContact)
     nx, ny, domain = case.mesh(problem)
     x, y = problem.grid(nx, ny, domain)
-    u_max = max(abs(problem.u1), abs(problem.u2))
-    dt = case.time.dt if case.time.dt is not None else 0.5 * (x[1] - x[0]) / u_max
+    dt = case.timestep(problem, x)
     warmup, counting = case.steps(problem, x, dt)
     total = warmup + counting
     records = case.surface_records(problem, x, y, warmup, total, dt)

@@ -162,13 +162,9 @@ def _plasticity(case, res, body1, body2) -> list[str]:
         h = hertz_point(res.load, rx, ry, body1, body2)
         a, radius = max((h.a, rx), (h.b, ry), key=lambda pair: pair[0] / pair[1])
         lines += diagnostics.hertz_validity(a, radius, h.p_max, contact_modulus(body1, body2),
-                                            _hardness_given(body1, body2),
+                                            diagnostics.hardness_given(bodies),
                                             load_key="loading.load")
     return lines
-
-
-def _hardness_given(body1, body2) -> bool:
-    return all(getattr(m, "hardness", None) is not None for m in (body1, body2))
 
 
 def _unchecked_plasticity(case, res, body1, body2) -> list[str]:
@@ -179,8 +175,8 @@ def _unchecked_plasticity(case, res, body1, body2) -> list[str]:
     nearly every elastic rough contact's asperities are that loaded (about E* Sdq / 2)."""
     e_star = contact_modulus(body1, body2)
     p_max = float(res.pressure.max())
-    if case.roughness is None or _hardness_given(body1, body2) or \
-            not p_max > diagnostics.HERTZ_STRAIN_LIMIT * e_star:
+    given = diagnostics.hardness_given([("body1", body1), ("body2", body2)])
+    if case.roughness is None or given or not p_max > diagnostics.HERTZ_STRAIN_LIMIT * e_star:
         return []
     return [f"The largest pressure, {p_max / 1e9:.4g} GPa, is {p_max / e_star:.3g} E* (E* = "
             f"{e_star / 1e9:.4g} GPa): asperities yield at such pressures and plasticity was "

@@ -25,6 +25,7 @@ from ..contact.reference import (
     gross_slip_moment_hertz,
     lubkin_stick_radius,
     lubkin_twist,
+    masing_history,
 )
 from ..errors import InputError
 from ..formatting import format_quantity
@@ -342,38 +343,6 @@ def _path_fraction(case, fld, res, path):
     return fraction, label
 
 
-def _masing_curve(steps, virgin, capacity, points=16):
-    """Shift against force along a history of forces ``steps`` (from zero) by Masing's rule.
-
-    The first loading follows ``virgin`` (odd: ``sign(Q) virgin(|Q|)``); after a reversal at
-    ``(Q_r, delta_r)`` the shift is ``delta_r + 2 virgin((Q - Q_r)/2)`` (Mindlin & Deresiewicz
-    1953; Johnson eq. 7.56). The curve stops at ``|Q| = capacity`` (gross slip).
-    """
-    qs = np.concatenate([[0.0], np.asarray(steps, dtype=float)])
-    force, shift = [0.0], [0.0]
-    q_r = d_r = direction = 0.0
-    first = True
-    for q0, q1 in zip(qs[:-1], qs[1:], strict=True):
-        d = float(np.sign(q1 - q0))
-        if d == 0.0:
-            continue
-        if direction and d != direction:
-            q_r, d_r, first = q0, shift[-1], False
-        direction = d
-        for q in np.linspace(q0, q1, points + 1)[1:]:
-            if abs(q) > capacity:  # gross slip: the curve ends at the capacity
-                q = math.copysign(capacity, q)
-            if first:
-                delta = math.copysign(virgin(abs(q)), q)
-            else:
-                delta = d_r + d * 2.0 * virgin(min(0.5 * abs(q - q_r), capacity))
-            force.append(q)
-            shift.append(delta)
-            if abs(q) >= capacity:
-                return np.array(shift), np.array(force)
-    return np.array(shift), np.array(force)
-
-
 def _mindlin_compliance(case, fld, path, body1, body2):
     """The closed-form compliance curve of the path (shift, force along the largest force,
     label) where it applies: a circular Hertz contact of similar bodies (beta = 0) under a
@@ -384,12 +353,7 @@ def _mindlin_compliance(case, fld, path, body1, body2):
     h = fld.hertz
     force = np.hypot(path.loads[:, 0], path.loads[:, 1])
     e = path.loads[np.argmax(force), :2] / force.max()
-    capacity = case.mu * h.load
-
-    def virgin(q):
-        return cattaneo_mindlin(h.load, min(q, capacity), case.mu, h.a, body1, body2).shift
-
-    shift, along = _masing_curve(path.loads[:, :2] @ e, virgin, capacity)
+    shift, along = masing_history(path.loads[:, :2] @ e, h.load, case.mu, h.a, body1, body2)
     reversed_ = case.load_path.history != "load"
     label = "Cattaneo-Mindlin" + (" / Mindlin-Deresiewicz (Masing)" if reversed_ else "")
     return shift, along, label
@@ -519,7 +483,7 @@ def _validity_warnings(case, fld, body1, body2) -> list[str]:
         return []
     rx, ry = case.pressure.radii()
     a, radius = max(((h.a, rx), (h.b, ry)), key=lambda ar: ar[0] / ar[1])
-    given = all(b.hardness is not None for b in (body1, body2) if not b.rigid)
+    given = diagnostics.hardness_given([("body1", body1), ("body2", body2)])
     return diagnostics.hertz_validity(a, radius, h.p_max, h.modulus, given)
 
 
