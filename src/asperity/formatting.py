@@ -22,6 +22,7 @@ __all__ = [
     "cf_units",
     "display_unit",
     "format_axis_value",
+    "format_duration",
     "describe_key",
     "format_number",
     "format_quantity",
@@ -31,6 +32,15 @@ __all__ = [
     "unit_label",
     "units_from_cf",
 ]
+
+def format_duration(seconds: float) -> str:
+    """A wall time in words: ``40 s``, ``12 min``, ``3.1 h``."""
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.2g} min"
+    return f"{seconds / 3600:.2g} h"
+
 
 #: SI unit (pint expression) -> readable units to choose from, largest first: (pint, label[,
 #: smallest magnitude shown in it, default 1]).

@@ -410,6 +410,7 @@ def _sweep_plan(spec, out: Path) -> str:
     """The line said before a study starts: its cases, those left to run, and where the
     analysis estimates it, their expected time on 2 cores (a line, not a question: CI has no
     stdin)."""
+    from ..formatting import format_duration
     from ..sweep import case_status, estimated_seconds
 
     todo = [case for cid, case, _ in spec.cases
@@ -421,18 +422,9 @@ def _sweep_plan(spec, out: Path) -> str:
     seconds = [estimated_seconds(case) for case in todo]
     known = [t for t in seconds if t is not None]
     if known:
-        line += (f"; estimated {_duration(sum(known))} on 2 cores in all (within a factor of 2; "
-                 f"{_duration(max(known))} for the longest case)")
+        line += (f"; estimated {format_duration(sum(known))} on 2 cores in all (within a "
+                 f"factor of 2; {format_duration(max(known))} for the longest case)")
     return line
-
-
-def _duration(seconds: float) -> str:
-    """A wall time in words: ``40 s``, ``12 min``, ``3.1 h``."""
-    if seconds < 90:
-        return f"{seconds:.0f} s"
-    if seconds < 5400:
-        return f"{seconds / 60:.2g} min"
-    return f"{seconds / 3600:.2g} h"
 
 
 def _case_problems(ds, limit: int = 5) -> list[str]:

@@ -25,6 +25,7 @@ from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
+from ..formatting import format_duration
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
 from .ehl_steady import chosen_mesh, ehl_warnings
@@ -314,11 +315,11 @@ def _expected_duration(node_steps: int) -> str:
     about ``SECONDS_PER_NODE_STEP`` each, within a factor of 2 either way (docs/ehl-transient.md,
     Cost). A user's long-ellipse dent case ran 1025 x 169 nodes for 2,087 steps with nothing
     to say that it would take a quarter of an hour."""
-    minutes = node_steps * SECONDS_PER_NODE_STEP / 60
-    if minutes < 1:
+    seconds = node_steps * SECONDS_PER_NODE_STEP
+    if seconds < 60:
         return "about a minute or less on 2 cores"
-    return (f"roughly {minutes:.2g} min on 2 cores ({minutes / 2:.2g}-{2 * minutes:.2g}; a "
-            "coarser grid to try the case first)")
+    return (f"roughly {format_duration(seconds)} on 2 cores ({format_duration(seconds / 2)} to "
+            f"{format_duration(2 * seconds)}; a coarser grid to try the case first)")
 
 
 def _file_reports(case, records) -> tuple[list[str], list[str]]:
