@@ -19,7 +19,6 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..errors import InputError
-from ..surfaces.parameters import rms_gradient
 from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface, build_surface_record
 from ..surfaces.topography import Profile
 from .fields import CaseModel, Quantity, existing_file
@@ -392,7 +391,7 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
         notes.append(f"{label}.path ({name}): heights sampled by cubic spline at the grid's "
                      f"cell centres ({cells} apart) from the file's points ({apart} apart)")
     return GridRoughness(spec.scale * z, spacing, tuple(notes), warnings,
-                         spec.scale * rms_gradient(surf)[1])
+                         spec.scale * built.rms_slope[1])
 
 
 def _length(value: float) -> str:

@@ -41,6 +41,7 @@ factor on the heights) and ``waviness`` (a sinusoid added to the scaled heights)
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -187,6 +188,11 @@ class SurfaceBuild:
     reading: Reading | None = None
     form: FormRemoval | None = None
 
+    @cached_property
+    def rms_slope(self) -> tuple[str, float]:
+        """Rdq or Sdq of the built heights (:func:`~asperity.surfaces.rms_gradient`), once."""
+        return rms_gradient(self.surface)
+
     def file_report(self, key: str, name: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
         """Notes and warnings of a measured file for a case, each naming ``key`` (the case's
         ``path`` key, e.g. ``"surface2.path"``): the reader's notes (the units read and where
@@ -200,7 +206,7 @@ class SurfaceBuild:
         notes = [f"{key} ({name}): {note}" for note in self.reading.notes]
         if self.form is not None:
             notes.append(f"{key} ({name}): {self.form.describe()}")
-        doubts = self.reading.slope_warnings(*rms_gradient(self.surface))
+        doubts = self.reading.slope_warnings(*self.rms_slope)
         return tuple(notes), tuple(f"{key}: {w}" for w in (*self.reading.warnings, *doubts))
 
 
