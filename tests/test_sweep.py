@@ -605,3 +605,29 @@ def test_local_cluster_is_quiet_and_its_workers_leave_ctrl_c_to_the_command(capf
         assert set(client.run(ignores_sigint).values()) == {True}
         assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # put back here
     assert "still alive" not in capfd.readouterr().err
+
+
+def test_a_result_constant_over_the_study_is_drawn_flat_not_as_a_trend(tmp_path):
+    """A central film of 479.320-479.333 nm over three slide/roll ratios (holmes-smooth-xi)
+    was drawn over the panel's full height with an offset of +4.793e2, a rise of 0.013 nm
+    looking like a trend; it is drawn on +-2 % of its mean, without an offset. A result that
+    changes (a load's pressure) keeps the range matplotlib gives it."""
+    from asperity.plotting.study import plot_study
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["1 N", "2 N", "3 N"]\n')
+    out = tmp_path / "out"
+    for n, (film, load) in enumerate([(479.320e-9, 1), (479.330e-9, 2), (479.333e-9, 3)]):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "converged": True,
+             "summary": {"central_film_thickness_m": film, "max_pressure_pa": 1e9 * load}}))
+    fig = plot_study(combine(study, out), ["central_film_thickness_m", "max_pressure_pa"])
+    film_ax, pressure_ax = fig.axes[:2]
+    low, high = film_ax.get_ylim()
+    assert low == pytest.approx(479.328 * 0.98, rel=1e-4)
+    assert high == pytest.approx(479.328 * 1.02, rel=1e-4)
+    assert not film_ax.yaxis.get_major_formatter().get_useOffset()
+    low, high = pressure_ax.get_ylim()
+    assert low < 1.0 and 3.0 < high < 3.5

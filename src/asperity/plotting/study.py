@@ -1,6 +1,8 @@
 """Figures of a parameter study: each swept result against the first axis, one line per value of
 the other axes (small multiples, one panel per result); a logarithmic x axis for an axis
-swept on a log range (``scale = "log"``) or spanning more than a factor of 50."""
+swept on a log range (``scale = "log"``) or spanning more than a factor of 50. A result that
+changes by less than ``FLAT_SPAN`` of its size over the study is drawn on a range of
+``FLAT_RANGE`` about its mean, so that round-off does not look like a trend."""
 
 from __future__ import annotations
 
@@ -11,7 +13,25 @@ import numpy as np
 from ..formatting import describe_key, display_unit, format_axis_value, units_from_cf
 from .style import plt
 
-__all__ = ["plot_study"]
+__all__ = ["FLAT_RANGE", "FLAT_SPAN", "plot_study"]
+
+#: A panel's values spanning less than this fraction of their largest magnitude are "flat".
+FLAT_SPAN = 1e-3
+#: A flat panel's y range: its mean plus and minus this fraction of the mean's magnitude.
+FLAT_RANGE = 0.02
+
+
+def _flat_limits(values: np.ndarray) -> tuple[float, float] | None:
+    """y limits of ``mean -+ FLAT_RANGE |mean|`` for values that are flat, else None."""
+    finite = values[np.isfinite(values)]
+    if finite.size < 2:
+        return None
+    size = float(np.max(np.abs(finite)))
+    if size == 0.0 or np.ptp(finite) > FLAT_SPAN * size:
+        return None
+    mean = float(np.mean(finite))
+    return mean - FLAT_RANGE * abs(mean), mean + FLAT_RANGE * abs(mean)
+
 
 def _axis_values(ds, name):
     """(numbers for the x axis or None for labels, tick labels) of a study coordinate."""
@@ -66,6 +86,7 @@ def plot_study(ds, variables, columns: int = 3):
             scale, shown = 100.0, "%"
         else:
             scale, shown = display_unit(float(np.nanmax(np.abs(ds[key].values))), unit)
+        drawn = []
         for combo in combos:
             sel = dict(zip(others, combo, strict=True))
             y = ds[key].isel(sel).values.astype(float) * scale
@@ -73,6 +94,11 @@ def plot_study(ds, variables, columns: int = 3):
                              f"{_axis_values(ds, o)[1][i]}" for o, i in sel.items())
             xs = x if x is not None else np.arange(len(labels))
             ax.plot(xs, y, "o-", ms=4, lw=1.2, label=text or None)
+            drawn.append(y)
+        flat = _flat_limits(np.concatenate(drawn)) if drawn else None
+        if flat is not None:
+            ax.set_ylim(*flat)
+        ax.ticklabel_format(axis="y", useOffset=False)
         for i, tag in enumerate(paired):  # zip mode: each point's values of the other axes
             ax.annotate(tag, (xs[i], y[i]), xytext=(4, 4), textcoords="offset points",
                         fontsize=7, color="0.3")
