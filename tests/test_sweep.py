@@ -143,6 +143,19 @@ def test_bad_study_is_one_line(tmp_path):
         _study(tmp_path, "")
 
 
+@pytest.mark.parametrize("range_text, field", [
+    ('{start = 1, stop = 5, num = 2.5, unit = "N"}', "axis[0].range.num"),   # ran 2 cases
+    ('{start = 1, stop = 5, num = 1, unit = "N"}', "axis[0].range.num"),     # ran 1 N only
+    ('{start = 1, stop = 5, num = 3, units = "kN"}', "axis[0].range.units"),  # ran 1-5 N
+])
+def test_a_range_that_would_run_other_cases_than_written_is_refused(tmp_path, range_text, field):
+    """A fractional or single-value ``num`` and a misspelt ``unit`` ran cases the study did not
+    describe (``num = 2.5`` two cases, ``units = "kN"`` loads in newtons) in silence."""
+    with pytest.raises(InputError) as err:
+        _study(tmp_path, f'[[axis]]\nkey = "loading.load"\nrange = {range_text}\n')
+    assert err.value.field == field
+
+
 def test_interrupted_study_resumes_each_case_once(tmp_path):
     axes = '[[axis]]\nkey = "loading.load"\nrange = {start = 5, stop = 40, num = 8, unit = "N"}\n'
     study = _study(tmp_path, axes)

@@ -53,8 +53,12 @@ from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
 from .units import is_bare
 
-__all__ = ["THREAD_VARIABLES", "Study", "case_status", "combine", "convergence_message",
-           "estimated_seconds", "load_study", "local_cluster", "run_one", "run_study"]
+__all__ = ["RANGE_KEYS", "THREAD_VARIABLES", "Study", "case_status", "combine",
+           "convergence_message", "estimated_seconds", "load_study", "local_cluster", "run_one",
+           "run_study"]
+
+#: The keys of an axis's ``range`` table.
+RANGE_KEYS = ("start", "stop", "num", "unit", "scale")
 
 
 @dataclass(frozen=True)
@@ -127,12 +131,17 @@ def _axis_values(axis: dict, index: int) -> list:
     if "range" in axis:
         r = axis["range"]
         try:
-            start, stop, num = float(r["start"]), float(r["stop"]), int(r["num"])
+            start, stop, num = float(r["start"]), float(r["stop"]), r["num"]
         except (KeyError, TypeError, ValueError):
             raise InputError(f"{where}.range", "a table {start, stop, num[, unit, scale]}",
                              r) from None
-        if num < 1:
-            raise InputError(f"{where}.range.num", "an integer >= 1", num)
+        unknown = sorted(set(r) - set(RANGE_KEYS))
+        if unknown:
+            raise InputError(f"{where}.range.{unknown[0]}",
+                             f"one of {', '.join(RANGE_KEYS)} (check the spelling)", r[unknown[0]])
+        if isinstance(num, bool) or not isinstance(num, int) or num < 2:
+            raise InputError(f"{where}.range.num", "an integer >= 2 (one case: values = [...])",
+                             num)
         scale = r.get("scale", "linear")
         if scale not in ("linear", "log"):
             raise InputError(f"{where}.range.scale", '"linear" or "log"', scale)
