@@ -35,3 +35,48 @@ def test_bad_quantities_name_the_field(bad):
         to_si(bad, "length", "geometry.rx")
     assert str(exc.value).startswith("geometry.rx: ")
     assert "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize("text", ["12,5 mm", "12, 5 mm", "1 000 N", "1,000 N", "0,25 mm"])
+def test_a_decimal_comma_or_thousands_separator_is_refused(text):
+    """pint drops commas and multiplies numbers side by side: "12,5 mm" was 125 mm, "12, 5 mm"
+    60 mm and "1 000 N" 0 N, each without a word."""
+    with pytest.raises(InputError, match="one number with a decimal point") as exc:
+        to_si(text, "force" if "N" in text else "length", "contact.rx")
+    assert str(exc.value).startswith("contact.rx: ")
+
+
+@pytest.mark.parametrize("text, expected", [("20 1/GPa", 20e-9), ("1 / GPa", 1e-9),
+                                            (".5 1/GPa", 0.5e-9), ("2e1 GPa^-1", 20e-9)])
+def test_a_unit_that_starts_with_one_over_is_still_read(text, expected):
+    assert math.isclose(to_si(text, "inverse_pressure", "f"), expected, rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("text, expected", [("1500 rpm", 25.0), ("3000 cycle/s", 3000.0),
+                                            ("25 revolution/s", 25.0), ("1500 1/min", 25.0),
+                                            ("2 kHz", 2000.0)])
+def test_a_frequency_in_turns_counts_cycles(text, expected):
+    """pint's turn is 2 pi radians, so "3000 cycle/s" was 18,850 Hz and "1500 rpm" 157 Hz."""
+    assert math.isclose(to_si(text, "frequency", "f"), expected, rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("text, dimension, expected", [
+    ("0.127 mm/rev", "length", 0.127e-3), ("0.127 mm/revolution", "length", 0.127e-3),
+    ("0.005 in/rev", "length", 0.005 * IN), ("0.5 turn", "angle", math.pi),
+    ("90 deg", "angle", math.pi / 2)])
+def test_a_feed_per_revolution_is_a_length_and_a_turn_is_still_an_angle(text, dimension,
+                                                                         expected):
+    """A turning feed written as machinists write it, "0.127 mm/revolution", was 0.0202 mm (pint
+    divides by 2 pi radians) and "mm/rev" an unknown unit; as an angle a turn stays 2 pi."""
+    assert math.isclose(to_si(text, dimension, "feed"), expected, rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("text, dimension, hint", [
+    ("250 cSt", "viscosity", "kinematic viscosity"), ("15 kg", "force", "a mass"),
+    ("1500 rpm", "speed", "rotational speed")])
+def test_a_quantity_of_a_related_kind_says_what_it_is(text, dimension, hint):
+    """A kinematic viscosity for eta0, a mass for a load and an rpm for a surface speed are
+    refused saying what they are and how to convert (1500 rpm on a 50 mm radius is
+    1500 x 2 pi / 60 x 0.05 = 7.85 m/s)."""
+    with pytest.raises(InputError, match=hint):
+        to_si(text, dimension, "f")

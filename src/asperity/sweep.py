@@ -570,7 +570,7 @@ def _coordinate(values: list, unit: str | None = None):
     (ndarray, str)
         The coordinate (floats, else strings) and its CF unit (``"1"`` for text).
     """
-    from .units import DIMENSIONS, registry
+    from .units import DIMENSIONS, registry, to_si
 
     if all(is_bare(v) or isinstance(v, bool) for v in values):
         return np.array([float(v) for v in values]), cf_units(unit) if unit else "1"
@@ -585,7 +585,10 @@ def _coordinate(values: list, unit: str | None = None):
                       if u and ureg.Quantity(1, u).dimensionality == qs[0].dimensionality)
         if unit and ureg.Quantity(1, unit).dimensionality == ureg.Quantity(1, si).dimensionality:
             si = unit
-        numbers = np.array([float(v) if is_bare(v) else ureg.Quantity(v).to(si).magnitude
+        dimension = {"rad": "angle", "dimensionless": "dimensionless"}.get(si) or next(
+            d for d, u in DIMENSIONS.items()  # read as the cases read them (turns counted)
+            if u and ureg.Quantity(1, u).dimensionality == ureg.Quantity(1, si).dimensionality)
+        numbers = np.array([float(v) if is_bare(v) else to_si(v, dimension, "axis")
                             for v in values], dtype=float)
         return numbers, "1" if si == "dimensionless" else cf_units(si)
     except Exception:  # labels that are not quantities stay strings

@@ -2,12 +2,16 @@
 
 Everything inside asperity is SI. Case files may give a quantity as a plain number (taken as SI)
 or as a string with a unit that pint understands; :func:`to_si` converts once, checking that the
-dimension is the one the field needs.
+dimension is the one the field needs. Three of pint's readings are not what people write: it
+drops commas and multiplies numbers written side by side ("12,5 mm" is 125 mm), so a quantity
+must be one number with a decimal point; and its turns are 2 pi radians each ("1500 rpm" is
+157 Hz, "0.127 mm/rev" 0.0202 mm), so outside an angle a turn, revolution or cycle counts one.
 """
 
 from __future__ import annotations
 
 import math
+import re
 from functools import lru_cache
 
 from .errors import InputError
@@ -97,12 +101,50 @@ def is_bare(value) -> bool:
     return True
 
 
+#: (SI unit wanted, dimension given) -> what the given quantity probably is, and what to write.
+_MISTAKEN = {
+    ("Pa*s", "[length] ** 2 / [time]"): "this is a kinematic viscosity: the dynamic viscosity "
+                                        "is it times the density, 100 cSt x 850 kg/m^3 = "
+                                        "85 mPa s",
+    ("N", "[mass]"): "a mass: its weight is '15 kgf' or 15 kg x 9.81 m/s^2 = 147 N",
+    ("m/s", "1 / [time]"): "a rotational speed: the surface speed is it times the radius, "
+                           "1500 rpm on a 50 mm radius = 7.85 m/s",
+}
+
+#: Units that count whole turns. pint makes each 2 pi radians, so that "1500 rpm" is 157 Hz and a
+#: feed of "0.127 mm/revolution" 0.0202 mm; outside an angle they are counts.
+_TURNS = re.compile(r"\b(?:rev|revs|revolutions?|turns?|cycles?)\b")
+_PER_TURN = {"rpm": "1/min", "rps": "1/s"}
+
+#: The number that starts a quantity: digits with a decimal point, an optional exponent.
+_LEADING_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*")
+
+
+def _check_one_number(text: str, field: str) -> None:
+    """Refuse what pint would read as another number than the one written.
+
+    pint drops commas and multiplies numbers written side by side, so a decimal comma
+    (``"12,5 mm"``) is read as 125 mm, a thousands space (``"1 000 N"``) as 0 N and
+    ``"12, 5 mm"`` as 60 mm. A quantity is one number with a decimal point, then its unit,
+    which may start with ``1/`` (``"20 1/GPa"``).
+    """
+    match = _LEADING_NUMBER.match(text)
+    rest = text[match.end():] if match else text
+    if "," in text or (match and rest[:1].isdigit() and not re.match(r"1\s*/", rest)):
+        raise InputError(field, "one number with a decimal point (no comma or thousands "
+                         "separator), then its unit (e.g. '12.5 mm')", text)
+
+
 def _parse(text: str, si_unit: str, field: str) -> float:
     import pint
 
     ureg = registry()
+    _check_one_number(text, field)
+    read = text.strip()
+    if si_unit != "rad":  # turns are counts: "0.127 mm/rev" is 0.127 mm, "1500 rpm" 25 Hz
+        read = _TURNS.sub("1", re.sub(r"\b(rpm|rps)\b", lambda m: _PER_TURN[m[1]], read))
     try:
-        q = ureg.Quantity(text.strip())
+        q = ureg.Quantity(read)
     except Exception:  # pint's parser raises many kinds (even AssertionError) on odd text
         raise InputError(field, f"a number with a known unit (e.g. '1.0 {si_unit or '1'}')",
                          text) from None
@@ -113,7 +155,9 @@ def _parse(text: str, si_unit: str, field: str) -> float:
             raise InputError(field, "a number", text) from None
     want = ureg.Quantity(1, si_unit) if si_unit else ureg.Quantity(1)
     if q.dimensionality != want.dimensionality:
-        raise InputError(field, f"a quantity convertible to {si_unit or 'a pure number'}", text)
+        hint = _MISTAKEN.get((si_unit, str(q.dimensionality)))
+        raise InputError(field, f"a quantity convertible to {si_unit or 'a pure number'}"
+                         + (f" ({hint})" if hint else ""), text)
     try:
         return float(q.to(want.units).magnitude)
     except (pint.errors.PintError, TypeError, ValueError):
