@@ -63,11 +63,13 @@ def test_a_frequency_in_turns_counts_cycles(text, expected):
 @pytest.mark.parametrize("text, dimension, expected", [
     ("0.127 mm/rev", "length", 0.127e-3), ("0.127 mm/revolution", "length", 0.127e-3),
     ("0.005 in/rev", "length", 0.005 * IN), ("0.5 turn", "angle", math.pi),
+    ("5 mil", "length", 0.005 * IN),
     ("90 deg", "angle", math.pi / 2)])
 def test_a_feed_per_revolution_is_a_length_and_a_turn_is_still_an_angle(text, dimension,
                                                                          expected):
     """A turning feed written as machinists write it, "0.127 mm/revolution", was 0.0202 mm (pint
-    divides by 2 pi radians) and "mm/rev" an unknown unit; as an angle a turn stays 2 pi."""
+    divides by 2 pi radians) and "mm/rev" an unknown unit; as an angle a turn stays 2 pi. A
+    length of "5 mil" (0.005 in) was refused, pint's mil being an angle."""
     assert math.isclose(to_si(text, dimension, "feed"), expected, rel_tol=1e-12)
 
 

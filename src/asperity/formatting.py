@@ -113,8 +113,8 @@ _LABELS = {
 #: Relative size below which a value is round-off of zero (see :func:`summary_rows`).
 NOISE = 1e-9
 
-_IMPERIAL_WORDS = {"inch", "microinch", "foot", "yard", "mile", "pound", "kip", "thou", "ounce",
-                   "fahrenheit", "poundal", "slug"}
+_IMPERIAL_WORDS = {"inch", "microinch", "foot", "yard", "mile", "pound", "kip", "thou", "mil",
+                   "ounce", "fahrenheit", "poundal", "slug"}
 
 
 def format_number(value, digits: int = 4) -> str:

@@ -5,7 +5,8 @@ or as a string with a unit that pint understands; :func:`to_si` converts once, c
 dimension is the one the field needs. Three of pint's readings are not what people write: it
 drops commas and multiplies numbers written side by side ("12,5 mm" is 125 mm), so a quantity
 must be one number with a decimal point; and its turns are 2 pi radians each ("1500 rpm" is
-157 Hz, "0.127 mm/rev" 0.0202 mm), so outside an angle a turn, revolution or cycle counts one.
+157 Hz, "0.127 mm/rev" 0.0202 mm), so outside an angle a turn, revolution or cycle counts one;
+and outside an angle a mil is the engineer's thousandth of an inch, not pint's angular mil.
 """
 
 from __future__ import annotations
@@ -141,8 +142,9 @@ def _parse(text: str, si_unit: str, field: str) -> float:
     ureg = registry()
     _check_one_number(text, field)
     read = text.strip()
-    if si_unit != "rad":  # turns are counts: "0.127 mm/rev" is 0.127 mm, "1500 rpm" 25 Hz
+    if si_unit != "rad":  # turns are counts: "0.127 mm/rev" is 0.127 mm, "1500 rpm" 25 Hz;
         read = _TURNS.sub("1", re.sub(r"\b(rpm|rps)\b", lambda m: _PER_TURN[m[1]], read))
+        read = re.sub(r"\bmils?\b", "thou", read)  # and a mil is a thousandth of an inch
     try:
         q = ureg.Quantity(read)
     except Exception:  # pint's parser raises many kinds (even AssertionError) on odd text
