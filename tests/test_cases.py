@@ -81,6 +81,28 @@ def test_unknown_example_lists_the_valid_names():
         example_text("no-such-example")
 
 
+@pytest.mark.parametrize("name, meant", [("ball-on-disk-slow", "did you mean ball-on-disc-slow?"),
+                                         ("holmes-rough-cc", "did you mean holmes-rough-CC?")])
+def test_a_misspelt_example_is_answered_with_the_name_meant(name, meant):
+    """A near miss was answered with all 36 names, cut off in the terminal before the one meant;
+    a case-insensitive match is named alone."""
+    with pytest.raises(InputError, match=meant):
+        example_text(name)
+
+
+def test_a_folder_given_as_the_case_says_it_is_a_folder(tmp_path):
+    with pytest.raises(InputError, match="is a folder; give a .toml file in it"):
+        example_text(str(tmp_path))
+
+
+def test_a_case_file_saved_with_a_byte_order_mark_is_read(tmp_path):
+    """Windows editors save UTF-8 with a byte-order mark, which TOML refused at line 1, column 1
+    ("Invalid statement")."""
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + example_text("gear-dry-hertz").encode())
+    assert load_case(path).loading.load == pytest.approx(962.0)
+
+
 TOROID = """analysis = "ehl-steady"
 [body1]
 youngs_modulus = "210 GPa"

@@ -42,9 +42,13 @@ ANALYSES = {
 }
 
 def parse_toml(text: str, origin: str = "case") -> dict[str, Any]:
-    """Parse TOML text; a syntax error becomes an :class:`InputError` naming the line."""
+    """Parse TOML text; a syntax error becomes an :class:`InputError` naming the line.
+
+    A leading byte-order mark (Windows editors save UTF-8 with one) is not part of the text:
+    TOML refused it as an invalid statement at line 1.
+    """
     try:
-        return tomllib.loads(text)
+        return tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(origin, f"valid TOML ({exc})") from None
 

@@ -10,6 +10,7 @@ Data shipped with the examples (``data/``) is named in case files as ``builtin:N
 
 from __future__ import annotations
 
+import difflib
 import shutil
 from dataclasses import dataclass
 from importlib import resources
@@ -50,8 +51,19 @@ def _text(name: str, folder: str, field: str, expected: str) -> str:
     for path in _files(folder):
         if path.name == f"{name}.toml":
             return path.read_text(encoding="utf-8")
-    names = ", ".join(p.name.removesuffix(".toml") for p in _files(folder))
-    raise InputError(field, f"{expected}{names}", name)
+    names = [p.name.removesuffix(".toml") for p in _files(folder)]
+    listed = "asperity examples lists them"
+    if Path(name).is_dir():
+        raise InputError(field, "", problem=f"{name} is a folder; give a .toml file in it or "
+                                            f"the name of a built-in {field} ({listed})")
+    by_lower = {n.lower(): n for n in names}
+    close = ([name.lower()] if name.lower() in by_lower else
+             difflib.get_close_matches(name.lower(), list(by_lower), n=3, cutoff=0.75))
+    if close:
+        meant = " or ".join(by_lower[n] for n in close)
+        raise InputError(field, "", problem=f"no built-in {field} {name!r}; did you mean "
+                                            f"{meant}? ({listed})")
+    raise InputError(field, f"{expected}{', '.join(names)}", name)
 
 
 def list_examples() -> list[Example]:
