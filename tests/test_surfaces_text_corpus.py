@@ -51,7 +51,7 @@ TOPOGRAPHIES = {
 REFUSED = {
     "binary.dat": "expected a text file",
     "no_numbers.txt": "expected a block of numbers",
-    "scattered.xyz": "expected x, y, z points on a full rectangular grid",
+    "scattered.xyz": "expected x, y, z points on a rectangular grid",
     "uneven_x.csv": "expected uniformly spaced x",
     "ragged.csv": r"ragged\.csv:4: expected 2 columns like line 2",
 }

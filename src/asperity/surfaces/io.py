@@ -202,10 +202,10 @@ def _missing(z: np.ndarray, missing: str, where: str, notes: list):
     z, count = fill_missing(z)
     method = "linear interpolation" if z.ndim == 1 else "harmonic interpolation"
     if missing == "fill":
-        notes.append(f"filled {share} that the file marks as missing, by {method} from the "
+        notes.append(f"filled {share} missing in the file, by {method} from the "
                      "measured neighbours")
     else:
-        notes.append(f"masked {share} that the file marks as missing: left out of the height, "
+        notes.append(f"masked {share} missing in the file: left out of the height, "
                      f"material-ratio and volume parameters; filled by {method} only for the "
                      "filters, slopes and spectra")
     return z, count, lost

@@ -5,11 +5,14 @@ Rules, in order (documented for users in docs/surfaces.md):
 - Named columns: a column named like a position (``x``, ``lateral``, ``position``,
   ``distance``, ``horizontal``, ``length``, ``scan``) is x, one like ``y`` is y, and one named
   like a height (``z``, ``height``, ``raw``, ``profile``, ``data``, ``value``, ``depth``, ...)
-  is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export).
+  is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export): in any
+  order, on uniform steps within the printed precision, positions absent from the list
+  missing.
 - Unnamed columns: one = heights, two = x and z, three or more = a height matrix -- except
   three columns whose first is evenly spaced, increasing positions: a profile export (x and
-  two height channels) that would otherwise read as a 3-wide matrix, refused with how to name
-  its columns.
+  two height channels) that would otherwise read as a 3-wide matrix, and three columns that are
+  an x, y, z point list (their first two repeat values covering a grid), both refused with how
+  to name their columns.
 - A height matrix has one line per y, values along x (how instruments, Gwyddion and
   SurfaceTopography write images), except one written by asperity's ``write_surface`` (its
   first comment says ``asperity topography ... rows along x``), which has one line per x.
@@ -175,16 +178,73 @@ def _scale(header: dict, z_unit: tuple[float | None, str | None]):
     return 1.0, z_unit
 
 
-def _grid_from_points(x, y, z, where: str):
-    """Heights ``[ix, iy]`` from an XYZ point list that covers a full grid."""
-    xs, ix = np.unique(x, return_inverse=True)
-    ys, iy = np.unique(y, return_inverse=True)
-    if xs.size * ys.size != z.size or xs.size < 2 or ys.size < 2:
-        raise InputError(where, "x, y, z points on a full rectangular grid",
-                         f"{z.size} points over {xs.size} x and {ys.size} y values")
+def _lattice(values: np.ndarray, resolution: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """The uniform lattice that a point list's coordinates lie on, within their printed
+    ``resolution``: (the lattice's positions, each value's index on it); None when they do not
+    lie on one. Each gap between distinct values is a whole number of median gaps; the step is
+    the least-squares line through the values against those indices (so a coordinate printed
+    to 4 decimals at a 1/3 um pitch, and a lattice with whole rows absent, are both found)."""
+    distinct = np.unique(values)
+    if distinct.size < 2:
+        return None
+    steps = np.diff(distinct)
+    index = np.concatenate([[0], np.cumsum(np.rint(steps / np.median(steps)).astype(int))])
+    slope, intercept = np.polyfit(index, distinct, 1)
+    deviation = np.abs(distinct - (intercept + slope * index)).max()
+    if deviation > resolution * (1 + 1e-6) + 1e-9 * abs(slope):
+        return None
+    return intercept + slope * np.arange(index[-1] + 1), index[np.searchsorted(distinct, values)]
+
+
+def _grid_from_points(x, y, z, where: str, resolution=(0.0, 0.0)):
+    """Heights ``[ix, iy]`` from an XYZ point list: its points in any order on a uniform
+    lattice along x and y (within the printed ``resolution`` of each), each position once, at
+    least half of the lattice present; absent positions are missing (NaN).
+
+    Returns
+    -------
+    (xs, ys, grid, absent) : the lattice's positions along x and y (file units), the heights,
+    and the number of lattice positions absent from the list.
+    """
+    found = [_lattice(c, r) for c, r in ((x, resolution[0]), (y, resolution[1]))]
+    size = None if None in found else found[0][0].size * found[1][0].size
+    if size is None or min(f[0].size for f in found) < 2 or size > 2 * z.size:
+        counts = f"{np.unique(x).size} x and {np.unique(y).size} y values"
+        raise InputError(where, "x, y, z points on a rectangular grid (uniform steps along x "
+                         "and y within the printed precision; at least half of its positions "
+                         "present)", f"{z.size} points over {counts}")
+    (xs, ix), (ys, iy) = found
+    flat = ix * ys.size + iy
+    repeated = z.size - np.unique(flat).size
+    if repeated:
+        raise InputError(where, "x, y, z points with each (x, y) position once",
+                         f"{repeated} repeated positions")
     grid = np.full((xs.size, ys.size), np.nan)
     grid[ix, iy] = z
-    return xs, ys, grid
+    return xs, ys, grid, size - z.size
+
+
+def _point_grid(data: np.ndarray) -> bool:
+    """Whether three unnamed columns hold an x, y, z point list: their first two columns
+    repeat few values that together cover a grid, one point each -- which a height matrix
+    three points wide does not (its first two columns are heights, nearly all different)."""
+    xs, ys = np.unique(data[:, 0]).size, np.unique(data[:, 1]).size
+    pairs = np.unique(data[:, :2], axis=0).shape[0]
+    return min(xs, ys) >= 2 and pairs == data.shape[0] and xs * ys <= 2 * data.shape[0]
+
+
+def _unnamed_points(data: np.ndarray, where: str) -> None:
+    """Refuse three unnamed columns that are an x, y, z point list (:func:`_point_grid`): as a
+    height matrix they would read as a surface three points wide; as points they need units
+    the file does not give."""
+    if not _point_grid(data):
+        return
+    raise InputError(where, "named columns for an x, y, z point list: these 3 columns are "
+                     f"points ({np.unique(data[:, 0]).size} x by {np.unique(data[:, 1]).size} "
+                     "y values, one line per point), not a height matrix 3 points wide; name "
+                     "the columns in a line above the numbers with their units, e.g. "
+                     "'x_um y_um z_um' (pixel indices multiplied by the pixel size first)",
+                     f"{data.shape[0]} lines of 3 unnamed numbers")
 
 
 def _on_a_line(column: np.ndarray, resolution: float) -> bool:
@@ -213,6 +273,10 @@ def _positions_first(table: TextTable, where: str) -> None:
                      f"{first.size} lines of 3 numbers")
 
 
+def _absent_text(absent: int, size: int) -> str:
+    return f", {absent} of the {size} grid positions absent (missing)" if absent else ""
+
+
 def interpret(table: TextTable, where: str) -> Layout:
     """Decide what the columns of ``table`` are and what units they carry (module docstring)."""
     h = table.header
@@ -233,8 +297,10 @@ def interpret(table: TextTable, where: str) -> Layout:
         z_unit = _named_unit(names[iz], *z_unit)
         style = f"columns named {names[ix]!r} (x) and {names[iz]!r} (z)"
         if iy is not None:
-            x, y, z = _grid_from_points(x, data[:, iy], z, where)
-            style = f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
+            x, y, z, absent = _grid_from_points(
+                x, data[:, iy], z, where, (table.resolution[ix], table.resolution[iy]))
+            style = (f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
+                     + _absent_text(absent, z.size))
     elif ncol == 1:
         z = data[:, 0]
         z_unit = _named_unit(names[0], *z_unit) if names else z_unit
@@ -247,14 +313,16 @@ def interpret(table: TextTable, where: str) -> Layout:
             z_unit = _named_unit(names[1], *z_unit)
         style = "two columns, x and z" + (f" named {names[0]!r}, {names[1]!r}" if names else "")
     elif ncol == 3 and ("lateral units" in h or "lateral unit" in h):
-        x, y, z = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where)
-        style = "x, y, z points (Gwyddion XYZ export)"
+        x, y, z, absent = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where,
+                                            table.resolution[:2])
+        style = "x, y, z points (Gwyddion XYZ export)" + _absent_text(absent, z.size)
     elif "asperity topography" in h:
         z = data
         style = "height matrix, one line per x (written by asperity)"
     else:
         if ncol == 3:
             _positions_first(table, where)
+            _unnamed_points(data, where)
         z = data.T
         style = "height matrix, one line per y"
     sentinel = _quantity(_first(h, _MISSING_KEYS))

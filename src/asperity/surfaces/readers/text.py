@@ -7,9 +7,12 @@ lines, a line of column names) followed by a block of numbers. The reader
    (a decimal comma is accepted when the separator is not a comma), dropping a trailing empty
    field (``0.1,0.2,``);
 2. takes as the data block the last run of lines whose fields are all numbers or missing-value
-   markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, ...); every
-   line before it is header; after it only lines of words (a footer) may follow -- a line
-   mixing numbers and words is an error naming the line;
+   markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, Zygo's
+   two-word ``No Data``, ...); every line before it is header; after it only lines of words (a
+   footer) may follow -- a line mixing numbers and words is an error naming the line, and so
+   is the line just above the block when it starts with a number and has as many fields as a
+   data line or more (a data line with a marker the reader does not know, which would
+   otherwise cut the data in two and keep only the part after it);
 3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
    the last header line with one name per column.
 
@@ -33,7 +36,9 @@ __all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "read
 #: Field values that instruments write for a point they could not measure (lower case).
 MISSING_TOKENS = frozenset({"", "nan", "-nan", "+nan", "bad", "nd", "n/a", "na", "***", "*",
                             "-", "--", "undefined", "invalid", "void", "inf", "-inf", "+inf",
-                            "infinity", "-infinity", "null", "none"})
+                            "infinity", "-infinity", "null", "none", "nodata", "no data"})
+#: A missing-value marker of two words (Zygo's XYZ export), read as one field.
+_TWO_WORD_MISSING = re.compile(r"\bno\s+data\b", re.IGNORECASE)
 _COMMENT = re.compile(r"^\s*(#|%|//|;|!)\s*")
 _KEY_VALUE = re.compile(r"^([^=:：]{1,60}?)\s*[=:：]\s*(.*)$")
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
@@ -76,7 +81,7 @@ def _split(text: str) -> list[str]:
     elif "," in text:
         fields = text.split(",")
     else:
-        fields = text.split()
+        fields = _TWO_WORD_MISSING.sub("nodata", text).split()
     fields = [f.strip() for f in fields]
     while fields and not fields[-1]:
         fields.pop()
@@ -161,6 +166,44 @@ def _decimal_commas(names: list[str], line: str, rows: list[list[str]]) -> bool:
                        for k in range(0, len(row), 2)) for row in rows)
 
 
+def _refuse_cut_block(path: Path, lines: list[str], parsed: list, start: int) -> None:
+    """Refuse a file whose data block is cut by a data line with an unknown word.
+
+    The line just above the block (``start``), blank lines skipped, is taken for a data line
+    -- a point the instrument marked with a word the reader does not know (``12 7 NoValue``)
+    -- when it is not a comment, its first field is a number, it has the block's number of
+    fields or one more (a marker of two words) and a word among them; for a block of fewer than
+    three columns also only when its first number continues the block's first column by one
+    step (so that a header line ``8000 points`` above x, z columns is not one). Taking the block
+    after such a line would silently drop every line before it (a Zygo XYZ export's
+    ``No Data`` points once read as the 642 lines after the last one).
+    """
+    width = len(parsed[start][0])
+    above = start - 1
+    while above >= 0 and not lines[above].strip():
+        above -= 1
+    if above < 0 or _COMMENT.match(lines[above]):
+        return
+    text = lines[above].strip()
+    decimal_comma = ("\t" in text or ";" in text) and "," in text
+    fields = _split(text)
+    values = [_value(f, decimal_comma) for f in fields]
+    if (len(fields) not in (width, width + 1) or values[0] is None or np.isnan(values[0])
+            or all(v is not None for v in values)):
+        return
+    if width < 3:
+        following = parsed[start + 1] if start + 1 < len(parsed) else None
+        if following is None:
+            return
+        first, second = parsed[start][0][0], following[0][0]
+        if not abs(values[0] - (2 * first - second)) <= 0.5 * abs(second - first):
+            return
+    word = next(f for f, v in zip(fields, values, strict=True) if v is None)
+    raise InputError(f"{path}:{above + 1}", "numbers or a missing-value marker (NaN, BAD, "
+                     "***, No Data, ...) in each field of a data line; the lines from "
+                     f"{start + 1} on would be read alone", word)
+
+
 def read_table(path: Path) -> TextTable:
     """Read a text export's header and data block (see the module docstring).
 
@@ -168,7 +211,8 @@ def read_table(path: Path) -> TextTable:
     ------
     InputError
         No data block, a data line with another number of columns than the first (naming the
-        file and line), words after the data block, a binary file.
+        file and line), words after the data block or in a data line just above it
+        (:func:`_refuse_cut_block`), a binary file.
     """
     lines = _lines(path)
     parsed = [None if _COMMENT.match(line) else _row(line) for line in lines]
@@ -181,6 +225,7 @@ def read_table(path: Path) -> TextTable:
         start -= 1
     while parsed[start] is None:  # blank lines at the top of the block
         start += 1
+    _refuse_cut_block(path, lines, parsed, start)
     width = len(parsed[start][0])
     rows, tokens = [], []
     for i in range(start, len(lines)):
