@@ -39,6 +39,7 @@ PROFILES = {
     "inch_microinch.csv": (0.5e-6, 2.54e-12),
     "plain_metres.txt": (0.5e-6, 1e-12),
     "nodata_value.txt": (0.5e-6, 1e-12),
+    "unit_in_key.txt": (0.5e-6, 1e-12),
 }
 #: file -> height tolerance (m)
 TOPOGRAPHIES = {

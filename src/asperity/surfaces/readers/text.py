@@ -30,6 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from ...errors import InputError
+from .units import length_factor
 
 __all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "read_table"]
 
@@ -105,22 +106,37 @@ def _resolution(token: str) -> float:
     return 10.0 ** (int(exponent or 0) - decimals)
 
 
+_UNIT_IN_KEY = re.compile(r"^(.*?)\s*[\[(]\s*([^\])]+?)\s*[\])]$")
+
+
+def _pair(key: str, value: str) -> tuple[str, str]:
+    """A header pair with a length unit written in the key moved to its numbers:
+    ``X spacing (um), 0.5`` -> ``("x spacing", "0.5 um")``, as ``X spacing: 0.5 um`` reads."""
+    key, value = normalise_key(key), value.strip()
+    match = _UNIT_IN_KEY.match(key)
+    if (match is not None and length_factor(match.group(2)) is not None
+            and all(_NUMBER.match(v) for v in value.split())):
+        return match.group(1), f"{value} {match.group(2)}"
+    return key, value
+
+
 def header_pairs(lines: list[str]) -> dict[str, str]:
     """``key: value``, ``key = value`` or ``key,value[,unit]`` header lines as a dict.
 
-    Keys are normalised (:func:`normalise_key`), values are the fields joined by spaces; the
-    first occurrence of a key wins; other lines are ignored.
+    Keys are normalised (:func:`normalise_key`), values are the fields joined by spaces; a
+    length unit in brackets at the end of a key whose value is numbers goes with the numbers
+    (:func:`_pair`); the first occurrence of a key wins; other lines are ignored.
     """
     pairs = {}
     for line in lines:
         text = _COMMENT.sub("", line).strip()
         match = _KEY_VALUE.match(text)
         if match is not None and match.group(2).strip():
-            pairs.setdefault(normalise_key(match.group(1)), match.group(2).strip())
+            pairs.setdefault(*_pair(match.group(1), match.group(2)))
             continue
         fields = _split(text)
         if len(fields) >= 2 and not _NUMBER.match(fields[0]) and fields[1]:
-            pairs.setdefault(normalise_key(fields[0]), " ".join(fields[1:]))
+            pairs.setdefault(*_pair(fields[0], " ".join(fields[1:])))
     return pairs
 
 
