@@ -108,6 +108,9 @@ _LABELS = {
     "contact_time_fraction": "contact time",
     "friction_coefficient": "friction coefficient",
     "load_capacity": "gross-slip load / applied load",
+    "kinematic_rt": "kinematic Rt, parabola f^2/(8 r) (Seireg eq. 4.1)",
+    "kinematic_ra": "kinematic Ra, parabola f^2/(18 sqrt(3) r)",
+    "kinematic_rt_arc": "kinematic Rt of the nose arcs, r - sqrt(r^2 - f^2/4)",
 }
 
 #: Relative size below which a value is round-off of zero (see :func:`summary_rows`).

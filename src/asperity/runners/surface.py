@@ -424,8 +424,9 @@ def _parabola_warnings(feed: float, nose_radius: float) -> list[str]:
     return [f"kinematic Rt: eq. (4.1)'s f^2/(8 r) = {_um(parabola)} is {100 * error:.3g} % below "
             f"the arcs' height r - sqrt(r^2 - f^2/4) = {_um(exact)} at f = {feed * 1e3:.4g} mm, "
             f"r = {nose_radius * 1e3:.4g} mm (limit {100 * PARABOLA_TOLERANCE:g} %, up to f = "
-            f"{parabola_feed_limit(nose_radius) * 1e3:.3g} mm); read kinematic_rt_arc_m (the "
-            "profile's Rt), not kinematic_rt_m or kinematic_ra_m, or use a smaller feed"]
+            f"{parabola_feed_limit(nose_radius) * 1e3:.3g} mm); read 'kinematic Rt of the "
+            "nose arcs' (kinematic_rt_arc_m, the profile's Rt), not the parabola's "
+            "(kinematic_rt_m, kinematic_ra_m), or use a smaller feed"]
 
 
 def _reference_ra(spec, surfaces, evaluated) -> list:
