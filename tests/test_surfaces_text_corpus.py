@@ -40,6 +40,7 @@ PROFILES = {
     "plain_metres.txt": (0.5e-6, 1e-12),
     "nodata_value.txt": (0.5e-6, 1e-12),
     "unit_in_key.txt": (0.5e-6, 1e-12),
+    "quoted_csv.csv": (0.5e-6, 1e-12),
 }
 #: file -> height tolerance (m)
 TOPOGRAPHIES = {

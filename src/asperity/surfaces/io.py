@@ -79,7 +79,11 @@ def unit_name(factor: float) -> str:
 
 def _spacings(spacing, ndim: int, source: str) -> tuple[float, ...]:
     if spacing is None:
-        raise InputError("spacing", f"a grid spacing (m) for {source}, which has no coordinates")
+        raise InputError("spacing", f"a grid spacing for {source}, which has no coordinates "
+                                    "and no spacing or size in a header the reader knows "
+                                    "(Spacing, Pixel size, Scale X, Width, ...): give it with "
+                                    "its unit, --spacing \"0.5 um\" (case file: spacing = "
+                                    "\"0.5 um\")")
     s = np.atleast_1d(np.asarray(spacing, dtype=float))
     if s.size == 1:
         s = np.repeat(s, ndim)

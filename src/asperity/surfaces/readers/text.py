@@ -5,7 +5,8 @@ lines, a line of column names) followed by a block of numbers. The reader
 
 1. splits each line on tabs or semicolons if it has any, else on commas, else on white space
    (a decimal comma is accepted when the separator is not a comma), dropping a trailing empty
-   field (``0.1,0.2,``);
+   field (``0.1,0.2,``) and the double quotes of spreadsheet-style CSV (``"X Unit","um"``; a
+   comma inside quotes is part of the field);
 2. takes as the data block the last run of lines whose fields are all numbers or missing-value
    markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, Zygo's
    two-word ``No Data``, ...); every line before it is header; after it only lines of words (a
@@ -23,6 +24,7 @@ pairs and the printed resolution of each column (for rounded coordinates). Inter
 
 from __future__ import annotations
 
+import csv
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -76,14 +78,20 @@ def normalise_key(key: str) -> str:
     return re.sub(r"[\s_\-]+", " ", key.strip().lower()).strip()
 
 
+def _unquoted(field: str) -> str:
+    """A field without the double quotes a spreadsheet-style CSV puts round it."""
+    field = field.strip()
+    return field[1:-1].strip() if len(field) > 1 and field[0] == field[-1] == '"' else field
+
+
 def _split(text: str) -> list[str]:
     if "\t" in text or ";" in text:
         fields = re.split(r"[\t;]", text)
     elif "," in text:
-        fields = text.split(",")
+        fields = next(csv.reader([text], skipinitialspace=True))
     else:
         fields = _TWO_WORD_MISSING.sub("nodata", text).split()
-    fields = [f.strip() for f in fields]
+    fields = [_unquoted(f) for f in fields]
     while fields and not fields[-1]:
         fields.pop()
     return fields
