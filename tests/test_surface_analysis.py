@@ -169,6 +169,11 @@ def test_cutoff_removes_the_long_wave_by_the_gaussian_transmission(tmp_path):
     assert out.summary["rq_m"] == pytest.approx(rq, rel=1e-9)
     assert out.summary["pq_m"] == pytest.approx(math.hypot(a_long, a_short) / math.sqrt(2),
                                                 rel=1e-9)
+    # Rp here is the highest peak of the whole evaluated R, ISO Rp the mean of the sampling
+    # lengths' highest; the notes say which (they read as the same "Rp" before)
+    assert out.summary["rp_m"] >= out.summary["iso_rp_m"]
+    assert any("not the ISO 4288 means over sampling lengths" in n and "iso_*" in n
+               for n in out.notes)
 
 
 def test_topography_gives_areal_parameters():

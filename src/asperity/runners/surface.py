@@ -552,9 +552,15 @@ def run(case, progress=None) -> Outcome:
                      "keys are of the ISO roughness profile (cut-off by ISO 4288) or of the "
                      "S-F surface.")
     if case.evaluation.cutoff is not None:
+        per = ("averaged over sampling lengths of evaluation.sampling_length" if
+               case.evaluation.sampling_length is not None else "over the profile (less half "
+               "a cut-off at each end of a non-periodic one; Rz: the mean "
+               "peak-to-valley of five parts), not the ISO 4288 means over sampling lengths of "
+               "the cut-off that the iso_* keys hold (Rp here: the highest peak of all; ISO "
+               "Rp: the mean of each sampling length's highest)")
         notes.append("Parameters are those of the roughness profile (Gaussian filter, cut-off "
-                     f"{case.evaluation.cutoff:.4g} m); pa/pq/pt are of the primary profile and "
-                     "wa/wq/wt of the waviness.")
+                     f"{case.evaluation.cutoff:.4g} m), {per}; pa/pq/pt are of the primary "
+                     "profile and wa/wq/wt of the waviness.")
     dataset = _dataset(case, surfaces, evaluated, along)
     figures = _figures(case, surfaces, evaluated, turned, window)
     warnings = list(parabola)
