@@ -264,9 +264,20 @@ def _extent(surface) -> float:
     return max(n * h for n, h in zip(surface.shape, surface.spacing, strict=True))
 
 
-def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list):
+#: What to give when a text file's known x unit makes it implausibly long, and when an
+#: instrument file's own pixel size does (the unit of its numbers is the format's).
+_CHECK_X_UNIT = ("check that unit (um written under an 'X (mm)' header?) and give the right "
+                 "one: --x-unit um (case file: x_unit = \"um\") or the right spacing")
+_CHECK_PIXEL = ("the pixel size written in the file is likely in another unit than its "
+                "format's (an exporter that wrote um where metres belong): give the right one, "
+                "--spacing \"0.5 um\" (case file: spacing = \"0.5 um\"), which replaces it")
+
+
+def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
+               check: str = _CHECK_X_UNIT):
     """Warn when heights read without a unit are implausible in metres, or when the surface is
-    longer than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where)."""
+    longer than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where;
+    ``check`` what to do then)."""
     if not known[1] and np.ptp(surface.z) > PLAUSIBLE_HEIGHT:
         warnings.append(f"heights: peak-to-valley {np.ptp(surface.z):.4g} m read as metres (the "
                         f"file gives no unit) exceeds {PLAUSIBLE_HEIGHT * 1e3:g} mm; give the "
@@ -280,9 +291,7 @@ def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list):
                         "file: x_unit = \"um\")")
     else:
         warnings.append(f"x: length {length:.4g} m exceeds {PLAUSIBLE_LENGTH:g} m, longer than "
-                        f"a profilometer traces ({units}): check that unit (um written under "
-                        "an 'X (mm)' header?) and give the right one: --x-unit um (case file: "
-                        "x_unit = \"um\") or the right spacing")
+                        f"a profilometer traces ({units}): {check}")
 
 
 def _unit_text(what: str, given: float | None, found: float | None, source: str | None) -> str:
@@ -407,7 +416,8 @@ def _read_npz(path: Path, spacing, missing: str) -> Reading:
                    missing == "mask", "x and heights in m, as .npz files hold them", 1.0)
 
 
-def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) -> Reading:
+def _read_instrument(path: Path, spacing, units: _Units, missing: str,
+                     resample: bool) -> Reading:
     try:
         import SurfaceTopography
     except ImportError:
@@ -415,6 +425,7 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
                                     "need the optional SurfaceTopography reader: pip install "
                                     "'asperity[instruments]'") from None
     notes: list[str] = []
+    warnings: list[str] = []
     try:
         topo = SurfaceTopography.read_topography(str(path))
     except Exception as err:  # any failure of the third-party reader
@@ -429,7 +440,8 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
         factor = height_factor = (
             SurfaceTopography.Support.UnitConversion.get_unit_conversion_factor(topo.unit, "m"))
         if units.x is not None or units.z is not None:
-            notes.append(f"the file's unit ({topo.unit}) is used; the unit given is ignored")
+            notes.append(f"the file's unit ({topo.unit}) is used; the unit given is ignored "
+                         "(a spacing given replaces the file's pixel size)")
     heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * height_factor
     heights, filled, lost = _missing(heights, missing, str(path), notes)
     if not topo.is_uniform:
@@ -440,13 +452,19 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
         grid, heights = _resampled(x, heights, notes)
         lost = None if lost is None else _mask_on(lost, x, grid)
         surface = Profile(grid, heights)
+        _ignored_spacing(spacing, surface, warnings)
     else:
         h = tuple(np.atleast_1d(topo.pixel_size) * factor)
+        if spacing is not None:
+            _replaced_spacing(spacing, h, warnings)
+            h = tuple(np.broadcast_to(np.atleast_1d(np.asarray(spacing, float)), len(h)))
         surface = _from_heights(heights, h, str(path), periodic=bool(topo.is_periodic))
     described = (f"x and heights in {topo.unit} from the file" if getattr(topo, "unit", None)
                  else f"x in {unit_name(factor)}, heights in {unit_name(height_factor)} as given")
-    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes), (), filled,
-                   lost, missing == "mask", described, height_factor)
+    if spacing is None:
+        _plausible(surface, (True, True), described, warnings, _CHECK_PIXEL)
+    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes),
+                   tuple(warnings), filled, lost, missing == "mask", described, height_factor)
 
 
 def _check_coarse(spacing) -> None:
@@ -474,11 +492,13 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     ----------
     path : str or Path
     spacing : float or (float, float), optional
-        Grid spacing (m) for files without coordinates; replaces a spacing from the header. At
-        most :data:`MAX_SPACING`.
+        Grid spacing (m) for files without coordinates; replaces a spacing from the header or
+        an instrument file's pixel size (with a warning when they differ). At most
+        :data:`MAX_SPACING`.
     unit, x_unit, z_unit : str, optional
         Length unit of the file's numbers (``"um"``): of both, of the coordinates, of the
-        heights. They replace units found in the file (with a note).
+        heights. They replace units found in a text file (with a note); an instrument
+        file keeps its format's unit (with a note; ``spacing`` replaces its pixel size).
     missing : {"refuse", "fill", "mask"}
         What to do with missing points: refuse the file (naming how many); fill them by
         linear (profile) or harmonic (topography) interpolation
@@ -525,7 +545,7 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         _plausible(surface, (True, units.z is not None), described, warnings)
         return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled,
                        lost, missing == "mask", described, units.z)
-    return _read_instrument(path, units, missing, resample)
+    return _read_instrument(path, spacing, units, missing, resample)
 
 
 def read_surface(path, spacing=None, **options):
