@@ -145,3 +145,15 @@ def test_decreasing_x_is_turned_round_with_its_heights(tmp_path):
     p = read_measured(tmp_path / "reversed.csv").surface
     np.testing.assert_allclose(p.z, f(np.arange(64) * 0.5e-6), atol=1e-11)
     assert p.x[0] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_pixel_size_of_two_numbers_gives_both_spacings(tmp_path):
+    # 'Pixel size: 0.5 x 0.8 um' was read as 0.5 x 0.5 um (the second number dropped)
+    i, j = np.arange(64), np.arange(8)
+    z = f(i * 0.5e-6)[:, None] + g(j * 0.8e-6)[None, :]
+    path = tmp_path / "pixels.txt"
+    path.write_text("# X-Unit: um\n# Z-Unit: nm\n# Pixel size: 0.5 x 0.8 um\n"
+                    + "\n".join(" ".join(f"{v * 1e9:.3f}" for v in row) for row in z.T) + "\n")
+    t = read_measured(path).surface
+    assert t.spacing == pytest.approx((0.5e-6, 0.8e-6), rel=1e-12)
+    np.testing.assert_allclose(t.z, z, rtol=0, atol=1e-12)

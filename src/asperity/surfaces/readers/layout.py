@@ -59,6 +59,8 @@ _HEIGHT_KEYS = ("y length", "y size", "image height", "y range")
 _MISSING_KEYS = ("no data value", "nodata", "no data", "invalid value", "undefined value",
                  "missing value", "bad value", "void value", "nodata value")
 _QUANTITY = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+#: What may stand between two numbers of one header value (``0.5 x 0.8 um``), before a number.
+_BETWEEN = re.compile(r"^\s*(?:[x×*,;]|by)\s*(?=[+-]?\.?\d)", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -122,7 +124,8 @@ def _named_unit(name: str, factor: float | None, source: str | None):
 
 
 def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
-    """Numbers and the unit's factor of ``"0.5 um"``, ``"0.333 um/pt"``, ``"1e-6 2e-6"``."""
+    """Numbers and the unit's factor of ``"0.5 um"``, ``"0.333 um/pt"``, ``"1e-6 2e-6"``,
+    ``"0.5 x 0.8 um"`` (numbers also between ``x``, ``×``, ``*``, ``,``, ``;`` or ``by``)."""
     if text is None:
         return None
     numbers = []
@@ -132,7 +135,7 @@ def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
         if match is None:
             break
         numbers.append(float(match.group(1)))
-        rest = match.group(2)
+        rest = _BETWEEN.sub("", match.group(2), count=1)
     if not numbers:
         return None
     unit = rest.split("/")[0].strip().strip("[]()")
