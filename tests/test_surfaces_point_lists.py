@@ -125,3 +125,17 @@ def test_three_unnamed_columns_of_points_are_refused(tmp_path):
     path.write_text("\n".join(lines) + "\n")
     with pytest.raises(InputError, match=r"these 3 columns are points \(30 x by 20 y values"):
         read_measured(path, spacing=0.5e-6)
+
+
+@pytest.mark.parametrize("along", ["x", "y"])
+def test_a_line_profile_exported_as_points_is_a_profile(tmp_path, along):
+    # a line scan written as x, y, z with y (or x) the same on every line was refused as
+    # "2000 points over 2000 x and 1 y values"
+    s = np.arange(200) * 0.5e-6
+    rows = [(a, 12.5e-6, h(a, 0.0)) if along == "x" else (3e-3, a, h(a, 0.0)) for a in s]
+    head = "X(um),Y(um),Z(nm)" if along == "x" else "X(mm),Y(um),Z(nm)"  # x's unit not y's
+    reading = read_measured(write(tmp_path / "line.csv", rows, head, fmt="{:.3f},{:.3f},{}"))
+    p = reading.surface
+    assert p.z.ndim == 1 and p.spacing == pytest.approx(0.5e-6, rel=1e-9)
+    np.testing.assert_allclose(p.z, h(s, 0.0), rtol=0, atol=1e-12)
+    assert f"a profile along '{along.upper()}(um)'" in reading.style

@@ -276,6 +276,17 @@ def _positions_first(table: TextTable, where: str) -> None:
                      f"{first.size} lines of 3 numbers")
 
 
+def _line_along(x: np.ndarray, y: np.ndarray, x_name: str, y_name: str):
+    """For an x, y, z export of a line profile (one coordinate the same on every line): the
+    column it runs along (0: x, 1: y) and a description; None for a map."""
+    for along, (moving, fixed, name, other) in enumerate(((x, y, x_name, y_name),
+                                                         (y, x, y_name, x_name))):
+        if np.unique(fixed).size == 1 and np.unique(moving).size > 1:
+            return along, (f"a profile along {name!r} ({other!r} the same, {fixed[0]:g}, on "
+                           "every line)")
+    return None
+
+
 def _absent_text(absent: int, size: int) -> str:
     return f", {absent} of the {size} grid positions absent (missing)" if absent else ""
 
@@ -294,12 +305,18 @@ def interpret(table: TextTable, where: str) -> Layout:
     resolution = 0.0
     ncol = data.shape[1]
     if names is not None and ix is not None and iz is not None:
+        line = None if iy is None else _line_along(data[:, ix], data[:, iy], names[ix],
+                                                  names[iy])
+        if line is not None:  # a line profile exported as x, y, z: the other coordinate fixed
+            ix = (ix, iy)[line[0]]
         x, z = data[:, ix], data[:, iz]
         resolution = float(table.resolution[ix])
         x_unit = _named_unit(names[ix], *x_unit)
         z_unit = _named_unit(names[iz], *z_unit)
         style = f"columns named {names[ix]!r} (x) and {names[iz]!r} (z)"
-        if iy is not None:
+        if line is not None:
+            style = f"{line[1]}, heights {names[iz]!r}"
+        elif iy is not None:
             x, y, z, absent = _grid_from_points(
                 x, data[:, iy], z, where, (table.resolution[ix], table.resolution[iy]))
             style = (f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
