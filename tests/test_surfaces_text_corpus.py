@@ -137,6 +137,8 @@ def test_non_uniform_x_resampled_on_request():
 def test_bad_unit_names_the_field():
     with pytest.raises(InputError, match="z_unit: expected a length unit"):
         read_measured(DATA / "plain_metres.txt", z_unit="furlongs per fortnight")
+    with pytest.raises(InputError, match="unit: expected a length unit"):
+        read_measured(DATA / "plain_metres.txt", unit="px")  # pint's px: 1/96 inch
 
 
 def test_decreasing_x_is_turned_round_with_its_heights(tmp_path):
