@@ -82,3 +82,10 @@ def test_pixel_size_in_the_wrong_unit_warns_and_spacing_replaces_it(tmp_path):
     assert fixed.surface.spacing == pytest.approx((DX, DY), rel=1e-12)
     assert not any("exceeds" in w for w in fixed.warnings)
     assert any("replaces the header's" in w for w in fixed.warnings)
+
+
+def test_a_unit_given_for_an_x3p_is_ignored_with_a_warning(tmp_path):
+    heights, invalid = write_x3p(tmp_path / "map.x3p")
+    reading = read_measured(tmp_path / "map.x3p", z_unit="nm", missing="fill")
+    np.testing.assert_allclose(reading.surface.z[~invalid], heights[~invalid], atol=1e-18)
+    assert any(w.startswith("units: the file's own unit (m") for w in reading.warnings)

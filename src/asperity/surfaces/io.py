@@ -440,8 +440,10 @@ def _read_instrument(path: Path, spacing, units: _Units, missing: str,
         factor = height_factor = (
             SurfaceTopography.Support.UnitConversion.get_unit_conversion_factor(topo.unit, "m"))
         if units.x is not None or units.z is not None:
-            notes.append(f"the file's unit ({topo.unit}) is used; the unit given is ignored "
-                         "(a spacing given replaces the file's pixel size)")
+            warnings.append(f"units: the file's own unit ({topo.unit}, of its format) is "
+                            "used and the unit given is ignored: leave unit, x_unit and z_unit "
+                            "out for this file; a wrong pixel size is replaced by giving the "
+                            "spacing (--spacing; case file: spacing)")
     heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * height_factor
     heights, filled, lost = _missing(heights, missing, str(path), notes)
     if not topo.is_uniform:
@@ -498,7 +500,7 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     unit, x_unit, z_unit : str, optional
         Length unit of the file's numbers (``"um"``): of both, of the coordinates, of the
         heights. They replace units found in a text file (with a note); an instrument
-        file keeps its format's unit (with a note; ``spacing`` replaces its pixel size).
+        file keeps its format's unit (with a warning; ``spacing`` replaces its pixel size).
     missing : {"refuse", "fill", "mask"}
         What to do with missing points: refuse the file (naming how many); fill them by
         linear (profile) or harmonic (topography) interpolation
