@@ -4,7 +4,7 @@ the P/W/R profile families and the material ratio curve with its equivalent stra
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.ticker import LogLocator, NullFormatter
+from matplotlib.ticker import LogFormatterSciNotation, LogLocator, NullFormatter
 
 from ..errors import InputError
 from ..surfaces.machining import TurnedSurface, roughness_along
@@ -70,7 +70,9 @@ def _log_q_axis(ax, q) -> None:
     q = np.asarray(q)
     span = np.log10(q[q > 0].max() / q[q > 0].min())
     if span < 2:
-        ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+        ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0), numticks=12))
+        ax.xaxis.set_major_formatter(LogFormatterSciNotation(
+            labelOnlyBase=False, minor_thresholds=(np.inf, np.inf)))  # label every major
     ax.xaxis.set_minor_formatter(NullFormatter())
 
 
