@@ -88,7 +88,8 @@ def _split(text: str) -> list[str]:
     if "\t" in text or ";" in text:
         fields = re.split(r"[\t;]", text)
     elif "," in text:
-        fields = next(csv.reader([text], skipinitialspace=True))
+        fields = next(csv.reader([text], skipinitialspace=True)) if '"' in text else \
+            text.split(",")
     else:
         fields = _TWO_WORD_MISSING.sub("nodata", text).split()
     fields = [_unquoted(f) for f in fields]
