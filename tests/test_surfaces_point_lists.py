@@ -80,6 +80,11 @@ def test_a_repeated_position_is_refused(tmp_path):
     rows[5] = rows[6]
     with pytest.raises(InputError, match="each \\(x, y\\) position once, got '1 repeated"):
         read_measured(write(tmp_path / "twice.csv", rows))
+    rows = [list(r) for r in points()]
+    rows[7][0] = np.nan
+    path = write(tmp_path / "nox.csv", rows, fmt="{},{:.4f},{}")
+    with pytest.raises(InputError, match="an x and a y position on every line.*got '1 lines"):
+        read_measured(path, missing="fill")
 
 
 def test_no_data_markers_are_missing_points(tmp_path):

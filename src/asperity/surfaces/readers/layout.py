@@ -209,6 +209,10 @@ def _grid_from_points(x, y, z, where: str, resolution=(0.0, 0.0)):
     (xs, ys, grid, absent) : the lattice's positions along x and y (file units), the heights,
     and the number of lattice positions absent from the list.
     """
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
+        raise InputError(where, "an x and a y position on every line of an x, y, z point list "
+                         "(a missing marker is for heights only)",
+                         f"{int(np.sum(~np.isfinite(x) | ~np.isfinite(y)))} lines without one")
     found = [_lattice(c, r) for c, r in ((x, resolution[0]), (y, resolution[1]))]
     size = None if None in found else found[0][0].size * found[1][0].size
     if size is None or min(f[0].size for f in found) < 2 or size > 2 * z.size:
