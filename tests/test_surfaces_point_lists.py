@@ -144,3 +144,16 @@ def test_a_line_profile_exported_as_points_is_a_profile(tmp_path, along):
     assert p.z.ndim == 1 and p.spacing == pytest.approx(0.5e-6, rel=1e-9)
     np.testing.assert_allclose(p.z, h(s, 0.0), rtol=0, atol=1e-12)
     assert f"a profile along '{along.upper()}(um)'" in reading.style
+
+
+def test_named_pixel_indices_are_not_told_to_give_a_unit(tmp_path):
+    # "X Y Z" columns of pixel indices read as a 30 m field: the warning said --x-unit um,
+    # which would make them 1 um pixels whatever the pixel size
+    i, j = np.meshgrid(np.arange(NX), np.arange(NY), indexing="ij")
+    lines = ["X Y Z"] + [f"{a} {b} {h(a * DX, b * DY) * 1e6:.6f}"
+                         for a, b in zip(i.ravel(), j.ravel(), strict=True)]
+    path = tmp_path / "indices.xyz"
+    path.write_text("\n".join(lines) + "\n")
+    warnings = read_measured(path).warnings
+    assert any("pixel indices?" in w and "x_um y_um z_um" in w for w in warnings)
+    assert not any("--x-unit um" in w for w in warnings)

@@ -273,6 +273,13 @@ _CHECK_PIXEL = ("the pixel size written in the file is likely in another unit th
                 "--spacing \"0.5 um\" (case file: spacing = \"0.5 um\"), which replaces it")
 
 
+def _pixel_indices(surface) -> bool:
+    """Whether a surface's positions are pixel indices: whole numbers a step of 1 apart."""
+    coords = [surface.x] if isinstance(surface, Profile) else [surface.x, surface.y]
+    return all(np.allclose(c, np.round(c[0]) + np.arange(c.size), rtol=0, atol=1e-9)
+               for c in coords)
+
+
 def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
                check: str = _CHECK_X_UNIT):
     """Warn when heights read without a unit are implausible in metres, or when the surface is
@@ -285,7 +292,13 @@ def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
     length = _extent(surface)
     if length <= PLAUSIBLE_LENGTH:
         return
-    if not known[0]:
+    if not known[0] and _pixel_indices(surface):
+        warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit): its "
+                        "positions are whole steps of 1 from a whole number (pixel indices?), "
+                        "which no unit turns into lengths: write the positions as lengths "
+                        "(indices times the pixel size) with their unit in the column names, "
+                        "e.g. 'x_um y_um z_um'")
+    elif not known[0]:
         warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit) "
                         f"exceeds {PLAUSIBLE_LENGTH:g} m; give the unit: --x-unit um (case "
                         "file: x_unit = \"um\")")
