@@ -169,6 +169,11 @@ def test_cutoff_removes_the_long_wave_by_the_gaussian_transmission(tmp_path):
     assert out.summary["rq_m"] == pytest.approx(rq, rel=1e-9)
     assert out.summary["pq_m"] == pytest.approx(math.hypot(a_long, a_short) / math.sqrt(2),
                                                 rel=1e-9)
+    # Rp here is the highest peak of the whole evaluated R, ISO Rp the mean of the sampling
+    # lengths' highest; the notes say which (they read as the same "Rp" before)
+    assert out.summary["rp_m"] >= out.summary["iso_rp_m"]
+    assert any("not the ISO 4288 means over sampling lengths" in n and "iso_*" in n
+               for n in out.notes)
 
 
 def test_topography_gives_areal_parameters():
@@ -367,3 +372,24 @@ def test_roughness_table_reads_units_too():
     np.testing.assert_allclose(z[:, 0], f - np.polyval(np.polyfit(x, f, 1), x), atol=1e-12)
     with pytest.raises(ValueError, match="for a measured file"):
         RoughnessSpec(kind="gaussian", rms=1e-6, correlation_length=1e-5, unit="um")
+
+
+def test_areal_iso_rows_read_as_iso_writes_them(tmp_path):
+    # the summary printed "ISO vmp m3 per  7775 µm²" for Vmp = 7.775e-9 m3/m2 (the "_m2" of
+    # "_m3_per_m2" read as an area), and "ISO sal", "ISO rsm" in lower case
+    from asperity.formatting import summary_rows
+
+    x = (np.arange(64) + 0.5) * 1e-6
+    z = 0.3e-6 * np.sin(2 * np.pi * x / 16e-6)[:, None] * np.cos(2 * np.pi * x / 24e-6)[None, :48]
+    path = tmp_path / "map.npz"
+    np.savez(path, x=x, y=x[:48], z=z)
+    out = _run(f'analysis = "surface"\n[surface]\nkind = "file"\npath = "{path}"\n')
+    rows = {r.key: r for r in summary_rows(out.summary)}
+    vmp = out.summary["iso_vmp_m3_per_m2"]
+    assert 1e-10 < vmp < 1e-6
+    assert rows["iso_vmp_m3_per_m2"].label == "ISO Vmp"
+    assert rows["iso_vmp_m3_per_m2"].text == f"{vmp * 1e9:.4g} nm"
+    assert rows["iso_sal_m"].label == "ISO Sal" and rows["iso_smr1"].label == "ISO Smr1"
+    profile = _run('analysis = "surface"\n[surface]\nkind = "file"\n'
+                   'path = "builtin:ground-profile.csv"\n')
+    assert {r.key: r for r in summary_rows(profile.summary)}["iso_rsm_m"].label == "ISO RSm"

@@ -44,6 +44,10 @@ def test_npy_keeps_heights_and_needs_a_spacing(tmp_path, profile, topography):
     write_surface(profile, tmp_path / "p.npy")
     with pytest.raises(InputError, match="spacing: expected a grid spacing"):
         read_surface(tmp_path / "p.npy")
+    matrix = tmp_path / "vk.csv"  # a spacing under a key the reader does not know
+    matrix.write_text('"XY calibration","500.0","nm/pixel"\n"Height"\n1,2,3,4\n2,3,4,1\n')
+    with pytest.raises(InputError, match=r'no spacing or size in a header .* --spacing "0.5 um"'):
+        read_surface(matrix)  # was: "expected a grid spacing (m)", not saying how to give one
     back = read_surface(tmp_path / "p.npy", spacing=profile.spacing)
     np.testing.assert_allclose(back.x, profile.x, rtol=1e-12)
     write_surface(topography, tmp_path / "t.npy")

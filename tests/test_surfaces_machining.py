@@ -140,3 +140,22 @@ def test_feed_above_the_limit_is_refused_in_mm():
         turned_profile(0.5e-3, 0.4e-3, 5e-3, 1e-6, end_relief_angle=np.radians(30))
     assert "2 r sin(kappa_e) = 0.4 mm (r = 0.4 mm, kappa_e = 30 deg)" in str(exc.value)
     assert str(exc.value).endswith("got 0.5 mm")
+
+
+def test_turning_summary_says_which_kinematic_rt_is_which():
+    # the rows read "kinematic Rt" and "kinematic Rt arc": which is eq. (4.1), which the arcs'?
+    from asperity.cases import load_case
+    from asperity.formatting import summary_rows
+    from asperity.runners import run_case
+
+    f, r = 0.3e-3, 0.4e-3
+    outcome = run_case(load_case('analysis = "surface"\n[surface]\nkind = "turned"\n'
+                                 'feed = "0.3 mm"\nnose_radius = "0.4 mm"\nlength = "3 mm"\n'))
+    rows = {row.key: row for row in summary_rows(outcome.summary)}
+    arc, parabola = rows["kinematic_rt_arc_m"], rows["kinematic_rt_m"]
+    assert "arcs" in arc.label and "r - sqrt(r^2 - f^2/4)" in arc.label
+    assert "f^2/(8 r)" in parabola.label and "4.1" in parabola.label
+    assert "f^2/(18 sqrt(3) r)" in rows["kinematic_ra_m"].label
+    assert outcome.summary["kinematic_rt_arc_m"] == pytest.approx(r - np.sqrt(r**2 - f**2 / 4),
+                                                                 rel=1e-12)  # 29.19 um
+    assert outcome.summary["kinematic_rt_m"] == pytest.approx(f**2 / (8 * r), rel=1e-12)

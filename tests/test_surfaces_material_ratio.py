@@ -102,3 +102,22 @@ def test_volumes_of_a_uniform_distribution():
     assert v["Vmc"] == pytest.approx((0.64 - 0.01) * 1e-6, rel=1e-3)
     assert v["Vvc"] == pytest.approx((0.81 - 0.04) * 1e-6, rel=1e-3)
     assert v["Vvv"] == pytest.approx(0.04e-6, rel=1e-3)
+
+
+def test_rmr_depth_below_the_deepest_valley_warns():
+    # --rmr-depth 2 (meant as um) is 2 m: Rmr = 100 % of any surface, said nothing
+    from asperity.surfaces import Profile, Topography, evaluate_texture
+
+    x = (np.arange(8000) + 0.5) * 0.5e-6
+    z = 0.4e-6 * np.sin(2 * np.pi * x / 37e-6) + 0.1e-6 * np.sin(2 * np.pi * x / 11e-6)
+    wrong = evaluate_texture(Profile(x, z), 0.8e-3, rmr_depth=2.0)
+    assert wrong.groups["Rk"]["Rmr"] == 1.0
+    assert any(w.startswith("Rmr: the depth 2 m is more than the peak-to-valley") and
+               '--rmr-depth "0.5 um"' in w for w in wrong.warnings)
+    right = evaluate_texture(Profile(x, z), 0.8e-3, rmr_depth=0.5e-6)
+    r = right.families.evaluated("R")
+    assert right.groups["Rk"]["Rmr"] == pytest.approx(np.mean(r >= r.max() - 0.5e-6), abs=1e-3)
+    assert not any(w.startswith("Rmr") for w in right.warnings)
+    t = Topography(x[:64], x[:48], z[:64, None] + z[None, :48])
+    assert any(w.startswith("Smr: the depth") for w in
+               evaluate_texture(t, rmr_depth=1.0).warnings)

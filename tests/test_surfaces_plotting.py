@@ -50,3 +50,40 @@ def test_texture_figure_of_a_profile_has_its_families():
     assert len(fig.axes) == 4  # P with W, R, spectrum, material ratio
     np.testing.assert_allclose(fig.axes[1].get_lines()[0].get_ydata(),
                                texture.families.roughness.z * 1e6)
+
+
+def _labels_overlap(fig, axis) -> bool:
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    boxes = [t.get_window_extent(renderer) for t in axis.get_ticklabels(which="both")
+             if t.get_visible() and t.get_text()]
+    boxes.sort(key=lambda b: b.x0)
+    return any(a.x1 > b.x0 for a, b in zip(boxes, boxes[1:], strict=False))
+
+
+def test_texture_figure_of_a_small_map_is_in_um_with_its_colour_bar_beside_it():
+    # a 60 x 64 um field of view: its axes read 0.00 ... 0.06 mm, the map sat at the right of
+    # an empty half-row with the colour bar at the far edge, and the PSD's q labels (1.5
+    # decades) were drawn over each other
+    from asperity.plotting.surfaces import plot_texture
+    from asperity.surfaces import Topography, evaluate_texture
+
+    x, y = (np.arange(120) + 0.5) * 0.5e-6, (np.arange(80) + 0.5) * 0.8e-6
+    z = 0.3e-6 * np.sin(2 * np.pi * x / 12e-6)[:, None] + 0.05e-6 * np.random.default_rng(
+        3).standard_normal((120, 80))
+    fig = plot_texture(evaluate_texture(Topography(x, y, z)), title="t")
+    surface_ax = fig.axes[0]
+    psd_ax = next(a for a in fig.axes if a.get_title().startswith("Power spectral"))
+    assert surface_ax.get_xlabel() == "x (um)" and surface_ax.get_ylabel() == "y (um)"
+    mesh = surface_ax.collections[0]
+    assert mesh.get_coordinates()[0, 0, 0] == pytest.approx(0.0, abs=1e-9)
+    assert mesh.get_coordinates()[-1, -1, 0] == pytest.approx(60.0)  # cell edges, um
+    assert mesh.get_coordinates()[-1, -1, 1] == pytest.approx(64.0)
+    fig.canvas.draw()
+    colour_bar = mesh.colorbar.ax
+    assert colour_bar.get_ylabel() == "height (um)"
+    gap = colour_bar.get_position().x0 - surface_ax.get_position().x1
+    assert 0 < gap < 0.05  # figure fractions: against the map
+    centre = 0.5 * (surface_ax.get_position().x0 + surface_ax.get_position().x1)
+    assert centre == pytest.approx(0.5, abs=0.08)
+    assert not _labels_overlap(fig, psd_ax.xaxis)

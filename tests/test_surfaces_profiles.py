@@ -14,7 +14,7 @@ from scipy.special import ndtri
 
 from asperity.errors import InputError
 from asperity.surfaces import Profile
-from asperity.surfaces.cutoffs import cutoff_for_ra, lambda_s_for
+from asperity.surfaces.cutoffs import cutoff_for_ra, cutoff_for_rsm, lambda_s_for
 from asperity.surfaces.profiles import profile_families, profile_parameters
 
 ALPHA = math.sqrt(math.log(2) / math.pi)
@@ -115,6 +115,34 @@ def test_iso4288_cutoff_nearest_held_when_the_profile_is_short():
     fam = profile_families(trace(6e-3, lambda x: amp * np.sin(2 * np.pi * x / 100e-6)))
     assert fam.cutoff == pytest.approx(2.5e-3)
     assert any("asks for 8 mm" in w and "used 2.5 mm" in w for w in fam.warnings)
+
+
+def test_a_turned_trace_is_told_the_periodic_cut_off_of_iso_4288():
+    """Feed marks of f = 0.3 mm cut by a 0.4 mm nose (arcs r - sqrt(r^2 - u^2)), 6 mm traced:
+    Ra 7.4 um puts it at 2.5 mm by Table 1, which the trace holds once, and the warning said
+    only to measure 15 mm. ISO 4288 takes a periodic profile's cut-off from RSm (Table 3:
+    (0.13, 0.4] mm -> 0.8 mm), which 6 mm hold five times; the warning now says so, and with it
+    Ra is the arcs' within 0.5 % (the 0.8 mm mean line passes exp(-pi (alpha 0.8 / 0.3)^2) =
+    0.7 % of the fundamental)."""
+    f, r = 0.3e-3, 0.4e-3
+
+    def arcs(x):
+        u = np.mod(x, f) - f / 2
+        return r - np.sqrt(r * r - u * u)
+
+    profile = trace(6e-3, arcs)
+    fam = profile_families(profile)
+    assert fam.cutoff == pytest.approx(2.5e-3)
+    warning = next(w for w in fam.warnings if w.startswith("sampling lengths"))
+    assert "RSm = 0.3 mm: 0.8 mm" in warning and '--cutoff "0.8 mm"' in warning
+    u = np.linspace(-f / 2, f / 2, 200001)
+    z = r - np.sqrt(r * r - u * u)
+    ra_arcs = np.mean(np.abs(z - z.mean()))  # 7.432 um
+    at = profile_families(profile, 0.8e-3)
+    assert at.sampling_lengths == 5 and not at.warnings
+    assert profile_parameters(at)["R"]["Ra"] == pytest.approx(ra_arcs, rel=5e-3)
+    assert [cutoff_for_rsm(v * 1e-3) for v in (0.03, 0.1, 0.3, 1.0, 3.0)] == pytest.approx(
+        [0.08e-3, 0.25e-3, 0.8e-3, 2.5e-3, 8e-3])
 
 
 def test_lambda_s_only_where_the_spacing_allows():

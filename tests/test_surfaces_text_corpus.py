@@ -39,6 +39,8 @@ PROFILES = {
     "inch_microinch.csv": (0.5e-6, 2.54e-12),
     "plain_metres.txt": (0.5e-6, 1e-12),
     "nodata_value.txt": (0.5e-6, 1e-12),
+    "unit_in_key.txt": (0.5e-6, 1e-12),
+    "quoted_csv.csv": (0.5e-6, 1e-12),
 }
 #: file -> height tolerance (m)
 TOPOGRAPHIES = {
@@ -51,7 +53,7 @@ TOPOGRAPHIES = {
 REFUSED = {
     "binary.dat": "expected a text file",
     "no_numbers.txt": "expected a block of numbers",
-    "scattered.xyz": "expected x, y, z points on a full rectangular grid",
+    "scattered.xyz": "expected x, y, z points on a rectangular grid",
     "uneven_x.csv": "expected uniformly spaced x",
     "ragged.csv": r"ragged\.csv:4: expected 2 columns like line 2",
 }
@@ -135,6 +137,8 @@ def test_non_uniform_x_resampled_on_request():
 def test_bad_unit_names_the_field():
     with pytest.raises(InputError, match="z_unit: expected a length unit"):
         read_measured(DATA / "plain_metres.txt", z_unit="furlongs per fortnight")
+    with pytest.raises(InputError, match="unit: expected a length unit"):
+        read_measured(DATA / "plain_metres.txt", unit="px")  # pint's px: 1/96 inch
 
 
 def test_decreasing_x_is_turned_round_with_its_heights(tmp_path):
@@ -143,3 +147,15 @@ def test_decreasing_x_is_turned_round_with_its_heights(tmp_path):
     p = read_measured(tmp_path / "reversed.csv").surface
     np.testing.assert_allclose(p.z, f(np.arange(64) * 0.5e-6), atol=1e-11)
     assert p.x[0] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_pixel_size_of_two_numbers_gives_both_spacings(tmp_path):
+    # 'Pixel size: 0.5 x 0.8 um' was read as 0.5 x 0.5 um (the second number dropped)
+    i, j = np.arange(64), np.arange(8)
+    z = f(i * 0.5e-6)[:, None] + g(j * 0.8e-6)[None, :]
+    path = tmp_path / "pixels.txt"
+    path.write_text("# X-Unit: um\n# Z-Unit: nm\n# Pixel size: 0.5 x 0.8 um\n"
+                    + "\n".join(" ".join(f"{v * 1e9:.3f}" for v in row) for row in z.T) + "\n")
+    t = read_measured(path).surface
+    assert t.spacing == pytest.approx((0.5e-6, 0.8e-6), rel=1e-12)
+    np.testing.assert_allclose(t.z, z, rtol=0, atol=1e-12)

@@ -79,7 +79,8 @@ _IMPERIAL_CHOICES = {
 #: Unit suffixes of summary keys, longest first.
 _SUFFIXES = (("_deg", "deg"), ("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "m/s"),
              ("_pa_s", "Pa*s"), ("_k", "K"), ("_c", "°C"),
-             ("_m2", "m^2"), ("_nm", "N*m"), ("_pa", "Pa"), ("_rad", "rad"), ("_hz", "Hz"),
+             ("_m3_per_m2", "m"), ("_m2", "m^2"), ("_nm", "N*m"), ("_pa", "Pa"),
+             ("_rad", "rad"), ("_hz", "Hz"),
              ("_j", "J"), ("_n", "N"), ("_m", "m"), ("_s", "s"))
 
 #: Words of summary keys written out (whole words only).
@@ -89,10 +90,11 @@ _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "greenwood": "Greenwood", "tripp": "Tripp",
           "eyring": "Eyring", "iso": "ISO",
           "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
-          "b": "b", "x": "x", "y": "y"}
+          "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
 
 #: ISO 4287 / 13565 / 25178 parameter names as they appear (lower case) in summary keys.
-_ISO_PARAMETER = re.compile(r"[prws](a|q|sk|ku|p|v|t|z|dq|sm|dc|k|pk|vk|dr)|mr[12]")
+_ISO_PARAMETER = re.compile(r"[prws](a|q|sk|ku|p|v|t|z|dq|dc|k|pk|vk|dr|al|tr|td)|[rs]?mr[12]?"
+                            r"|v(mp|mc|vc|vv)")
 
 #: Labels of summary keys that words alone would not make clear (key without its suffix).
 _LABELS = {
@@ -108,6 +110,9 @@ _LABELS = {
     "contact_time_fraction": "contact time",
     "friction_coefficient": "friction coefficient",
     "load_capacity": "gross-slip load / applied load",
+    "kinematic_rt": "kinematic Rt, parabola f^2/(8 r) (Seireg eq. 4.1)",
+    "kinematic_ra": "kinematic Ra, parabola f^2/(18 sqrt(3) r)",
+    "kinematic_rt_arc": "kinematic Rt of the nose arcs, r - sqrt(r^2 - f^2/4)",
 }
 
 #: Relative size below which a value is round-off of zero (see :func:`summary_rows`).
@@ -294,7 +299,8 @@ def describe_key(key: str) -> tuple[str, str]:
     key : str
         A key of ``summary.json`` (its unit, if any, is the suffix: ``_pa``, ``_m``, ``_m2``,
         ``_n``, ``_nm`` (N m), ``_m_s``, ``_s``, ``_rad``, ``_deg``, ``_j``, ``_percent``,
-        ``_per_ms``; ``_k`` and ``_c`` after ``temperature``: kelvin and degrees Celsius).
+        ``_per_ms``, ``_m3_per_m2`` (a volume per area, ISO 25178-2 Vmp ...: a length); ``_k``
+        and ``_c`` after ``temperature``: kelvin and degrees Celsius).
 
     Returns
     -------

@@ -4,6 +4,7 @@ the P/W/R profile families and the material ratio curve with its equivalent stra
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.ticker import LogFormatterSciNotation, LogLocator, NullFormatter
 
 from ..errors import InputError
 from ..surfaces.machining import TurnedSurface, roughness_along
@@ -43,13 +44,42 @@ def plot_profiles(profiles, offset=None, title="Surface profiles"):
     return fig
 
 
+#: Longest side (m) of a height map below which its axes are in um rather than mm (a 60 um
+#: field of view read 0.00 ... 0.06 mm).
+MAP_IN_UM = 1e-3
+
+
+def _draw_map(ax, topography: Topography, title: str):
+    """A height map (um) drawn to scale over x, y in um (fields under :data:`MAP_IN_UM`) or
+    mm, x to the right and y up, with its colour bar beside it: the colour bar is an inset of
+    the map's axes, so that it stays against the map when the map is narrower than its
+    cell."""
+    scale, unit = (1e6, "um") if max(np.ptp(topography.x), np.ptp(topography.y)) < MAP_IN_UM \
+        else (1e3, "mm")
+    mesh = ax.pcolormesh(topography.x * scale, topography.y * scale, topography.z.T * 1e6,
+                         shading="auto", cmap="viridis")
+    ax.set(xlabel=f"x ({unit})", ylabel=f"y ({unit})", title=title, aspect="equal")
+    ax.figure.colorbar(mesh, cax=ax.inset_axes([1.03, 0.0, 0.035, 1.0]), label="height (um)")
+    return mesh
+
+
+def _log_q_axis(ax, q) -> None:
+    """Log ticks along q readable at any span: minor ticks unlabelled, and majors at 1, 2 and
+    5 per decade over less than two decades (where matplotlib labelled every minor tick, their
+    labels overlapping)."""
+    q = np.asarray(q)
+    span = np.log10(q[q > 0].max() / q[q > 0].min())
+    if span < 2:
+        ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0), numticks=12))
+        ax.xaxis.set_major_formatter(LogFormatterSciNotation(
+            labelOnlyBase=False, minor_thresholds=(np.inf, np.inf)))  # label every major
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
 def plot_topography(topography: Topography, title="Topography"):
-    """Height map (um) over x, y (mm), x to the right."""
+    """Height map (um) over x, y (um or mm, :func:`_draw_map`), x to the right."""
     fig, ax = new_figure(5.8, 4.8)
-    x, y = topography.x * 1e3, topography.y * 1e3
-    mesh = ax.pcolormesh(x, y, topography.z.T * 1e6, shading="auto", cmap="viridis")
-    fig.colorbar(mesh, ax=ax, label="height (um)")
-    ax.set(xlabel="x (mm)", ylabel="y (mm)", title=title, aspect="equal")
+    _draw_map(ax, topography, title)
     return fig
 
 
@@ -67,6 +97,7 @@ def plot_spectrum(surface, title="Power spectral density"):
     spec = power_spectrum(surface)
     fig, ax = new_figure()
     ax.loglog(spec.q, spec.psd, "k-", lw=0.8)
+    _log_q_axis(ax, spec.q)
     unit = "m^3" if spec.dim == 1 else "m^4"
     ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({unit})", title=title)
     return fig
@@ -174,13 +205,8 @@ def plot_texture(texture, title="Surface texture"):
     fig = plt.figure(figsize=(9.5, 7.5), layout="constrained")
     grid = fig.add_gridspec(2, 2)
     if isinstance(fam, AreaFamilies):
-        ax = fig.add_subplot(grid[0, :])
         surface = fam.scale_limited
-        mesh = ax.pcolormesh(surface.x * 1e3, surface.y * 1e3, surface.z.T * 1e6,
-                             shading="auto", cmap="viridis")
-        fig.colorbar(mesh, ax=ax, label="height (um)")
-        ax.set(xlabel="x (mm)", ylabel="y (mm)", aspect="equal",
-               title=f"{title}: {fam.label} surface")
+        _draw_map(fig.add_subplot(grid[0, :]), surface, f"{title}: {fam.label} surface")
         heights, prefix = surface.z, "S"
     else:
         top = grid[0, :].subgridspec(2, 1, hspace=0.05)
@@ -192,6 +218,7 @@ def plot_texture(texture, title="Surface texture"):
     primary = fam.primary
     spec = power_spectrum(primary, window=None if primary.periodic else "hann")
     ax.loglog(spec.q, spec.psd, "k-", lw=0.8)
+    _log_q_axis(ax, spec.q)
     ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({'m^3' if spec.dim == 1 else 'm^4'})",
            title="Power spectral density (form removed" + (
                "" if texture.surface.periodic else ", Hann window") + ")")

@@ -424,8 +424,9 @@ def _parabola_warnings(feed: float, nose_radius: float) -> list[str]:
     return [f"kinematic Rt: eq. (4.1)'s f^2/(8 r) = {_um(parabola)} is {100 * error:.3g} % below "
             f"the arcs' height r - sqrt(r^2 - f^2/4) = {_um(exact)} at f = {feed * 1e3:.4g} mm, "
             f"r = {nose_radius * 1e3:.4g} mm (limit {100 * PARABOLA_TOLERANCE:g} %, up to f = "
-            f"{parabola_feed_limit(nose_radius) * 1e3:.3g} mm); read kinematic_rt_arc_m (the "
-            "profile's Rt), not kinematic_rt_m or kinematic_ra_m, or use a smaller feed"]
+            f"{parabola_feed_limit(nose_radius) * 1e3:.3g} mm); read 'kinematic Rt of the "
+            "nose arcs' (kinematic_rt_arc_m, the profile's Rt), not the parabola's "
+            "(kinematic_rt_m, kinematic_ra_m), or use a smaller feed"]
 
 
 def _reference_ra(spec, surfaces, evaluated) -> list:
@@ -551,9 +552,15 @@ def run(case, progress=None) -> Outcome:
                      "keys are of the ISO roughness profile (cut-off by ISO 4288) or of the "
                      "S-F surface.")
     if case.evaluation.cutoff is not None:
+        per = ("averaged over sampling lengths of evaluation.sampling_length" if
+               case.evaluation.sampling_length is not None else "over the profile (less half "
+               "a cut-off at each end of a non-periodic one; Rz: the mean "
+               "peak-to-valley of five parts), not the ISO 4288 means over sampling lengths of "
+               "the cut-off that the iso_* keys hold (Rp here: the highest peak of all; ISO "
+               "Rp: the mean of each sampling length's highest)")
         notes.append("Parameters are those of the roughness profile (Gaussian filter, cut-off "
-                     f"{case.evaluation.cutoff:.4g} m); pa/pq/pt are of the primary profile and "
-                     "wa/wq/wt of the waviness.")
+                     f"{case.evaluation.cutoff:.4g} m), {per}; pa/pq/pt are of the primary "
+                     "profile and wa/wq/wt of the waviness.")
     dataset = _dataset(case, surfaces, evaluated, along)
     figures = _figures(case, surfaces, evaluated, turned, window)
     warnings = list(parabola)

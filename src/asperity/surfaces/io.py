@@ -79,7 +79,11 @@ def unit_name(factor: float) -> str:
 
 def _spacings(spacing, ndim: int, source: str) -> tuple[float, ...]:
     if spacing is None:
-        raise InputError("spacing", f"a grid spacing (m) for {source}, which has no coordinates")
+        raise InputError("spacing", f"a grid spacing for {source}, which has no coordinates "
+                                    "and no spacing or size in a header the reader knows "
+                                    "(Spacing, Pixel size, Scale X, Width, ...): give it with "
+                                    "its unit, --spacing \"0.5 um\" (case file: spacing = "
+                                    "\"0.5 um\")")
     s = np.atleast_1d(np.asarray(spacing, dtype=float))
     if s.size == 1:
         s = np.repeat(s, ndim)
@@ -202,10 +206,10 @@ def _missing(z: np.ndarray, missing: str, where: str, notes: list):
     z, count = fill_missing(z)
     method = "linear interpolation" if z.ndim == 1 else "harmonic interpolation"
     if missing == "fill":
-        notes.append(f"filled {share} that the file marks as missing, by {method} from the "
+        notes.append(f"filled {share} missing in the file, by {method} from the "
                      "measured neighbours")
     else:
-        notes.append(f"masked {share} that the file marks as missing: left out of the height, "
+        notes.append(f"masked {share} missing in the file: left out of the height, "
                      f"material-ratio and volume parameters; filled by {method} only for the "
                      "filters, slopes and spectra")
     return z, count, lost
@@ -260,9 +264,27 @@ def _extent(surface) -> float:
     return max(n * h for n, h in zip(surface.shape, surface.spacing, strict=True))
 
 
-def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list):
+#: What to give when a text file's known x unit makes it implausibly long, and when an
+#: instrument file's own pixel size does (the unit of its numbers is the format's).
+_CHECK_X_UNIT = ("check that unit (um written under an 'X (mm)' header?) and give the right "
+                 "one: --x-unit um (case file: x_unit = \"um\") or the right spacing")
+_CHECK_PIXEL = ("the pixel size written in the file is likely in another unit than its "
+                "format's (an exporter that wrote um where metres belong): give the right one, "
+                "--spacing \"0.5 um\" (case file: spacing = \"0.5 um\"), which replaces it")
+
+
+def _pixel_indices(surface) -> bool:
+    """Whether a surface's positions are pixel indices: whole numbers a step of 1 apart."""
+    coords = [surface.x] if isinstance(surface, Profile) else [surface.x, surface.y]
+    return all(np.allclose(c, np.round(c[0]) + np.arange(c.size), rtol=0, atol=1e-9)
+               for c in coords)
+
+
+def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
+               check: str = _CHECK_X_UNIT):
     """Warn when heights read without a unit are implausible in metres, or when the surface is
-    longer than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where)."""
+    longer than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where;
+    ``check`` what to do then)."""
     if not known[1] and np.ptp(surface.z) > PLAUSIBLE_HEIGHT:
         warnings.append(f"heights: peak-to-valley {np.ptp(surface.z):.4g} m read as metres (the "
                         f"file gives no unit) exceeds {PLAUSIBLE_HEIGHT * 1e3:g} mm; give the "
@@ -270,15 +292,19 @@ def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list):
     length = _extent(surface)
     if length <= PLAUSIBLE_LENGTH:
         return
-    if not known[0]:
+    if not known[0] and _pixel_indices(surface):
+        warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit): its "
+                        "positions are whole steps of 1 from a whole number (pixel indices?), "
+                        "which no unit turns into lengths: write the positions as lengths "
+                        "(indices times the pixel size) with their unit in the column names, "
+                        "e.g. 'x_um y_um z_um'")
+    elif not known[0]:
         warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit) "
                         f"exceeds {PLAUSIBLE_LENGTH:g} m; give the unit: --x-unit um (case "
                         "file: x_unit = \"um\")")
     else:
         warnings.append(f"x: length {length:.4g} m exceeds {PLAUSIBLE_LENGTH:g} m, longer than "
-                        f"a profilometer traces ({units}): check that unit (um written under "
-                        "an 'X (mm)' header?) and give the right one: --x-unit um (case file: "
-                        "x_unit = \"um\") or the right spacing")
+                        f"a profilometer traces ({units}): {check}")
 
 
 def _unit_text(what: str, given: float | None, found: float | None, source: str | None) -> str:
@@ -403,7 +429,8 @@ def _read_npz(path: Path, spacing, missing: str) -> Reading:
                    missing == "mask", "x and heights in m, as .npz files hold them", 1.0)
 
 
-def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) -> Reading:
+def _read_instrument(path: Path, spacing, units: _Units, missing: str,
+                     resample: bool) -> Reading:
     try:
         import SurfaceTopography
     except ImportError:
@@ -411,6 +438,7 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
                                     "need the optional SurfaceTopography reader: pip install "
                                     "'asperity[instruments]'") from None
     notes: list[str] = []
+    warnings: list[str] = []
     try:
         topo = SurfaceTopography.read_topography(str(path))
     except Exception as err:  # any failure of the third-party reader
@@ -425,7 +453,10 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
         factor = height_factor = (
             SurfaceTopography.Support.UnitConversion.get_unit_conversion_factor(topo.unit, "m"))
         if units.x is not None or units.z is not None:
-            notes.append(f"the file's unit ({topo.unit}) is used; the unit given is ignored")
+            warnings.append(f"units: the file's own unit ({topo.unit}, of its format) is "
+                            "used and the unit given is ignored: leave unit, x_unit and z_unit "
+                            "out for this file; a wrong pixel size is replaced by giving the "
+                            "spacing (--spacing; case file: spacing)")
     heights = np.ma.filled(np.ma.asarray(topo.heights(), dtype=float), np.nan) * height_factor
     heights, filled, lost = _missing(heights, missing, str(path), notes)
     if not topo.is_uniform:
@@ -436,13 +467,19 @@ def _read_instrument(path: Path, units: _Units, missing: str, resample: bool) ->
         grid, heights = _resampled(x, heights, notes)
         lost = None if lost is None else _mask_on(lost, x, grid)
         surface = Profile(grid, heights)
+        _ignored_spacing(spacing, surface, warnings)
     else:
         h = tuple(np.atleast_1d(topo.pixel_size) * factor)
+        if spacing is not None:
+            _replaced_spacing(spacing, h, warnings)
+            h = tuple(np.broadcast_to(np.atleast_1d(np.asarray(spacing, float)), len(h)))
         surface = _from_heights(heights, h, str(path), periodic=bool(topo.is_periodic))
     described = (f"x and heights in {topo.unit} from the file" if getattr(topo, "unit", None)
                  else f"x in {unit_name(factor)}, heights in {unit_name(height_factor)} as given")
-    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes), (), filled,
-                   lost, missing == "mask", described, height_factor)
+    if spacing is None:
+        _plausible(surface, (True, True), described, warnings, _CHECK_PIXEL)
+    return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes),
+                   tuple(warnings), filled, lost, missing == "mask", described, height_factor)
 
 
 def _check_coarse(spacing) -> None:
@@ -470,11 +507,13 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     ----------
     path : str or Path
     spacing : float or (float, float), optional
-        Grid spacing (m) for files without coordinates; replaces a spacing from the header. At
-        most :data:`MAX_SPACING`.
+        Grid spacing (m) for files without coordinates; replaces a spacing from the header or
+        an instrument file's pixel size (with a warning when they differ). At most
+        :data:`MAX_SPACING`.
     unit, x_unit, z_unit : str, optional
         Length unit of the file's numbers (``"um"``): of both, of the coordinates, of the
-        heights. They replace units found in the file (with a note).
+        heights. They replace units found in a text file (with a note); an instrument
+        file keeps its format's unit (with a warning; ``spacing`` replaces its pixel size).
     missing : {"refuse", "fill", "mask"}
         What to do with missing points: refuse the file (naming how many); fill them by
         linear (profile) or harmonic (topography) interpolation
@@ -521,7 +560,7 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         _plausible(surface, (True, units.z is not None), described, warnings)
         return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled,
                        lost, missing == "mask", described, units.z)
-    return _read_instrument(path, units, missing, resample)
+    return _read_instrument(path, spacing, units, missing, resample)
 
 
 def read_surface(path, spacing=None, **options):

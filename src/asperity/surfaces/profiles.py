@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_int
-from .cutoffs import CUTOFFS, cutoff_for_ra, lambda_s_for, largest_spacing
+from .cutoffs import CUTOFFS, cutoff_for_ra, cutoff_for_rsm, lambda_s_for, largest_spacing
 from .filters import ALPHA, gaussian_filter
 from .form import remove_form
 from .parameters import _amplitude
@@ -188,6 +188,28 @@ def _iso4288_cutoff(p: np.ndarray, profile: Profile, lambda_s, notes: list,
     return cutoff
 
 
+def _periodic_alternative(evaluated: np.ndarray, profile: Profile, count: int, cutoff: float,
+                          wanted: int) -> str:
+    """The end of a too-few-sampling-lengths warning when the cut-off came from ISO 4288's Ra
+    table: for a periodic profile (turned, milled) ISO 4288 clause 7.2 takes it from RSm
+    instead (:func:`~asperity.surfaces.cutoffs.cutoff_for_rsm`), and where that one is
+    shorter and the trace holds its ``wanted`` sampling lengths, the warning says so (a turned
+    trace of 0.3 mm feed marks, Ra 7.4 um: 2.5 mm by Ra, told to measure 15 mm; 0.8 mm by
+    RSm, which its 6 mm hold). Empty otherwise."""
+    widths = [mean_element_width(part, profile.spacing, cutoff)
+              for part in evaluated.reshape(count, -1)]
+    if not np.isfinite(widths).any():
+        return ""
+    rsm = float(np.nanmean(widths))
+    periodic = cutoff_for_rsm(rsm)
+    if periodic >= cutoff or _window(profile, periodic, wanted)[1] < wanted:
+        return ""
+    return (f"; if the profile is periodic (turned, milled), ISO 4288 takes lambda_c from "
+            f"RSm instead (RSm = {rsm * 1e3:.3g} mm: {periodic * 1e3:g} mm, which it holds "
+            f"{wanted} times): --cutoff \"{periodic * 1e3:g} mm\" (case file: "
+            f"evaluation.cutoff)")
+
+
 def _sampling_warning(cutoff: float, spacing: float) -> str | None:
     """A warning when ``spacing`` is coarser than ISO 3274 allows for ``cutoff``."""
     row = largest_spacing(cutoff)
@@ -267,6 +289,7 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
     notes: list[str] = []
     warnings: list[str] = []
     p = remove_form(profile, form_degree).z
+    given = cutoff is not None
     if cutoff is None:
         cutoff = _iso4288_cutoff(p, profile, lambda_s, notes, warnings)
     else:
@@ -295,9 +318,12 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
     notes.append(f"evaluation length {count} x {cutoff * 1e3:.4g} mm = "
                  f"{count * cutoff * 1e3:.4g} mm, {where}")
     if count < sampling_lengths:
+        periodic = "" if given else _periodic_alternative(roughness[window], profile, count,
+                                                          cutoff, sampling_lengths)
         warnings.append(f"sampling lengths: the profile holds {count} of the {sampling_lengths} "
                         f"that ISO 4288 averages over at lambda_c = {cutoff * 1e3:.4g} mm; "
-                        f"measure at least {(sampling_lengths + 1) * cutoff * 1e3:.4g} mm")
+                        f"measure at least {(sampling_lengths + 1) * cutoff * 1e3:.4g} mm"
+                        + periodic)
     return ProfileFamilies(profile.with_heights(p), profile.with_heights(waviness),
                            profile.with_heights(roughness), float(cutoff), lambda_s, window,
                            count, tuple(notes), tuple(warnings))

@@ -74,6 +74,17 @@ class TextureEvaluation:
         return "Sdq", self.groups["hybrid"]["Sdq"]
 
 
+def _depth_warnings(heights: np.ndarray, depth, name: str) -> tuple[str, ...]:
+    """A warning when the Rmr (Smr) ``depth`` is below the deepest valley: the material ratio
+    there is 100 % whatever the surface (``--rmr-depth 2``, meant as 2 um, is 2 m)."""
+    span = float(np.ptp(heights))
+    if depth is None or depth <= span:
+        return ()
+    return (f"{name}: the depth {depth:.4g} m is more than the peak-to-valley height "
+            f"({span * 1e6:.4g} um), so {name} = 100 % whatever the surface; a plain number is "
+            "metres: give the unit, e.g. --rmr-depth \"0.5 um\"",)
+
+
 def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = profile_families(profile, cutoff, form_degree=form_degree)
     params = profile_parameters(fam, exclude)
@@ -96,15 +107,16 @@ def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> Textu
                  f", Rmr {rmr_depth * 1e6:.4g} um below the highest peak")
               + "; ISO 13565-2 Rk family)",
     }
-    return TextureEvaluation(profile, fam, params, titles, fam.notes, fam.warnings)
+    return TextureEvaluation(profile, fam, params, titles, fam.notes,
+                             fam.warnings + _depth_warnings(r, rmr_depth, "Rmr"))
 
 
 def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
     params = areal_parameters(fam, exclude)
+    z = fam.scale_limited.z
+    z = z if exclude is None else z[~np.asarray(exclude, bool)]
     if rmr_depth is not None:
-        z = fam.scale_limited.z
-        z = z if exclude is None else z[~np.asarray(exclude, bool)]
         params["functional"]["Smr"] = relative_material_ratio(z, rmr_depth)
     what = f"{fam.label} surface"
     titles = {
@@ -117,7 +129,8 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
                       + f"), {what}",
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
-    return TextureEvaluation(topography, fam, params, titles, fam.notes, ())
+    return TextureEvaluation(topography, fam, params, titles, fam.notes,
+                             _depth_warnings(z, rmr_depth, "Smr"))
 
 
 def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None,

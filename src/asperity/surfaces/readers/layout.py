@@ -5,11 +5,14 @@ Rules, in order (documented for users in docs/surfaces.md):
 - Named columns: a column named like a position (``x``, ``lateral``, ``position``,
   ``distance``, ``horizontal``, ``length``, ``scan``) is x, one like ``y`` is y, and one named
   like a height (``z``, ``height``, ``raw``, ``profile``, ``data``, ``value``, ``depth``, ...)
-  is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export).
+  is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export): in any
+  order, on uniform steps within the printed precision, positions absent from the list
+  missing.
 - Unnamed columns: one = heights, two = x and z, three or more = a height matrix -- except
   three columns whose first is evenly spaced, increasing positions: a profile export (x and
-  two height channels) that would otherwise read as a 3-wide matrix, refused with how to name
-  its columns.
+  two height channels) that would otherwise read as a 3-wide matrix, and three columns that are
+  an x, y, z point list (their first two repeat values covering a grid), both refused with how
+  to name their columns.
 - A height matrix has one line per y, values along x (how instruments, Gwyddion and
   SurfaceTopography write images), except one written by asperity's ``write_surface`` (its
   first comment says ``asperity topography ... rows along x``), which has one line per x.
@@ -56,6 +59,8 @@ _HEIGHT_KEYS = ("y length", "y size", "image height", "y range")
 _MISSING_KEYS = ("no data value", "nodata", "no data", "invalid value", "undefined value",
                  "missing value", "bad value", "void value", "nodata value")
 _QUANTITY = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+#: What may stand between two numbers of one header value (``0.5 x 0.8 um``), before a number.
+_BETWEEN = re.compile(r"^\s*(?:[x×*,;]|by)\s*(?=[+-]?\.?\d)", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -119,7 +124,8 @@ def _named_unit(name: str, factor: float | None, source: str | None):
 
 
 def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
-    """Numbers and the unit's factor of ``"0.5 um"``, ``"0.333 um/pt"``, ``"1e-6 2e-6"``."""
+    """Numbers and the unit's factor of ``"0.5 um"``, ``"0.333 um/pt"``, ``"1e-6 2e-6"``,
+    ``"0.5 x 0.8 um"`` (numbers also between ``x``, ``×``, ``*``, ``,``, ``;`` or ``by``)."""
     if text is None:
         return None
     numbers = []
@@ -129,7 +135,7 @@ def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
         if match is None:
             break
         numbers.append(float(match.group(1)))
-        rest = match.group(2)
+        rest = _BETWEEN.sub("", match.group(2), count=1)
     if not numbers:
         return None
     unit = rest.split("/")[0].strip().strip("[]()")
@@ -175,16 +181,77 @@ def _scale(header: dict, z_unit: tuple[float | None, str | None]):
     return 1.0, z_unit
 
 
-def _grid_from_points(x, y, z, where: str):
-    """Heights ``[ix, iy]`` from an XYZ point list that covers a full grid."""
-    xs, ix = np.unique(x, return_inverse=True)
-    ys, iy = np.unique(y, return_inverse=True)
-    if xs.size * ys.size != z.size or xs.size < 2 or ys.size < 2:
-        raise InputError(where, "x, y, z points on a full rectangular grid",
-                         f"{z.size} points over {xs.size} x and {ys.size} y values")
+def _lattice(values: np.ndarray, resolution: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """The uniform lattice that a point list's coordinates lie on, within their printed
+    ``resolution``: (the lattice's positions, each value's index on it); None when they do not
+    lie on one. Each gap between distinct values is a whole number of median gaps; the step is
+    the least-squares line through the values against those indices (so a coordinate printed
+    to 4 decimals at a 1/3 um pitch, and a lattice with whole rows absent, are both found)."""
+    distinct = np.unique(values)
+    if distinct.size < 2:
+        return None
+    steps = np.diff(distinct)
+    index = np.concatenate([[0], np.cumsum(np.rint(steps / np.median(steps)).astype(int))])
+    slope, intercept = np.polyfit(index, distinct, 1)
+    deviation = np.abs(distinct - (intercept + slope * index)).max()
+    if deviation > resolution * (1 + 1e-6) + 1e-9 * abs(slope):
+        return None
+    return intercept + slope * np.arange(index[-1] + 1), index[np.searchsorted(distinct, values)]
+
+
+def _grid_from_points(x, y, z, where: str, resolution=(0.0, 0.0)):
+    """Heights ``[ix, iy]`` from an XYZ point list: its points in any order on a uniform
+    lattice along x and y (within the printed ``resolution`` of each), each position once, at
+    least half of the lattice present; absent positions are missing (NaN).
+
+    Returns
+    -------
+    (xs, ys, grid, absent) : the lattice's positions along x and y (file units), the heights,
+    and the number of lattice positions absent from the list.
+    """
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
+        raise InputError(where, "an x and a y position on every line of an x, y, z point list "
+                         "(a missing marker is for heights only)",
+                         f"{int(np.sum(~np.isfinite(x) | ~np.isfinite(y)))} lines without one")
+    found = [_lattice(c, r) for c, r in ((x, resolution[0]), (y, resolution[1]))]
+    size = None if None in found else found[0][0].size * found[1][0].size
+    if size is None or min(f[0].size for f in found) < 2 or size > 2 * z.size:
+        counts = f"{np.unique(x).size} x and {np.unique(y).size} y values"
+        raise InputError(where, "x, y, z points on a rectangular grid (uniform steps along x "
+                         "and y within the printed precision; at least half of its positions "
+                         "present)", f"{z.size} points over {counts}")
+    (xs, ix), (ys, iy) = found
+    flat = ix * ys.size + iy
+    repeated = z.size - np.unique(flat).size
+    if repeated:
+        raise InputError(where, "x, y, z points with each (x, y) position once",
+                         f"{repeated} repeated positions")
     grid = np.full((xs.size, ys.size), np.nan)
     grid[ix, iy] = z
-    return xs, ys, grid
+    return xs, ys, grid, size - z.size
+
+
+def _point_grid(data: np.ndarray) -> bool:
+    """Whether three unnamed columns hold an x, y, z point list: their first two columns
+    repeat few values that together cover a grid, one point each -- which a height matrix
+    three points wide does not (its first two columns are heights, nearly all different)."""
+    xs, ys = np.unique(data[:, 0]).size, np.unique(data[:, 1]).size
+    pairs = np.unique(data[:, :2], axis=0).shape[0]
+    return min(xs, ys) >= 2 and pairs == data.shape[0] and xs * ys <= 2 * data.shape[0]
+
+
+def _unnamed_points(data: np.ndarray, where: str) -> None:
+    """Refuse three unnamed columns that are an x, y, z point list (:func:`_point_grid`): as a
+    height matrix they would read as a surface three points wide; as points they need units
+    the file does not give."""
+    if not _point_grid(data):
+        return
+    raise InputError(where, "named columns for an x, y, z point list: these 3 columns are "
+                     f"points ({np.unique(data[:, 0]).size} x by {np.unique(data[:, 1]).size} "
+                     "y values, one line per point), not a height matrix 3 points wide; name "
+                     "the columns in a line above the numbers with their units, e.g. "
+                     "'x_um y_um z_um' (pixel indices multiplied by the pixel size first)",
+                     f"{data.shape[0]} lines of 3 unnamed numbers")
 
 
 def _on_a_line(column: np.ndarray, resolution: float) -> bool:
@@ -213,6 +280,21 @@ def _positions_first(table: TextTable, where: str) -> None:
                      f"{first.size} lines of 3 numbers")
 
 
+def _line_along(x: np.ndarray, y: np.ndarray, x_name: str, y_name: str):
+    """For an x, y, z export of a line profile (one coordinate the same on every line): the
+    column it runs along (0: x, 1: y) and a description; None for a map."""
+    for along, (moving, fixed, name, other) in enumerate(((x, y, x_name, y_name),
+                                                         (y, x, y_name, x_name))):
+        if np.unique(fixed).size == 1 and np.unique(moving).size > 1:
+            return along, (f"a profile along {name!r} ({other!r} the same, {fixed[0]:g}, on "
+                           "every line)")
+    return None
+
+
+def _absent_text(absent: int, size: int) -> str:
+    return f", {absent} of the {size} grid positions absent (missing)" if absent else ""
+
+
 def interpret(table: TextTable, where: str) -> Layout:
     """Decide what the columns of ``table`` are and what units they carry (module docstring)."""
     h = table.header
@@ -227,14 +309,22 @@ def interpret(table: TextTable, where: str) -> Layout:
     resolution = 0.0
     ncol = data.shape[1]
     if names is not None and ix is not None and iz is not None:
+        line = None if iy is None else _line_along(data[:, ix], data[:, iy], names[ix],
+                                                  names[iy])
+        if line is not None:  # a line profile exported as x, y, z: the other coordinate fixed
+            ix = (ix, iy)[line[0]]
         x, z = data[:, ix], data[:, iz]
         resolution = float(table.resolution[ix])
         x_unit = _named_unit(names[ix], *x_unit)
         z_unit = _named_unit(names[iz], *z_unit)
         style = f"columns named {names[ix]!r} (x) and {names[iz]!r} (z)"
-        if iy is not None:
-            x, y, z = _grid_from_points(x, data[:, iy], z, where)
-            style = f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
+        if line is not None:
+            style = f"{line[1]}, heights {names[iz]!r}"
+        elif iy is not None:
+            x, y, z, absent = _grid_from_points(
+                x, data[:, iy], z, where, (table.resolution[ix], table.resolution[iy]))
+            style = (f"x, y, z points named {names[ix]!r}, {names[iy]!r}, {names[iz]!r}"
+                     + _absent_text(absent, z.size))
     elif ncol == 1:
         z = data[:, 0]
         z_unit = _named_unit(names[0], *z_unit) if names else z_unit
@@ -247,14 +337,16 @@ def interpret(table: TextTable, where: str) -> Layout:
             z_unit = _named_unit(names[1], *z_unit)
         style = "two columns, x and z" + (f" named {names[0]!r}, {names[1]!r}" if names else "")
     elif ncol == 3 and ("lateral units" in h or "lateral unit" in h):
-        x, y, z = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where)
-        style = "x, y, z points (Gwyddion XYZ export)"
+        x, y, z, absent = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where,
+                                            table.resolution[:2])
+        style = "x, y, z points (Gwyddion XYZ export)" + _absent_text(absent, z.size)
     elif "asperity topography" in h:
         z = data
         style = "height matrix, one line per x (written by asperity)"
     else:
         if ncol == 3:
             _positions_first(table, where)
+            _unnamed_points(data, where)
         z = data.T
         style = "height matrix, one line per y"
     sentinel = _quantity(_first(h, _MISSING_KEYS))

@@ -5,11 +5,15 @@ lines, a line of column names) followed by a block of numbers. The reader
 
 1. splits each line on tabs or semicolons if it has any, else on commas, else on white space
    (a decimal comma is accepted when the separator is not a comma), dropping a trailing empty
-   field (``0.1,0.2,``);
+   field (``0.1,0.2,``) and the double quotes of spreadsheet-style CSV (``"X Unit","um"``; a
+   comma inside quotes is part of the field);
 2. takes as the data block the last run of lines whose fields are all numbers or missing-value
-   markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, ...); every
-   line before it is header; after it only lines of words (a footer) may follow -- a line
-   mixing numbers and words is an error naming the line;
+   markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, Zygo's
+   two-word ``No Data``, ...); every line before it is header; after it only lines of words (a
+   footer) may follow -- a line mixing numbers and words is an error naming the line, and so
+   is the line just above the block when it starts with a number and has as many fields as a
+   data line or more (a data line with a marker the reader does not know, which would
+   otherwise cut the data in two and keep only the part after it);
 3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
    the last header line with one name per column.
 
@@ -20,6 +24,7 @@ pairs and the printed resolution of each column (for rounded coordinates). Inter
 
 from __future__ import annotations
 
+import csv
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,13 +32,16 @@ from pathlib import Path
 import numpy as np
 
 from ...errors import InputError
+from .units import length_factor
 
 __all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "read_table"]
 
 #: Field values that instruments write for a point they could not measure (lower case).
 MISSING_TOKENS = frozenset({"", "nan", "-nan", "+nan", "bad", "nd", "n/a", "na", "***", "*",
                             "-", "--", "undefined", "invalid", "void", "inf", "-inf", "+inf",
-                            "infinity", "-infinity", "null", "none"})
+                            "infinity", "-infinity", "null", "none", "nodata", "no data"})
+#: A missing-value marker of two words (Zygo's XYZ export), read as one field.
+_TWO_WORD_MISSING = re.compile(r"\bno\s+data\b", re.IGNORECASE)
 _COMMENT = re.compile(r"^\s*(#|%|//|;|!)\s*")
 _KEY_VALUE = re.compile(r"^([^=:：]{1,60}?)\s*[=:：]\s*(.*)$")
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
@@ -70,14 +78,21 @@ def normalise_key(key: str) -> str:
     return re.sub(r"[\s_\-]+", " ", key.strip().lower()).strip()
 
 
+def _unquoted(field: str) -> str:
+    """A field without the double quotes a spreadsheet-style CSV puts round it."""
+    field = field.strip()
+    return field[1:-1].strip() if len(field) > 1 and field[0] == field[-1] == '"' else field
+
+
 def _split(text: str) -> list[str]:
     if "\t" in text or ";" in text:
         fields = re.split(r"[\t;]", text)
     elif "," in text:
-        fields = text.split(",")
+        fields = next(csv.reader([text], skipinitialspace=True)) if '"' in text else \
+            text.split(",")
     else:
-        fields = text.split()
-    fields = [f.strip() for f in fields]
+        fields = _TWO_WORD_MISSING.sub("nodata", text).split()
+    fields = [_unquoted(f) for f in fields]
     while fields and not fields[-1]:
         fields.pop()
     return fields
@@ -100,22 +115,37 @@ def _resolution(token: str) -> float:
     return 10.0 ** (int(exponent or 0) - decimals)
 
 
+_UNIT_IN_KEY = re.compile(r"^(.*?)\s*[\[(]\s*([^\])]+?)\s*[\])]$")
+
+
+def _pair(key: str, value: str) -> tuple[str, str]:
+    """A header pair with a length unit written in the key moved to its numbers:
+    ``X spacing (um), 0.5`` -> ``("x spacing", "0.5 um")``, as ``X spacing: 0.5 um`` reads."""
+    key, value = normalise_key(key), value.strip()
+    match = _UNIT_IN_KEY.match(key)
+    if (match is not None and length_factor(match.group(2)) is not None
+            and all(_NUMBER.match(v) for v in value.split())):
+        return match.group(1), f"{value} {match.group(2)}"
+    return key, value
+
+
 def header_pairs(lines: list[str]) -> dict[str, str]:
     """``key: value``, ``key = value`` or ``key,value[,unit]`` header lines as a dict.
 
-    Keys are normalised (:func:`normalise_key`), values are the fields joined by spaces; the
-    first occurrence of a key wins; other lines are ignored.
+    Keys are normalised (:func:`normalise_key`), values are the fields joined by spaces; a
+    length unit in brackets at the end of a key whose value is numbers goes with the numbers
+    (:func:`_pair`); the first occurrence of a key wins; other lines are ignored.
     """
     pairs = {}
     for line in lines:
         text = _COMMENT.sub("", line).strip()
         match = _KEY_VALUE.match(text)
         if match is not None and match.group(2).strip():
-            pairs.setdefault(normalise_key(match.group(1)), match.group(2).strip())
+            pairs.setdefault(*_pair(match.group(1), match.group(2)))
             continue
         fields = _split(text)
         if len(fields) >= 2 and not _NUMBER.match(fields[0]) and fields[1]:
-            pairs.setdefault(normalise_key(fields[0]), " ".join(fields[1:]))
+            pairs.setdefault(*_pair(fields[0], " ".join(fields[1:])))
     return pairs
 
 
@@ -161,6 +191,44 @@ def _decimal_commas(names: list[str], line: str, rows: list[list[str]]) -> bool:
                        for k in range(0, len(row), 2)) for row in rows)
 
 
+def _refuse_cut_block(path: Path, lines: list[str], parsed: list, start: int) -> None:
+    """Refuse a file whose data block is cut by a data line with an unknown word.
+
+    The line just above the block (``start``), blank lines skipped, is taken for a data line
+    -- a point the instrument marked with a word the reader does not know (``12 7 NoValue``)
+    -- when it is not a comment, its first field is a number, it has the block's number of
+    fields or one more (a marker of two words) and a word among them; for a block of fewer than
+    three columns also only when its first number continues the block's first column by one
+    step (so that a header line ``8000 points`` above x, z columns is not one). Taking the block
+    after such a line would silently drop every line before it (a Zygo XYZ export's
+    ``No Data`` points once read as the 642 lines after the last one).
+    """
+    width = len(parsed[start][0])
+    above = start - 1
+    while above >= 0 and not lines[above].strip():
+        above -= 1
+    if above < 0 or _COMMENT.match(lines[above]):
+        return
+    text = lines[above].strip()
+    decimal_comma = ("\t" in text or ";" in text) and "," in text
+    fields = _split(text)
+    values = [_value(f, decimal_comma) for f in fields]
+    if (len(fields) not in (width, width + 1) or values[0] is None or np.isnan(values[0])
+            or all(v is not None for v in values)):
+        return
+    if width < 3:
+        following = parsed[start + 1] if start + 1 < len(parsed) else None
+        if following is None:
+            return
+        first, second = parsed[start][0][0], following[0][0]
+        if not abs(values[0] - (2 * first - second)) <= 0.5 * abs(second - first):
+            return
+    word = next(f for f, v in zip(fields, values, strict=True) if v is None)
+    raise InputError(f"{path}:{above + 1}", "numbers or a missing-value marker (NaN, BAD, "
+                     "***, No Data, ...) in each field of a data line; the lines from "
+                     f"{start + 1} on would be read alone", word)
+
+
 def read_table(path: Path) -> TextTable:
     """Read a text export's header and data block (see the module docstring).
 
@@ -168,7 +236,8 @@ def read_table(path: Path) -> TextTable:
     ------
     InputError
         No data block, a data line with another number of columns than the first (naming the
-        file and line), words after the data block, a binary file.
+        file and line), words after the data block or in a data line just above it
+        (:func:`_refuse_cut_block`), a binary file.
     """
     lines = _lines(path)
     parsed = [None if _COMMENT.match(line) else _row(line) for line in lines]
@@ -181,6 +250,7 @@ def read_table(path: Path) -> TextTable:
         start -= 1
     while parsed[start] is None:  # blank lines at the top of the block
         start += 1
+    _refuse_cut_block(path, lines, parsed, start)
     width = len(parsed[start][0])
     rows, tokens = [], []
     for i in range(start, len(lines)):

@@ -37,9 +37,18 @@ def _normalise(text: str) -> str:
     return _ALIASES.get(text, text)
 
 
+#: Lengths pint knows that no instrument measures in: typographic pixels and points (pint's
+#: ``px`` is 1/96 inch, so ``--unit px`` read heights as 0.26 mm each).
+_NOT_INSTRUMENT_UNITS = frozenset({"px", "pixel", "pixels", "pt", "point", "points", "pica",
+                                   "dot", "dots"})
+
+
 def length_factor(text: str | None) -> float | None:
-    """Metres per unit of a length unit spelt ``text``; None when it is not a length unit."""
+    """Metres per unit of a length unit spelt ``text``; None when it is not a length unit (or
+    is one of :data:`_NOT_INSTRUMENT_UNITS`)."""
     if text is None or not text.strip() or re.search(r"\d", text):
+        return None
+    if _normalise(text) in _NOT_INSTRUMENT_UNITS:
         return None
     try:
         quantity = registry().Quantity(1.0, _normalise(text))
