@@ -11,6 +11,7 @@ from asperity.contact import friction_capacity, solve_tangential
 from asperity.errors import InputError
 from asperity.examples import example_text, list_examples
 from asperity.materials import Material
+from asperity.report import render_report
 from asperity.runners import run_case
 from asperity.sweep import load_study
 
@@ -511,6 +512,12 @@ def test_a_path_taken_to_gross_slip_on_purpose_reads_as_such():
     assert shift[k] * 1e-6 == pytest.approx(_mindlin_shift(33.0), rel=1e-9)
     assert force.max() == pytest.approx(60.0)  # the curve ends at mu P
     assert "load_sharing" not in out.figures  # one region: nothing shared
+    # the report keeps "path gross slip" and its step together among the results (the step
+    # was listed under "Solver", away from the yes it belongs to)
+    page = render_report("ball", {}, out, {})
+    results, solver = page.split("<h3>Solver</h3>")[0], page.split("<h3>Solver</h3>")[1]
+    assert "path gross slip step" in results.split("Key results")[1]
+    assert "path gross slip" not in solver.split("</table>")[0]
     none = _ball("30 N", grid={"nx": 32, "ny": 32}, load_path={"steps": 2})
     assert none.summary["path_gross_slip"] is False
     assert "path_gross_slip_step" not in none.summary
