@@ -30,7 +30,7 @@ from ..contact.reference import (
 from ..errors import InputError
 from ..formatting import format_quantity
 from ..materials import contact_modulus, coupling_compliance
-from ..references import tangential_comparisons
+from ..references import cycle_energy_comparisons, tangential_comparisons
 from ..results import Outcome, variable
 
 __all__ = ["run"]
@@ -551,6 +551,12 @@ def run(case, progress=None) -> Outcome:
     free = case.loading.rotation == "free"
     comparisons = tangential_comparisons(case, res, fld.x, fld.y, fld.mu, body1, body2,
                                          fld.hertz)
+    if path is not None and _mindlin_compliance(case, fld, path, body1, body2) is not None and (
+            case.load_path.history == "cycle"):
+        direction = np.array([fx, fy]) / math.hypot(fx, fy)
+        comparisons += cycle_energy_comparisons(
+            path.loads[:, :2] @ direction, path.dissipated_energy, fld.hertz, case.mu, body1, body2,
+            max(fld.x[1] - fld.x[0], fld.y[1] - fld.y[0]))
     if case.reference is not None and case.reference.note:
         notes.append(case.reference.note)
     if identical:
