@@ -609,3 +609,62 @@ def test_a_fretting_cycle_sets_its_energy_beside_mindlin_deresiewicz():
     assert row.value == pytest.approx(loop, rel=0.01) and row.passed
     assert "through 4 steps per quarter cycle" in row.note
     assert _signed_percent(row.note, "closed-form loop gives") == pytest.approx(-1.6, abs=0.05)
+
+
+def _pads(moment, force="0 N", nx=128, ny=48, regions=None):
+    regions = regions or [
+        {"shape": "circle", "radius": "3 mm", "center": ["-5 mm", "0 mm"], "pressure": "20 MPa"},
+        {"shape": "circle", "radius": "3 mm", "center": ["5 mm", "1 mm"], "pressure": "10 MPa"}]
+    return run_case(load_case({
+        "analysis": "tangential", "mu": 0.2,
+        "body1": {"youngs_modulus": "70 GPa", "poisson_ratio": 0.33},
+        "body2": {"youngs_modulus": "70 GPa", "poisson_ratio": 0.33},
+        "pressure": {"source": "uniform", "regions": regions},
+        "loading": {"force": force, "direction": "90 deg", "moment": moment},
+        "grid": {"nx": nx, "ny": ny}}))
+
+
+def test_round_pads_carry_their_load_and_slip_at_the_closed_form_load():
+    """A user's two round pads (radius 3 mm at (-5, 0) and (5, 1) mm, 20 and 10 MPa, mu = 0.2)
+    under 20 N along +y with 1 N m: the cells whose centres lie in a circle covered 0.45 %
+    more than its area, so the normal load was 852.0 N for pi (3 mm)^2 (30 MPa) = 848.23 N and
+    the gross-slip load 0.7330 times the applied one. Reference (quadrature written out here,
+    600 x 1200 Gauss-polar points per pad): the centre of rotation where the full-slip traction
+    mu p (perpendicular to r - c) sums to a force along +y with 1 N m per 20 N, c = (-3.8958,
+    0.1441) mm, t = 0.729369. Now 0.72971 (+0.05 %), the load exact. A single disc (20 MPa,
+    3 mm, 64 x 64) under a moment: (2 pi / 3) mu p a^3 = 226.19 N mm was 227.4 (+0.51 %),
+    now 226.6 (+0.17 %)."""
+    g, gw = np.polynomial.legendre.leggauss(600)
+    t = np.arange(1200) * 2 * np.pi / 1200
+    pts, weights = [], []
+    for (cx, cy), p in (((-5e-3, 0.0), 20e6), ((5e-3, 1e-3), 10e6)):
+        r = 1.5e-3 * (g + 1)
+        rr, tt = np.meshgrid(r, t, indexing="ij")
+        pts.append(np.c_[cx + (rr * np.cos(tt)).ravel(), cy + (rr * np.sin(tt)).ravel()])
+        weights.append(np.outer(0.2 * p * 1.5e-3 * gw * r, np.full(1200, 2 * np.pi / 1200))
+                       .ravel())
+    xy, w = np.vstack(pts), np.concatenate(weights)
+    load_centre = np.array([(20 * -5e-3 + 10 * 5e-3) / 30, 10 * 1e-3 / 30])
+
+    def full_slip(c):
+        d = xy - c
+        tq = np.c_[-d[:, 1], d[:, 0]] / np.hypot(*d.T)[:, None]
+        rc = xy - load_centre
+        return (w[:, None] * tq).sum(0), (w * (rc[:, 0] * tq[:, 1] - rc[:, 1] * tq[:, 0])).sum()
+
+    from scipy.optimize import fsolve
+
+    c = fsolve(lambda c: [full_slip(c)[0][0] * 1e3,
+                          full_slip(c)[0][1] - 20 * full_slip(c)[1]], [-3.9e-3, 1.5e-4],
+               xtol=1e-13)
+    expected = full_slip(c)[0][1] / 20.0
+    assert expected == pytest.approx(0.729369, rel=1e-5)
+    out = _pads("1 N m", "20 N")
+    s = out.summary
+    assert s["normal_load_n"] == pytest.approx(np.pi * 9e-6 * 30e6, rel=1e-9)
+    assert s["load_capacity"] == pytest.approx(expected, rel=1.5e-3)
+    assert any("pressure.regions[0] by 0.99554" in n for n in out.notes)
+    disc = _pads("2 N m", nx=64, ny=64, regions=[
+        {"shape": "circle", "radius": "3 mm", "center": ["0 mm", "0 mm"], "pressure": "20 MPa"}])
+    gross = 2 * np.pi / 3 * 0.2 * 20e6 * 3e-3**3
+    assert disc.summary["gross_slip_moment_nm"] == pytest.approx(gross, rel=3e-3)

@@ -98,6 +98,12 @@ class RegionSpec(CaseModel):
             return self.radius, self.radius
         return 0.5 * self.size[0], 0.5 * self.size[1]
 
+    def area(self) -> float:
+        """Area of the region, m^2."""
+        if self.shape == "circle":
+            return math.pi * self.radius**2
+        return self.size[0] * self.size[1]
+
     def mask(self, X, Y, center) -> np.ndarray:
         """Cells whose centres lie inside the region centred at ``center``."""
         dx, dy = X - center[0], Y - center[1]

@@ -119,26 +119,47 @@ def _hertz_field(case, body1, body2):
 
 
 def _uniform_field(case):
-    """Uniform pressure (and friction) per region; every region must cover a cell."""
+    """Uniform pressure (and friction) per region; every region must cover a cell.
+
+    A region's cells (those whose centres lie inside it) cover a staircase of its shape; its
+    pressure is scaled by area / (cells x cell area) so that it carries its load p A exactly
+    (a circle of radius 3 mm on 0.094 mm cells covered 0.33 % too much; rectangles on whole
+    cells are not changed). Returns the field and the scale factor of each region.
+    """
     spec = case.pressure
     x, y = case.grid.coordinates(spec.bounding_box())
     X, Y = np.meshgrid(x, y, indexing="ij")
+    cell = (x[1] - x[0]) * (y[1] - y[0])
     p, mu = np.zeros(X.shape), np.full(X.shape, case.mu)
+    scales = []
     for k, (region, center) in enumerate(zip(spec.regions, spec.centers(), strict=True)):
         m = region.mask(X, Y, center)
         if not m.any():
             raise InputError(f"pressure.regions[{k}]", "a region covering at least one grid "
                                                         "cell (refine grid.nx / ny)")
-        p[m] = region.pressure
+        scales.append(region.area() / (np.count_nonzero(m) * cell))
+        p[m] = region.pressure * scales[-1]
         if region.mu is not None:
             mu[m] = region.mu
-    return _Field(x, y, p, mu)
+    return _Field(x, y, p, mu), scales
 
 
-def _field(case, body1, body2) -> _Field:
+def _region_notes(scales) -> list[str]:
+    """Where a region's cells cover more or less than its area (:func:`_uniform_field`)."""
+    off = [(k, s) for k, s in enumerate(scales) if abs(s - 1.0) > 1e-9]
+    if not off:
+        return []
+    each = ", ".join(f"pressure.regions[{k}] by {s:.5g}" for k, s in off)
+    return [f"The cells of a region cover a staircase of its shape; its pressure is scaled so "
+            f"that it carries its load, pressure times area ({each}); the summary's normal "
+            "load is the regions' exact load."]
+
+
+def _field(case, body1, body2) -> tuple[_Field, list[float]]:
+    """The pressure field and, for uniform regions, each region's scale factor."""
     if case.pressure.source == "uniform":
         return _uniform_field(case)
-    return _hertz_field(case, body1, body2)
+    return _hertz_field(case, body1, body2), []
 
 
 # --- outputs --------------------------------------------------------------------------------
@@ -516,8 +537,9 @@ def run(case, progress=None) -> Outcome:
     # the same steel given as "30457.92 ksi" and "30.45792e6 psi" differs in the last digit
     identical = all(math.isclose(getattr(body1, k), getattr(body2, k), rel_tol=1e-9)
                     for k in ("youngs_modulus", "poisson_ratio"))
-    fld = _field(case, body1, body2)
+    fld, scales = _field(case, body1, body2)
     notes = [] if fld.roughness is None else list(fld.roughness.notes)
+    notes += _region_notes(scales)
     if fld.normal is not None and not fld.normal.converged:
         notes.append(f"The normal-contact solve did not converge in {fld.normal.iterations} "
                      "iterations; the pressure, and everything below, is not trustworthy.")
