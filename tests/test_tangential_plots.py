@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from asperity.contact import hertz_point
+from asperity.contact import hertz_point, solve_tangential
 from asperity.contact.load_path import proportional_path, tangential_load_path
 from asperity.materials import Material
 from asperity.plotting import tangential as tplot
@@ -111,3 +111,22 @@ def test_compliance_overlays_mindlin_deresiewicz_on_a_cycle():
     assert force[zero] == pytest.approx(0.0, abs=1e-12)
     assert shift[zero] == pytest.approx(delta(54.0) - 2 * delta(27.0), rel=1e-9)
     assert shift[-1] == pytest.approx(delta(54.0), rel=1e-9) and force[-1] == pytest.approx(54)
+
+
+def test_a_centre_of_rotation_off_the_map_is_named_without_round_off():
+    """40 N along x with 20 N mm on a steel ellipse (Rx 20 mm, Ry 5 mm, 500 N, mu = 0.3): the
+    centre of rotation lies on the y axis beyond the map, and the corner text quoted its x as
+    round-off (-1.9e-14 mm); a zero coordinate reads 0."""
+    steel = Material(210e9, 0.3)
+    hz = hertz_point(500.0, 20e-3, 5e-3, steel, steel)
+    x = np.linspace(-1.05 * hz.a, 1.05 * hz.a, 32)
+    y = np.linspace(-1.05 * hz.b, 1.05 * hz.b, 16)
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    p = hz.pressure(X, Y)
+    res = solve_tangential(p * 500.0 / (p.sum() * (x[1] - x[0]) * (y[1] - y[0])), x, y, 0.3,
+                           steel, steel, force=(40.0, 0.0), moment=0.02)
+    assert abs(res.centre_of_rotation[0]) < 1e-12 < 1.05 * hz.b < res.centre_of_rotation[1]
+    ax = tplot.traction_map(res, x, y).axes[0]
+    (text,) = [t.get_text() for t in ax.texts if "off the map" in t.get_text()]
+    cy = res.centre_of_rotation[1] * 1e3
+    assert text == f"centre of rotation off the map: (0, {cy:.3g}) mm"

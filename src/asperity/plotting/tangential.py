@@ -82,6 +82,9 @@ def _mark_centre(ax, centre, x, y):
     if x[0] * MM <= cx <= x[-1] * MM and y[0] * MM <= cy <= y[-1] * MM:
         ax.plot(cx, cy, "r+", ms=10, mew=2, label="centre of rotation")
     else:
+        # round-off of a coordinate that is zero (-1.9e-14 mm beside 0.228 mm) is shown as 0
+        size = max(np.ptp(x), np.ptp(y), abs(centre[0]), abs(centre[1])) * MM
+        cx, cy = (0.0 if abs(v) <= 1e-9 * size else v for v in (cx, cy))
         ax.text(0.02, 0.98, f"centre of rotation off the map: ({cx:.3g}, {cy:.3g}) mm",
                 transform=ax.transAxes, va="top", fontsize=8, color="r")
 
