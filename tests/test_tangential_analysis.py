@@ -573,6 +573,9 @@ def test_round_off_is_reported_as_zero_and_the_stick_radius_is_given():
     s = out.summary
     assert s["rotation_rad"] == 0.0 and s["region_1_moment_nm"] == 0.0
     assert s["moment_center_x_m"] == 0.0 and s["moment_center_y_m"] == 0.0
+    # the note quoted the same point as "(-1.921e-21, 8.731e-22) m"
+    assert any(n.endswith("the moment is about the centre of the normal load (0, 0) m.")
+               for n in out.notes)
     row = next(r for r in summary_rows(s) if r.key == "rotation_rad")
     assert row.text == "0 rad"
     a = (3 * 200 * 5e-3 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)

@@ -598,7 +598,8 @@ def run(case, progress=None) -> Outcome:
                      "(loading.direction); the moment is about "
                      + ("loading.center" if case.loading.center is not None
                         else "the centre of the normal load")
-                     + f" ({res.centre[0]:.4g}, {res.centre[1]:.4g}) m.")
+                     + f" ({summary['moment_center_x_m']:.4g}, "
+                       f"{summary['moment_center_y_m']:.4g}) m.")
     if not free:
         notes.append("Rotation is fixed (loading.rotation): body 1 translates only, the moment "
                      "equation is dropped and the fixture supplies the reaction moment "
