@@ -342,3 +342,36 @@ def test_a_rough_balls_approach_is_also_given_from_first_contact():
     assert any("measured from the roughness's mean plane" in n for n in smooth.notes)
     (row,) = [r for r in smooth.comparisons if r.quantity == "approach from first contact"]
     assert row.reference == pytest.approx(hertz_approach(20.0), rel=1e-9)
+
+
+def test_a_ball_past_first_yield_below_the_hardness_warns():
+    """A user's steel ball (R 5 mm) on aluminium 6061 (70 GPa, nu 0.33, hardness 1.1 GPa),
+    50 N: p0 = 1.0995 GPa, 99.96 % of the hardness, ran without a word (the hardness check
+    starts at H). First yield beneath the surface is at p0 = 1.60 Y (von Mises, depth 0.48 a;
+    Johnson 1985 sec. 6.2) with Tabor's H = 2.8 Y: 0.57 H = 0.627 GPa, reached at
+    50 (0.627 / 1.0995)^3 = 9.27 N. E* and p0 written out here."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    e_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.33**2) / 70e9)
+    a = (3 * 50 * 5e-3 / (4 * e_star)) ** (1 / 3)
+    p0 = 3 * 50 / (2 * np.pi * a * a)
+    assert p0 == pytest.approx(1.0995e9, rel=1e-4)
+
+    def run(load, hardness="1.1 GPa"):
+        return run_case(load_case({
+            "analysis": "normal",
+            "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3, "hardness": "7 GPa"},
+            "body2": {"youngs_modulus": "70 GPa", "poisson_ratio": 0.33,
+                      "name": "aluminium", "hardness": hardness},
+            "geometry": {"shape": "sphere", "rx": "5 mm"}, "loading": {"load": load},
+            "grid": {"nx": 48, "ny": 48, "x_extent": "0.45 mm", "y_extent": "0.45 mm"}}))
+
+    (line,) = run("50 N").warnings
+    assert line.startswith("pressure: the Hertz peak p0 = 1.1 GPa is 100 % of the hardness "
+                           "of body2 (aluminium")
+    assert "limit 0.57 H = 0.627 GPa" in line
+    assert f"keep loading.load below {50 * (0.57 * 1.1e9 / p0) ** 3:.4g} N" in line
+    assert not [w for w in run("9 N").warnings if w.startswith("pressure")]  # p0 = 0.563 H
+    above = run("50 N", hardness="1 GPa").warnings  # above H: the hardness line alone
+    assert len(above) == 1 and "exceeds the hardness" in above[0]

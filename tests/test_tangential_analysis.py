@@ -671,3 +671,15 @@ def test_round_pads_carry_their_load_and_slip_at_the_closed_form_load():
         {"shape": "circle", "radius": "3 mm", "center": ["0 mm", "0 mm"], "pressure": "20 MPa"}])
     gross = 2 * np.pi / 3 * 0.2 * 20e6 * 3e-3**3
     assert disc.summary["gross_slip_moment_nm"] == pytest.approx(gross, rel=3e-3)
+
+
+def test_a_hertz_pressure_past_first_yield_warns_with_the_load_to_stay_below():
+    """The 10 mm ball at 200 N (p0 = 3 P / (2 pi a^2) = 2.742 GPa) with a 4 GPa hardness on
+    body 1: 68.6 % of H, past first yield (0.57 H = 2.28 GPa, p0 = 1.6 Y with H = 2.8 Y),
+    below H, was silent; the load at first yield is 200 (2.28 / 2.742)^3 = 115 N."""
+    out = _ball("30 N", grid={"nx": 32, "ny": 32}, body1={"hardness": "4 GPa"})
+    a = (3 * 200 * 5e-3 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
+    p0 = 3 * 200 / (2 * math.pi * a * a)
+    (line,) = [w for w in out.warnings if w.startswith("pressure")]
+    assert f"is {100 * p0 / 4e9:.3g} % of the hardness of body1" in line
+    assert f"keep pressure.load below {200 * (0.57 * 4e9 / p0) ** 3:.4g} N" in line

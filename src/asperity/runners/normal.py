@@ -168,7 +168,8 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
 def _plasticity(case, res, body1, body2) -> list[str]:
     """The pressures against the bodies' hardness (:func:`diagnostics.above_hardness`) and,
     with no hardness given, a smooth Hertz contact's validity
-    (:func:`diagnostics.hertz_validity`: small against its radius, small strains)."""
+    (:func:`diagnostics.hertz_validity`: small against its radius, small strains); with one,
+    first yield beneath the surface (:func:`diagnostics.hertz_first_yield`)."""
     bodies = [("body1", body1), ("body2", body2)]
     lines = diagnostics.above_hardness(res.pressure, bodies)
     rx, ry = case.geometry.radii()
@@ -178,6 +179,7 @@ def _plasticity(case, res, body1, body2) -> list[str]:
         lines += diagnostics.hertz_validity(a, radius, h.p_max, contact_modulus(body1, body2),
                                             diagnostics.hardness_given(bodies),
                                             load_key="loading.load")
+        lines += diagnostics.hertz_first_yield(h.p_max, res.load, bodies, "loading.load")
     return lines
 
 

@@ -498,14 +498,19 @@ def _gross_slip_warning(case, fld, res, applied) -> list[str]:
 
 def _validity_warnings(case, fld, body1, body2) -> list[str]:
     """Hertz's assumptions (small contact, elastic strains) for a Hertz-built pressure
-    (:func:`asperity.diagnostics.hertz_validity`)."""
+    (:func:`asperity.diagnostics.hertz_validity`), and first yield beneath the surface of a
+    body with a hardness (:func:`asperity.diagnostics.hertz_first_yield`)."""
     h = fld.hertz
     if h is None:
         return []
     rx, ry = case.pressure.radii()
     a, radius = max(((h.a, rx), (h.b, ry)), key=lambda ar: ar[0] / ar[1])
-    given = diagnostics.hardness_given([("body1", body1), ("body2", body2)])
-    return diagnostics.hertz_validity(a, radius, h.p_max, h.modulus, given)
+    bodies = [("body1", body1), ("body2", body2)]
+    lines = diagnostics.hertz_validity(a, radius, h.p_max, h.modulus,
+                                       diagnostics.hardness_given(bodies))
+    if fld.roughness is None:  # a rough normal solve's pressure is not Hertz's
+        lines += diagnostics.hertz_first_yield(h.p_max, h.load, bodies)
+    return lines
 
 
 def _path_summary(path):
