@@ -683,3 +683,23 @@ def test_a_hertz_pressure_past_first_yield_warns_with_the_load_to_stay_below():
     (line,) = [w for w in out.warnings if w.startswith("pressure")]
     assert f"is {100 * p0 / 4e9:.3g} % of the hardness of body1" in line
     assert f"keep pressure.load below {200 * (0.57 * 4e9 / p0) ** 3:.4g} N" in line
+
+
+def test_a_long_ellipse_says_it_is_not_a_line_contact():
+    """A user's stand-in for a cylinder: Rx = 10 mm, Ry = 10 m (a = 106.8 um, b = 7.25 mm),
+    1000 N, mu = 0.3, Q = 150 N = 0.5 mu P. There is no line tangential contact; the run gave
+    a stick "radius" and no reference. Its stick zone is Mindlin's ellipse,
+    c/a = (1 - Q/(mu P))^(1/3) = 0.7937 (Johnson sec. 7.2), not Cattaneo's 2-D strip
+    sqrt(1 - Q/(mu P)) = 0.7071; measured across the short axis 0.783 on 48 x 48 cells (a is
+    23 cells); the note says so."""
+    out = run_case(load_case({
+        "analysis": "tangential", "mu": 0.3,
+        "body1": {"youngs_modulus": "210 GPa"}, "body2": {"youngs_modulus": "210 GPa"},
+        "pressure": {"source": "hertz", "load": "1000 N", "rx": "10 mm", "ry": "10 m"},
+        "loading": {"force": "150 N"}, "grid": {"nx": 48, "ny": 48}}))
+    (note,) = [n for n in out.notes if n.startswith("A long ellipse")]
+    assert f"= {0.5 ** (1 / 3):.3g} at Q = 0.5 mu P" in note
+    assert f"sqrt(1 - Q/(mu P)) = {0.5 ** 0.5:.3g}" in note
+    measured = float(re.search(r"here ([0-9.]+) across", note).group(1))
+    assert measured == pytest.approx(0.5 ** (1 / 3), abs=0.03)
+    assert "not a line contact" in note

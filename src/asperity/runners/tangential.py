@@ -380,6 +380,34 @@ def _mindlin_compliance(case, fld, path, body1, body2):
     return shift, along, label
 
 
+#: Semi-axis ratio of a Hertz ellipse above which a run says it is not a line contact.
+LONG_ELLIPSE = 5.0
+
+
+def _long_ellipse_note(case, fld, res) -> list[str]:
+    """A long Hertz ellipse under a force alone (a user's stand-in for a cylinder): its stick
+    zone follows Mindlin's ellipse, c/a = (1 - Q/(mu P))^(1/3) (Johnson sec. 7.2), not
+    Cattaneo's 2-D strip, sqrt(1 - Q/(mu P)); there is no line (2-D) tangential contact."""
+    h = fld.hertz
+    force = math.hypot(*case.loading.vector())
+    if (case.pressure.source != "hertz" or h is None or res.gross_slip or force == 0.0
+            or case.loading.moment != 0.0 or max(h.a, h.b) < LONG_ELLIPSE * min(h.a, h.b)):
+        return []
+    ratio = force / float((fld.mu * fld.pressure).sum() * fld.cell_area)
+    # along the short axis through the cells nearest the centre
+    short, across = (fld.x, fld.y) if h.a < h.b else (fld.y, fld.x)
+    k = int(np.argmin(np.abs(across)))
+    line = (lambda f: f[:, k]) if h.a < h.b else (lambda f: f[k, :])
+    measured = np.count_nonzero(line(res.stick)) / max(np.count_nonzero(line(fld.pressure)), 1)
+    return [f"A long ellipse (semi-axes {format_quantity(h.a, 'm')} by "
+            f"{format_quantity(h.b, 'm')}) is not a line contact: its stick zone follows "
+            f"Mindlin's ellipse, c/a = (1 - Q/(mu P))^(1/3) = {(1 - ratio) ** (1 / 3):.3g} at "
+            f"Q = {ratio:.3g} mu P (here {measured:.3g} across the short axis, "
+            f"{format_quantity(short[1] - short[0], 'm')} cells), not Cattaneo's 2-D strip, "
+            f"sqrt(1 - Q/(mu P)) = {math.sqrt(1 - ratio):.3g}, which asperity does not "
+            "solve (no line contact in a tangential case)."]
+
+
 def _file_warnings(fld) -> list[str]:
     """A measured roughness file's doubts (:func:`asperity.diagnostics.measured_file_on_grid`)."""
     rough = fld.roughness
@@ -613,6 +641,7 @@ def run(case, progress=None) -> Outcome:
         notes.append("Method lp: Seireg's predetermined traction directions (exact for pure "
                      "torsion about the true centre and pure translation; an approximation "
                      "otherwise).")
+    notes += _long_ellipse_note(case, fld, res)
     if case.pressure.source == "hertz":
         notes.append("Hertz pressure sampled at the cell centres and scaled so that the "
                      "discrete load equals the applied load.")
