@@ -703,3 +703,24 @@ def test_a_long_ellipse_says_it_is_not_a_line_contact():
     measured = float(re.search(r"here ([0-9.]+) across", note).group(1))
     assert measured == pytest.approx(0.5 ** (1 / 3), abs=0.03)
     assert "not a line contact" in note
+
+
+def test_a_force_about_an_off_centre_point_is_not_checked_as_a_force_alone():
+    """30 N along x on the 10 mm ball with loading.center = (0, 0.1 mm) and no moment about it:
+    about the contact's centre that is 30 N with -(0.1 mm)(30 N) = -3 N mm, which twists the
+    contact (-4.9 mrad). The Cattaneo-Mindlin rows were checked as for a force alone and
+    "differed" (shift +74 %, stick radius -19 %); they are now the combined load's unchecked
+    rows, and the note gives the moment about the centre. With the rotation fixed the fixture
+    carries the moment and the contact translates under the force alone: Cattaneo-Mindlin's
+    shift, delta = 3 mu P (2 - nu) / (8 G a) [1 - (1 - Q/(mu P))^(2/3)] for the pair, holds."""
+    out = _ball("30 N", grid={"nx": 32, "ny": 32}, loading={"center": ["0 mm", "0.1 mm"]})
+    assert out.summary["rotation_rad"] < 0
+    assert all(r.passed is not False for r in out.comparisons)
+    assert not [r for r in out.comparisons if r.quantity.startswith("rigid shift")
+                and r.tolerance is not None]
+    assert any(f"the load has the moment {-0.1e-3 * 30 * 1e3:.4g} N mm" in n for n in out.notes)
+    fixed = _ball("30 N", grid={"nx": 32, "ny": 32},
+                  loading={"center": ["0 mm", "0.1 mm"], "moment": "2 N mm",
+                           "rotation": "fixed"})
+    (row,) = [r for r in fixed.comparisons if r.quantity == "rigid shift (relative)"]
+    assert row.passed and row.reference == pytest.approx(_mindlin_shift(30.0), rel=1e-9)

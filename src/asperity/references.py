@@ -223,7 +223,10 @@ def tangential_comparisons(case, result, x, y, mu, body1, body2, hertz=None) -> 
     free = case.loading.rotation == "free"
     rows = _equilibrium(result, applied, free)
     if uniform_mu and case.pressure.source == "hertz" and hertz is not None:
-        rows += _hertz_rows(case.mu, hertz, result, body1, body2, applied, free, identical, dx,
+        # the closed forms take the moment about the contact's centre; a fixture that holds
+        # the rotation carries it
+        centred = (fx, fy, case.loading.moment_about_origin() if free else 0.0)
+        rows += _hertz_rows(case.mu, hertz, result, body1, body2, centred, free, identical, dx,
                             cell_area)
     if uniform_mu and case.pressure.source == "uniform":
         rows += _uniform_rows(case.pressure, case.mu, result, body1, body2, applied, free, dx)

@@ -256,6 +256,17 @@ class TangentialLoading(CaseModel):
         """(Fx, Fy), N."""
         return self.force * math.cos(self.direction), self.force * math.sin(self.direction)
 
+    def moment_about_origin(self) -> float:
+        """The twisting moment about the origin, the centre of a Hertz contact, N m:
+        ``moment + cx Fy - cy Fx`` with (cx, cy) = ``center`` (omitted: the centre of the
+        normal load, the origin for a Hertz pressure, and the moment as given). A force whose
+        line of action misses the contact's centre twists it: 30 N along x about
+        ``center = ["0 mm", "0.1 mm"]`` is 30 N with -3 N mm about the centre."""
+        if self.center is None:
+            return self.moment
+        fx, fy = self.vector()
+        return self.moment + self.center[0] * fy - self.center[1] * fx
+
 
 class TangentialGridSpec(CaseModel):
     """``[grid]``: ``nx`` by ``ny`` cells over the domain.

@@ -338,6 +338,14 @@ def _uniform_mu(case, fld) -> bool:
     return bool(np.all(fld.mu == case.mu))
 
 
+def _centred_moment(case) -> float:
+    """The moment about a Hertz contact's centre that twists it (0 with the rotation fixed):
+    what the closed forms of a force alone need to be zero."""
+    if case.loading.rotation == "fixed":
+        return 0.0
+    return case.loading.moment_about_origin()
+
+
 def _circular_hertz(case, fld) -> bool:
     h = fld.hertz
     return (case.pressure.source == "hertz" and h is not None
@@ -368,7 +376,7 @@ def _mindlin_compliance(case, fld, path, body1, body2):
     """The closed-form compliance curve of the path (shift, force along the largest force,
     label) where it applies: a circular Hertz contact of similar bodies (beta = 0) under a
     force alone; else None."""
-    if (not _circular_hertz(case, fld) or case.loading.moment != 0.0
+    if (not _circular_hertz(case, fld) or _centred_moment(case) != 0.0
             or abs(_dundurs_beta(body1, body2)) >= 1e-3):
         return None
     h = fld.hertz
@@ -391,7 +399,7 @@ def _long_ellipse_note(case, fld, res) -> list[str]:
     h = fld.hertz
     force = math.hypot(*case.loading.vector())
     if (case.pressure.source != "hertz" or h is None or res.gross_slip or force == 0.0
-            or case.loading.moment != 0.0 or max(h.a, h.b) < LONG_ELLIPSE * min(h.a, h.b)):
+            or _centred_moment(case) != 0.0 or max(h.a, h.b) < LONG_ELLIPSE * min(h.a, h.b)):
         return []
     ratio = force / float((fld.mu * fld.pressure).sum() * fld.cell_area)
     # along the short axis through the cells nearest the centre
@@ -435,7 +443,7 @@ def _coupling_effect(case, fld, res, body1, body2) -> str:
     if res.gross_slip or not _circular_hertz(case, fld):
         return ""
     h, mu = fld.hertz, case.mu
-    force, moment = math.hypot(*case.loading.vector()), abs(case.loading.moment)
+    force, moment = math.hypot(*case.loading.vector()), abs(_centred_moment(case))
     stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
     if moment == 0.0 and 0.0 < force < mu * h.load:
         cm = cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
@@ -632,7 +640,12 @@ def run(case, progress=None) -> Outcome:
                      + ("loading.center" if case.loading.center is not None
                         else "the centre of the normal load")
                      + f" ({summary['moment_center_x_m']:.4g}, "
-                       f"{summary['moment_center_y_m']:.4g}) m.")
+                       f"{summary['moment_center_y_m']:.4g}) m"
+                     + (f"; about the Hertz contact's centre the load has the moment "
+                        f"{format_quantity(case.loading.moment_about_origin(), 'N*m')}, which "
+                        "twists it" if fld.hertz is not None and free
+                        and case.loading.moment_about_origin() != case.loading.moment else "")
+                     + ".")
     if not free:
         notes.append("Rotation is fixed (loading.rotation): body 1 translates only, the moment "
                      "equation is dropped and the fixture supplies the reaction moment "
