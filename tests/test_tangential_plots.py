@@ -130,3 +130,17 @@ def test_a_centre_of_rotation_off_the_map_is_named_without_round_off():
     (text,) = [t.get_text() for t in ax.texts if "off the map" in t.get_text()]
     cy = res.centre_of_rotation[1] * 1e3
     assert text == f"centre of rotation off the map: (0, {cy:.3g}) mm"
+
+
+def test_the_shift_of_a_twisted_path_names_its_point():
+    """Force and moment together: the rigid shift is that of the moment's reference point
+    (a user's two pads twisted by 0.4 N m with 8 N along +y moved it along -y), and the
+    axis says so; a force alone keeps the plain label."""
+    m = 0.3 * 3 * np.pi * 0.3 * 200.0 * 1e-4 / 16
+    twisted, x, y = _ball_path(proportional_path((20.0, 0.0), m, steps=2))
+    ax = tplot.compliance_curves(twisted).axes[0]
+    assert ax.get_xlabel() == ("rigid shift of the moment's reference point along the largest "
+                               "force (um)")
+    alone, x, y = _ball_path(proportional_path((20.0, 0.0), steps=2))
+    assert tplot.compliance_curves(alone).axes[0].get_xlabel() == (
+        "rigid shift along the largest force (um)")

@@ -205,7 +205,10 @@ def compliance_curves(path, title="Compliance", *, closed_form=None):
                 ax.plot(np.asarray(shift) * 1e6, along, "k--", lw=1.0, label=name)
             gross = t_gs * float(path.loads[k_gs, :2] @ e) if k_gs >= 0 else None
             unit = "N"
-            ax.set(xlabel="rigid shift along the largest force (um)",
+            # with a twist the shift depends on the point: the solver's is the moment's
+            # reference point (a twisting pair of pads moved it against the force)
+            where = " of the moment's reference point" if has_moment else ""
+            ax.set(xlabel=f"rigid shift{where} along the largest force (um)",
                    ylabel="tangential force along it (N)")
         else:
             ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-", label="load steps")
