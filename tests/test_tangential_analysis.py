@@ -186,6 +186,22 @@ history = "cycle"
     # a closed Masing loop dissipates energy
     assert out.summary["path_dissipated_energy_j"] > 0
     assert out.summary["path_steps"] == 10
+    # its twist width at zero moment, Masing's 2 [beta(M*) - 2 beta(M*/2)] with the uniform
+    # pressure's relative twist beta = (mu p / G) arccosh(a / c) and c from
+    # M = (4 mu p a / 3) [a^2 arccos(c/a) + c sqrt(a^2 - c^2)] (Johnson sec. 7.3), written
+    # out: 2.6460e-5 rad (asperity 2.6375e-5, -0.32 %)
+    from scipy.optimize import brentq
+
+    g = 206e9 / 2.6
+
+    def twist(m):
+        c = brentq(lambda c: 4 * 0.2 * 1e8 * 1e-3 / 3 * (1e-6 * np.arccos(c / 1e-3) + c * np.sqrt(
+            1e-6 - c * c)) - m, 1e-12, 1e-3)
+        return 0.2 * 1e8 / g * np.arccosh(1e-3 / c)
+
+    width = 2 * (twist(0.025) - 2 * twist(0.0125))
+    assert out.summary["path_loop_twist_width_rad"] == pytest.approx(width, rel=0.01)
+    assert "path_loop_width_m" not in out.summary  # no force
 
 
 def test_aspect_ratio_gives_the_requested_ellipse():
@@ -594,7 +610,8 @@ def test_round_off_is_reported_as_zero_and_the_stick_radius_is_given():
 def test_a_fretting_cycle_sets_its_energy_beside_mindlin_deresiewicz():
     """A user's fretting ball (10 mm steel ball on steel, 200 N, mu = 0.3) cycled at
     Q* = 30 N = 0.5 mu P, 4 steps per quarter cycle: the energy per cycle was reported
-    (4.261 uJ) with nothing to judge it by. Reference written out here: the area of the Masing
+    (4.261 uJ) with nothing to judge it by, and its width at zero force not at all.
+    Reference written out here: the area of the Masing
     loop, 4 Q* delta(Q*) - 8 int_0^Q* delta dQ with Cattaneo-Mindlin's relative shift
     (Johnson 7.42), a = (3 P R / (4 E*))^(1/3): 4.2895 uJ. The row's note gives what the
     trapezoidal rule through 4 steps costs on the closed-form loop (-1.6 %)."""
@@ -612,6 +629,12 @@ def test_a_fretting_cycle_sets_its_energy_beside_mindlin_deresiewicz():
     assert row.value == pytest.approx(loop, rel=0.01) and row.passed
     assert "through 4 steps per quarter cycle" in row.note
     assert _signed_percent(row.note, "closed-form loop gives") == pytest.approx(-1.6, abs=0.05)
+    # the loop's width at zero force, 2 [delta(Q*) - 2 delta(Q*/2)] (Masing, Johnson 7.56),
+    # was in result.nc only
+    width = 2 * (delta(q_star) - 2 * delta(q_star / 2))
+    (row,) = [r for r in out.comparisons if r.quantity == "loop width at zero force"]
+    assert row.reference == pytest.approx(width, rel=1e-9) and row.passed
+    assert out.summary["path_loop_width_m"] == pytest.approx(width, rel=0.01)
 
 
 def _pads(moment, force="0 N", nx=128, ny=48, regions=None):

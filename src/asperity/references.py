@@ -9,8 +9,8 @@ and :mod:`asperity.ehl.formulas`.
 - :func:`tangential_comparisons`: equilibrium, Cattaneo-Mindlin (Johnson eq. 7.42), Lubkin
   torsion (Johnson eq. 7.50), uniform-pressure torsion (Johnson sec. 7.3), gross-slip loads, and
   the case's ``[reference]`` table (Seireg ch. 3).
-- :func:`cycle_energy_comparisons`: a fretting cycle's energy per cycle against Mindlin and
-  Deresiewicz (Johnson eq. 7.60).
+- :func:`fretting_cycle_comparisons`: a fretting cycle's energy per cycle and loop width
+  against Mindlin and Deresiewicz (Johnson eqs. 7.56, 7.60).
 - :func:`ehl_steady_comparisons`: the case's ``[reference]`` table, the Newtonian film formulas
   (Moes 1992 and Dowson-Higginson 1977 for line contacts; Nijenbanning, Venner & Moes 1994 and
   Hamrock-Dowson 1977 for point contacts) and the dry Hertz pressure.
@@ -27,8 +27,8 @@ from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
 
-__all__ = ["DOCS", "cite", "cycle_energy_comparisons", "ehl_steady_comparisons",
-           "film_formulas", "lubricant_laws", "tangential_comparisons"]
+__all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formulas",
+           "fretting_cycle_comparisons", "lubricant_laws", "tangential_comparisons"]
 
 DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
@@ -235,9 +235,9 @@ def tangential_comparisons(case, result, x, y, mu, body1, body2, hertz=None) -> 
     return rows
 
 
-def cycle_energy_comparisons(forces, dissipated, hertz, mu, body1, body2,
-                             dx) -> list[Comparison]:
-    """The energy per fretting cycle beside Mindlin and Deresiewicz's closed form.
+def fretting_cycle_comparisons(forces, dissipated, width, hertz, mu, body1, body2,
+                               dx) -> list[Comparison]:
+    """A fretting cycle's energy and loop width beside Mindlin and Deresiewicz's closed forms.
 
     Parameters
     ----------
@@ -246,6 +246,9 @@ def cycle_energy_comparisons(forces, dissipated, hertz, mu, body1, body2,
         cycle 0 -> Q* -> -Q* -> Q*, N.
     dissipated : float
         The path's work over the closed loop, J (NaN when the loop did not close).
+    width : float or None
+        The loop's width, the relative shift between its unloading and reloading branches at
+        zero force, m (None: the cycle does not pass through zero).
     hertz : asperity.contact.HertzPoint
         The circular Hertz contact the pressure was built from.
     mu : float
@@ -258,7 +261,10 @@ def cycle_energy_comparisons(forces, dissipated, hertz, mu, body1, body2,
     Returns
     -------
     list of Comparison
-        One row (none when the loop did not close or Q* >= mu P): the loop area, by the
+        None when the loop did not close or Q* >= mu P. The loop width against Masing's
+        ``2 [delta(Q*) - 2 delta(Q*/2)]`` (Johnson eq. 7.56 at Q = 0 on each branch), a
+        difference of shifts, so its tolerance is the shift's 0.2 % of 2 delta(Q*) over the
+        width, at least 2 %; then the loop area, by the
         trapezoidal rule through the steps, against
         :func:`asperity.contact.reference.mindlin_deresiewicz_energy`. The same rule on the
         closed-form Masing loop through the same steps (:func:`asperity.contact.reference.
@@ -279,9 +285,17 @@ def cycle_energy_comparisons(forces, dissipated, hertz, mu, body1, body2,
     note = (f"the loop's area by the trapezoidal rule through {steps} steps per quarter "
             f"cycle; the same rule on the closed-form loop gives {100 * bias:+.2g} %; raise "
             "load_path.steps for a closer energy")
-    return [Comparison("energy per cycle", dissipated, exact,
-                       cite("Mindlin-Deresiewicz, Johnson eq. 7.60", "masing"), "J",
-                       max(0.01, 2.0 * (dx / hertz.a) ** 2) + abs(bias), note)]
+    rows = []
+    if width is not None:
+        opening = 2.0 * ref.masing_unloading_shift(0.0, peak, hertz.load, mu, hertz.a, body1,
+                                                   body2)
+        peak_shift = ref.cattaneo_mindlin(hertz.load, peak, mu, hertz.a, body1, body2).shift
+        rows.append(Comparison("loop width at zero force", width, opening,
+                               cite("Masing, Johnson eq. 7.56", "masing"), "m",
+                               max(0.02, 0.002 * 2.0 * peak_shift / opening)))
+    return rows + [Comparison("energy per cycle", dissipated, exact,
+                              cite("Mindlin-Deresiewicz, Johnson eq. 7.60", "masing"), "J",
+                              max(0.01, 2.0 * (dx / hertz.a) ** 2) + abs(bias), note)]
 
 
 # --- steady EHL -----------------------------------------------------------------------------

@@ -30,7 +30,7 @@ from ..contact.reference import (
 from ..errors import InputError
 from ..formatting import format_quantity
 from ..materials import contact_modulus, coupling_compliance
-from ..references import cycle_energy_comparisons, tangential_comparisons
+from ..references import fretting_cycle_comparisons, tangential_comparisons
 from ..results import Outcome, variable
 
 __all__ = ["run"]
@@ -557,6 +557,31 @@ def _path_summary(path):
     out.update(path_iterations=int(path.iterations), path_converged=bool(path.converged))
     if math.isfinite(path.dissipated_energy):  # a closed cycle
         out["path_dissipated_energy_j"] = float(path.dissipated_energy)
+        out.update(_loop_widths(path))
+    return out
+
+
+def _loop_widths(path) -> dict:
+    """The widths of a closed loop where it passes through zero load on its way down and
+    back up: the relative shift along the largest force (``path_loop_width_m``) and the
+    twist (``path_loop_twist_width_rad``), for the components the path applies; none when
+    the loop does not pass through zero twice."""
+    loads = path.loads
+    scale = np.abs(loads).max(axis=0) + 1e-300
+    last = np.all(np.abs(loads - loads[-1]) <= 1e-9 * scale, axis=1)
+    start = int(np.argmax(last))  # the loop: from the first visit of the last load
+    zero = np.flatnonzero(np.all(np.abs(loads) <= 1e-9 * scale, axis=1))
+    zero = zero[zero >= start]
+    if len(zero) < 2:
+        return {}
+    i, j = zero[:2]
+    out = {}
+    force = np.hypot(loads[:, 0], loads[:, 1])
+    if force.max() > 0:
+        e = loads[np.argmax(force), :2] / force.max()
+        out["path_loop_width_m"] = float(abs((path.shift[i] - path.shift[j]) @ e))
+    if np.any(loads[:, 2] != 0):
+        out["path_loop_twist_width_rad"] = float(abs(path.rotation[i] - path.rotation[j]))
     return out
 
 
@@ -617,8 +642,9 @@ def run(case, progress=None) -> Outcome:
     if path is not None and _mindlin_compliance(case, fld, path, body1, body2) is not None and (
             case.load_path.history == "cycle"):
         direction = np.array([fx, fy]) / math.hypot(fx, fy)
-        comparisons += cycle_energy_comparisons(
-            path.loads[:, :2] @ direction, path.dissipated_energy, fld.hertz, case.mu, body1, body2,
+        comparisons += fretting_cycle_comparisons(
+            path.loads[:, :2] @ direction, path.dissipated_energy,
+            summary.get("path_loop_width_m"), fld.hertz, case.mu, body1, body2,
             max(fld.x[1] - fld.x[0], fld.y[1] - fld.y[0]))
     if case.reference is not None and case.reference.note:
         notes.append(case.reference.note)
