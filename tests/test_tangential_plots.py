@@ -144,3 +144,18 @@ def test_the_shift_of_a_twisted_path_names_its_point():
     alone, x, y = _ball_path(proportional_path((20.0, 0.0), steps=2))
     assert tplot.compliance_curves(alone).axes[0].get_xlabel() == (
         "rigid shift along the largest force (um)")
+
+
+def test_a_constant_line_of_action_is_drawn_without_round_off():
+    """Two balls (two regions) under 20 N with M = 20 N x 0.1 mm through a cycle: the resultant's
+    line of action stays M/F = 0.1 mm from the reference point at every step; a user's twisted
+    pads drew their constant 50 mm as +-4e-10 mm about an offset text "5e1". The offsets are
+    now one value and the axis has no offset text."""
+    path, _, _ = _ball_path(proportional_path((20.0, 0.0), 20.0 * 1e-4, steps=2, cycle=True),
+                            n=16, regions=2)
+    fig = tplot.load_sharing(path)
+    ax = fig.axes[1]
+    offsets = ax.lines[0].get_ydata()
+    assert np.all(offsets == offsets[0]) and offsets[0] == pytest.approx(0.1, rel=1e-6)
+    fig.canvas.draw()
+    assert ax.yaxis.get_offset_text().get_text() == ""

@@ -244,7 +244,7 @@ def load_sharing(path, title="Load sharing between regions"):
     Left: each region's force along the path's largest force, signed (or its moment, for a
     pure moment) against the applied load along it. Right: with a force, the offset of the
     resultant traction's line of action from the moment's reference point, M_traction / F
-    (Fig. 3.19b), 0 below :data:`OFFSET_NOISE` times the contact's equivalent radius; for a
+    (Fig. 3.19b), rounded to :data:`OFFSET_NOISE` times the contact's equivalent radius; for a
     pure moment, each region's share of the moment. Steps before gross slip only.
     """
     fig, (a1, a2) = new_figure(9.6, 4.0, ncols=2)
@@ -263,8 +263,13 @@ def load_sharing(path, title="Load sharing between regions"):
         carried = region_moment.sum(axis=1)
         ok = applied != 0
         offset = carried[ok] / applied[ok]
-        offset = np.where(np.abs(offset) <= OFFSET_NOISE * _contact_size(path), 0.0, offset)
+        # round-off is not drawn: offsets to OFFSET_NOISE of the contact's radius (a pair of
+        # pads' constant 50 mm was drawn as +-4e-10 mm about "5e1"), and no offset text
+        quantum = OFFSET_NOISE * _contact_size(path)
+        if quantum > 0:
+            offset = np.round(offset / quantum) * quantum
         a2.plot(applied[ok], offset * MM, "o-", color="k", label="resultant traction")
+        a2.ticklabel_format(axis="y", useOffset=False)
         a2.set(xlabel="applied force along the largest force (N)",
                ylabel="line of action offset (mm)")
         a2.legend(fontsize=8)
