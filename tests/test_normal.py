@@ -301,3 +301,77 @@ def test_rough_asperity_pressures_without_a_hardness_are_noted_and_one_hardness_
     lines = [w for w in hard.warnings if w.startswith("pressure:")]
     assert len(lines) == 1 and "hardness of body1 and body2" in lines[0]
     assert not [n for n in hard.notes if "plasticity was not checked" in n]
+
+
+def _rough_ball(load, rms):
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    return run_case(load_case({
+        "analysis": "normal",
+        "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+        "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+        "geometry": {"shape": "sphere", "rx": "10 mm"}, "loading": {"load": load},
+        "grid": {"nx": 128, "ny": 128, "x_extent": "0.6 mm", "y_extent": "0.6 mm"},
+        "roughness": {"kind": "gaussian", "rms": rms, "correlation_length": "12 um",
+                      "seed": 3}}))
+
+
+def test_a_rough_balls_approach_is_also_given_from_first_contact():
+    """A user's rough steel ball (R = 10 mm, 20 N, rms 0.5 um) was reported with "approach
+    544.5 nm" beside Hertz's 1.191 um (-54 %), unsaid that it is measured from the roughness's
+    mean plane: the highest peak stands 1.27 um above the sphere there, so from first contact,
+    Hertz's datum, the approach is 1.81 um (+52 %, the asperities' compliance added). Now both
+    are given and the note says which is which. Independent checks: at 0.01 N the mean-plane
+    approach is negative (the peaks hold the apex off the mean plane) while the approach from
+    first contact is small and positive (21 nm, a few asperities carry the load: more than
+    the smooth ball's 7.5 nm, their radii being smaller than 10 mm); at rms 2 nm the approach
+    from first contact is Hertz's, delta = a^2 / R with a = (3 P R / (4 E*))^(1/3)
+    (1.191 um), within 1 %."""
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+
+    def hertz_approach(load):
+        return (3 * load * 10e-3 / (4 * e_star)) ** (2 / 3) / 10e-3
+
+    light = _rough_ball("0.01 N", "0.5 um").summary
+    assert light["approach_m"] < -0.5e-6
+    assert hertz_approach(0.01) < light["approach_from_first_contact_m"] < 0.05e-6
+    smooth = _rough_ball("20 N", "2 nm")
+    assert smooth.summary["approach_from_first_contact_m"] == pytest.approx(
+        hertz_approach(20.0), rel=0.01)
+    assert any("measured from the roughness's mean plane" in n for n in smooth.notes)
+    (row,) = [r for r in smooth.comparisons if r.quantity == "approach from first contact"]
+    assert row.reference == pytest.approx(hertz_approach(20.0), rel=1e-9)
+
+
+def test_a_ball_past_first_yield_below_the_hardness_warns():
+    """A user's steel ball (R 5 mm) on aluminium 6061 (70 GPa, nu 0.33, hardness 1.1 GPa),
+    50 N: p0 = 1.0995 GPa, 99.96 % of the hardness, ran without a word (the hardness check
+    starts at H). First yield beneath the surface is at p0 = 1.60 Y (von Mises, depth 0.48 a;
+    Johnson 1985 sec. 6.2) with Tabor's H = 2.8 Y: 0.57 H = 0.627 GPa, reached at
+    50 (0.627 / 1.0995)^3 = 9.27 N. E* and p0 written out here."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    e_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.33**2) / 70e9)
+    a = (3 * 50 * 5e-3 / (4 * e_star)) ** (1 / 3)
+    p0 = 3 * 50 / (2 * np.pi * a * a)
+    assert p0 == pytest.approx(1.0995e9, rel=1e-4)
+
+    def run(load, hardness="1.1 GPa"):
+        return run_case(load_case({
+            "analysis": "normal",
+            "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3, "hardness": "7 GPa"},
+            "body2": {"youngs_modulus": "70 GPa", "poisson_ratio": 0.33,
+                      "name": "aluminium", "hardness": hardness},
+            "geometry": {"shape": "sphere", "rx": "5 mm"}, "loading": {"load": load},
+            "grid": {"nx": 48, "ny": 48, "x_extent": "0.45 mm", "y_extent": "0.45 mm"}}))
+
+    (line,) = run("50 N").warnings
+    assert line.startswith("pressure: the Hertz peak p0 = 1.1 GPa is 100 % of the hardness "
+                           "of body2 (aluminium")
+    assert "limit 0.57 H = 0.627 GPa" in line
+    assert f"keep loading.load below {50 * (0.57 * 1.1e9 / p0) ** 3:.4g} N" in line
+    assert not [w for w in run("9 N").warnings if w.startswith("pressure")]  # p0 = 0.563 H
+    above = run("50 N", hardness="1 GPa").warnings  # above H: the hardness line alone
+    assert len(above) == 1 and "exceeds the hardness" in above[0]

@@ -41,6 +41,23 @@ def test_masing_loop_closes_and_is_odd():
         ref.cattaneo_mindlin(P, 0.3 * MU * P, MU, A, STEEL, STEEL).shift
 
 
+@pytest.mark.parametrize("ratio", [0.01, 0.3, 0.6, 0.9, 0.99, 1.0])
+def test_mindlin_deresiewicz_energy_is_the_masing_loop_area(ratio):
+    """The loop 0 -> Q* -> -Q* -> Q* encloses 4 Q* delta(Q*) - 8 int_0^Q* delta dQ with
+    delta = (3 mu P C / (16 a)) [1 - (1 - Q/(mu P))^(2/3)] written out here (quadrature, not
+    the module's shift), and C Q*^3 / (36 mu P a) at small amplitude."""
+    C = 2 * (2 - 0.3) / STEEL.shear_modulus
+    delta = lambda q: 3 * MU * P * C / (16 * A) * (1 - (1 - q / (MU * P)) ** (2 / 3))  # noqa: E731
+    qs = ratio * MU * P
+    loop = 4 * qs * delta(qs) - 8 * quad(delta, 0, qs, epsabs=0, epsrel=1e-12)[0]
+    energy = ref.mindlin_deresiewicz_energy(qs, P, MU, A, STEEL, STEEL)
+    assert energy == pytest.approx(loop, rel=1e-9)
+    if ratio <= 0.01:
+        assert energy == pytest.approx(C * qs**3 / (36 * MU * P * A), rel=0.02)
+    with pytest.raises(InputError, match="peak_force"):
+        ref.mindlin_deresiewicz_energy(1.01 * MU * P, P, MU, A, STEEL, STEEL)
+
+
 def test_lubkin_limits():
     assert ref.lubkin_moment(0.0, A, MU, P0) == pytest.approx(
         ref.gross_slip_moment_hertz(MU, P, A), rel=1e-10)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from asperity.contact import hertz_point
+from asperity.contact import hertz_point, solve_tangential
 from asperity.contact.load_path import proportional_path, tangential_load_path
 from asperity.materials import Material
 from asperity.plotting import tangential as tplot
@@ -111,3 +111,51 @@ def test_compliance_overlays_mindlin_deresiewicz_on_a_cycle():
     assert force[zero] == pytest.approx(0.0, abs=1e-12)
     assert shift[zero] == pytest.approx(delta(54.0) - 2 * delta(27.0), rel=1e-9)
     assert shift[-1] == pytest.approx(delta(54.0), rel=1e-9) and force[-1] == pytest.approx(54)
+
+
+def test_a_centre_of_rotation_off_the_map_is_named_without_round_off():
+    """40 N along x with 20 N mm on a steel ellipse (Rx 20 mm, Ry 5 mm, 500 N, mu = 0.3): the
+    centre of rotation lies on the y axis beyond the map, and the corner text quoted its x as
+    round-off (-1.9e-14 mm); a zero coordinate reads 0."""
+    steel = Material(210e9, 0.3)
+    hz = hertz_point(500.0, 20e-3, 5e-3, steel, steel)
+    x = np.linspace(-1.05 * hz.a, 1.05 * hz.a, 32)
+    y = np.linspace(-1.05 * hz.b, 1.05 * hz.b, 16)
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    p = hz.pressure(X, Y)
+    res = solve_tangential(p * 500.0 / (p.sum() * (x[1] - x[0]) * (y[1] - y[0])), x, y, 0.3,
+                           steel, steel, force=(40.0, 0.0), moment=0.02)
+    assert abs(res.centre_of_rotation[0]) < 1e-12 < 1.05 * hz.b < res.centre_of_rotation[1]
+    ax = tplot.traction_map(res, x, y).axes[0]
+    (text,) = [t.get_text() for t in ax.texts if "off the map" in t.get_text()]
+    cy = res.centre_of_rotation[1] * 1e3
+    assert text == f"centre of rotation off the map: (0, {cy:.3g}) mm"
+
+
+def test_the_shift_of_a_twisted_path_names_its_point():
+    """Force and moment together: the rigid shift is that of the moment's reference point
+    (a user's two pads twisted by 0.4 N m with 8 N along +y moved it along -y), and the
+    axis says so; a force alone keeps the plain label."""
+    m = 0.3 * 3 * np.pi * 0.3 * 200.0 * 1e-4 / 16
+    twisted, x, y = _ball_path(proportional_path((20.0, 0.0), m, steps=2))
+    ax = tplot.compliance_curves(twisted).axes[0]
+    assert ax.get_xlabel() == ("rigid shift of the moment's reference point along the largest "
+                               "force (um)")
+    alone, x, y = _ball_path(proportional_path((20.0, 0.0), steps=2))
+    assert tplot.compliance_curves(alone).axes[0].get_xlabel() == (
+        "rigid shift along the largest force (um)")
+
+
+def test_a_constant_line_of_action_is_drawn_without_round_off():
+    """Two balls (two regions) under 20 N with M = 20 N x 0.1 mm through a cycle: the resultant's
+    line of action stays M/F = 0.1 mm from the reference point at every step; a user's twisted
+    pads drew their constant 50 mm as +-4e-10 mm about an offset text "5e1". The offsets are
+    now one value and the axis has no offset text."""
+    path, _, _ = _ball_path(proportional_path((20.0, 0.0), 20.0 * 1e-4, steps=2, cycle=True),
+                            n=16, regions=2)
+    fig = tplot.load_sharing(path)
+    ax = fig.axes[1]
+    offsets = ax.lines[0].get_ydata()
+    assert np.all(offsets == offsets[0]) and offsets[0] == pytest.approx(0.1, rel=1e-6)
+    fig.canvas.draw()
+    assert ax.yaxis.get_offset_text().get_text() == ""

@@ -70,6 +70,7 @@ __all__ = [
     "unresolved_roughness",
     "HERTZ_SIZE_LIMIT",
     "HERTZ_STRAIN_LIMIT",
+    "hertz_first_yield",
     "hertz_validity",
 ]
 
@@ -1349,6 +1350,55 @@ HERTZ_SIZE_LIMIT = 0.1
 #: for metals and polymers (a strain of about 5 %; a hardened steel first yields near
 #: p0 / E* = 0.02-0.03, which only its hardness can tell: bodyN.hardness, above_hardness).
 HERTZ_STRAIN_LIMIT = 0.05
+
+
+#: Peak Hertz pressure over the indentation hardness at which a point contact first yields
+#: beneath the surface: p0 = 1.60 Y (von Mises, nu = 0.3, at depth 0.48 a; Johnson 1985,
+#: sec. 6.2) with Tabor's H = 2.8 Y, 1.60 / 2.8 = 0.57. ISO 76's static limit of a bearing
+#: steel of 7.5 GPa, p0 = 4.2 GPa, is 0.56 of it.
+FIRST_YIELD_HARDNESS = 0.57
+
+
+def hertz_first_yield(p0: float, load: float, materials: Iterable,
+                      load_key: str = "pressure.load") -> list[str]:
+    """A Hertz contact whose peak pressure is past first yield beneath the surface but not
+    past the hardness (:func:`above_hardness` judges that).
+
+    Parameters
+    ----------
+    p0 : float
+        Maximum Hertz pressure, Pa.
+    load : float
+        Normal load, N (the load at first yield is ``load (FIRST_YIELD_HARDNESS H / p0)^3``,
+        p0 growing as the cube root of the load).
+    materials : iterable of (label, Material)
+        The bodies; those without ``hardness`` are skipped.
+    load_key : str
+        The case key of the load.
+
+    Returns
+    -------
+    list of str
+        One line per body past first yield (one line for bodies of the same material and
+        hardness), starting ``pressure:``.
+    """
+    yielded: dict = {}
+    for label, material in materials:
+        hardness = getattr(material, "hardness", None)
+        if hardness is not None and FIRST_YIELD_HARDNESS * hardness < p0 <= hardness:
+            yielded.setdefault((hardness, material.name), []).append(label)
+    lines = []
+    for (hardness, name), labels in yielded.items():
+        limit = FIRST_YIELD_HARDNESS * hardness
+        lines.append(
+            f"pressure: the Hertz peak p0 = {p0 / 1e9:.4g} GPa is {100 * p0 / hardness:.3g} % "
+            f"of the hardness of {' and '.join(labels)} ({name}, {hardness / 1e9:.4g} GPa; limit "
+            f"{FIRST_YIELD_HARDNESS:g} H = {limit / 1e9:.4g} GPa, first yield beneath the "
+            "surface, p0 = 1.6 Y at depth 0.48 a with H = 2.8 Y): the body yields below the "
+            "surface and keeps a dent, which the elastic answer does not have; for an elastic "
+            f"contact keep {load_key} below {load * (limit / p0) ** 3:.4g} N, or read the "
+            "result as an elastic estimate")
+    return lines
 
 
 def hertz_validity(a: float, radius: float, p0: float, e_star: float,

@@ -66,10 +66,11 @@ HEADLINE_KEYS = (
     "maximum_flash_temperature_k", "maximum_hertz_pressure_pa",
 )
 
-#: Bookkeeping of the solver, listed after the physical results.
+#: Bookkeeping of the solver, listed after the physical results (where a load path reaches
+#: gross slip, path_gross_slip and path_gross_slip_step, is a result: it stays with them).
 _SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps", "steps",
                 "mean_sweeps_per_step", "steps_converged_fraction", "load_error", "path_steps",
-                "path_iterations", "path_converged", "path_gross_slip_step", "points",
+                "path_iterations", "path_converged", "points",
                 "fixed_point_distance_pressure_fraction", "fixed_point_distance_film_fraction",
                 "ehl_solves_converged", "ehl_wall_time_s", "status")
 

@@ -28,7 +28,8 @@ class MaterialSpec(CaseModel):
     unnamed is not called steel)."""
     hardness: Quantity("pressure", gt=0) | None = None
     """Indentation hardness; contact pressures above it make the run warn that the elastic answer is
-    not physical there."""
+    not physical there, and in a dry contact a Hertz peak above 0.57 of it that the body yields
+    beneath the surface (p0 = 1.6 Y with H = 2.8 Y)."""
 
     def material(self) -> Material:
         """The :class:`asperity.Material` this table describes."""

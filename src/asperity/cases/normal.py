@@ -52,7 +52,8 @@ class NormalLoading(CaseModel):
     load: Quantity("force", gt=0) | None = None
     """Normal load (give this or approach)."""
     approach: Quantity("length", gt=0) | None = None
-    """Rigid-body approach of the two bodies (give this or load)."""
+    """Rigid-body approach of the two bodies (give this or load); with roughness, measured from
+    the roughness's mean plane through the apex, not from first contact."""
 
     @model_validator(mode="after")
     def _one(self):

@@ -98,6 +98,12 @@ class RegionSpec(CaseModel):
             return self.radius, self.radius
         return 0.5 * self.size[0], 0.5 * self.size[1]
 
+    def area(self) -> float:
+        """Area of the region, m^2."""
+        if self.shape == "circle":
+            return math.pi * self.radius**2
+        return self.size[0] * self.size[1]
+
     def mask(self, X, Y, center) -> np.ndarray:
         """Cells whose centres lie inside the region centred at ``center``."""
         dx, dy = X - center[0], Y - center[1]
@@ -249,6 +255,17 @@ class TangentialLoading(CaseModel):
     def vector(self) -> tuple[float, float]:
         """(Fx, Fy), N."""
         return self.force * math.cos(self.direction), self.force * math.sin(self.direction)
+
+    def moment_about_origin(self) -> float:
+        """The twisting moment about the origin, the centre of a Hertz contact, N m:
+        ``moment + cx Fy - cy Fx`` with (cx, cy) = ``center`` (omitted: the centre of the
+        normal load, the origin for a Hertz pressure, and the moment as given). A force whose
+        line of action misses the contact's centre twists it: 30 N along x about
+        ``center = ["0 mm", "0.1 mm"]`` is 30 N with -3 N mm about the centre."""
+        if self.center is None:
+            return self.moment
+        fx, fy = self.vector()
+        return self.moment + self.center[0] * fy - self.center[1] * fx
 
 
 class TangentialGridSpec(CaseModel):

@@ -32,6 +32,7 @@ __all__ = [
     "cattaneo_mindlin",
     "masing_history",
     "masing_unloading_shift",
+    "mindlin_deresiewicz_energy",
     "lubkin_moment",
     "lubkin_twist",
     "lubkin_stick_radius",
@@ -126,6 +127,39 @@ def masing_unloading_shift(force, peak_force, normal_load, mu, a, body1, body2):
         raise InputError("force", "-peak_force <= force <= peak_force <= mu * normal_load", force)
     peak = _cattaneo_shift(Qs, normal_load, mu, a, C)
     return peak - 2.0 * _cattaneo_shift(0.5 * (Qs - force), normal_load, mu, a, C)
+
+
+def mindlin_deresiewicz_energy(peak_force, normal_load, mu, a, body1, body2):
+    """Energy dissipated per cycle of a tangential force oscillating between -Q* and Q*, J.
+
+    The area of the Masing loop (Mindlin & Deresiewicz 1953; Johnson eq. 7.60), written for
+    the relative shift of the two bodies, C = (2 - nu1)/G1 + (2 - nu2)/G2, r = Q*/(mu P):
+
+    ``dW = (9 mu^2 P^2 C / (10 a)) [1 - (1 - r)^(5/3) - (5 r / 6) (1 + (1 - r)^(2/3))]``
+
+    (the loop integral 4 Q* delta(Q*) - 8 int_0^Q* delta(Q) dQ of Cattaneo-Mindlin's shift
+    delta, eq. 7.42, in closed form); ``C Q*^3 / (36 mu P a)`` at small r.
+
+    Parameters
+    ----------
+    peak_force : float
+        Q*, the amplitude of the tangential force, 0 <= Q* <= mu P, N.
+    normal_load, mu, a, body1, body2
+        As :func:`cattaneo_mindlin`.
+
+    Returns
+    -------
+    float
+    """
+    P = check_positive("normal_load", normal_load)
+    Qs = check_positive("peak_force", peak_force, allow_zero=True)
+    if Qs > mu * P:
+        raise InputError("peak_force", f"at most mu * normal_load = {mu * P:g} N (gross slip)",
+                         Qs)
+    r = Qs / (mu * P)
+    scale = 9.0 * (mu * P) ** 2 * tangential_compliance(body1, body2) / (10.0 * a)
+    return scale * (1.0 - (1.0 - r) ** (5.0 / 3.0)
+                    - 5.0 * r / 6.0 * (1.0 + (1.0 - r) ** (2.0 / 3.0)))
 
 
 def masing_history(forces, normal_load, mu, a, body1, body2, points=16):

@@ -82,6 +82,9 @@ def _mark_centre(ax, centre, x, y):
     if x[0] * MM <= cx <= x[-1] * MM and y[0] * MM <= cy <= y[-1] * MM:
         ax.plot(cx, cy, "r+", ms=10, mew=2, label="centre of rotation")
     else:
+        # round-off of a coordinate that is zero (-1.9e-14 mm beside 0.228 mm) is shown as 0
+        size = max(np.ptp(x), np.ptp(y), abs(centre[0]), abs(centre[1])) * MM
+        cx, cy = (0.0 if abs(v) <= 1e-9 * size else v for v in (cx, cy))
         ax.text(0.02, 0.98, f"centre of rotation off the map: ({cx:.3g}, {cy:.3g}) mm",
                 transform=ax.transAxes, va="top", fontsize=8, color="r")
 
@@ -202,7 +205,10 @@ def compliance_curves(path, title="Compliance", *, closed_form=None):
                 ax.plot(np.asarray(shift) * 1e6, along, "k--", lw=1.0, label=name)
             gross = t_gs * float(path.loads[k_gs, :2] @ e) if k_gs >= 0 else None
             unit = "N"
-            ax.set(xlabel="rigid shift along the largest force (um)",
+            # with a twist the shift depends on the point: the solver's is the moment's
+            # reference point (a twisting pair of pads moved it against the force)
+            where = " of the moment's reference point" if has_moment else ""
+            ax.set(xlabel=f"rigid shift{where} along the largest force (um)",
                    ylabel="tangential force along it (N)")
         else:
             ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-", label="load steps")
@@ -238,7 +244,7 @@ def load_sharing(path, title="Load sharing between regions"):
     Left: each region's force along the path's largest force, signed (or its moment, for a
     pure moment) against the applied load along it. Right: with a force, the offset of the
     resultant traction's line of action from the moment's reference point, M_traction / F
-    (Fig. 3.19b), 0 below :data:`OFFSET_NOISE` times the contact's equivalent radius; for a
+    (Fig. 3.19b), rounded to :data:`OFFSET_NOISE` times the contact's equivalent radius; for a
     pure moment, each region's share of the moment. Steps before gross slip only.
     """
     fig, (a1, a2) = new_figure(9.6, 4.0, ncols=2)
@@ -257,8 +263,13 @@ def load_sharing(path, title="Load sharing between regions"):
         carried = region_moment.sum(axis=1)
         ok = applied != 0
         offset = carried[ok] / applied[ok]
-        offset = np.where(np.abs(offset) <= OFFSET_NOISE * _contact_size(path), 0.0, offset)
+        # round-off is not drawn: offsets to OFFSET_NOISE of the contact's radius (a pair of
+        # pads' constant 50 mm was drawn as +-4e-10 mm about "5e1"), and no offset text
+        quantum = OFFSET_NOISE * _contact_size(path)
+        if quantum > 0:
+            offset = np.round(offset / quantum) * quantum
         a2.plot(applied[ok], offset * MM, "o-", color="k", label="resultant traction")
+        a2.ticklabel_format(axis="y", useOffset=False)
         a2.set(xlabel="applied force along the largest force (N)",
                ylabel="line of action offset (mm)")
         a2.legend(fontsize=8)

@@ -10,6 +10,7 @@ import xarray as xr
 from .. import diagnostics
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
+from ..formatting import format_quantity
 from ..materials import contact_modulus
 from ..references import cite
 from ..results import Comparison, Outcome, variable
@@ -91,12 +92,16 @@ def run(case, progress=None) -> Outcome:
         summary.update(greenwood_tripp_alpha=sigma * math.sqrt(rx * ry) / (h.a * h.b),
                        hertz_a_m=float(h.a), hertz_b_m=float(h.b),
                        hertz_max_pressure_pa=float(h.p_max))
+        # the approach is the shift of gap0, measured from the roughness's mean plane; Hertz's
+        # is from first contact, which a rough gap reaches at approach = min(gap0)
+        first = float(res.approach - gap0.min())
+        summary.update(approach_from_first_contact_m=first)
         src, note = cite("smooth Hertz", "hertz"), "rough vs smooth, not a check"
         comparisons += [
             Comparison("maximum pressure", summary["max_pressure_pa"], h.p_max, src, "Pa",
                        note=note),
             Comparison("real contact area", res.contact_area, h.area, src, "m^2", note=note),
-            Comparison("approach", res.approach, h.approach, src, "m", note=note),
+            Comparison("approach from first contact", first, h.approach, src, "m", note=note),
         ]
     from ..plotting.normal import centre_line, pressure_map
 
@@ -114,6 +119,15 @@ def run(case, progress=None) -> Outcome:
     if rough is not None:
         notes += rough.notes
     notes += _unchecked_plasticity(case, res, body1, body2)
+    if "approach_from_first_contact_m" in summary:
+        notes.append(
+            f"The approach ({format_quantity(res.approach, 'm')}) is measured from the "
+            "roughness's mean plane through the apex; the rough surfaces first touch at an "
+            "approach of "
+            f"{format_quantity(float(gap0.min()), 'm')}, so from first contact, as Hertz's "
+            f"approach is, it is {format_quantity(summary['approach_from_first_contact_m'], 'm')}"
+            " (approach_from_first_contact_m). loading.approach is read the same way, from the "
+            "mean plane.")
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=_warnings(case, res, x, y, body1, body2, rough))
 
@@ -154,7 +168,8 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
 def _plasticity(case, res, body1, body2) -> list[str]:
     """The pressures against the bodies' hardness (:func:`diagnostics.above_hardness`) and,
     with no hardness given, a smooth Hertz contact's validity
-    (:func:`diagnostics.hertz_validity`: small against its radius, small strains)."""
+    (:func:`diagnostics.hertz_validity`: small against its radius, small strains); with one,
+    first yield beneath the surface (:func:`diagnostics.hertz_first_yield`)."""
     bodies = [("body1", body1), ("body2", body2)]
     lines = diagnostics.above_hardness(res.pressure, bodies)
     rx, ry = case.geometry.radii()
@@ -164,6 +179,7 @@ def _plasticity(case, res, body1, body2) -> list[str]:
         lines += diagnostics.hertz_validity(a, radius, h.p_max, contact_modulus(body1, body2),
                                             diagnostics.hardness_given(bodies),
                                             load_key="loading.load")
+        lines += diagnostics.hertz_first_yield(h.p_max, res.load, bodies, "loading.load")
     return lines
 
 
