@@ -293,6 +293,11 @@ class GearEHLSpec(CaseModel):
     """Sweep limit of each steady solve."""
     damping: Annotated[float, Field(gt=0, le=1)] = 0.3
     """Relaxation damping of the steady solves."""
+    adapt: bool = True
+    """Refine each position where its contact needs it: nx, x_min are then the coarsest mesh
+    and shortest inlet, raised to the EHL contact's default (a spacing for about 2 % film
+    error, Hamrock & Dowson's fully flooded inlet; docs/gears.md). false: nx nodes over
+    x_min..x_max everywhere."""
 
     @model_validator(mode="after")
     def _levels(self):
@@ -306,7 +311,7 @@ class GearEHLSpec(CaseModel):
         """The :class:`~asperity.gears.path.EHLMesh`."""
         return EHLMesh(nx=self.nx, ny=self.ny if ny is None else ny, levels=self.levels,
                        x_min=self.x_min, x_max=self.x_max, tol=self.tolerance,
-                       max_sweeps=self.max_sweeps, damping=self.damping)
+                       max_sweeps=self.max_sweeps, damping=self.damping, adapt=self.adapt)
 
 
 class HandoffSpec(CaseModel):
