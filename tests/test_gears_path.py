@@ -169,6 +169,20 @@ def test_cli_refuses_invalid_gear_in_one_line(tmp_path):
     assert len(lines) == 1 and "undercut" in lines[0], out.output
 
 
+def test_cli_refuses_an_internal_gear_in_words(tmp_path):
+    """ISO 21771 writes an internal gear (a planetary's ring) with a negative number of teeth;
+    the analysis models external pairs only. The refusal said "expected a value greater than
+    or equal to 5, got -24" (true, but not why); it now says that internal and planetary
+    meshes are not modelled, in one line naming gear.teeth."""
+    case = tmp_path / "ring.toml"
+    case.write_text(GEAR_CASE.replace("[16, 24]", "[16, -24]"))
+    out = CliRunner().invoke(app, ["gear", str(case), "--out", str(tmp_path / "o"), "-q"])
+    assert out.exit_code == 2
+    lines = out.output.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: gear.teeth: "), out.output
+    assert "external pair" in lines[0] and "planetary meshes are not modelled" in lines[0]
+
+
 @pytest.mark.parametrize("name", ["gear-fzg-c", "gear-fzg-c-crowned", "gear-helical-industrial"])
 def test_examples_validate(name):
     case = load_case(example_text(name))

@@ -145,6 +145,20 @@ class GearSpec(CaseModel):
     crowning: tuple[_Modification, _Modification] = (0.0, 0.0)
     """Crowning heights [pinion, wheel], 0 to 1 mm (nonzero: an elliptical contact)."""
 
+    @field_validator("teeth", mode="before")
+    @classmethod
+    def _external(cls, value):
+        """Refuse a negative number of teeth (ISO 21771's internal gear) in words: only
+        external pairs are modelled."""
+        if isinstance(value, list | tuple) and any(
+                isinstance(z, int | float) and not isinstance(z, bool) and z < 0
+                for z in value):
+            raise ValueError(
+                "expected the numbers of teeth of an external pair [pinion, wheel], both >= 5 "
+                "(a negative number of teeth is an internal gear in ISO 21771: internal, "
+                f"ring-gear and planetary meshes are not modelled), got {list(value)}")
+        return value
+
     @model_validator(mode="after")
     def _valid(self):
         try:
