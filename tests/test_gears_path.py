@@ -621,3 +621,32 @@ def test_a_mesh_too_coarse_for_a_thin_film_is_warned():
     assert fine.converged[0]
     assert fine.minimum_film[0] == pytest.approx(h_dh, rel=0.10)
     assert not any(line.startswith("ehl.nx") for line in fine.warnings)
+
+
+def test_figures_cross_out_positions_that_did_not_converge():
+    """A user's slow heavy pair on 297 nodes: one position near A did not converge, and the
+    film figure drew its central film (0.96 um against 0.22-0.45 um elsewhere and Moes'
+    0.28 um) and lambda like any other point; only the run's warning and exit code said so.
+    Those points are now crossed out in red on the film, lambda, friction and temperature
+    curves, with a legend entry. Here two FZG positions stopped after 100 sweeps."""
+    from asperity.plotting.gear import (
+        UNCONVERGED_LABEL,
+        film_figure,
+        friction_temperature_figure,
+    )
+
+    rho = np.array([FZG.points["A"] + 0.3 * FZG.pbt, FZG.points["C"]])
+    res = solve_path(FZG, rho, pinion_speed=OMEGA, torque=302.0, body1=STEEL, body2=STEEL,
+                     lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1, max_sweeps=100, adapt=False))
+    assert not res.converged.any()
+    angles = np.degrees(res.kin.roll_angle)
+    for fig, values in ((film_figure(res, "t"), (res.central_film * 1e6, res.specific_film)),
+                        (friction_temperature_figure(res, "t", 90.0),
+                         (res.friction, res.contact_temperature))):
+        assert UNCONVERGED_LABEL in [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+        for ax, y in zip(fig.axes[:2], values, strict=True):
+            crosses = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]
+            assert len(crosses) >= 1
+            assert crosses[0].get_xdata() == pytest.approx(angles)
+            assert crosses[0].get_ydata() == pytest.approx(y)
