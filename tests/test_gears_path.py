@@ -650,3 +650,16 @@ def test_figures_cross_out_positions_that_did_not_converge():
             assert len(crosses) >= 1
             assert crosses[0].get_xdata() == pytest.approx(angles)
             assert crosses[0].get_ydata() == pytest.approx(y)
+
+
+def test_the_low_peclet_line_gives_the_overestimate_not_a_speed_change():
+    """Near A of the FZG pair (Pe 3.9) the line said "raise the speed or treat those values as
+    an upper bound"; the speed is the user's operating point. It now gives the size of the
+    overestimate (tests/test_gears.py checks it against Jaeger's band source)."""
+    res = solve_path(FZG, np.array([FZG.points["A"]]), pinion_speed=OMEGA, torque=302.0,
+                     body1=STEEL, body2=STEEL, lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1))
+    lines = [w for w in res.warnings if w.startswith("flash temperature: Peclet")]
+    assert len(lines) == 1 and res.peclet[0] < 5
+    assert "raise the speed" not in lines[0]
+    assert "by 6% at Pe = 1 and 22% at Pe = 0.3" in lines[0] and "upper bounds" in lines[0]
