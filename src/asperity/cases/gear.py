@@ -308,9 +308,8 @@ class GearEHLSpec(CaseModel):
     damping: Annotated[float, Field(gt=0, le=1)] = 0.3
     """Relaxation damping of the steady solves."""
     adapt: bool = True
-    """Refine each position where its contact needs it: nx, x_min are then the coarsest mesh
-    and shortest inlet, raised to the EHL contact's default (a spacing for about 2 % film
-    error, Hamrock & Dowson's fully flooded inlet; docs/gears.md). false: nx nodes over
+    """Move the inlet of a line contact upstream to Hamrock & Dowson's fully flooded distance
+    where it lies beyond x_min, at the same spacing (docs/gears.md); false: nx nodes over
     x_min..x_max everywhere."""
 
     @model_validator(mode="after")

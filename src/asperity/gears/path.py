@@ -65,9 +65,9 @@ class EHLMesh:
     heavily loaded line contact oscillates without damping: on the FZG case 8 of 25 positions
     failed to converge in 40 000 sweeps undamped, none with 0.3).
 
-    With ``adapt`` (the default) ``x_min`` is the shortest inlet: where the contact's fully
-    flooded inlet lies farther upstream the domain is extended there at the same spacing
-    (:func:`position_mesh`). Without it every position is solved on ``nx`` nodes over
+    With ``adapt`` (the default) ``x_min`` is the shortest inlet of a line contact: where its
+    fully flooded inlet lies farther upstream the domain is extended there at the same
+    spacing (:func:`position_mesh`). Without it every position is solved on ``nx`` nodes over
     ``x_min a .. x_max a`` as given.
     """
 
@@ -92,7 +92,10 @@ def position_mesh(problem, mesh: EHLMesh) -> tuple[float, int]:
     counted 1.8 times), at the spacing of ``mesh`` (``nx - 1`` a multiple of
     ``2**(levels - 1)``). A thick film in Hertzian units needs a long inlet: a turbo pair's
     pitch point (M = 2.7) had 13 % less minimum film with the inlet at -2.5 a than at -6.5 a
-    (docs/gears.md). The spacing is not refined (the point relaxation of the FZG example
+    (docs/gears.md). An elliptical contact (crowned flanks) keeps ``mesh``: on a crowned
+    z 17/43 pair the inlets at -3.1 and -4.2 a (145 and 169 nodes) at A and E made the point
+    relaxation fail (a negative film at A, 5 min of retries) where -2.5 a converged in 750 and
+    540 sweeps. The spacing is not refined (the point relaxation of the FZG example
     does not converge at 10 of 11 positions on 513 nodes); :func:`film_mesh_error` judges it.
 
     Parameters
@@ -100,13 +103,14 @@ def position_mesh(problem, mesh: EHLMesh) -> tuple[float, int]:
     problem : LineContact or PointContact
         The smooth contact at the position.
     mesh : EHLMesh
-        The path's mesh options; without ``mesh.adapt`` its ``x_min`` and ``nx`` are returned.
+        The path's mesh options; without ``mesh.adapt`` (or for a point contact) its
+        ``x_min`` and ``nx`` are returned.
 
     Returns
     -------
     (x_min, nx) : (float, int)
     """
-    if not mesh.adapt:
+    if not mesh.adapt or not isinstance(problem, LineContact):
         return mesh.x_min, mesh.nx
     x_min = min(mesh.x_min, -problem.inlet_extent())
     cells = (mesh.nx - 1) / (mesh.x_max - mesh.x_min)
