@@ -145,6 +145,20 @@ class GearSpec(CaseModel):
     crowning: tuple[_Modification, _Modification] = (0.0, 0.0)
     """Crowning heights [pinion, wheel], 0 to 1 mm (nonzero: an elliptical contact)."""
 
+    @field_validator("teeth", mode="before")
+    @classmethod
+    def _external(cls, value):
+        """Refuse a negative number of teeth (ISO 21771's internal gear) in words: only
+        external pairs are modelled."""
+        if isinstance(value, list | tuple) and any(
+                isinstance(z, int | float) and not isinstance(z, bool) and z < 0
+                for z in value):
+            raise ValueError(
+                "expected the numbers of teeth of an external pair [pinion, wheel], both >= 5 "
+                "(a negative number of teeth is an internal gear in ISO 21771: internal, "
+                f"ring-gear and planetary meshes are not modelled), got {list(value)}")
+        return value
+
     @model_validator(mode="after")
     def _valid(self):
         try:
@@ -293,6 +307,10 @@ class GearEHLSpec(CaseModel):
     """Sweep limit of each steady solve."""
     damping: Annotated[float, Field(gt=0, le=1)] = 0.3
     """Relaxation damping of the steady solves."""
+    adapt: bool = True
+    """Move the inlet of a line contact upstream to Hamrock & Dowson's fully flooded distance
+    where it lies beyond x_min, at the same spacing (docs/gears.md); false: nx nodes over
+    x_min..x_max everywhere."""
 
     @model_validator(mode="after")
     def _levels(self):
@@ -306,7 +324,7 @@ class GearEHLSpec(CaseModel):
         """The :class:`~asperity.gears.path.EHLMesh`."""
         return EHLMesh(nx=self.nx, ny=self.ny if ny is None else ny, levels=self.levels,
                        x_min=self.x_min, x_max=self.x_max, tol=self.tolerance,
-                       max_sweeps=self.max_sweeps, damping=self.damping)
+                       max_sweeps=self.max_sweeps, damping=self.damping, adapt=self.adapt)
 
 
 class HandoffSpec(CaseModel):

@@ -8,6 +8,8 @@ The relations (ISO 21771:2007, clauses 4 and 5; the same as in any gear textbook
     beta_b = asin(sin beta cos alpha_n)                 base helix angle
     inv alpha_wt = inv alpha_t + 2 tan alpha_n (x1 + x2) / (z1 + z2)   (no backlash)
     a_w = (d1 + d2) cos alpha_t / (2 cos alpha_wt)      centre distance from the shifts
+    j_bn = 2 a_w (inv alpha_wt - inv alpha_wt0) cos alpha_wt cos beta_b
+                                                        normal backlash at a given a_w
     d_a = d + 2 m_n (1 + x + k),  k = min(0, (a_w - a_0)/m_n - (x1 + x2))   tip alteration
 
 The path of contact lies on the line of action T1-T2 (length ``a_w sin alpha_wt`` between the
@@ -31,12 +33,26 @@ import numpy as np
 
 from ..errors import InputError, check_positive
 
-__all__ = ["MIN_TIP_THICKNESS", "GearPair", "involute", "inverse_involute"]
+__all__ = ["BACKLASH_FACTOR", "MIN_TIP_THICKNESS", "GearPair", "involute", "inverse_involute",
+           "minimum_backlash"]
 
 #: Normal tooth thickness at the tip, in normal modules, below which a pair is warned about
 #: (a common design minimum: a thinner tip chips, and a case-hardened one hardens through;
 #: docs/gears.md). Only a tip of thickness 0 or less is refused.
 MIN_TIP_THICKNESS = 0.2
+
+#: A given centre distance whose normal backlash exceeds this many times the recommended
+#: minimum of ISO/TR 10064-2 (:func:`minimum_backlash`) is warned about: more backlash than
+#: tooth thickness tolerances give, so the profile shifts and the centre distance do not
+#: belong to one design (docs/gears.md).
+BACKLASH_FACTOR = 3.0
+
+
+def minimum_backlash(centre_distance: float, normal_module: float) -> float:
+    """Recommended minimum normal backlash of ISO/TR 10064-2 (also AGMA 2002),
+    ``j_bn,min = (2/3) (0.06 + 0.0005 a + 0.03 m_n)`` in mm with ``a``, ``m_n`` in mm; here
+    in m for ``a`` and ``m_n`` in m."""
+    return (2.0 / 3.0) * (0.06e-3 + 0.0005 * centre_distance + 0.03 * normal_module)
 
 
 def involute(angle):
@@ -181,6 +197,10 @@ class GearPair:
                 raise InputError("centre_distance", "more than the sum of the base radii",
                                  aw)
         alpha_wt = math.acos(0.5 * (db[0] + db[1]) / aw)
+        # the working pitch circles' pitch less both tooth thicknesses there, 2 a_w (inv
+        # alpha_wt - inv alpha_wt0), in the normal direction
+        backlash = (2.0 * aw * (involute(alpha_wt) - inv_wt) * math.cos(alpha_wt)
+                    * math.cos(beta_b))
         if self.tip_diameter is None:
             k = min(0.0, (aw - a0) / mn - (x1 + x2))
             da = (d[0] + 2.0 * mn * (1.0 + x1 + k), d[1] + 2.0 * mn * (1.0 + x2 + k))
@@ -235,6 +255,7 @@ class GearPair:
             "eps_beta": b * abs(math.sin(beta)) / (math.pi * mn),
             "path": {"A": rho_a, "B": rho_e - pbt, "C": rho_c, "D": rho_a + pbt, "E": rho_e},
             "tip_thickness": tuple(tip_thickness),
+            "tight_centre_distance": tight, "backlash": max(0.0, backlash),
         }
 
     # --- read-only views of the derived quantities -----------------------------------------
@@ -254,6 +275,13 @@ class GearPair:
     t1t2 = _derived("t1t2", "Length T1T2 = a_w sin alpha_wt of the line of action, m.")
     pbt = _derived("pbt", "Transverse base pitch pi m_t cos alpha_t, m.")
     tip_thickness = _derived("tip_thickness", "Transverse tooth thickness at the tips, m.")
+    tight_centre_distance = _derived(
+        "tight_centre_distance", "Centre distance at which the shifted teeth mesh without "
+        "backlash, m.")
+    backlash = _derived(
+        "backlash", "Normal backlash j_bn = 2 a_w (inv alpha_wt - inv alpha_wt0) cos alpha_wt "
+        "cos beta_b of the working centre distance (0 without a given one), m; tooth "
+        "thickness allowances are not modelled.")
 
     @property
     def normal_tip_thickness(self) -> tuple[float, float]:
@@ -266,15 +294,34 @@ class GearPair:
     def design_warnings(self) -> list[str]:
         """Lines about a valid but doubtful design: a nearly pointed tip (normal tip thickness
         below :data:`MIN_TIP_THICKNESS` m_n; the case keys named are ``gear.profile_shift`` and
-        ``gear.tip_diameter``).
+        ``gear.tip_diameter``), and a given centre distance whose backlash is more than
+        :data:`BACKLASH_FACTOR` times ISO/TR 10064-2's recommended minimum
+        (``gear.centre_distance``).
 
         Returns
         -------
         list of str
-            One line per gear whose tip is too thin.
+            One line per gear whose tip is too thin, one for the centre distance.
         """
         lines = []
         mn = self.normal_module
+        limit = BACKLASH_FACTOR * minimum_backlash(self.aw, mn)
+        if self.backlash > limit:
+            z1, z2 = self.teeth
+            alpha_n = self.pressure_angle
+            shifts = ((involute(self.alpha_wt) - involute(self.alpha_t)) * (z1 + z2)
+                      / (2.0 * math.tan(alpha_n)))
+            lines.append(
+                f"gear.centre_distance: {self.aw * 1e3:.4g} mm is "
+                f"{(self.aw - self.tight_centre_distance) * 1e3:.4g} mm more than the "
+                f"{self.tight_centre_distance * 1e3:.6g} mm at which the profile shifts "
+                f"(x1 + x2 = {sum(self.profile_shift):.4g}) mesh without backlash: a normal "
+                f"backlash of {self.backlash * 1e3:.3g} mm = {self.backlash / mn:.3g} m_n, "
+                f"{self.backlash / minimum_backlash(self.aw, mn):.3g} times ISO/TR 10064-2's "
+                f"recommended minimum, and a transverse contact ratio of "
+                f"{self.contact_ratio:.4g}; at this centre distance the teeth mesh without "
+                f"backlash with x1 + x2 = {shifts:.4g}: check gear.centre_distance and "
+                "gear.profile_shift")
         for name, s_an in zip(("pinion", "wheel"), self.normal_tip_thickness, strict=True):
             if s_an < MIN_TIP_THICKNESS * mn:
                 lines.append(

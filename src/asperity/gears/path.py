@@ -23,23 +23,36 @@ import numpy as np
 from .. import diagnostics
 from ..ehl import formulas, solve_steady
 from ..ehl.lubricant import Lubricant
-from ..ehl.problem import LineContact, PointContact
+from ..ehl.problem import FILM_ERROR, LineContact, PointContact
 from ..errors import InputError
 from ..materials import Material
 from .geometry import GearPair
 from .kinematics import Kinematics, kinematics
 from .loading import hertz_along_path, load_sharing
 from .mixed import asperity_share, mixed_friction
-from .thermal import flash_temperature, peclet_number, thermal_contact_coefficient
+from .thermal import (
+    LOW_PECLET_OVERESTIMATE,
+    flash_temperature,
+    peclet_number,
+    thermal_contact_coefficient,
+)
 
-__all__ = ["PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPathResult", "Thermal",
-           "contact_problem", "solve_path"]
+__all__ = ["GEAR_FILM_MESH_ERROR", "GEAR_FILM_MESH_TARGET", "PLAUSIBLE_HERTZ_PRESSURE",
+           "EHLMesh", "GearPathResult", "Thermal", "contact_problem", "film_mesh_error",
+           "position_mesh", "solve_path"]
 
 #: Largest Hertz pressure of a gear flank taken as plausible when neither body gives a
 #: hardness, Pa: about the static (short-life) permissible contact stress of case-hardened
 #: steel, sigma_Hlim 1500-1650 MPa (ISO 6336-5) times the static life factor 1.6 (ISO 6336-2);
 #: above it a torque typed in the wrong unit is the likelier cause (docs/gears.md).
 PLAUSIBLE_HERTZ_PRESSURE = 2.5e9
+
+#: Estimated central-film discretisation error (:func:`film_mesh_error`, an upper estimate)
+#: above which a path's mesh is reported, and the estimate the suggested ``[ehl] nx`` aims
+#: at. Below the limit lie the examples (FZG: 12 % estimated, about 8 % measured, documented
+#: in docs/gears.md); a slow heavily loaded pair's 49 % (53 % measured) is far above it.
+GEAR_FILM_MESH_ERROR = 0.25
+GEAR_FILM_MESH_TARGET = 0.10
 
 
 @dataclass(frozen=True)
@@ -51,6 +64,11 @@ class EHLMesh:
     oscillation ``damping`` as in :func:`asperity.ehl.solve_steady` (the point relaxation of a
     heavily loaded line contact oscillates without damping: on the FZG case 8 of 25 positions
     failed to converge in 40 000 sweeps undamped, none with 0.3).
+
+    With ``adapt`` (the default) ``x_min`` is the shortest inlet of a line contact: where its
+    fully flooded inlet lies farther upstream the domain is extended there at the same
+    spacing (:func:`position_mesh`). Without it every position is solved on ``nx`` nodes over
+    ``x_min a .. x_max a`` as given.
     """
 
     nx: int = 129
@@ -63,6 +81,52 @@ class EHLMesh:
     tol: float = 1e-5
     max_sweeps: int = 20_000
     damping: float = 0.3
+    adapt: bool = True
+
+
+def position_mesh(problem, mesh: EHLMesh) -> tuple[float, int]:
+    """Inlet (in Hertz semi-widths a) and node count along x of the solve at one position.
+
+    The inlet is the farther upstream of ``mesh.x_min`` and the contact's fully flooded inlet
+    (:meth:`asperity.ehl.LineContact.inlet_extent`: Hamrock & Dowson 1977, its inlet length
+    counted 1.8 times), at the spacing of ``mesh`` (``nx - 1`` a multiple of
+    ``2**(levels - 1)``). A thick film in Hertzian units needs a long inlet: a turbo pair's
+    pitch point (M = 2.7) had 13 % less minimum film with the inlet at -2.5 a than at -6.5 a
+    (docs/gears.md). An elliptical contact (crowned flanks) keeps ``mesh``: on a crowned
+    z 17/43 pair the inlets at -3.1 and -4.2 a (145 and 169 nodes) at A and E made the point
+    relaxation fail (a negative film at A, 5 min of retries) where -2.5 a converged in 750 and
+    540 sweeps. The spacing is not refined (the point relaxation of the FZG example
+    does not converge at 10 of 11 positions on 513 nodes); :func:`film_mesh_error` judges it.
+
+    Parameters
+    ----------
+    problem : LineContact or PointContact
+        The smooth contact at the position.
+    mesh : EHLMesh
+        The path's mesh options; without ``mesh.adapt`` (or for a point contact) its
+        ``x_min`` and ``nx`` are returned.
+
+    Returns
+    -------
+    (x_min, nx) : (float, int)
+    """
+    if not mesh.adapt or not isinstance(problem, LineContact):
+        return mesh.x_min, mesh.nx
+    x_min = min(mesh.x_min, -problem.inlet_extent())
+    cells = (mesh.nx - 1) / (mesh.x_max - mesh.x_min)
+    step = 2 ** (mesh.levels - 1)
+    return x_min, step * math.ceil((mesh.x_max - x_min) * cells / step - 1e-9) + 1
+
+
+def film_mesh_error(problem, spacing: float) -> float:
+    """Estimated relative discretisation error of the central film on a mesh of ``spacing``
+    (in a): ``FILM_ERROR dX^2 / H_c`` with ``H_c`` the Moes film in Hertzian units, the rule
+    of the EHL default mesh (:meth:`asperity.ehl.LineContact.cells_per_a`, measured on point
+    contacts, where it is an upper estimate; docs/ehl-robustness.md). On gear line contacts
+    at a/32 it gave 49 % where the central film was 53 % low (M = 161, against 513 nodes) and
+    the minimum film 50 % below Dowson-Higginson, and 12 % where the central film was about
+    8 % low (the FZG pitch, M = 45)."""
+    return FILM_ERROR * spacing**2 / (problem.film_estimate() / problem.film_scale)
 
 
 @dataclass(frozen=True)
@@ -91,7 +155,8 @@ class GearPathResult:
     ``central_film``, ``minimum_film`` from the solver and ``formula_*`` from the film
     formulas; ``specific_film`` lambda; ``ehl_friction``, ``asperity_share``, ``friction``;
     ``flash_temperature`` (K) and ``contact_temperature`` (deg C); ``converged`` and
-    ``sweeps`` per solve (a solve whose minimum film is not positive counts as not converged).
+    ``sweeps`` per solve (a solve whose minimum film is not positive counts as not converged),
+    ``nodes`` the node count along x of each solve (0 where unloaded; :func:`position_mesh`).
     With a Newtonian lubricant (no Eyring stress) ``ehl_friction`` is NaN, and so are
     ``friction`` and the temperatures wherever the film carries part of the load.
     """
@@ -119,6 +184,7 @@ class GearPathResult:
     peclet: np.ndarray
     converged: np.ndarray
     sweeps: np.ndarray
+    nodes: np.ndarray
     line: bool
     warnings: list = field(default_factory=list)
 
@@ -162,30 +228,52 @@ def _formulas(problem, lubricant):
 
 
 def _solve(problem, mesh: EHLMesh):
-    """One steady solve on the mesh; a run that fails to converge is repeated with other
-    oscillation damping: half the factor on a domain whose inlet lies one Hertz semi-width
-    further upstream (same node count, so a spacing 25 % coarser on the default domain), then
-    twice the factor, then none. The point relaxation of a line contact is fragile: on the FZG
-    example 3 of 25 positions needed the second try (their films are then 2-3 % off those of
-    the original spacing), on the helical example the pure-rolling pitch point the third."""
+    """One steady solve on the position's mesh (:func:`position_mesh`); a run that fails to
+    converge is repeated with other oscillation damping: half the factor on a domain whose
+    inlet lies one Hertz semi-width further upstream (same node count, so a slightly coarser
+    spacing), then twice the factor, then none. The point relaxation of a line contact is
+    fragile: on the FZG example (fixed 129 nodes) 3 of 25 positions needed the second try
+    (their films are then 2-3 % off those of the original spacing), on the helical example
+    the pure-rolling pitch point the third. Returns the solution and its node count."""
     line = isinstance(problem, LineContact)
     a = problem.a
+    x_min, nx = position_mesh(problem, mesh)
     y_range = (0.0, 0.0) if line else (mesh.y_min * problem.b, mesh.y_max * problem.b)
-    tries = dict.fromkeys(((mesh.damping, mesh.x_min), (0.5 * mesh.damping, mesh.x_min - 1.0),
-                           (min(1.0, 2.0 * mesh.damping), mesh.x_min), (1.0, mesh.x_min)))
+    tries = dict.fromkeys(((mesh.damping, x_min), (0.5 * mesh.damping, x_min - 1.0),
+                           (min(1.0, 2.0 * mesh.damping), x_min), (1.0, x_min)))
     res = None
-    for damping, x_min in tries:
-        res = solve_steady(problem, nx=mesh.nx, ny=1 if line else mesh.ny,
-                           domain=((x_min * a, mesh.x_max * a), y_range), levels=mesh.levels,
+    for damping, start in tries:
+        res = solve_steady(problem, nx=nx, ny=1 if line else mesh.ny,
+                           domain=((start * a, mesh.x_max * a), y_range), levels=mesh.levels,
                            tol=mesh.tol, max_iter=mesh.max_sweeps, damping=damping)
         if res.converged:
             break
-    return res
+    return res, nx
 
 
 def _angles(kin: Kinematics, indices) -> str:
     """Pinion roll angles (deg) of path positions, listed."""
     return ", ".join(f"{math.degrees(kin.roll_angle[i]):.2f}" for i in indices)
+
+
+def _mesh_notes(kin: Kinematics, error, film_units, mesh: EHLMesh) -> list[str]:
+    """The ``ehl.nx`` line where the estimated central-film error of a position's mesh
+    exceeds :data:`GEAR_FILM_MESH_ERROR`, with the nodes for :data:`GEAR_FILM_MESH_TARGET`."""
+    coarse = np.flatnonzero(error > GEAR_FILM_MESH_ERROR)
+    if not coarse.size:
+        return []
+    cells = math.sqrt(FILM_ERROR / (GEAR_FILM_MESH_TARGET * float(np.min(film_units))))
+    step = 2 ** (mesh.levels - 1)
+    need = step * math.ceil((mesh.x_max - mesh.x_min) * cells / step) + 1
+    spacing = (mesh.x_max - mesh.x_min) / (mesh.nx - 1)
+    return [f"ehl.nx: at {coarse.size} of {kin.rho1.size} path points (roll angles "
+            f"{_angles(kin, coarse)} deg) the mesh dx = a/{1.0 / spacing:.3g} is too coarse "
+            f"for the film (H_c = h_c R/a^2 down to {np.min(film_units):.3g}): the central "
+            f"film's discretisation error is estimated at up to {np.max(error):.0%} "
+            f"({FILM_ERROR:g} dx^2/H_c; a slow pair at M = 161 had half "
+            "the central film on 129 nodes of that on 513), so films and lambda come out too low "
+            f"there; raise [ehl] nx to {need} or more for about "
+            f"{GEAR_FILM_MESH_TARGET:.0%}"]
 
 
 def _pressure_notes(p_hz, torque: float, body1: Material, body2: Material) -> list[str]:
@@ -249,6 +337,9 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         "hc", "hm", "fc", "fm", "mu", "pmax")}
     converged = np.ones(n, dtype=bool)
     sweeps = np.zeros(n, dtype=int)
+    nodes = np.zeros(n, dtype=int)
+    mesh_error = np.zeros(n)
+    film_units = np.full(n, np.inf)
     names = ("", "")
     caught_lines = []
     for i in range(n):
@@ -256,7 +347,9 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
             problem = contact_problem(pair, kin, i, float(load[i]), body1, body2, lubricant)
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
-                res = _solve(problem, mesh)
+                res, nodes[i] = _solve(problem, mesh)
+            mesh_error[i] = film_mesh_error(problem, (res.x[1] - res.x[0]) / problem.a)
+            film_units[i] = problem.film_estimate() / problem.film_scale
             caught_lines += [str(w.message) for w in caught]
             out["hc"][i], out["hm"][i] = res.central_film, res.minimum_film
             out["mu"][i], out["pmax"][i] = abs(res.friction_coefficient), res.max_pressure
@@ -302,6 +395,7 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     if bad.size:
         notes.append(f"EHL solve: {bad.size} of {n} path points did not converge (roll angles "
                      f"{_angles(kin, bad)} deg); refine [ehl] nx/levels or raise max_sweeps")
+    notes += _mesh_notes(kin, mesh_error, film_units, mesh)
     if lubricant.newtonian and loaded.any():
         left_out = loaded & (f_asp < 1.0)
         raw = np.abs(newtonian_mu[loaded & np.isfinite(newtonian_mu)])
@@ -320,9 +414,12 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
                      "tooth ends (edge loading); increase the crowning")
     low_pe = (load > 0) & (heat > 0) & (pe < 5.0)
     if np.any(low_pe):
+        over = LOW_PECLET_OVERESTIMATE[thermal.profile]
         notes.append(f"flash temperature: Peclet number down to {pe[low_pe].min():.2g} < 5 at "
                      f"{int(low_pe.sum())} point(s); Blok's high-speed formula overestimates "
-                     "there (raise the speed or treat those values as an upper bound)")
+                     f"there (for the {thermal.profile} source by {over[1.0]:.0%} at Pe = 1 "
+                     f"and {over[0.3]:.0%} at Pe = 0.3 against Jaeger's exact moving band "
+                     "source), so treat those values as upper bounds")
     return GearPathResult(
         pair=pair, kin=kin, share=share, load=load, hertz_a=a, hertz_b=b, hertz_pressure=p_hz,
         max_pressure=out["pmax"], central_film=out["hc"], minimum_film=out["hm"],
@@ -330,5 +427,5 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         composite_roughness=float(roughness), specific_film=lam, ehl_friction=out["mu"],
         asperity_share=f_asp, friction=mu, flash_temperature=flash,
         contact_temperature=thermal.bulk_temperature + flash, peclet=pe, converged=converged,
-        sweeps=sweeps, line=not pair.crowned, warnings=notes,
+        sweeps=sweeps, nodes=nodes, line=not pair.crowned, warnings=notes,
     )

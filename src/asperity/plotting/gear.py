@@ -6,7 +6,9 @@ shading has a legend entry. The load sharing of a spur pair jumps at B and D (IS
 2/3 outside, 1 on B..D); the load and Hertz pressure are drawn with the value on both sides of
 each jump at the same roll angle, so the jump is a step and not a ramp to the neighbouring node.
 Temperatures are drawn in deg C (bulk and contact temperature), with the flash temperature rise
-(K) as the axis on the right, so that one axis never mixes the two.
+(K) as the axis on the right, so that one axis never mixes the two. Positions whose EHL solve
+did not converge are crossed out (red x, with a legend entry) on the film, lambda, friction
+and temperature curves: their values are drawn but are not solutions.
 """
 
 from __future__ import annotations
@@ -21,6 +23,16 @@ from .style import new_figure
 __all__ = ["conditions_figure", "film_figure", "friction_temperature_figure", "step_curve"]
 
 BAND_LABEL = "single tooth contact B-D"
+UNCONVERGED_LABEL = "EHL solve not converged (not a solution)"
+
+
+def _cross_unconverged(ax, result, values, label: bool = False):
+    """A red x on ``values`` at the loaded positions whose EHL solve did not converge, with a
+    legend entry when ``label``."""
+    bad = (result.load > 0) & ~np.asarray(result.converged, dtype=bool)
+    if bad.any():
+        ax.plot(_angle(result)[bad], np.asarray(values, dtype=float)[bad], "x", color="C3",
+                ms=8, mew=1.5, label=UNCONVERGED_LABEL if label else None, zorder=5)
 
 
 def _mark_points(ax, result, band_label: bool = False):
@@ -97,11 +109,14 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
             label=f"central ({result.formula_names[0]})")
     ax.plot(x, result.formula_minimum * 1e6, "C1--",
             label=f"minimum ({result.formula_names[1]})")
+    _cross_unconverged(ax, result, result.central_film * 1e6, label=True)
+    _cross_unconverged(ax, result, result.minimum_film * 1e6)
     ax.set_ylabel("film thickness (um)")
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
     ax.set_title(title, pad=14)
     ax2.plot(x, result.specific_film, "C2-o", ms=3)
+    _cross_unconverged(ax2, result, result.specific_film)
     ax2.axhline(1.0, color="C3", lw=0.8, ls="--")
     ax2.set_ylabel(f"lambda = h_min / sigma\n{sigma_label} = "
                    f"{result.composite_roughness * 1e6:.3g} um", fontsize=9)
@@ -158,6 +173,7 @@ def friction_temperature_figure(result, title, bulk_temperature, newtonian=False
     else:
         ax.plot(x, result.ehl_friction, "C0--", label="EHL traction (Eyring)")
     ax.plot(x, result.friction, "C0-o", ms=3, label="with boundary share")
+    _cross_unconverged(ax, result, result.friction, label=True)
     ax.set_ylabel("friction coefficient")
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
@@ -165,6 +181,7 @@ def friction_temperature_figure(result, title, bulk_temperature, newtonian=False
     ax2.plot(x, result.contact_temperature, "C3-o", ms=3,
              label="contact temperature = bulk + flash")
     ax2.axhline(bulk_temperature, color="0.4", lw=0.8, ls="--", label="bulk temperature")
+    _cross_unconverged(ax2, result, result.contact_temperature)
     ax2.set_ylabel("temperature (deg C)")
     rise = ax2.secondary_yaxis("right", functions=(lambda t: t - bulk_temperature,
                                                    lambda d: d + bulk_temperature))

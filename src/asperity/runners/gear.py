@@ -120,6 +120,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "contact_temperature": (result.contact_temperature, "degC", "contact temperature"),
         "peclet": (result.peclet, "1", "Peclet number (slower surface)"),
         "converged": (result.converged.astype(np.int8), "1", "EHL solve converged"),
+        "ehl_nodes": (result.nodes, "1", "nodes along x of the EHL solve"),
     }
     ds = xr.Dataset(
         {k: variable(dims, v, u, n) for k, (v, u, n) in fields.items()},
@@ -185,9 +186,13 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "temperature: Blok's formula (band source, high Peclet number, equal maximum surface "
         "temperatures); the EHL solutions are isothermal.",
         f"Mesh: {case.ehl.nx} nodes on {case.ehl.levels} grid(s) over "
-        f"{case.ehl.x_min:g}a..{case.ehl.x_max:g}a; at the FZG example's pitch point the films "
-        "of 129 nodes lie about 7 % below those of 257 nodes (docs/gears.md), so lambda errs "
-        "on the safe side.",
+        f"{case.ehl.x_min:g}a..{case.ehl.x_max:g}a"
+        + (f" (at the same spacing, the inlet moved upstream to the fully flooded distance "
+           f"where the film needs it: {_span(result.nodes[result.nodes > 0])} nodes)"
+           if case.ehl.adapt else "")
+        + "; at the FZG example's pitch point the films of 129 nodes lie about 7 % below "
+        "those of 257 nodes (docs/gears.md), so lambda errs on the safe side; a much thinner "
+        "film in Hertzian units (a slow, heavily loaded pair) is warned about (ehl.nx).",
     ]
     title = case.title
     from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
@@ -217,6 +222,14 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     trust = list(result.warnings)
     return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
                    notes=notes, warnings=trust)
+
+
+def _span(values) -> str:
+    """"129" or "129-263": the range of node counts (empty: "no")."""
+    if not values.size:
+        return "no"
+    low, high = int(values.min()), int(values.max())
+    return f"{low}" if low == high else f"{low}-{high}"
 
 
 def _sigma_label(case) -> str:
