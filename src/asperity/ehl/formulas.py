@@ -31,6 +31,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ..contact.hertz import hertz_point
 from ..errors import InputError, check_positive
@@ -45,6 +46,8 @@ __all__ = [
     "hamrock_dowson_point",
     "chittenden_point",
     "flooded_inlet_distance",
+    "starved_film_ratio",
+    "flooded_film",
     "dowson_higginson_line",
     "moes_line",
     "moes_line_film",
@@ -234,6 +237,40 @@ def flooded_inlet_distance(film, stretch=1.0):
     times: ``1 + stretch (m* - 1)``.
     """
     return 1.0 + stretch * 3.06 * film**0.58
+
+
+def starved_film_ratio(film, m):
+    """Hamrock & Dowson's (1977, part IV) starved over fully flooded central film of a point
+    contact whose inlet meniscus lies ``m`` Hertz semi-axes upstream of the centre:
+    ``((m - 1)/(m* - 1))^0.29`` for ``1 < m < m*``, 1 for ``m >= m*``, with ``m*`` the fully
+    flooded inlet distance (:func:`flooded_inlet_distance`) of the fully flooded central
+    ``film`` in Hertzian units ``H = hc Rx/a^2``.
+    """
+    m_star = flooded_inlet_distance(film)
+    return 1.0 if m >= m_star else ((m - 1.0) / (m_star - 1.0)) ** 0.29
+
+
+def flooded_film(starved, m):
+    """The fully flooded central film ``H`` (Hertzian units ``hc Rx/a^2``) whose starved film
+    at an inlet ``m`` semi-axes upstream is ``starved`` by Hamrock & Dowson's fit
+    (:func:`starved_film_ratio`): the root of ``H ratio(H, m) = starved``.
+
+    The fit's ``m*`` is that of the flooded film. A solve on a short inlet gives the starved
+    one, and the ``m*`` of the starved film is the shorter: set into the fit, a 6206
+    bearing's contact (Rx 3.9 mm, 450 N, inlet at -1.5 a) gave a loss of 4.6 % instead of
+    5.5 % (the solver's own loss there is 9.6 % against -2.5 a, docs/ehl-robustness.md).
+    ``H ratio(H, m)`` grows with ``H`` (as ``H^0.83`` below ``m*``), so the root is unique.
+    """
+    starved = check_positive("starved", starved)
+    if not m > 1.0:
+        raise InputError("m", "an inlet upstream of the Hertz zone, m > 1", m)
+    hi = starved
+    while hi * starved_film_ratio(hi, m) < starved:
+        hi *= 2.0
+    if hi == starved:
+        return float(starved)
+    return float(brentq(lambda h: h * starved_film_ratio(h, m) - starved, hi / 2.0, hi,
+                        xtol=1e-12 * hi, rtol=1e-12))
 
 
 def dowson_higginson_line(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus):
