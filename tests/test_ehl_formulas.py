@@ -252,3 +252,47 @@ def test_a_contact_long_along_the_rolling_direction_is_compared_with_chittenden(
     gear = PointContact(RX, RY, LOAD, SPEED, SPEED, steel, steel, oil)
     assert "hamrock_dowson_central_film_m" in film_formulas(gear)
     assert "chittenden_central_film_m" not in film_formulas(gear)
+
+
+SOFT = """
+analysis = "ehl-steady"
+title = "PDMS ball on glass, water-glycerol"
+[body1]
+youngs_modulus = "2 MPa"
+poisson_ratio = 0.49
+[body2]
+youngs_modulus = "70 GPa"
+poisson_ratio = 0.22
+[contact]
+type = "point"
+rx = "6.35 mm"
+ry = "6.35 mm"
+load = "0.5 N"
+[speeds]
+u = "0.05 m/s"
+[lubricant]
+eta0 = "0.011 Pa s"
+alpha = "0 1/GPa"
+viscosity_model = "barus"
+density_model = "incompressible"
+"""
+
+
+def test_a_soft_contact_is_set_beside_hamrock_dowsons_soft_ehl_films():
+    """A PDMS ball on glass in water-glycerol (Moes M = 964, L = 0) was compared with
+    Nijenbanning's film only. Hamrock & Dowson's (1978) isoviscous-elastic fit, evaluated
+    here from the raw inputs: E' = 2 / ((1 - 0.49^2)/2 MPa + (1 - 0.22^2)/70 GPa) = 5.264 MPa,
+    U = 1.645e-8, W = 2.356e-3, k = 1; a steel contact in oil is not given it."""
+    from asperity.cases import load_case
+    from asperity.references import film_formulas
+
+    e = 2.0 / ((1 - 0.49**2) / 2e6 + (1 - 0.22**2) / 70e9)
+    u, w = 0.011 * 0.05 / (e * 6.35e-3), 0.5 / (e * 6.35e-3**2)
+    hc = 7.32 * (1 - 0.72 * np.exp(-0.28)) * u**0.64 * w**-0.22 * 6.35e-3
+    hm = 7.43 * (1 - 0.85 * np.exp(-0.31)) * u**0.65 * w**-0.21 * 6.35e-3
+    assert (hc, hm) == pytest.approx((0.8369e-6, 0.5521e-6), rel=2e-4)
+    films = film_formulas(load_case(SOFT).problem())
+    assert films["hamrock_dowson_soft_central_film_m"] == pytest.approx(hc, rel=1e-6)
+    assert films["hamrock_dowson_soft_minimum_film_m"] == pytest.approx(hm, rel=1e-6)
+    oil = load_case(SOFT.replace('"2 MPa"', '"210 GPa"').replace('"0 1/GPa"', '"20 1/GPa"'))
+    assert not any("soft" in key for key in film_formulas(oil.problem()))

@@ -25,11 +25,17 @@ from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
 
-__all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formulas", "lubricant_laws",
-           "tangential_comparisons"]
+__all__ = ["DOCS", "ISOVISCOUS", "cite", "ehl_steady_comparisons", "film_formulas",
+           "lubricant_laws", "tangential_comparisons"]
 
 DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
+
+
+#: Largest ``alpha p_h`` (the Barus exponent at the Hertz pressure) at which a point contact
+#: is also set beside Hamrock & Dowson's isoviscous-elastic (soft EHL) films: the viscosity
+#: rises by at most 10.5 % there.
+ISOVISCOUS = 0.1
 
 
 def cite(text: str, anchor: str) -> str:
@@ -254,14 +260,19 @@ def film_formulas(problem) -> dict[str, float]:
     (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with
     alpha > 0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers
     1 <= k <= 8), Chittenden et al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the
-    major axis: a traction drive's contact, where Hamrock-Dowson was shown before).
+    major axis: a traction drive's contact, where Hamrock-Dowson was shown before). Where the
+    viscosity hardly rises over the contact (``alpha p_h <= ISOVISCOUS``: a soft or a
+    water-lubricated contact) and ``ry >= rx``, also Hamrock & Dowson's (1978)
+    isoviscous-elastic films (soft EHL); a PDMS ball on glass in water-glycerol (M = 960,
+    L = 0) had only Nijenbanning's film beside it.
 
     Returns
     -------
     dict
         Summary key (``moes_central_film_m``, ``dowson_higginson_minimum_film_m``,
         ``nijenbanning_central_film_m``, ``hamrock_dowson_central_film_m``,
-        ``hamrock_dowson_minimum_film_m``, ``chittenden_central_film_m``,
+        ``hamrock_dowson_minimum_film_m``, ``hamrock_dowson_soft_central_film_m``,
+        ``hamrock_dowson_soft_minimum_film_m``, ``chittenden_central_film_m``,
         ``chittenden_minimum_film_m``) -> film thickness, m.
     """
     lub = problem.lubricant
@@ -277,6 +288,12 @@ def film_formulas(problem) -> dict[str, float]:
     if problem.ry >= problem.rx:
         values["nijenbanning_central_film_m"] = formulas.nijenbanning_point(
             problem.load, problem.rx, problem.ry, *args).central
+    if problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
+        soft = formulas.hamrock_dowson_soft_point(problem.load, problem.rx, problem.ry,
+                                                  problem.mean_speed, lub.viscosity,
+                                                  problem.reduced_modulus)
+        values.update(hamrock_dowson_soft_central_film_m=soft.central,
+                      hamrock_dowson_soft_minimum_film_m=soft.minimum)
     if lub.pressure_viscosity > 0 and problem.ry >= problem.rx:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
@@ -299,6 +316,12 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
                                       "hamrock-dowson-point"),
     "hamrock_dowson_minimum_film_m": ("minimum film", "minimum_film", "Hamrock-Dowson (1977)",
                                       "hamrock-dowson-point"),
+    "hamrock_dowson_soft_central_film_m": ("central film", "central_film",
+                                           "Hamrock-Dowson soft EHL (1978)",
+                                           "hamrock-dowson-soft-point"),
+    "hamrock_dowson_soft_minimum_film_m": ("minimum film", "minimum_film",
+                                           "Hamrock-Dowson soft EHL (1978)",
+                                           "hamrock-dowson-soft-point"),
     "chittenden_central_film_m": ("central film", "central_film",
                                   "Chittenden, Dowson, Dunn & Taylor (1985)", "chittenden-point"),
     "chittenden_minimum_film_m": ("minimum film", "minimum_film",

@@ -45,6 +45,7 @@ __all__ = [
     "moes_groups",
     "hamrock_dowson_point",
     "chittenden_point",
+    "hamrock_dowson_soft_point",
     "flooded_inlet_distance",
     "starved_film_ratio",
     "flooded_film",
@@ -189,6 +190,37 @@ def hamrock_dowson_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus)
         minimum=float(hm * rx),
         formula="Hamrock-Dowson",
         dimensionless={"U": g.U, "G": g.G, "W": g.W, "k": g.k, "Hc": float(hc), "Hmin": float(hm)},
+    )
+
+
+def hamrock_dowson_soft_point(load, rx, ry, mean_speed, eta0, reduced_modulus):
+    """Hamrock & Dowson's (1978) isoviscous-elastic ("soft EHL") central and minimum film of
+    an elliptical contact of a material of low elastic modulus.
+
+    Hc = hc/rx = 7.32 (1 - 0.72 exp(-0.28 k)) U^0.64 W^-0.22,
+    Hmin = hmin/rx = 7.43 (1 - 0.85 exp(-0.31 k)) U^0.65 W^-0.21,
+    groups from :func:`hamrock_dowson_groups` (the viscosity taken constant, so no G).
+    Fitted to their solutions for 1 <= k <= 12 (entrainment along the minor axis) with
+    E' of a few to tens of MPa; B. J. Hamrock and D. Dowson, "Elastohydrodynamic lubrication
+    of elliptical contacts for materials of low elastic modulus I -- fully flooded
+    conjunction", J. Lubr. Technol. 100 (1978) 236-245.
+
+    Parameters are those of :func:`hamrock_dowson_groups` without ``alpha``.
+
+    Returns
+    -------
+    FilmThickness
+        ``central`` and ``minimum`` in m.
+    """
+    g = hamrock_dowson_groups(load, rx, ry, mean_speed, eta0, 0.0, reduced_modulus)
+    hc = 7.32 * (1.0 - 0.72 * np.exp(-0.28 * g.k)) * g.U**0.64 * g.W**-0.22
+    hm = 7.43 * (1.0 - 0.85 * np.exp(-0.31 * g.k)) * g.U**0.65 * g.W**-0.21
+    rx = float(rx)
+    return FilmThickness(
+        central=float(hc * rx),
+        minimum=float(hm * rx),
+        formula="Hamrock-Dowson (soft EHL)",
+        dimensionless={"U": g.U, "W": g.W, "k": g.k, "Hc": float(hc), "Hmin": float(hm)},
     )
 
 
