@@ -530,3 +530,24 @@ def test_a_stalled_steady_solve_is_told_what_helps():
     assert "Raise solver.max_sweeps (now 40000)" in spent
     far = stall_advice(case, SimpleNamespace(sweeps=5460, residual=3e-3, y=line))
     assert "Raise solver.max_sweeps" in far and "stalled" not in far
+
+
+def test_a_soft_contact_large_against_its_radius_is_reported():
+    """A PDMS ball (E = 2 MPa, nu = 0.49, R = 6.35 mm) on glass at 0.5 N: Hertz gives
+    a = (3 w R / (4 E*))^(1/3) = 0.9672 mm, a/R = 0.152, beyond the small-contact assumption
+    of the half-space film solution; the EHL run said nothing of it (the normal contact
+    runner did). The steel ball of the same case is not flagged."""
+    from pathlib import Path
+
+    text = (Path(__file__).parent / "corpus" /
+            "warn-ehl-point-soft-large-contact.toml").read_text()
+    quick = "\n[grid]\nnx = 65\nny = 33\n[solver]\nlevels = 1\nmax_sweeps = 20\n"
+    e_star = 1.0 / ((1 - 0.49**2) / 2e6 + (1 - 0.22**2) / 70e9)
+    a = (3 * 0.5 * 6.35e-3 / (4 * e_star)) ** (1 / 3)
+    assert a == pytest.approx(0.9672e-3, rel=1e-4)
+    out = run_case(load_case(text + quick))
+    (line,) = [w for w in out.warnings if "small-contact" in w]
+    assert f"a = {a * 1e3:.4g} mm is {a / 6.35e-3:.3g} of the radius" in line
+    assert "contact.load" in line
+    steel = run_case(load_case(text.replace('"2 MPa"', '"210 GPa"') + quick))
+    assert not [w for w in steel.warnings if "small-contact" in w]

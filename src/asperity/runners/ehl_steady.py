@@ -177,7 +177,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
                  film_solved=True) -> list[str]:
     """Trust checks of an EHL solution: inlet, sides, mesh (cells per semi-axis, then the
     discretisation error of the central film and, given the ``smooth_film`` of a steady
-    solution, of its minimum film), hardness.
+    solution, of its minimum film), hardness, and the contact's size against its radius
+    (Hertz's small-contact assumption, ``a/R <= 0.1``).
 
     Shared by the steady and transient runners (:mod:`asperity.diagnostics`). Where the side
     pressure is small but not negligible (``SIDE_PROBE_PRESSURE`` to ``BOUNDARY_PRESSURE`` of
@@ -224,7 +225,24 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
+    lines += _contact_size(problem)
     return lines
+
+
+def _contact_size(problem) -> list[str]:
+    """Hertz's small-contact assumption (:func:`asperity.diagnostics.hertz_validity`, its
+    ``a/R`` check), on which the half-space film solution rests: a PDMS ball of 6.35 mm on
+    glass at 0.5 N has a = 0.97 mm, a/R = 0.15, and was solved without a word. The strain check
+    is left out: its advice (give a hardness, plasticity) fits metals, not the elastomer of a
+    soft contact, and a given hardness is checked by ``above_hardness``."""
+    hz = problem.hertz
+    if isinstance(problem, LineContact):
+        a, radius, key = hz.a, problem.radius, "contact.load_per_length"
+    else:
+        (a, radius), key = max((hz.a, problem.rx), (hz.b, problem.ry),
+                               key=lambda pair: pair[0] / pair[1]), "contact.load"
+    return diagnostics.hertz_validity(a, radius, hz.p_max, problem.reduced_modulus / 2.0,
+                                      hardness_given=True, load_key=key)
 
 
 def _figures(title, problem, res, line):
