@@ -296,3 +296,12 @@ def test_a_soft_contact_is_set_beside_hamrock_dowsons_soft_ehl_films():
     assert films["hamrock_dowson_soft_minimum_film_m"] == pytest.approx(hm, rel=1e-6)
     oil = load_case(SOFT.replace('"2 MPa"', '"210 GPa"').replace('"0 1/GPa"', '"20 1/GPa"'))
     assert not any("soft" in key for key in film_formulas(oil.problem()))
+    # a steel ball at 4 N in a 1 Pa s isoviscous oil: M = 0.80, rigid-isoviscous (HD soft's
+    # 1.26 um against Nijenbanning's 21 um); not an isoviscous-elastic contact
+    rigid = load_case(SOFT.replace('"2 MPa"', '"210 GPa"').replace('"70 GPa"', '"210 GPa"')
+                      .replace("0.49", "0.3").replace("0.22", "0.3")
+                      .replace('"6.35 mm"', '"12.7 mm"')
+                      .replace('"0.5 N"', '"4 N"').replace('"0.011 Pa s"', '"1 Pa s"')
+                      .replace('"0.05 m/s"', '"1 m/s"') + "[grid]\nnx = 65\nny = 33\n").problem()
+    assert rigid.M == pytest.approx(0.805, rel=1e-3)
+    assert set(film_formulas(rigid)) == {"nijenbanning_central_film_m"}

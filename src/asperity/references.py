@@ -25,7 +25,7 @@ from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
 
-__all__ = ["DOCS", "ISOVISCOUS", "cite", "ehl_steady_comparisons", "film_formulas",
+__all__ = ["DOCS", "ELASTIC_M", "ISOVISCOUS", "cite", "ehl_steady_comparisons", "film_formulas",
            "lubricant_laws", "tangential_comparisons"]
 
 DOCS = "docs/references.md"
@@ -36,6 +36,11 @@ DOCS = "docs/references.md"
 #: is also set beside Hamrock & Dowson's isoviscous-elastic (soft EHL) films: the viscosity
 #: rises by at most 10.5 % there.
 ISOVISCOUS = 0.1
+#: Smallest Moes M at which Hamrock & Dowson's isoviscous-elastic films are shown: below it the
+#: rigid-isoviscous limit takes over (Nijenbanning's asymptotes of a circle, H_RI = 41.3 M^-2
+#: and H_EI = 2.42 M^-2/15, cross at M = 4.6). A steel ball at M = 0.8 was shown 1.26 um
+#: against Nijenbanning's 21 um.
+ELASTIC_M = 10.0
 
 
 def cite(text: str, anchor: str) -> str:
@@ -262,9 +267,9 @@ def film_formulas(problem) -> dict[str, float]:
     1 <= k <= 8), Chittenden et al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the
     major axis: a traction drive's contact, where Hamrock-Dowson was shown before). Where the
     viscosity hardly rises over the contact (``alpha p_h <= ISOVISCOUS``: a soft or a
-    water-lubricated contact) and ``ry >= rx``, also Hamrock & Dowson's (1978)
-    isoviscous-elastic films (soft EHL); a PDMS ball on glass in water-glycerol (M = 960,
-    L = 0) had only Nijenbanning's film beside it.
+    water-lubricated contact), the contact deforms (``M >= ELASTIC_M``) and ``ry >= rx``,
+    also Hamrock & Dowson's (1978) isoviscous-elastic films (soft EHL); a PDMS ball on glass
+    in water-glycerol (M = 960, L = 0) had only Nijenbanning's film beside it.
 
     Returns
     -------
@@ -288,7 +293,8 @@ def film_formulas(problem) -> dict[str, float]:
     if problem.ry >= problem.rx:
         values["nijenbanning_central_film_m"] = formulas.nijenbanning_point(
             problem.load, problem.rx, problem.ry, *args).central
-    if problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
+    if (problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
+            and problem.M >= ELASTIC_M):
         soft = formulas.hamrock_dowson_soft_point(problem.load, problem.rx, problem.ry,
                                                   problem.mean_speed, lub.viscosity,
                                                   problem.reduced_modulus)
