@@ -597,3 +597,28 @@ def test_a_refused_default_mesh_names_the_domain_to_set_with_the_nodes():
     problem = case.problem()
     (lo, _), _ = case.solve_options(problem)["domain"]
     assert lo / problem.a == pytest.approx(x0)
+
+
+def test_a_nearly_rigid_contact_on_a_small_domain_is_reported():
+    """The lightly loaded ball of the test above on the bounds its refusal names, on a
+    coarse mesh: its peak pressure is about 1 % of p_h, its pressure spreads over
+    l = sqrt(2 Rx hc) = 7 a and decays as 1/r^3. On -58 a..8 a, +-29.6 b (241 x 121 nodes) it
+    gave 9.59 um, 53 % of the unbounded rigid film (18.0 um by a projected-SOR solve
+    extrapolated in the domain, 17.9 um by Brewe-Hamrock-Taylor), with no warning: the
+    boundary checks compare with p_h. The domain line now gives the estimate from a rigid
+    ball's load on a square domain, (1 - 1.6/S)^2 of the film at S = 4.1 l, and the bounds
+    for 5 %; the comparison rows carry Brewe-Hamrock-Taylor's film."""
+    case = load_case(LIGHT + "[grid]\nnx = 121\nny = 61\nx_min = -58.0\nx_max = 8.0\n"
+                             "y_min = -29.6\ny_max = 29.6\n[solver]\nmax_sweeps = 20000\n")
+    out = run_case(case)
+    assert out.converged
+    film = out.summary["central_film_thickness_m"]
+    assert 0.45 < film / 18.0e-6 < 0.6
+    (line,) = [w for w in out.warnings if w.startswith("domain: the contact is nearly rigid")]
+    length = np.sqrt(2 * 12.7e-3 * film)
+    reach = 29.6 * case.problem().b / length
+    share = (1 - 1.6 / reach) ** 2
+    assert f"the domain reaches {reach:.3g} l" in line
+    assert f"has {100 * share:.3g} % of its film" in line
+    assert out.summary["brewe_hamrock_taylor_minimum_film_m"] == pytest.approx(17.94e-6,
+                                                                                rel=1e-3)

@@ -269,7 +269,9 @@ def film_formulas(problem) -> dict[str, float]:
     viscosity hardly rises over the contact (``alpha p_h <= ISOVISCOUS``: a soft or a
     water-lubricated contact), the contact deforms (``M >= ELASTIC_M``) and ``ry >= rx``,
     also Hamrock & Dowson's (1978) isoviscous-elastic films (soft EHL); a PDMS ball on glass
-    in water-glycerol (M = 960, L = 0) had only Nijenbanning's film beside it.
+    in water-glycerol (M = 960, L = 0) had only Nijenbanning's film beside it. Below
+    ``ELASTIC_M`` an isoviscous contact is set beside Brewe, Hamrock & Taylor's (1979)
+    rigid-isoviscous minimum film instead.
 
     Returns
     -------
@@ -277,7 +279,8 @@ def film_formulas(problem) -> dict[str, float]:
         Summary key (``moes_central_film_m``, ``dowson_higginson_minimum_film_m``,
         ``nijenbanning_central_film_m``, ``hamrock_dowson_central_film_m``,
         ``hamrock_dowson_minimum_film_m``, ``hamrock_dowson_soft_central_film_m``,
-        ``hamrock_dowson_soft_minimum_film_m``, ``chittenden_central_film_m``,
+        ``hamrock_dowson_soft_minimum_film_m``, ``brewe_hamrock_taylor_minimum_film_m``,
+        ``chittenden_central_film_m``,
         ``chittenden_minimum_film_m``) -> film thickness, m.
     """
     lub = problem.lubricant
@@ -300,6 +303,11 @@ def film_formulas(problem) -> dict[str, float]:
                                                   problem.reduced_modulus)
         values.update(hamrock_dowson_soft_central_film_m=soft.central,
                       hamrock_dowson_soft_minimum_film_m=soft.minimum)
+    if (problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
+            and problem.M < ELASTIC_M):
+        values["brewe_hamrock_taylor_minimum_film_m"] = formulas.brewe_hamrock_taylor_point(
+            problem.load, problem.rx, problem.ry, problem.mean_speed, lub.viscosity,
+            problem.reduced_modulus).minimum
     if lub.pressure_viscosity > 0 and problem.ry >= problem.rx:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
@@ -328,6 +336,9 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
     "hamrock_dowson_soft_minimum_film_m": ("minimum film", "minimum_film",
                                            "Hamrock-Dowson soft EHL (1978)",
                                            "hamrock-dowson-soft-point"),
+    "brewe_hamrock_taylor_minimum_film_m": ("minimum film", "minimum_film",
+                                            "Brewe-Hamrock-Taylor rigid-isoviscous (1979)",
+                                            "brewe-hamrock-taylor-point"),
     "chittenden_central_film_m": ("central film", "central_film",
                                   "Chittenden, Dowson, Dunn & Taylor (1985)", "chittenden-point"),
     "chittenden_minimum_film_m": ("minimum film", "minimum_film",

@@ -178,7 +178,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     """Trust checks of an EHL solution: inlet, sides, mesh (cells per semi-axis, then the
     discretisation error of the central film and, given the ``smooth_film`` of a steady
     solution, of its minimum film), hardness, and the contact's size against its radius
-    (Hertz's small-contact assumption, ``a/R <= 0.1``).
+    (Hertz's small-contact assumption, ``a/R <= 0.1``); a nearly rigid point contact's
+    domain against the reach of its pressure (:func:`asperity.diagnostics.ehl_rigid_domain`).
 
     Shared by the steady and transient runners (:mod:`asperity.diagnostics`). Where the side
     pressure is small but not negligible (``SIDE_PROBE_PRESSURE`` to ``BOUNDARY_PRESSURE`` of
@@ -211,6 +212,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
         lines += fit
     if b is not None:
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
+        lines += diagnostics.ehl_rigid_domain(pressure, x, y, problem.rx, central_film,
+                                              hz.p_max, hz.a, b)
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
