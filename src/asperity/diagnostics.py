@@ -577,10 +577,14 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
             f"{_pct(1.0 - RIGID_FILM_LOSS)})"
             + (f", and its outlet at {outlet:.2g} l cuts the pressure short of its exit"
                if outlet < 1.0 else "")
-            + f"; for 5 % set x_min <= {-need / a:.3g} a, y_min <= {-need / b:.3g} b, "
-            f"y_max >= {need / b:.3g} b, x_max >= {max(length, float(x[-1])) / a:.3g} a (a "
-            "coarse mesh serves: the pressure varies over l), or take the rigid-isoviscous "
-            "film of the comparison rows"]
+            + f"; for 5 % set x_min <= {-need * 1e3:.3g} mm, y_min <= {-need * 1e3:.3g} mm, "
+            f"y_max >= {need * 1e3:.3g} mm, x_max >= {max(length, float(x[-1])) * 1e3:.3g} mm "
+            f"({need / a:.3g} a; as lengths: beyond 100 semi-axes; a coarse mesh serves, the "
+            "pressure varies over l)"
+            + (f"; these pass the radius Rx = {rx * 1e3:.3g} mm, beyond which the paraboloid "
+               "gap of the solution and of the formulas is not the body's" if need > rx
+               else "")
+            + "; or take the rigid-isoviscous film of the comparison rows"]
 
 
 def ehl_film_collapse(film, estimate: float | None = None) -> list[str]:
