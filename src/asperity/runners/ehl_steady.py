@@ -13,6 +13,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
+from ..cases.ehl import MAX_BOUND
 from ..ehl import solve_steady
 from ..ehl.problem import LineContact
 from ..ehl.sides import inlet_probe, side_probe
@@ -195,7 +196,10 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     hz = problem.hertz
     b = None if isinstance(problem, LineContact) else hz.b
     lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max)
-    mesh = diagnostics.ehl_mesh(x, y, hz.a, b)
+    # a nearly rigid contact's pressure varies over sqrt(2 Rx hc), not the Hertz zone: its
+    # mesh is judged by ehl_rigid_domain (a lightly loaded ball was told nx >= 1082 x 2001)
+    rigid = b is not None and float(np.max(pressure)) < diagnostics.RIGID_PRESSURE * hz.p_max
+    mesh = [] if rigid else diagnostics.ehl_mesh(x, y, hz.a, b)
     fit = []
     if b is not None and not lines:  # the pressure is back to ambient: still starved?
         fit = diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film,
@@ -213,7 +217,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if b is not None:
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
         lines += diagnostics.ehl_rigid_domain(pressure, x, y, problem.rx, central_film,
-                                              hz.p_max, hz.a, b)
+                                              hz.p_max, hz.a, b, MAX_BOUND)
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
@@ -222,7 +226,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     # alone asked for nx >= 41 where the film needs 209 (a user's nx = 33: -93 % on the film).
     # The film formula's film, as for the default mesh: a starved or unconverged film would
     # ask for a mesh of the wrong film
-    lines += diagnostics.ehl_film_mesh(x, hz.a, problem.film_estimate() / problem.film_scale)
+    if not rigid:
+        lines += diagnostics.ehl_film_mesh(x, hz.a,
+                                           problem.film_estimate() / problem.film_scale)
     if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
         lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
     if getattr(case, "body1", None) is not None:
