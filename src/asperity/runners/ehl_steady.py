@@ -205,7 +205,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
         fit = diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film,
                                            solved=film_solved)
     default_inlet = problem.default_domain()[0][0]
-    if not lines and not mesh and x[0] > default_inlet + 0.01 * hz.a:
+    if not lines and not mesh and not rigid and x[0] > default_inlet + 0.01 * hz.a:
         # an inlet shorter than the default domain's: measured, also where Hamrock & Dowson's
         # fit has warned (it gave 5.5 % for a bearing's 9.6 %)
         probe = inlet_probe(problem, x, y, default_inlet)
