@@ -25,8 +25,8 @@ from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
 
-__all__ = ["DOCS", "ELASTIC_M", "ISOVISCOUS", "cite", "ehl_steady_comparisons", "film_formulas",
-           "lubricant_laws", "tangential_comparisons"]
+__all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formulas", "lubricant_laws",
+           "tangential_comparisons"]
 
 DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
