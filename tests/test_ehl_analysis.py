@@ -619,10 +619,76 @@ def test_a_nearly_rigid_contact_on_a_small_domain_is_reported():
     reach = 29.6 * case.problem().b / length
     share = (1 - 1.6 / reach) ** 2
     assert f"the domain reaches {reach:.3g} l" in line
-    assert f"has {100 * share:.3g} % of its film" in line
+    assert f"has (1 - 1.6/S)^2 of its film: {100 * share:.3g} %" in line
     assert "take the rigid-isoviscous film of the comparison rows" in line
     # its pressure varies over l, not the Hertz zone: a/dx = 1.8 is not a mesh too coarse
     # (the Hertz-zone check asked for nx >= 661 x 594 before); dx = 0.08 l is fine
     assert not [w for w in out.warnings if w.startswith("mesh")]
     assert out.summary["brewe_hamrock_taylor_minimum_film_m"] == pytest.approx(17.94e-6,
                                                                                 rel=1e-3)
+
+
+RIGID_ROLLER = """
+analysis = "ehl-steady"
+title = "Lightly loaded steel roller in viscous oil"
+[body1]
+youngs_modulus = "210 GPa"
+[body2]
+youngs_modulus = "210 GPa"
+[contact]
+type = "line"
+radius = "10 mm"
+load_per_length = "20 kN/m"
+[speeds]
+u = "1 m/s"
+[lubricant]
+eta0 = "1 Pa s"
+alpha = "0 1/GPa"
+viscosity_model = "barus"
+density_model = "incompressible"
+"""
+
+
+def _swift_stieber_load(x0, x1):
+    """Load integral C of a rigid cylinder, ``w' = 24 eta u R C / h0``, inlet at ``x0`` and
+    outlet at ``x1`` (in ``sqrt(2 R h0)``): ``dP/dX = (H - He)/H^3``, ``H = 1 + X^2``, the
+    exit where P and dP/dX vanish, or at the outlet where that comes first."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    h = lambda x: 1 + x * x  # noqa: E731
+
+    def p(x, he):
+        return quad(lambda s: (h(s) - he) / h(s) ** 3, x0, x, limit=200)[0]
+
+    if p(x1, h(x1)) > 0:  # the exit lies past the outlet
+        he = (quad(lambda s: h(s) ** -2, x0, x1, limit=200)[0]
+              / quad(lambda s: h(s) ** -3, x0, x1, limit=200)[0])
+        xe = x1
+    else:
+        xe = brentq(lambda e: p(e, h(e)), 1e-6, x1)
+        he = h(xe)
+    return quad(lambda x: p(x, he), x0, xe, limit=200)[0]
+
+
+def test_a_nearly_rigid_line_contact_on_its_default_domain_is_reported():
+    """A steel roller, R = 10 mm, at 20 kN/m in a 1 Pa s isoviscous oil at 1 m/s (Moes
+    M = 0.29): on its default domain, -26.5 a..1.5 a, it gave 2.28 um with no warning, 6.8 %
+    under Martin's unbounded 2.45 um. The domain is 5.8 l upstream and 0.33 l downstream
+    (l = sqrt(2 R hc) = 4.6 a), and the Swift-Stieber solution integrated here on that domain
+    gives 2.24 um: the solver is right for its domain, and the domain cuts the film. The
+    domain line says so and the comparison rows carry Martin's film."""
+    out = run_case(load_case(RIGID_ROLLER))
+    film = out.summary["minimum_film_thickness_m"]
+    x = out.dataset.x.values
+    length = np.sqrt(2 * 10e-3 * film)
+    c_inf = _swift_stieber_load(-1e3, 3.0)
+    assert 24 * c_inf == pytest.approx(4.895, abs=1e-3)  # Martin
+    martin = 24 * c_inf * 1.0 * 1.0 * 10e-3 / 2e4
+    assert out.summary["martin_minimum_film_m"] == pytest.approx(martin, rel=1e-3)
+    bounded = 24 * _swift_stieber_load(x[0] / length, x[-1] / length) * 10e-3 / 2e4
+    assert film == pytest.approx(bounded, rel=0.04)  # rigid: elastic flattening adds 2 %
+    assert film / martin < 0.95
+    (line,) = [w for w in out.warnings if w.startswith("domain: the contact is nearly rigid")]
+    assert "rigid cylinder with the inlet S l upstream has (1 - 2.44/S^2)" in line
+    assert "its outlet at 0.33 l cuts the pressure short of its exit" in line

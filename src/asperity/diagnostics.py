@@ -517,50 +517,64 @@ def ehl_inlet_film(probe, a: float) -> list[str]:
             f"inlet starves the film; use x_min <= {probe.long_x_min / a:.3g} a"]
 
 
-#: Peak film pressure, as a share of the Hertz pressure, below which a point contact counts as
-#: nearly rigid for :func:`ehl_rigid_domain` (the film carries the load with little flattening).
+#: Peak film pressure, as a share of the Hertz pressure, below which a contact's mesh is judged
+#: on ``sqrt(2 Rx hc)`` rather than on the Hertz zone (:func:`ehl_rigid_domain`).
 RIGID_PRESSURE = 0.1
+#: ``sqrt(2 Rx hc)``, in Hertz semi-axes a, from which a contact counts as nearly rigid for
+#: :func:`ehl_rigid_domain`: its pressure spreads past the Hertz zone (``hc Rx/a^2 >= 2``).
+RIGID_LENGTH = 2.0
 #: A rigid ball's load on a square domain of half-width S (in ``sqrt(2 Rx h0)``) is
 #: ``1 - RIGID_REACH / S`` of the unbounded one (projected SOR of its Reynolds equation at
 #: S = 8, 16, 32: 0.800, 0.899, 0.950; docs/ehl-robustness.md, "A nearly rigid contact").
 RIGID_REACH = 1.6
+#: A rigid cylinder's load (and film, ``h ~ 1/w'``) with the inlet S upstream is
+#: ``1 - RIGID_REACH_LINE / S^2`` of the unbounded (Martin's): 0.963, 0.991, 0.998 at
+#: S = 8, 16, 32 by the Swift-Stieber solution integrated here.
+RIGID_REACH_LINE = 2.44
 #: Film a nearly rigid contact's domain may cost (its estimate) before it is reported.
 RIGID_FILM_LOSS = 0.05
-#: Outlet, in ``sqrt(2 Rx h0)``, short of which a rigid ball's exit is cut (projected SOR:
-#: its load 0.36 % short with the outlet at 0.5, 3.7 % at 0.21).
+#: Outlet, in ``sqrt(2 Rx h0)``, short of which a rigid contact's exit is cut (a ball's load
+#: 0.36 % short with the outlet at 0.5, 3.7 % at 0.21; a cylinder's, whose exit lies at
+#: 0.475, 0.5 % at 0.4 and 2.6 % at 0.3).
 RIGID_OUTLET = 0.5
-#: Largest mesh spacing, in ``sqrt(2 Rx h0)``, for a nearly rigid contact (its film moved by
-#: 2 % between 0.2 and 0.1); the Hertz-zone mesh checks do not apply to it.
+#: Largest mesh spacing, in ``sqrt(2 Rx h0)``, for a contact whose peak pressure is below
+#: ``RIGID_PRESSURE`` p_h (a rigid ball's film moved by 2 % between 0.2 and 0.1); the
+#: Hertz-zone mesh checks do not apply to it.
 RIGID_SPACING = 0.25
 
 
 def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: float,
-                     a: float, b: float, max_bound: float = 100.0) -> list[str]:
-    """A nearly rigid point contact on a domain too small for its slowly decaying pressure.
+                     a: float, b: float | None, max_bound: float = 100.0) -> list[str]:
+    """A nearly rigid contact on a domain too small for its slowly decaying pressure.
 
-    Where the film pressure stays below :data:`RIGID_PRESSURE` of the Hertz pressure the
-    contact is hydrodynamic rather than elastohydrodynamic: the pressure spreads over the
-    length ``l = sqrt(2 Rx hc)``, not the Hertz zone, and falls off only as ``1/r^3`` beyond
-    it, so the load a bounded domain carries, and with it the film (``h ~ w^-2`` for a rigid
-    ball), depends on how far the domain reaches. A rigid ball's load on a square domain of
-    half-width S l is ``1 - 1.6/S`` of the unbounded one: the film ``(1 - 1.6/S)^2`` of it,
-    which is the estimate here with S the nearer of the inlet and the sides. A 1/2 in ball at
-    4 N in a 1 Pa s isoviscous oil (Moes M = 0.8) on -58 a..8 a, +-29.6 b (S = 4.1 l at the
-    sides, 8.1 l at the inlet) gave 9.59 um, 53 % of the unbounded 18.0 um, with no warning:
-    the boundary pressure checks compare with p_h, and the pressure there is 1e-3 of the peak.
+    Where ``l = sqrt(2 Rx hc)`` exceeds :data:`RIGID_LENGTH` Hertz semi-axes the contact is
+    hydrodynamic rather than elastohydrodynamic: the pressure spreads over ``l``, not the
+    Hertz zone, and falls off only slowly beyond it (as ``1/r^3`` for a ball, ``1/x^3`` for a
+    cylinder), so the load a bounded domain carries, and with it the film, depends on how far
+    the domain reaches. A rigid ball's load on a square domain of half-width S l is
+    ``1 - 1.6/S`` of the unbounded one, its film (``h ~ w^-2``) ``(1 - 1.6/S)^2``, the
+    estimate here with S the nearer of the inlet and the sides; a rigid cylinder's film with
+    the inlet S l upstream ``1 - 2.44/S^2`` of Martin's. A 1/2 in ball at 4 N in a 1 Pa s
+    isoviscous oil (Moes M = 0.8) on -58 a..8 a, +-29.6 b (S = 4.1 l at the sides, 8.1 l at
+    the inlet) gave 9.59 um, 53 % of the unbounded 18.0 um, with no warning: the boundary
+    pressure checks compare with p_h, and the pressure there is 1e-3 of the peak. A roller
+    (R = 10 mm, 20 kN/m, M = 0.29) on its default -26.5 a..1.5 a (5.8 l, outlet 0.33 l)
+    gave 2.28 um, 6.8 % under Martin's 2.45 um.
 
     Parameters
     ----------
     pressure : ndarray, shape (nx, ny)
         Film pressure, Pa.
     x, y : ndarray
-        Node coordinates, m.
+        Node coordinates, m (``y = [0.]`` for a line contact).
     rx : float
         Radius of relative curvature along x, m.
     central_film : float
         Central film, m.
-    p_hertz, a, b : float
-        Hertz pressure (Pa) and semi-axes (m).
+    p_hertz, a : float
+        Hertz pressure (Pa) and semi-axis along x (m).
+    b : float or None
+        Hertz semi-axis along y, m; None for a line contact.
     max_bound : float
         The farthest domain bound a case takes, in semi-axes (``cases.ehl.MAX_BOUND``): the
         advice stays within it.
@@ -568,48 +582,63 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
     Returns
     -------
     list of str
-        A ``mesh:`` line where a spacing exceeds :data:`RIGID_SPACING` l, and a ``domain:``
-        line where the estimated loss exceeds :data:`RIGID_FILM_LOSS` or the outlet lies
-        short of :data:`RIGID_OUTLET` l.
+        A ``mesh:`` line where the peak pressure is below :data:`RIGID_PRESSURE` p_h and a
+        spacing exceeds :data:`RIGID_SPACING` l, and a ``domain:`` line where the estimated
+        loss exceeds :data:`RIGID_FILM_LOSS` or the outlet lies short of :data:`RIGID_OUTLET`
+        l.
     """
-    p_max = float(np.max(pressure))
-    if not (central_film > 0.0 and p_max < RIGID_PRESSURE * p_hertz):
+    if not central_film > 0.0:
         return []
     length = math.sqrt(2.0 * rx * central_film)
-    reach = min(-float(x[0]), -float(y[0]), float(y[-1])) / length
-    share = max(0.0, 1.0 - RIGID_REACH / reach) ** 2
-    outlet = float(x[-1]) / length
-    spacing = max(_spacing(x), _spacing(y)) / length
-    lines = [] if spacing <= RIGID_SPACING else [
+    if length < RIGID_LENGTH * a:
+        return []
+    line = b is None
+    p_max = float(np.max(pressure))
+    spacing = (_spacing(x) if line else max(_spacing(x), _spacing(y))) / length
+    lines = [] if spacing <= RIGID_SPACING or p_max >= RIGID_PRESSURE * p_hertz else [
         f"mesh: the contact is nearly rigid (peak pressure {_pct(p_max / p_hertz)} of p_h) and "
         f"its pressure varies over l = sqrt(2 Rx hc) = {length / a:.3g} a, not the Hertz zone; "
         f"the spacing {spacing:.2g} l is coarser than {RIGID_SPACING:g} l (a rigid ball's film "
-        f"moves by 2 % from 0.2 l to 0.1 l): use dx <= {RIGID_SPACING * length / a:.3g} a "
-        f"and dy <= {RIGID_SPACING * length / b:.3g} b"]
+        f"moves by 2 % from 0.2 l to 0.1 l): use dx <= {RIGID_SPACING * length / a:.3g} a"
+        + ("" if line else f" and dy <= {RIGID_SPACING * length / b:.3g} b")]
+    if line:
+        reach = -float(x[0]) / length
+        share = max(0.0, 1.0 - RIGID_REACH_LINE / reach**2)
+        need = math.sqrt(RIGID_REACH_LINE / RIGID_FILM_LOSS) * length
+        body, law = "cylinder with the inlet S l upstream", "(1 - 2.44/S^2) of its film"
+    else:
+        reach = min(-float(x[0]), -float(y[0]), float(y[-1])) / length
+        share = max(0.0, 1.0 - RIGID_REACH / reach) ** 2
+        need = RIGID_REACH / (1.0 - math.sqrt(1.0 - RIGID_FILM_LOSS)) * length
+        body = "ball on a square domain of half-width S l"
+        law = "(1 - 1.6/S)^2 of its film"
+    outlet = float(x[-1]) / length
     if share >= 1.0 - RIGID_FILM_LOSS and outlet >= RIGID_OUTLET:
         return lines
-    need = RIGID_REACH / (1.0 - math.sqrt(1.0 - RIGID_FILM_LOSS)) * length
-    line = (f"domain: the contact is nearly rigid (peak pressure {_pct(p_max / p_hertz)} of "
-            f"p_h): its pressure spreads over l = sqrt(2 Rx hc) = {length / a:.3g} a and falls "
-            f"off slowly beyond it; the domain reaches {reach:.3g} l (inlet or sides), where a "
-            f"rigid ball on a square domain of half-width S l carries (1 - 1.6/S) of its "
-            f"unbounded load and so has {_pct(share)} of its film (limit "
-            f"{_pct(1.0 - RIGID_FILM_LOSS)})"
+    text = (f"domain: the contact is nearly rigid (l = sqrt(2 Rx hc) = {length / a:.3g} a, more "
+            f"than {RIGID_LENGTH:g} a; peak pressure {_pct(p_max / p_hertz)} of p_h): its "
+            "pressure spreads over l, not the Hertz zone, and falls off slowly beyond it; the "
+            f"domain reaches {reach:.3g} l ({'inlet' if line else 'inlet or sides'}), where a "
+            f"rigid {body} has {law}: {_pct(share)} (limit {_pct(1.0 - RIGID_FILM_LOSS)})"
             + (f", and its outlet at {outlet:.2g} l cuts the pressure short of its exit"
                if outlet < RIGID_OUTLET else ""))
-    x_max = max(length, float(x[-1])) / a
-    if need <= max_bound * min(a, b):
-        advice = (f"for 5 % set x_min <= {-need / a:.3g}, y_min <= {-need / b:.3g}, y_max >= "
-                  f"{need / b:.3g}, x_max >= {x_max:.3g} (a coarse mesh serves: the pressure "
-                  "varies over l), or take the rigid-isoviscous film of the comparison rows")
+    x_max = max(RIGID_OUTLET * length, float(x[-1])) / a
+    sides = "" if line else f", y_min <= {-need / b:.3g}, y_max >= {need / b:.3g}"
+    if need <= max_bound * (a if line else min(a, b)):
+        advice = (f"for 5 % set x_min <= {-need / a:.3g}{sides}, x_max >= {x_max:.3g} (a coarse "
+                  "mesh serves: the pressure varies over l), or take the rigid-isoviscous film "
+                  "of the comparison rows")
     else:
-        widest = max_bound * min(a, b) / length
+        widest = max_bound * (a if line else min(a, b)) / length
+        kept = (1.0 - RIGID_REACH_LINE / widest**2 if line
+                else (1.0 - RIGID_REACH / widest) ** 2)
+        bounds = "x_min" if line else "x_min, y_min, y_max"
+        at = f"-{max_bound:g}" if line else f"-{max_bound:g}, -{max_bound:g}, {max_bound:g}"
         advice = (f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case "
-                  f"takes, where the film would be {_pct((1.0 - RIGID_REACH / widest) ** 2)} "
-                  "of it: take the rigid-isoviscous film of the comparison rows (or x_min, "
-                  f"y_min, y_max at -{max_bound:g}, -{max_bound:g}, {max_bound:g} and x_max >= "
-                  f"{x_max:.3g}, on a coarse mesh, for that share)")
-    return [*lines, f"{line}; {advice}"]
+                  f"takes, where the film would be {_pct(kept)} of it: take the "
+                  f"rigid-isoviscous film of the comparison rows (or {bounds} at {at} and "
+                  f"x_max >= {x_max:.3g}, on a coarse mesh, for that share)")
+    return [*lines, f"{text}; {advice}"]
 
 
 def ehl_film_collapse(film, estimate: float | None = None) -> list[str]:

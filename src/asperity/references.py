@@ -261,7 +261,8 @@ def film_formulas(problem) -> dict[str, float]:
     """The Newtonian film-thickness formulas that apply to an EHL problem, m.
 
     Line contact: Moes (1992) central film, and Dowson-Higginson (1977) minimum film when the
-    pressure-viscosity coefficient is positive. Point contact: Nijenbanning, Venner & Moes
+    pressure-viscosity coefficient is positive; Martin's (1916) rigid-isoviscous film where
+    the contact is isoviscous and ``M < ELASTIC_M``. Point contact: Nijenbanning, Venner & Moes
     (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with
     alpha > 0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers
     1 <= k <= 8), Chittenden et al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the
@@ -277,6 +278,7 @@ def film_formulas(problem) -> dict[str, float]:
     -------
     dict
         Summary key (``moes_central_film_m``, ``dowson_higginson_minimum_film_m``,
+        ``martin_minimum_film_m``,
         ``nijenbanning_central_film_m``, ``hamrock_dowson_central_film_m``,
         ``hamrock_dowson_minimum_film_m``, ``hamrock_dowson_soft_central_film_m``,
         ``hamrock_dowson_soft_minimum_film_m``, ``brewe_hamrock_taylor_minimum_film_m``,
@@ -289,6 +291,10 @@ def film_formulas(problem) -> dict[str, float]:
     if isinstance(problem, LineContact):
         values["moes_central_film_m"] = formulas.moes_line(problem.load_per_length,
                                                            problem.radius, *args).central
+        if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS and problem.M < ELASTIC_M:
+            values["martin_minimum_film_m"] = formulas.martin_line(
+                problem.load_per_length, problem.radius, problem.mean_speed,
+                lub.viscosity).minimum
         if lub.pressure_viscosity > 0:
             values["dowson_higginson_minimum_film_m"] = formulas.dowson_higginson_line(
                 problem.load_per_length, problem.radius, *args).minimum
@@ -336,6 +342,8 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
     "hamrock_dowson_soft_minimum_film_m": ("minimum film", "minimum_film",
                                            "Hamrock-Dowson soft EHL (1978)",
                                            "hamrock-dowson-soft-point"),
+    "martin_minimum_film_m": ("minimum film", "minimum_film", "Martin rigid-isoviscous (1916)",
+                              "martin-line"),
     "brewe_hamrock_taylor_minimum_film_m": ("minimum film", "minimum_film",
                                             "Brewe-Hamrock-Taylor rigid-isoviscous (1979)",
                                             "brewe-hamrock-taylor-point"),

@@ -47,6 +47,7 @@ __all__ = [
     "chittenden_point",
     "hamrock_dowson_soft_point",
     "brewe_hamrock_taylor_point",
+    "martin_line",
     "flooded_inlet_distance",
     "starved_film_ratio",
     "flooded_film",
@@ -253,6 +254,25 @@ def brewe_hamrock_taylor_point(load, rx, ry, mean_speed, eta0, reduced_modulus):
     h = float(hm * float(rx))
     return FilmThickness(central=h, minimum=h, formula="Brewe-Hamrock-Taylor",
                          dimensionless={"U": g.U, "W": g.W, "Hmin": float(hm)})
+
+
+def martin_line(load_per_length, radius, mean_speed, eta0):
+    """Martin's (1916) rigid-isoviscous film of a line contact with the Reynolds (Swift-Stieber)
+    exit condition: ``h0 = 4.895 eta0 u R / w'``, ``u`` the mean speed; the exit lies at
+    ``x = 0.4751 sqrt(2 R h0)``. The constant is ``24 C`` with C the load integral of the
+    Swift-Stieber pressure, integrated in tests/test_ehl_formulas.py
+    (``test_moes_rigid_asymptotes_against_exact_rigid_line_solutions``). A rigid contact's
+    least film is its central one.
+
+    Returns
+    -------
+    FilmThickness
+        ``central`` and ``minimum`` (equal) in m.
+    """
+    w = check_positive("load_per_length", load_per_length)
+    h = 4.895 * check_positive("eta0", eta0) * check_positive("mean_speed", mean_speed) \
+        * check_positive("radius", radius) / w
+    return FilmThickness(central=float(h), minimum=float(h), formula="Martin")
 
 
 def chittenden_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):

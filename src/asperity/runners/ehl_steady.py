@@ -198,7 +198,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max)
     # a nearly rigid contact's pressure varies over sqrt(2 Rx hc), not the Hertz zone: its
     # mesh is judged by ehl_rigid_domain (a lightly loaded ball was told nx >= 1082 x 2001)
-    rigid = b is not None and float(np.max(pressure)) < diagnostics.RIGID_PRESSURE * hz.p_max
+    rigid = float(np.max(pressure)) < diagnostics.RIGID_PRESSURE * hz.p_max
     mesh = [] if rigid else diagnostics.ehl_mesh(x, y, hz.a, b)
     fit = []
     if b is not None and not lines:  # the pressure is back to ambient: still starved?
@@ -216,8 +216,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
         lines += fit
     if b is not None:
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
-        lines += diagnostics.ehl_rigid_domain(pressure, x, y, problem.rx, central_film,
-                                              hz.p_max, hz.a, b, MAX_BOUND)
+    lines += diagnostics.ehl_rigid_domain(pressure, x, y, problem.rx, central_film, hz.p_max,
+                                          hz.a, b, MAX_BOUND)
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
