@@ -252,3 +252,104 @@ def test_a_contact_long_along_the_rolling_direction_is_compared_with_chittenden(
     gear = PointContact(RX, RY, LOAD, SPEED, SPEED, steel, steel, oil)
     assert "hamrock_dowson_central_film_m" in film_formulas(gear)
     assert "chittenden_central_film_m" not in film_formulas(gear)
+
+
+SOFT = """
+analysis = "ehl-steady"
+title = "PDMS ball on glass, water-glycerol"
+[body1]
+youngs_modulus = "2 MPa"
+poisson_ratio = 0.49
+[body2]
+youngs_modulus = "70 GPa"
+poisson_ratio = 0.22
+[contact]
+type = "point"
+rx = "6.35 mm"
+ry = "6.35 mm"
+load = "0.5 N"
+[speeds]
+u = "0.05 m/s"
+[lubricant]
+eta0 = "0.011 Pa s"
+alpha = "0 1/GPa"
+viscosity_model = "barus"
+density_model = "incompressible"
+"""
+
+
+def test_a_soft_contact_is_set_beside_hamrock_dowsons_soft_ehl_films():
+    """A PDMS ball on glass in water-glycerol (Moes M = 964, L = 0) was compared with
+    Nijenbanning's film only. Hamrock & Dowson's (1978) isoviscous-elastic fit, evaluated
+    here from the raw inputs: E' = 2 / ((1 - 0.49^2)/2 MPa + (1 - 0.22^2)/70 GPa) = 5.264 MPa,
+    U = 1.645e-8, W = 2.356e-3, k = 1; a steel contact in oil is not given it."""
+    from asperity.cases import load_case
+    from asperity.references import film_formulas
+
+    e = 2.0 / ((1 - 0.49**2) / 2e6 + (1 - 0.22**2) / 70e9)
+    u, w = 0.011 * 0.05 / (e * 6.35e-3), 0.5 / (e * 6.35e-3**2)
+    hc = 7.32 * (1 - 0.72 * np.exp(-0.28)) * u**0.64 * w**-0.22 * 6.35e-3
+    hm = 7.43 * (1 - 0.85 * np.exp(-0.31)) * u**0.65 * w**-0.21 * 6.35e-3
+    assert (hc, hm) == pytest.approx((0.8369e-6, 0.5521e-6), rel=2e-4)
+    films = film_formulas(load_case(SOFT).problem())
+    assert films["hamrock_dowson_soft_central_film_m"] == pytest.approx(hc, rel=1e-6)
+    assert films["hamrock_dowson_soft_minimum_film_m"] == pytest.approx(hm, rel=1e-6)
+    oil = load_case(SOFT.replace('"2 MPa"', '"210 GPa"').replace('"0 1/GPa"', '"20 1/GPa"'))
+    assert not any("soft" in key for key in film_formulas(oil.problem()))
+    # a steel ball at 4 N in a 1 Pa s isoviscous oil: M = 0.80, rigid-isoviscous (HD soft's
+    # 1.26 um against Nijenbanning's 21 um); not an isoviscous-elastic contact but a rigid one
+    rigid = load_case(SOFT.replace('"2 MPa"', '"210 GPa"').replace('"70 GPa"', '"210 GPa"')
+                      .replace("0.49", "0.3").replace("0.22", "0.3")
+                      .replace('"6.35 mm"', '"12.7 mm"')
+                      .replace('"0.5 N"', '"4 N"').replace('"0.011 Pa s"', '"1 Pa s"')
+                      .replace('"0.05 m/s"', '"1 m/s"') + "[grid]\nnx = 65\nny = 33\n").problem()
+    assert rigid.M == pytest.approx(0.805, rel=1e-3)
+    assert set(film_formulas(rigid)) == {"nijenbanning_central_film_m",
+                                         "brewe_hamrock_taylor_minimum_film_m"}
+
+
+def _rigid_ball_load(half_width, dx=0.2, outlet=4.0):
+    """Load coefficient C of a rigid ball on a plane, isoviscous, Reynolds exit condition:
+    ``div(H^3 grad P) = dH/dX`` with ``H = 1 + X^2 + Y^2`` on -S..outlet x -S..S, lengths in
+    ``sqrt(2 R h0)``, solved by red-black projected SOR (P >= 0); the load is
+    ``w = 12 eta u (2R)^1.5 h0^-0.5 C``."""
+    x = np.arange(-half_width, outlet + dx / 2, dx)
+    y = np.arange(-half_width, half_width + dx / 2, dx)
+    h = 1 + x[:, None] ** 2 + y[None, :] ** 2
+    h3 = h**3
+    ce, cw = 0.5 * (h3[1:-1, 1:-1] + h3[2:, 1:-1]), 0.5 * (h3[1:-1, 1:-1] + h3[:-2, 1:-1])
+    cn, cs = 0.5 * (h3[1:-1, 1:-1] + h3[1:-1, 2:]), 0.5 * (h3[1:-1, 1:-1] + h3[1:-1, :-2])
+    rhs = (h[2:, 1:-1] - h[:-2, 1:-1]) / (2 * dx) * dx**2
+    diag = ce + cw + cn + cs
+    p = np.zeros_like(h)
+    colour = (np.add.outer(np.arange(x.size), np.arange(y.size)) % 2)[1:-1, 1:-1]
+    for _ in range(20000):
+        change = 0.0
+        for c in (0, 1):
+            inner = p[1:-1, 1:-1]
+            new = (ce * p[2:, 1:-1] + cw * p[:-2, 1:-1] + cn * p[1:-1, 2:]
+                   + cs * p[1:-1, :-2] - rhs) / diag
+            new = np.maximum(inner + 1.9 * (new - inner), 0.0)
+            mask = colour == c
+            change = max(change, float(np.max(np.abs(new - inner)[mask])))
+            inner[mask] = new[mask]
+        if change < 1e-10:
+            break
+    return np.trapezoid(np.trapezoid(p, y, axis=1), x)
+
+
+def test_brewe_hamrock_taylor_against_a_rigid_ball_solved_here():
+    """The rigid-isoviscous film of a 1/2 in steel ball at 4 N in a 1 Pa s oil at 1 m/s
+    (Moes M = 0.80): Brewe, Hamrock & Taylor's 17.94 um against the Reynolds equation solved
+    here; its load falls short of the unbounded one as 1 - 1.6/S on a square domain of
+    half-width S (0.2768 and 0.3115 at S = 8 and 16), so the unbounded coefficient is
+    2 C(16) - C(8) and the film h0 = (12 C eta u (2R)^1.5 / w)^2: 17.7 um, within 2 %."""
+    from asperity.ehl.formulas import brewe_hamrock_taylor_point
+
+    e = 210e9 / (1 - 0.3**2)
+    film = brewe_hamrock_taylor_point(4.0, 12.7e-3, 12.7e-3, 1.0, 1.0, e).minimum
+    assert film == pytest.approx(17.94e-6, rel=1e-3)
+    c8, c16 = _rigid_ball_load(8.0), _rigid_ball_load(16.0)
+    assert (c8, c16) == pytest.approx((0.2768, 0.3115), abs=2e-3)
+    solved = (12 * (2 * c16 - c8) * (2 * 12.7e-3) ** 1.5 / 4.0) ** 2
+    assert solved == pytest.approx(film, rel=0.02)

@@ -34,6 +34,17 @@ DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
 
 
+#: Largest ``alpha p_h`` (the Barus exponent at the Hertz pressure) at which a point contact
+#: is also set beside Hamrock & Dowson's isoviscous-elastic (soft EHL) films: the viscosity
+#: rises by at most 10.5 % there.
+ISOVISCOUS = 0.1
+#: Smallest Moes M at which Hamrock & Dowson's isoviscous-elastic films are shown: below it the
+#: rigid-isoviscous limit takes over (Nijenbanning's asymptotes of a circle, H_RI = 41.3 M^-2
+#: and H_EI = 2.42 M^-2/15, cross at M = 4.6). A steel ball at M = 0.8 was shown 1.26 um
+#: against Nijenbanning's 21 um.
+ELASTIC_M = 10.0
+
+
 def cite(text: str, anchor: str) -> str:
     """``"<text>; docs/references.md#<anchor>"``: the source and where the project states it."""
     return f"{text}; {DOCS}#{anchor}"
@@ -317,18 +328,28 @@ def film_formulas(problem) -> dict[str, float]:
     """The Newtonian film-thickness formulas that apply to an EHL problem, m.
 
     Line contact: Moes (1992) central film, and Dowson-Higginson (1977) minimum film when the
-    pressure-viscosity coefficient is positive. Point contact: Nijenbanning, Venner & Moes
+    pressure-viscosity coefficient is positive; Martin's (1916) rigid-isoviscous film where
+    the contact is isoviscous and ``M < ELASTIC_M``. Point contact: Nijenbanning, Venner & Moes
     (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with
     alpha > 0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers
     1 <= k <= 8), Chittenden et al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the
-    major axis: a traction drive's contact, where Hamrock-Dowson was shown before).
+    major axis: a traction drive's contact, where Hamrock-Dowson was shown before). Where the
+    viscosity hardly rises over the contact (``alpha p_h <= ISOVISCOUS``: a soft or a
+    water-lubricated contact), the contact deforms (``M >= ELASTIC_M``) and ``ry >= rx``,
+    also Hamrock & Dowson's (1978) isoviscous-elastic films (soft EHL); a PDMS ball on glass
+    in water-glycerol (M = 960, L = 0) had only Nijenbanning's film beside it. Below
+    ``ELASTIC_M`` an isoviscous contact is set beside Brewe, Hamrock & Taylor's (1979)
+    rigid-isoviscous minimum film instead.
 
     Returns
     -------
     dict
         Summary key (``moes_central_film_m``, ``dowson_higginson_minimum_film_m``,
+        ``martin_minimum_film_m``,
         ``nijenbanning_central_film_m``, ``hamrock_dowson_central_film_m``,
-        ``hamrock_dowson_minimum_film_m``, ``chittenden_central_film_m``,
+        ``hamrock_dowson_minimum_film_m``, ``hamrock_dowson_soft_central_film_m``,
+        ``hamrock_dowson_soft_minimum_film_m``, ``brewe_hamrock_taylor_minimum_film_m``,
+        ``chittenden_central_film_m``,
         ``chittenden_minimum_film_m``) -> film thickness, m.
     """
     lub = problem.lubricant
@@ -337,6 +358,10 @@ def film_formulas(problem) -> dict[str, float]:
     if isinstance(problem, LineContact):
         values["moes_central_film_m"] = formulas.moes_line(problem.load_per_length,
                                                            problem.radius, *args).central
+        if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS and problem.M < ELASTIC_M:
+            values["martin_minimum_film_m"] = formulas.martin_line(
+                problem.load_per_length, problem.radius, problem.mean_speed,
+                lub.viscosity).minimum
         if lub.pressure_viscosity > 0:
             values["dowson_higginson_minimum_film_m"] = formulas.dowson_higginson_line(
                 problem.load_per_length, problem.radius, *args).minimum
@@ -344,6 +369,18 @@ def film_formulas(problem) -> dict[str, float]:
     if problem.ry >= problem.rx:
         values["nijenbanning_central_film_m"] = formulas.nijenbanning_point(
             problem.load, problem.rx, problem.ry, *args).central
+    if (problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
+            and problem.M >= ELASTIC_M):
+        soft = formulas.hamrock_dowson_soft_point(problem.load, problem.rx, problem.ry,
+                                                  problem.mean_speed, lub.viscosity,
+                                                  problem.reduced_modulus)
+        values.update(hamrock_dowson_soft_central_film_m=soft.central,
+                      hamrock_dowson_soft_minimum_film_m=soft.minimum)
+    if (problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
+            and problem.M < ELASTIC_M):
+        values["brewe_hamrock_taylor_minimum_film_m"] = formulas.brewe_hamrock_taylor_point(
+            problem.load, problem.rx, problem.ry, problem.mean_speed, lub.viscosity,
+            problem.reduced_modulus).minimum
     if lub.pressure_viscosity > 0 and problem.ry >= problem.rx:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
@@ -366,6 +403,17 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
                                       "hamrock-dowson-point"),
     "hamrock_dowson_minimum_film_m": ("minimum film", "minimum_film", "Hamrock-Dowson (1977)",
                                       "hamrock-dowson-point"),
+    "hamrock_dowson_soft_central_film_m": ("central film", "central_film",
+                                           "Hamrock-Dowson soft EHL (1978)",
+                                           "hamrock-dowson-soft-point"),
+    "hamrock_dowson_soft_minimum_film_m": ("minimum film", "minimum_film",
+                                           "Hamrock-Dowson soft EHL (1978)",
+                                           "hamrock-dowson-soft-point"),
+    "martin_minimum_film_m": ("minimum film", "minimum_film", "Martin rigid-isoviscous (1916)",
+                              "martin-line"),
+    "brewe_hamrock_taylor_minimum_film_m": ("minimum film", "minimum_film",
+                                            "Brewe-Hamrock-Taylor rigid-isoviscous (1979)",
+                                            "brewe-hamrock-taylor-point"),
     "chittenden_central_film_m": ("central film", "central_film",
                                   "Chittenden, Dowson, Dunn & Taylor (1985)", "chittenden-point"),
     "chittenden_minimum_film_m": ("minimum film", "minimum_film",

@@ -67,16 +67,33 @@ __all__ = [
 MAX_NODES = 801 * 201 * 4
 
 
-def check_node_count(nx: int, ny: int, chosen: bool):
+def check_node_count(nx: int, ny: int, chosen: bool, domain=None):
     """Refuse a mesh of more than :data:`MAX_NODES` nodes (as a validator's ValueError);
     ``chosen``: the default mesh the contact's film and features asked for, which says which
     keys to set. A steady case whose bare ``alpha = 28`` (1/Pa) made a 1.4 m film estimate
-    asked for 542,009 x 42,345 nodes and ran out of memory without a word."""
+    asked for 542,009 x 42,345 nodes and ran out of memory without a word.
+
+    ``domain``: the default domain that mesh is on, in Hertz semi-axes
+    ``((x_min, x_max), (y_min, y_max))`` (y None for a line contact), for a case without a
+    [grid] table, so that the line says which bounds to set with the node counts: a lightly
+    loaded ball (Moes M = 0.8, inlet at -58 a) was told to set grid.nx and grid.ny, and with
+    them alone ran on the [grid] table's -2.5 a..1.5 a, 2 % of its inlet, unconverged with its
+    load 13 % short."""
     if nx * ny > MAX_NODES:
+        where = ""
+        if domain is not None:
+            (x0, x1), y_bounds = domain
+            where = f", on its domain x = {x0:.3g} a..{x1:.3g} a" + (
+                "" if y_bounds is None else f", y = {y_bounds[0]:.3g} b..{y_bounds[1]:.3g} b")
+        bounds = "" if domain is None else (
+            " with grid.x_min, grid.x_max" + ("" if domain[1] is None else
+                                              ", grid.y_min, grid.y_max") +
+            " at these bounds (a [grid] table without them takes -2.5 a..1.5 a" +
+            ("" if domain[1] is None else ", -2 b..2 b") + ")")
         why = "" if not chosen else (
             f" (the default mesh {nx} x {ny} for the contact's film and the surfaces' "
-            "features; check the lubricant's and the contact's units, or set grid.nx and "
-            "grid.ny)")
+            f"features{where}; check the lubricant's and the contact's units, or set grid.nx "
+            f"and grid.ny{bounds})")
         raise ValueError(f"expected at most {MAX_NODES} nodes, got {nx * ny}{why}")
 
 
@@ -518,5 +535,10 @@ class EHLSteadyCase(EHLCaseBase):
         options = self.solve_options(problem)
         nx, ny = (options["nx"], options["ny"]) if options["nx"] is not None else \
             problem.default_nodes(options["domain"])
-        check_node_count(nx, ny if not line else 1, self.regime_nodes)
+        domain = None
+        if self.regime_mesh:
+            (x0, x1), (y0, y1) = problem.default_domain()
+            domain = ((x0 / problem.a, x1 / problem.a),
+                      None if line else (y0 / problem.b, y1 / problem.b))
+        check_node_count(nx, ny if not line else 1, self.regime_nodes, domain)
         return self

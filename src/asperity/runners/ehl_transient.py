@@ -277,7 +277,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
                                    "Film contours and lubricant flow vectors (Fig. 14).")
     # an unconverged steady start's film would set the inlet and mesh advice: the formula's
     film = res.steady_central_film if res.steady_converged else problem.film_estimate()
-    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film)
+    trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film,
+                         film_solved=res.steady_converged)
     b = None if line else problem.b
     touching = []
     if np.isfinite(res.steady_film).all():  # contacts without roughness, counted all the same

@@ -1,0 +1,34 @@
+"""Units of the steady EHL figures (asperity.plotting.ehl)."""
+
+import numpy as np
+import pytest
+
+from asperity.plotting.ehl import centre_line_profiles, contour_maps, transverse_section
+
+
+def _soft_contact():
+    """A Hertzian pressure of 255.2 kPa and a 1.01 um film: a PDMS ball on glass."""
+    x = np.linspace(-2.5e-3, 1.5e-3, 81)
+    y = np.linspace(-2e-3, 2e-3, 41)
+    r2 = (x[:, None] / 1e-3) ** 2 + (y[None, :] / 1e-3) ** 2
+    p = 255.2e3 * np.sqrt(np.clip(1 - r2, 0, None))
+    h = 1.01e-6 + np.clip(r2 - 1, 0, None) * 5e-5
+    return x, y, p, h
+
+
+def test_a_soft_contact_is_drawn_in_kpa_and_um():
+    """Its 255 kPa was drawn on a GPa axis (0.00025); the film keeps um although the gap at
+    the domain's edge is 0.4 mm."""
+    x, y, p, h = _soft_contact()
+    mid = y.size // 2
+    fig = centre_line_profiles(x, p[:, mid], h[:, mid], 1e-3, p[:, mid])
+    ax_p, ax_h = fig.axes[:2]
+    assert ax_p.get_ylabel() == "pressure (kPa)" and ax_h.get_ylabel() == "film (µm)"
+    assert ax_p.get_lines()[0].get_ydata().max() == pytest.approx(255.2, rel=1e-3)
+    assert ax_p.get_lines()[1].get_ydata().max() == pytest.approx(255.2, rel=1e-3)
+    assert ax_h.get_lines()[0].get_ydata().min() == pytest.approx(1.01, rel=1e-3)
+    fig = contour_maps(x, y, p, h, 1e-3, 1e-3, 1.01e-6)
+    assert [ax.get_title() for ax in fig.axes[:2]] == ["pressure (kPa)", "film thickness (µm)"]
+    fig = transverse_section(y, p[40], h[40], 1e-3)
+    assert fig.axes[0].get_ylabel() == "pressure (kPa)"
+    assert fig.axes[1].get_ylabel() == "film (µm)"
