@@ -20,7 +20,7 @@ from asperity.surfaces.areal import (
     texture_aspect_ratio,
     texture_direction,
 )
-from asperity.surfaces.form import remove_form
+from asperity.surfaces.form import principal_radii, remove_form
 
 H = 1e-6
 X1 = (np.arange(200) + 0.5) * H
@@ -120,3 +120,61 @@ def test_masked_points_are_left_out_of_the_height_parameters(tmp_path):
     assert filled.excluded is None
     sa = evaluate_texture(filled.surface, form_degree=0).groups["height"]["Sa"]
     assert sa == pytest.approx(1e-6 - (2 * 0.4 + 2 * 0.8) / 40 * 1e-6, rel=1e-9)
+
+
+def cylinder_under_roughness(radius=5e-3, angle_deg=0.0):
+    """A 120 um map: 0.25 um rms roughness (Gaussian-smoothed noise, correlation about 3 um)
+    on a cylinder of ``radius`` whose axis is ``angle_deg`` + 90 deg from x, with a tilt."""
+    from scipy.ndimage import gaussian_filter
+
+    n, h = 240, 0.5e-6
+    c = (np.arange(n) - n / 2) * h
+    cx, cy = np.meshgrid(c, c, indexing="ij")
+    rough = gaussian_filter(np.random.default_rng(1).standard_normal((n, n)), 3, mode="wrap")
+    rough *= 0.25e-6 / rough.std()
+    b = math.radians(angle_deg)
+    across = cx * math.cos(b) + cy * math.sin(b)
+    z = rough + radius - np.sqrt(radius ** 2 - across ** 2) + 2e-3 * cx
+    return Topography(c, c, z), rough
+
+
+@pytest.mark.parametrize("angle", [0.0, 30.0, 90.0])
+def test_cylinder_left_in_an_areal_map_warns_with_its_radius(angle):
+    """A 5 mm cylinder under a plane: Sq 0.2708 um (axis along y) against the roughness'
+    0.2500, as numpy's least-squares plane leaves it; the warning names a radius within 12 % of
+    5 mm and the direction of its curvature within 5 degrees (the roughness alone has a quadric
+    of 44 mm radius, 11 % of the cylinder's curvature; the bare cylinder gives 5 mm to 1e-3);
+    --form-degree 2 gives Sq within 0.3 % of the roughness's and no warning."""
+    from asperity.surfaces import evaluate_texture
+
+    surface, rough = cylinder_under_roughness(angle_deg=angle)
+    flat = evaluate_texture(surface)
+    cx, cy = np.meshgrid(surface.x, surface.y, indexing="ij")
+    plane = np.stack([np.ones(cx.size), cx.ravel(), cy.ravel()], axis=1)
+    levelled = surface.z.ravel() - plane @ np.linalg.lstsq(plane, surface.z.ravel(), rcond=None)[0]
+    assert flat.groups["height"]["Sq"] == pytest.approx(levelled.std(), rel=1e-9)
+    assert flat.groups["height"]["Sq"] > 1.07 * rough.std()
+    (warning,) = [w for w in flat.warnings if w.startswith("form:")]
+    radius = float(warning.split("about ")[1].split(" mm")[0]) * 1e-3
+    direction = float(warning.split("strongest at ")[1].split(" deg")[0])
+    assert radius == pytest.approx(5e-3, rel=0.12)
+    assert abs((direction - angle + 90) % 180 - 90) <= 5
+    bare = principal_radii(Topography(surface.x, surface.y, surface.z - rough))
+    assert bare[0] == pytest.approx(5e-3, rel=1e-3)
+    assert abs((bare[2] - angle + 90) % 180 - 90) <= 0.1
+    assert "--form-degree 2" in warning
+    curved = evaluate_texture(surface, form_degree=2)
+    assert not any(w.startswith("form:") for w in curved.warnings)
+    assert curved.groups["height"]["Sq"] == pytest.approx(rough.std(), rel=3e-3)
+
+
+def test_flat_random_maps_do_not_warn_of_form():
+    """Gaussian maps of correlation length 1/50 and 1/13 of the field, six seeds each: a quadric
+    takes at most 4 % off their Sq, as much as the cubic terms do, so no form warning."""
+    from asperity.surfaces import evaluate_texture
+
+    for correlation in (5e-6, 20e-6):
+        for seed in range(6):
+            t = gaussian_topography(256e-6, 1e-6, 1e-6, correlation, seed=seed)
+            t = Topography(t.x, t.y, t.z)  # as measured: not periodic
+            assert not any(w.startswith("form:") for w in evaluate_texture(t).warnings)

@@ -38,17 +38,24 @@ import scipy.fft
 from ..errors import InputError
 from .cutoffs import lambda_s_for
 from .filters import areal_gaussian_filter
-from .form import remove_form
+from .form import principal_radii, remove_form
 from .material_ratio import rk_parameters, section_height_difference, volume_parameters
 from .parameters import acf_decay_lengths, roughness_parameters
 from .profiles import height_moments
 from .topography import Topography
 
-__all__ = ["AreaFamilies", "areal_families", "areal_parameters", "texture_aspect_ratio",
-           "texture_direction"]
+__all__ = ["AreaFamilies", "areal_families", "areal_parameters", "form_left_in",
+           "texture_aspect_ratio", "texture_direction"]
 
 #: ACF threshold s of Sal and Str (ISO 25178-2 default).
 ACF_THRESHOLD = 0.2
+#: Fraction of the S-F surface's Sq that a polynomial one degree higher than the form removed
+#: must take off for form to be taken as left in (:func:`form_left_in`).
+FORM_LEFT_IN = 0.02
+#: How many times the variance the next-degree terms remove that form must remove.
+FORM_DOMINANCE = 4.0
+#: Points per side of the grid on which :func:`form_left_in` fits (every k-th point).
+FORM_CHECK_POINTS = 512
 
 
 @dataclass(frozen=True)
@@ -63,7 +70,7 @@ class AreaFamilies:
         The S-L surface when an L-filter is given, otherwise the S-F surface.
     s_filter, l_filter : float or None
         Nesting indices applied (m).
-    notes : tuple of str
+    notes, warnings : tuple of str
     """
 
     primary: Topography
@@ -71,11 +78,52 @@ class AreaFamilies:
     s_filter: float | None
     l_filter: float | None
     notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @property
     def label(self) -> str:
         """``"S-L"`` or ``"S-F"`` (the surface the parameters are of)."""
         return "S-L" if self.l_filter is not None else "S-F"
+
+
+def form_left_in(surface: Topography, degree: int) -> str | None:
+    """A warning when form is left in a surface from which the form of ``degree`` was removed.
+
+    The polynomials of ``degree + 1`` and ``degree + 2`` are fitted to ``surface`` (every k-th
+    point, at most :data:`FORM_CHECK_POINTS` a side: the form is smooth). Form is taken to be
+    left in when removing the first lowers Sq by more than :data:`FORM_LEFT_IN` (it then holds
+    more than sqrt(1 - 0.98^2) = 20 % of Sq in quadrature) and the variance it removes is more
+    than :data:`FORM_DOMINANCE` times what the terms of the next degree remove beyond it: a
+    cylinder or ball is a quadric, which the cubic terms do not add to, whereas waviness or
+    roughness of long correlation projects onto both alike (on 256 x 256 Gaussian surfaces of
+    correlation length 1/13 of the field the ratio was 0.05 to 2.3). Under a plane the radius
+    named is the smaller principal radius of the least-squares quadric
+    (:func:`~asperity.surfaces.form.principal_radii`).
+    """
+    step = [max(1, -(-n // FORM_CHECK_POINTS)) for n in surface.shape]
+    coarse = Topography(surface.x[::step[0]], surface.y[::step[1]],
+                        surface.z[::step[0], ::step[1]])
+    if min(coarse.shape) < degree + 4 or not np.ptp(coarse.z) > 0:
+        return None
+    variance = [float(np.var(coarse.z))] + [float(np.var(remove_form(coarse, d).z))
+                                            for d in (degree + 1, degree + 2)]
+    sq, lower = np.sqrt(variance[:2])
+    if lower >= (1 - FORM_LEFT_IN) * sq or (
+            variance[0] - variance[1] <= FORM_DOMINANCE * (variance[1] - variance[2])):
+        return None
+    if degree <= 1:
+        radius, _, angle = principal_radii(coarse)
+        what = (f"a curvature of about {radius * 1e3:.3g} mm radius, strongest at "
+                f"{angle:.0f} deg from x")
+    else:
+        what = "a form of higher degree"
+    return (f"form: a polynomial of degree {degree + 1} takes {100 * (1 - lower / sq):.2g} % "
+            f"off Sq ({sq * 1e6:.4g} -> {lower * 1e6:.4g} um; limit {100 * FORM_LEFT_IN:g} %): "
+            "form is left in the S-F surface "
+            f"({what}), and its height, material-ratio and volume parameters include it; for a "
+            f"curved part (cylinder, ball, crown) remove it: --form-degree {degree + 1} (case "
+            f"file: evaluation.form_degree = {degree + 1}); for a flat part whose waviness is "
+            "as long as the field, give --cutoff (the S-L surface) instead")
 
 
 def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
@@ -95,8 +143,12 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
     """
     if not isinstance(topography, Topography):
         raise InputError("surface", "a Topography", type(topography).__name__)
-    notes = []
+    notes, warnings = [], []
     surface = remove_form(topography, form_degree)
+    if l_filter is None and not topography.periodic:
+        form = form_left_in(surface, form_degree)
+        if form is not None:
+            warnings.append(form)
     notes.append("form removed: " + ("mean (periodic surface)" if topography.periodic else
                                      f"least-squares polynomial of degree {form_degree}"))
     spacing = max(topography.spacing)
@@ -123,7 +175,7 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
                      "correction at the borders): parameters of the S-L surface")
     else:
         notes.append("no L-filter (give --cutoff): parameters of the S-F surface")
-    return AreaFamilies(surface, limited, s_filter, l_filter, tuple(notes))
+    return AreaFamilies(surface, limited, s_filter, l_filter, tuple(notes), tuple(warnings))
 
 
 def _decay(topography: Topography, threshold: float) -> tuple[float, float, bool]:

@@ -130,7 +130,7 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
     return TextureEvaluation(topography, fam, params, titles, fam.notes,
-                             _depth_warnings(z, rmr_depth, "Smr"))
+                             fam.warnings + _depth_warnings(z, rmr_depth, "Smr"))
 
 
 def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None,
