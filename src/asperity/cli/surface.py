@@ -114,7 +114,6 @@ def _table(stats: dict, title: str) -> Table:
 
 #: SI unit -> (display unit, factor) in the stats tables.
 _DISPLAY = {"m": ("um", 1e6), "m3/m2": ("ml/m2", 1e6), "deg": ("deg", 1.0), "1": ("", 1.0)}
-_PERCENT = {"Mr1", "Mr2", "Smr1", "Smr2", "Sdr", "Str", "Rmr", "Smr"}
 
 
 def _read(file: Path, spacing, spacing_y, unit, x_unit, z_unit, missing, resample):
@@ -138,7 +137,7 @@ def _texture_json(file: Path, reading, texture) -> dict:
     for key, values in texture.groups.items():
         groups[key] = {"title": texture.titles[key]}
         for name, value in values.items():
-            groups[key][suffixed(name)] = value
+            groups[key][suffixed(name)] = value if math.isfinite(value) else None
     return {"file": str(file), "format": reading.style,
             "kind": "profile" if surface.z.ndim == 1 else "topography",
             "points": list(surface.z.shape), "spacing_m": spacing, "periodic": surface.periodic,
@@ -153,7 +152,7 @@ def _warnings(reading, texture) -> list[str]:
 
 
 def _texture_tables(file: Path, reading, texture) -> list[Table]:
-    from ..surfaces.texture import unit_of
+    from ..surfaces.texture import PERCENT, unit_of
 
     tables = []
     for key, values in texture.groups.items():
@@ -162,8 +161,9 @@ def _texture_tables(file: Path, reading, texture) -> list[Table]:
         table.add_column("value", justify="right")
         table.add_column("unit")
         for name, value in values.items():
-            shown, factor = ("%", 100.0) if name in _PERCENT else _DISPLAY[unit_of(name)]
-            table.add_row(name, f"{value * factor:.4g}", shown)
+            shown, factor = ("%", 100.0) if name in PERCENT else _DISPLAY[unit_of(name)]
+            table.add_row(name, f"{value * factor:.4g}" if math.isfinite(value) else "n/a",
+                          shown if math.isfinite(value) else "")
         tables.append(table)
     return tables
 
