@@ -132,7 +132,8 @@ def _texture_json(file: Path, reading, texture) -> dict:
     filters = ({"cutoff_m": fam.cutoff, "lambda_s_m": fam.lambda_s,
                 "sampling_lengths": fam.sampling_lengths,
                 "evaluation_length_m": fam.evaluation_length} if surface.z.ndim == 1 else
-               {"surface": fam.label, "l_filter_m": fam.l_filter, "s_filter_m": fam.s_filter})
+               {"surface": fam.label, "l_filter_m": fam.l_filter, "s_filter_m": fam.s_filter,
+                "evaluated_points": list(fam.scale_limited.shape)})
     groups = {}
     for key, values in texture.groups.items():
         groups[key] = {"title": texture.titles[key]}

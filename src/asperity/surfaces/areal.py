@@ -5,7 +5,9 @@ The *scale-limited surface* of ISO 25178-3: form removed by least squares (the F
 index removed, and, when an L-filter nesting index is given, the wavelengths longer than it
 removed too (both the areal Gaussian filter of ISO 16610-61,
 :func:`~asperity.surfaces.filters.areal_gaussian_filter`). With an L-filter the result is the
-S-L surface, without one the S-F surface; the output says which.
+S-L surface, without one the S-F surface; the output says which. The S-L surface of a
+non-periodic map is evaluated inside half the L-filter's nesting index of each border, where the
+filter runs past the data (``_interior``: ISO 16610-21's half cut-off of a profile's ends).
 
 Spatial parameters (ISO 25178-2 clause 4.3) from the autocorrelation function (ACF) of the
 scale-limited surface, zero-padded so that lags wrap nowhere (circular when periodic), from the
@@ -71,6 +73,10 @@ class AreaFamilies:
     s_filter, l_filter : float or None
         Nesting indices applied (m).
     notes, warnings : tuple of str
+    evaluation : (slice, slice)
+        The part of the measured grid that ``scale_limited`` covers: all of it, or with an
+        L-filter the interior without half its nesting index at each border
+        (:func:`areal_families`).
     """
 
     primary: Topography
@@ -79,11 +85,16 @@ class AreaFamilies:
     l_filter: float | None
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    evaluation: tuple[slice, slice] = (slice(None), slice(None))
 
     @property
     def label(self) -> str:
         """``"S-L"`` or ``"S-F"`` (the surface the parameters are of)."""
         return "S-L" if self.l_filter is not None else "S-F"
+
+    def evaluated(self, mask):
+        """A mask of the measured grid (or None) cut to the evaluated area."""
+        return None if mask is None else np.asarray(mask, bool)[self.evaluation]
 
 
 def form_left_in(surface: Topography, degree: int) -> str | None:
@@ -161,7 +172,7 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
         notes.append(f"S-filter {s_filter * 1e6:.4g} um (areal Gaussian, ISO 16610-61)")
     else:
         notes.append("no S-filter: the spacing bounds the short wavelengths")
-    limited = surface
+    limited, evaluation = surface, (slice(None), slice(None))
     if l_filter is not None:
         extent = min(topography.x.size * topography.spacing[0],
                      topography.y.size * topography.spacing[1])
@@ -173,9 +184,46 @@ def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
         limited = surface.with_heights(surface.z - long)
         notes.append(f"L-filter {l_filter * 1e3:.4g} mm (areal Gaussian, first-moment end "
                      "correction at the borders): parameters of the S-L surface")
+        if not periodic:
+            limited, evaluation = _interior(limited, l_filter, notes, warnings)
     else:
         notes.append("no L-filter (give --cutoff): parameters of the S-F surface")
-    return AreaFamilies(surface, limited, s_filter, l_filter, tuple(notes), tuple(warnings))
+    return AreaFamilies(surface, limited, s_filter, l_filter, tuple(notes), tuple(warnings),
+                        evaluation)
+
+
+def _interior(limited: Topography, l_filter: float, notes: list, warnings: list):
+    """The S-L surface without half the nesting index at each border, and its slices.
+
+    Within lambda/2 of a border the kernel (cut at +-lambda) loses a large part of its weight
+    and the end correction, a local Gaussian-weighted plane, follows the roughness more than
+    the filter does inside: on a 400 um map (1 um spacing) of 0.1 um roughness with or without
+    waves of 250 to 400 um, Sq of the whole S-L surface was 0.75 % low at lambda = 25 um and
+    0.44 to 1.15 % low at 80 um against the same surface filtered with 60 um of data beyond
+    each border, with single points off by up to 1.9 Sq; without lambda/2 of each border,
+    within 0.024 % and 0.015 Sq. This is ISO 16610-21's half cut-off of run-in and run-out of
+    a profile, taken at each border of the map. A field shorter than twice lambda along an
+    axis is kept whole, with a warning.
+    """
+    border = [int(math.ceil(0.5 * l_filter / h - 1e-9)) for h in limited.spacing]
+    short = [n * h for n, h, b in zip(limited.shape, limited.spacing, border, strict=True)
+             if n * h < 2 * l_filter or n - 2 * b < 2]
+    if short:
+        warnings.append(
+            f"L-filter: the field is {min(short) * 1e6:.4g} um across, less than twice the "
+            f"nesting index {l_filter * 1e6:.4g} um (limit {2 * l_filter * 1e6:.4g} um), so "
+            "the border of half a nesting index where the filter runs past the data is kept "
+            "in the parameters (on a 400 um map at 80 um it made Sq 0.4 .. 1.2 % low); measure "
+            "a field at least twice the nesting index across, or give a shorter --cutoff")
+        return limited, (slice(None), slice(None))
+    evaluation = tuple(slice(b, n - b) for n, b in zip(limited.shape, border, strict=True))
+    inner = Topography(limited.x[evaluation[0]], limited.y[evaluation[1]],
+                       limited.z[evaluation])
+    notes.append(f"S-L parameters over the {inner.shape[0]} x {inner.shape[1]} points inside "
+                 f"half the nesting index ({0.5 * l_filter * 1e6:.4g} um) of the borders, where "
+                 "the filter runs past the data (as ISO 16610-21 leaves half a cut-off at "
+                 "each end of a profile)")
+    return inner, evaluation
 
 
 def _decay(topography: Topography, threshold: float) -> tuple[float, float, bool]:
@@ -228,8 +276,8 @@ def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str
     ----------
     families : AreaFamilies
     exclude : ndarray of bool, optional
-        Points to leave out of the height, functional and volume parameters (masked missing
-        points); the hybrid and spatial ones use every point.
+        Points of the measured grid to leave out of the height, functional and volume
+        parameters (masked missing points); the hybrid and spatial ones use every point.
 
     Returns
     -------
@@ -241,7 +289,8 @@ def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str
     surface = families.scale_limited
     slopes = roughness_parameters(surface)
     sal, str_value, _ = _decay(surface, ACF_THRESHOLD)
-    z = surface.z if exclude is None else surface.z[~np.asarray(exclude, bool)]
+    exclude = families.evaluated(exclude)
+    z = surface.z if exclude is None else surface.z[~exclude]
     return {
         "height": height_moments(z, "S"),
         "hybrid": {"Sdq": slopes["Sdq"], "Sdr": slopes["Sdr"]},

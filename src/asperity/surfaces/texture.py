@@ -150,7 +150,7 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
     params = areal_parameters(fam, exclude)
     z = fam.scale_limited.z
-    z = z if exclude is None else z[~np.asarray(exclude, bool)]
+    z = z if exclude is None else z[~fam.evaluated(exclude)]
     if rmr_depth is not None:
         params["functional"]["Smr"] = relative_material_ratio(z, rmr_depth)
     what = f"{fam.label} surface"
