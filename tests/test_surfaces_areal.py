@@ -217,3 +217,19 @@ def test_a_field_under_twice_the_nesting_index_is_kept_whole_with_a_warning():
     assert fam.scale_limited.shape == t.shape
     (warning,) = fam.warnings
     assert warning.startswith("L-filter: the field is 160 um across") and "limit 200 um" in warning
+
+
+@pytest.mark.parametrize("angle", [30.0, 120.0])
+def test_str_of_a_lay_is_said_to_be_an_upper_bound(angle):
+    """Sine grooves along ``angle`` (160 x 200 um): their ACF does not decay along the lay, so
+    Str is Sal over half the field, an upper bound; the note says so and names the lay's
+    direction within 2 degrees. An isotropic Gaussian surface decays everywhere: no note."""
+    from asperity.surfaces import evaluate_texture
+
+    texture = evaluate_texture(grooves(angle))
+    (note,) = [n for n in texture.notes if n.startswith("Str = ")]
+    assert "is an upper bound" in note
+    direction = float(note.split("about ")[1].split(" deg")[0])
+    assert abs((direction - angle + 90) % 180 - 90) <= 2
+    iso = gaussian_topography((200e-6, 160e-6), H, 0.3e-6, 10e-6, seed=3)
+    assert not any(n.startswith(("Str = ", "Sal, Str")) for n in evaluate_texture(iso).notes)

@@ -46,7 +46,7 @@ from .parameters import acf_decay_lengths, roughness_parameters
 from .profiles import height_moments
 from .topography import Topography
 
-__all__ = ["AreaFamilies", "areal_families", "areal_parameters", "form_left_in",
+__all__ = ["AreaFamilies", "areal_evaluation", "areal_families", "areal_parameters", "form_left_in",
            "texture_aspect_ratio", "texture_direction"]
 
 #: ACF threshold s of Sal and Str (ISO 25178-2 default).
@@ -226,21 +226,34 @@ def _interior(limited: Topography, l_filter: float, notes: list, warnings: list)
     return inner, evaluation
 
 
-def _decay(topography: Topography, threshold: float) -> tuple[float, float, bool]:
-    """Sal, Str and whether the ACF decays along every direction (module docstring)."""
-    lengths = acf_decay_lengths(topography, threshold=threshold)[1]
-    decayed = bool(np.isfinite(lengths).all())
-    if not np.isfinite(lengths).any():
-        return math.nan, math.nan, False
+def _decay(topography: Topography, threshold: float) -> tuple[float, float, str | None]:
+    """Sal, Str and, when the ACF does not decay along every direction, a note saying so
+    (module docstring)."""
+    angles, lengths = acf_decay_lengths(topography, threshold=threshold)
     reach = 0.5 * min(n * h for n, h in zip(topography.shape, topography.spacing, strict=True))
+    if not np.isfinite(lengths).any():
+        return math.nan, math.nan, (
+            f"Sal, Str: the autocorrelation falls to {threshold:g} along no direction within "
+            f"half the field ({reach * 1e6:.4g} um): not defined (n/a); a larger field or an "
+            "L-filter (--cutoff) gives them")
+    if np.isfinite(lengths).all():
+        return float(lengths.min()), float(lengths.min() / lengths.max()), None
+    kept = angles[~np.isfinite(lengths)]
+    middle = math.degrees(math.atan2(np.mean(np.sin(np.radians(2 * kept))),
+                                     np.mean(np.cos(np.radians(2 * kept))))) / 2 % 180
     lengths = np.where(np.isfinite(lengths), lengths, reach)
-    return float(lengths.min()), float(lengths.min() / lengths.max()), decayed
+    ratio = float(lengths.min() / lengths.max())
+    return float(lengths.min()), ratio, (
+        f"Str = {100 * ratio:.3g} % is an upper bound: along {kept.size} of {angles.size} "
+        f"directions, about {middle:.0f} deg from x (a lay), the autocorrelation does not fall "
+        f"to {threshold:g} within half the field ({reach * 1e6:.4g} um), which is taken as "
+        "their length, so a larger field gives a smaller Str; Sal is exact")
 
 
 def texture_aspect_ratio(topography: Topography, threshold=ACF_THRESHOLD) -> tuple[float, bool]:
     """Str (module docstring) and whether it is exact (False: an upper bound)."""
-    _, ratio, decayed = _decay(topography, threshold)
-    return ratio, decayed
+    _, ratio, note = _decay(topography, threshold)
+    return ratio, note is None
 
 
 def texture_direction(topography: Topography) -> float:
@@ -270,7 +283,13 @@ def texture_direction(topography: Topography) -> float:
 
 
 def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str, float]]:
-    """ISO 25178-2 parameters of the scale-limited surface, grouped as the standard groups them.
+    """ISO 25178-2 parameters of the scale-limited surface (:func:`areal_evaluation`'s)."""
+    return areal_evaluation(families, exclude)[0]
+
+
+def areal_evaluation(families: AreaFamilies, exclude=None) -> tuple[dict, tuple[str, ...]]:
+    """ISO 25178-2 parameters of the scale-limited surface, grouped as the standard groups them,
+    and the notes on them (Str an upper bound, Sal and Str undefined).
 
     Parameters
     ----------
@@ -285,10 +304,12 @@ def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str
         ``height``: Sa Sq Ssk Sku Sp Sv Sz (from the mean plane of the scale-limited surface);
         ``hybrid``: Sdq Sdr; ``spatial``: Sal Str Std (degrees); ``functional``: Sk Spk Svk
         Smr1 Smr2 Sdc (C(20 %) - C(80 %)); ``volume``: Vmp Vmc Vvc Vvv (m^3/m^2).
+    tuple of str
+        The notes.
     """
     surface = families.scale_limited
     slopes = roughness_parameters(surface)
-    sal, str_value, _ = _decay(surface, ACF_THRESHOLD)
+    sal, str_value, note = _decay(surface, ACF_THRESHOLD)
     exclude = families.evaluated(exclude)
     z = surface.z if exclude is None else surface.z[~exclude]
     return {
@@ -297,4 +318,4 @@ def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str
         "spatial": {"Sal": sal, "Str": str_value, "Std": texture_direction(surface)},
         "functional": {**rk_parameters(z, "S"), "Sdc": section_height_difference(z)},
         "volume": volume_parameters(z),
-    }
+    }, () if note is None else (note,)

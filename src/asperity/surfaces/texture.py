@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .areal import AreaFamilies, areal_families, areal_parameters
+from .areal import AreaFamilies, areal_evaluation, areal_families
 from .material_ratio import relative_material_ratio, rk_parameters, section_height_difference
 from .profiles import ProfileFamilies, profile_families, profile_parameters
 from .topography import Profile, Topography
@@ -148,7 +148,7 @@ def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> Textu
 
 def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
-    params = areal_parameters(fam, exclude)
+    params, spatial = areal_evaluation(fam, exclude)
     z = fam.scale_limited.z
     z = z if exclude is None else z[~fam.evaluated(exclude)]
     if rmr_depth is not None:
@@ -164,7 +164,7 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
                       + f"), {what}",
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
-    return TextureEvaluation(topography, fam, params, titles, fam.notes,
+    return TextureEvaluation(topography, fam, params, titles, fam.notes + spatial,
                              fam.warnings + _depth_warnings(z, rmr_depth, "Smr"))
 
 
