@@ -212,16 +212,39 @@ def stats(
     rmr_depth: Annotated[str | None, typer.Option(
         help="Also give Rmr (Smr): the material ratio this depth below the highest peak.")
     ] = None,
+    bin_points: Annotated[int, typer.Option(
+        "--bin", help="Average k x k blocks of points into one before the evaluation "
+                      "(a large map; 1: none).")] = 1,
 ):
     """Surface texture parameters, grouped as ISO 4287 / 13565-2 / 25178-2 group them."""
+    from ..surfaces.binning import (
+        BYTES_PER_POINT,
+        available_memory,
+        bin_surface,
+        large_map,
+    )
     from ..surfaces.texture import evaluate_texture
 
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
-    texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
+    surface, excluded, binned = bin_surface(reading.surface, bin_points, reading.excluded)
+    points = surface.z.size
+    free = available_memory()
+    if surface.z.ndim == 2 and free is not None and BYTES_PER_POINT * points > free:
+        raise InputError("--bin", f"a block size that brings the map's {points} points within "
+                         f"the free memory ({free / 1e9:.3g} GB at about {BYTES_PER_POINT} "
+                         f"bytes a point; {large_map(points) or ''})", bin_points)
+    texture = evaluate_texture(surface, _length(cutoff, "--cutoff"),
                                form_degree=form_degree,
                                rmr_depth=_length(rmr_depth, "--rmr-depth"),
-                               exclude=reading.excluded)
+                               exclude=excluded)
     result = _texture_json(file, reading, texture)
+    if binned:
+        result["notes"].insert(len(reading.notes), binned)
+        result["points"], result["spacing_m"] = list(surface.z.shape), (
+            [surface.spacing] if surface.z.ndim == 1 else list(surface.spacing))
+    warning = large_map(points) if surface.z.ndim == 2 else None
+    if warning:
+        result["warnings"].append(warning)
     if as_json:
         typer.echo(json.dumps(result, indent=2))
     else:
