@@ -338,7 +338,10 @@ def _summary(spec, surfaces, evaluated) -> dict:
         summary.update(spacing_m=list(first.spacing),
                        size_m=[first.x.size * first.spacing[0], first.y.size * first.spacing[1]])
     summary["periodic"] = first.periodic
-    summary.update({_key(name): value for name, value in ev.parameters.items()})
+    summary.update({_key(name): value for name, value in ev.parameters.items()
+                    if name != "Sdr"})
+    if "Sdr" in ev.parameters:  # a ratio: in percent, as the summary shows ratios (ISO Sdr too)
+        summary["sdr_percent"] = 100.0 * ev.parameters["Sdr"]
     if ev.waviness is not None:
         waviness = s.roughness_parameters(ev.waviness)
         for name in ("a", "q", "t"):
