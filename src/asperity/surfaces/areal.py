@@ -97,8 +97,11 @@ class AreaFamilies:
         return None if mask is None else np.asarray(mask, bool)[self.evaluation]
 
 
-def form_left_in(surface: Topography, degree: int) -> str | None:
+def form_left_in(surface: Topography, degree: int, advice: str | None = None) -> str | None:
     """A warning when form is left in a surface from which the form of ``degree`` was removed.
+
+    ``advice`` ends the warning (default: the fixes of an S-F surface's evaluation,
+    ``--form-degree`` or ``--cutoff``).
 
     The polynomials of ``degree + 1`` and ``degree + 2`` are fitted to ``surface`` (every k-th
     point, at most :data:`FORM_CHECK_POINTS` a side: the form is smooth). Form is taken to be
@@ -125,16 +128,19 @@ def form_left_in(surface: Topography, degree: int) -> str | None:
     if degree <= 1:
         radius, _, angle = principal_radii(coarse)
         what = (f"a curvature of about {radius * 1e3:.3g} mm radius, strongest at "
-                f"{angle:.0f} deg from x")
+                f"{round(angle) % 180:.0f} deg from x")
     else:
         what = "a form of higher degree"
+    surface_name = "S-F surface" if advice is None else "map"
+    if advice is None:
+        advice = (f"and its height, material-ratio and volume parameters include it; for a "
+                  f"curved part (cylinder, ball, crown) remove it: --form-degree {degree + 1} "
+                  f"(case file: evaluation.form_degree = {degree + 1}); for a flat part whose "
+                  "waviness is as long as the field, give --cutoff (the S-L surface) instead")
     return (f"form: a polynomial of degree {degree + 1} takes {100 * (1 - lower / sq):.2g} % "
             f"off Sq ({sq * 1e6:.4g} -> {lower * 1e6:.4g} um; limit {100 * FORM_LEFT_IN:g} %): "
-            "form is left in the S-F surface "
-            f"({what}), and its height, material-ratio and volume parameters include it; for a "
-            f"curved part (cylinder, ball, crown) remove it: --form-degree {degree + 1} (case "
-            f"file: evaluation.form_degree = {degree + 1}); for a flat part whose waviness is "
-            "as long as the field, give --cutoff (the S-L surface) instead")
+            f"form is left in the {surface_name} ({what}), "
+            f"{advice}")
 
 
 def areal_families(topography: Topography, *, form_degree=1, l_filter=None,
