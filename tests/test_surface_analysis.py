@@ -181,7 +181,7 @@ def test_topography_gives_areal_parameters():
                'width = "0.1 mm"\nspacing = "2 um"\nrms = "0.5 um"\ncorrelation_length = "10 um"'
                '\ncorrelation_length_y = "40 um"\nseed = 4\n')
     sm = out.summary
-    assert {"sa_m", "sq_m", "ssk", "sku", "sdq", "sdr"} <= set(sm)
+    assert {"sa_m", "sq_m", "ssk", "sku", "sdq", "sdr_percent"} <= set(sm)
     assert out.dataset["height"].dims == ("surface", "x", "y")
     assert "topography" in out.figures
     row = out.comparisons[0]
@@ -328,7 +328,7 @@ def test_surface_case_reports_the_iso_texture(outcomes):
     out = outcomes["measured-profile"]
     sm = out.summary
     assert sm["iso_cutoff_m"] == pytest.approx(0.8e-3) and sm["iso_sampling_lengths"] == 5
-    assert 0 < sm["iso_mr1"] < sm["iso_mr2"] < 1 and sm["iso_rk_m"] > 0
+    assert 0 < sm["iso_mr1_percent"] < sm["iso_mr2_percent"] < 100 and sm["iso_rk_m"] > 0
     assert sm["iso_rz_m"] <= sm["iso_rt_m"]
     assert "texture" in out.figures
     assert any(note.startswith("File read as text") for note in out.notes)
@@ -389,7 +389,44 @@ def test_areal_iso_rows_read_as_iso_writes_them(tmp_path):
     assert 1e-10 < vmp < 1e-6
     assert rows["iso_vmp_m3_per_m2"].label == "ISO Vmp"
     assert rows["iso_vmp_m3_per_m2"].text == f"{vmp * 1e9:.4g} nm"
-    assert rows["iso_sal_m"].label == "ISO Sal" and rows["iso_smr1"].label == "ISO Smr1"
+    assert rows["iso_sal_m"].label == "ISO Sal" and rows["iso_smr1_percent"].label == "ISO Smr1"
     profile = _run('analysis = "surface"\n[surface]\nkind = "file"\n'
                    'path = "builtin:ground-profile.csv"\n')
     assert {r.key: r for r in summary_rows(profile.summary)}["iso_rsm_m"].label == "ISO RSm"
+
+
+def test_sdr_of_a_map_shows_in_percent_beside_iso_sdr(tmp_path):
+    """Sdr of a 0.3 um, 16 x 24 um egg-box: the headline row was a bare fraction (0.01274 for a
+    map whose ISO Sdr row read 1.274 %); it is now in percent, the same number as ISO Sdr and as
+    ``surface stats`` prints."""
+    from asperity.formatting import summary_rows
+    from asperity.surfaces import evaluate_texture
+    from asperity.surfaces.io import read_measured
+
+    x = (np.arange(64) + 0.5) * 1e-6
+    z = 0.3e-6 * np.sin(2 * np.pi * x / 16e-6)[:, None] * np.cos(2 * np.pi * x / 24e-6)[None, :]
+    path = tmp_path / "map.npz"
+    np.savez(path, x=x, y=x, z=z)
+    out = _run(f'analysis = "surface"\n[surface]\nkind = "file"\npath = "{path}"\n')
+    rows = {r.key: r for r in summary_rows(out.summary)}
+    stats = evaluate_texture(read_measured(path).surface).groups["hybrid"]["Sdr"]
+    assert rows["sdr_percent"].text == f"{100 * stats:.4g} %" == rows["iso_sdr_percent"].text
+    assert "sdr" not in out.summary
+
+
+def test_material_ratios_show_in_percent_as_surface_stats_shows_them(outcomes):
+    """Mr1 and Mr2 of the measured-profile example: the case summary's rows are in percent,
+    the number ``surface stats`` prints (its table: 100 x the fraction, 4 digits); they were
+    shown as fractions (0.224) beside the stats' 22.4 %."""
+    from asperity.formatting import summary_rows
+    from asperity.surfaces import evaluate_texture
+    from asperity.surfaces.io import read_measured
+
+    rows = {r.key: r for r in summary_rows(outcomes["measured-profile"].summary)}
+    data = Path(s.__file__).parents[1] / "examples" / "data"
+    reading = read_measured(data / "ground-profile.csv", None)
+    rk = evaluate_texture(reading.surface).groups["Rk"]
+    for name in ("Mr1", "Mr2"):
+        row = rows[f"iso_{name.lower()}_percent"]
+        assert row.label == f"ISO {name}"
+        assert row.text == f"{100 * rk[name]:.4g} %"

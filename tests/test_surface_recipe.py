@@ -292,3 +292,34 @@ def test_surface_generate_reads_its_options_as_the_case_keys(tmp_path):
                               str(out)])
     assert res.exit_code == 2
     assert res.stderr.startswith("error: --ra: expected a value less than or equal to 0.01")
+
+
+def test_a_roller_map_in_a_contact_warns_that_its_curvature_is_in_the_gap(tmp_path):
+    """A 128 um map of 0.1 um roughness measured on a 5 mm roller, used as a contact's
+    [roughness] with the default plane removed: the roller's curvature stays in the gap (a ball
+    on it then touched at the map's edges, 50 % of the load on the edge cells). The warning
+    names a radius within 12 % of the 5 mm built in and roughness.form_degree = 2, which
+    removes it and the warning."""
+    from scipy.ndimage import gaussian_filter
+
+    from asperity.cases.roughness import roughness_on_grid
+
+    n, h = 128, 1e-6
+    c = (np.arange(n) - n / 2) * h
+    cx = np.meshgrid(c, c, indexing="ij")[0]
+    rough = gaussian_filter(np.random.default_rng(2).standard_normal((n, n)), 3, mode="wrap")
+    z = 0.1e-6 * rough / rough.std() + 5e-3 - np.sqrt(25e-6 - cx ** 2)
+    path = tmp_path / "roller.npz"
+    np.savez(path, x=c, y=c, z=z)
+    grid = c[:100] - c[0] + 0.5 * h
+    got = roughness_on_grid(RoughnessSpec(kind="file", path=str(path)), grid, grid)
+    (warning,) = [w for w in got.warnings if "form is left in the map" in w]
+    assert warning.startswith("roughness.path: form: ")
+    radius = float(warning.split("about ")[1].split(" mm")[0]) * 1e-3
+    assert radius == pytest.approx(5e-3, rel=0.12)
+    direction = float(warning.split("strongest at ")[1].split(" deg")[0])
+    assert min(direction, 180 - direction) <= 5  # the roller curves along x
+    assert "roughness.form_degree = 2" in warning
+    flat = roughness_on_grid(RoughnessSpec(kind="file", path=str(path), form_degree=2), grid,
+                             grid)
+    assert not any("form is left in" in w for w in flat.warnings)

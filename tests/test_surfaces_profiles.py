@@ -167,3 +167,34 @@ def test_rsm_of_a_sine_is_its_wavelength(wavelength):
                                  + 0.05e-6 * np.sin(2 * np.pi * x / 3e-6)), 0.8e-3,
                            lambda_s=None)
     assert profile_parameters(fam)["R"]["RSm"] == pytest.approx(wavelength, abs=H)
+
+
+def arcs(x, radius=0.8e-3, feed=0.1e-3):
+    """Turning marks: nose arcs of ``radius`` every ``feed``."""
+    u = x % feed - feed / 2
+    return radius - np.sqrt(radius ** 2 - u ** 2)
+
+
+def test_shape_of_a_round_off_w_profile_is_left_out():
+    """Turned arcs (f = 0.1 mm, r = 0.8 mm) at lambda_c = 2.5 mm: the Gaussian transmits
+    exp(-pi (alpha 25)^2) ~ 1e-190 of the feed marks, so W is round-off (Wq < 1e-3 Pq):
+    Wsk, Wku are n/a with a note. The R profile is the arcs after lambda_s = 8 um: Rq 0.4633 um,
+    Rsk 0.621 from numpy's FFT of the same Gaussian (0.1 %). A 2 mm sine of 0.1 um amplitude
+    added (16 mm: whole periods, so the least-squares line takes none of it) keeps, at
+    lambda_c = 0.8 mm, Wsk 0 and Wku 1.5 (within 0.05), a sine's."""
+    from asperity.surfaces import evaluate_texture
+
+    turned = trace(15e-3, arcs)
+    texture = evaluate_texture(turned, 2.5e-3)
+    w, r = texture.groups["W"], texture.groups["R"]
+    assert w["Wq"] < 1e-3 * texture.groups["P"]["Pq"]
+    assert math.isnan(w["Wsk"]) and math.isnan(w["Wku"])
+    assert any(n.startswith("W profile at round-off") and "Wsk and Wku" in n
+               for n in texture.notes)
+    assert r["Rq"] == pytest.approx(0.4633e-6, rel=1e-3)
+    assert r["Rsk"] == pytest.approx(0.621, rel=1e-3)
+    wavy = evaluate_texture(trace(16e-3, lambda x: arcs(x) + 0.1e-6 * np.sin(
+        2 * np.pi * x / 2e-3)), 0.8e-3)
+    assert wavy.groups["W"]["Wsk"] == pytest.approx(0.0, abs=0.05)
+    assert wavy.groups["W"]["Wku"] == pytest.approx(1.5, abs=0.05)
+    assert not any(n.startswith("W profile at round-off") for n in wavy.notes)

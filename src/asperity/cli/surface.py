@@ -114,7 +114,6 @@ def _table(stats: dict, title: str) -> Table:
 
 #: SI unit -> (display unit, factor) in the stats tables.
 _DISPLAY = {"m": ("um", 1e6), "m3/m2": ("ml/m2", 1e6), "deg": ("deg", 1.0), "1": ("", 1.0)}
-_PERCENT = {"Mr1", "Mr2", "Smr1", "Smr2", "Sdr", "Str", "Rmr", "Smr"}
 
 
 def _read(file: Path, spacing, spacing_y, unit, x_unit, z_unit, missing, resample):
@@ -133,12 +132,13 @@ def _texture_json(file: Path, reading, texture) -> dict:
     filters = ({"cutoff_m": fam.cutoff, "lambda_s_m": fam.lambda_s,
                 "sampling_lengths": fam.sampling_lengths,
                 "evaluation_length_m": fam.evaluation_length} if surface.z.ndim == 1 else
-               {"surface": fam.label, "l_filter_m": fam.l_filter, "s_filter_m": fam.s_filter})
+               {"surface": fam.label, "l_filter_m": fam.l_filter, "s_filter_m": fam.s_filter,
+                "evaluated_points": list(fam.scale_limited.shape)})
     groups = {}
     for key, values in texture.groups.items():
         groups[key] = {"title": texture.titles[key]}
         for name, value in values.items():
-            groups[key][suffixed(name)] = value
+            groups[key][suffixed(name)] = value if math.isfinite(value) else None
     return {"file": str(file), "format": reading.style,
             "kind": "profile" if surface.z.ndim == 1 else "topography",
             "points": list(surface.z.shape), "spacing_m": spacing, "periodic": surface.periodic,
@@ -153,7 +153,7 @@ def _warnings(reading, texture) -> list[str]:
 
 
 def _texture_tables(file: Path, reading, texture) -> list[Table]:
-    from ..surfaces.texture import unit_of
+    from ..surfaces.texture import PERCENT, unit_of
 
     tables = []
     for key, values in texture.groups.items():
@@ -162,8 +162,9 @@ def _texture_tables(file: Path, reading, texture) -> list[Table]:
         table.add_column("value", justify="right")
         table.add_column("unit")
         for name, value in values.items():
-            shown, factor = ("%", 100.0) if name in _PERCENT else _DISPLAY[unit_of(name)]
-            table.add_row(name, f"{value * factor:.4g}", shown)
+            shown, factor = ("%", 100.0) if name in PERCENT else _DISPLAY[unit_of(name)]
+            table.add_row(name, f"{value * factor:.4g}" if math.isfinite(value) else "n/a",
+                          shown if math.isfinite(value) else "")
         tables.append(table)
     return tables
 
@@ -211,16 +212,39 @@ def stats(
     rmr_depth: Annotated[str | None, typer.Option(
         help="Also give Rmr (Smr): the material ratio this depth below the highest peak.")
     ] = None,
+    bin_points: Annotated[int, typer.Option(
+        "--bin", help="Average k x k blocks of points into one before the evaluation "
+                      "(a large map; 1: none).")] = 1,
 ):
     """Surface texture parameters, grouped as ISO 4287 / 13565-2 / 25178-2 group them."""
+    from ..surfaces.binning import (
+        BYTES_PER_POINT,
+        available_memory,
+        bin_surface,
+        large_map,
+    )
     from ..surfaces.texture import evaluate_texture
 
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
-    texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
+    surface, excluded, binned = bin_surface(reading.surface, bin_points, reading.excluded)
+    points = surface.z.size
+    free = available_memory()
+    if surface.z.ndim == 2 and free is not None and BYTES_PER_POINT * points > free:
+        raise InputError("--bin", f"a block size that brings the map's {points} points within "
+                         f"the free memory ({free / 1e9:.3g} GB at about {BYTES_PER_POINT} "
+                         f"bytes a point; {large_map(points) or ''})", bin_points)
+    texture = evaluate_texture(surface, _length(cutoff, "--cutoff"),
                                form_degree=form_degree,
                                rmr_depth=_length(rmr_depth, "--rmr-depth"),
-                               exclude=reading.excluded)
+                               exclude=excluded)
     result = _texture_json(file, reading, texture)
+    if binned:
+        result["notes"].insert(len(reading.notes), binned)
+        result["points"], result["spacing_m"] = list(surface.z.shape), (
+            [surface.spacing] if surface.z.ndim == 1 else list(surface.spacing))
+    warning = large_map(points) if surface.z.ndim == 2 else None
+    if warning:
+        result["warnings"].append(warning)
     if as_json:
         typer.echo(json.dumps(result, indent=2))
     else:

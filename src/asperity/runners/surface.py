@@ -175,7 +175,7 @@ def _texture(case, texture, summary, notes, warnings, figures):
     """The ISO texture evaluation in the outcome: summary keys ``iso_<name>`` (unit-suffixed),
     its notes and warnings, and the ``texture`` figure."""
     from ..plotting.surfaces import plot_texture
-    from ..surfaces.texture import suffixed
+    from ..surfaces.texture import PERCENT, suffixed
 
     fam = texture.families
     if isinstance(texture.surface, s.Profile):
@@ -186,7 +186,12 @@ def _texture(case, texture, summary, notes, warnings, figures):
         summary["iso_surface"] = fam.label
     for values in texture.groups.values():
         for name, value in values.items():
-            summary["iso_" + suffixed(name).lower()] = value
+            if not math.isfinite(value):
+                continue  # left out: W's shape at round-off, an undefined Sal
+            if name in PERCENT:  # as the summary shows every ratio, and surface stats these
+                summary[f"iso_{name.lower()}_percent"] = 100.0 * value
+            else:
+                summary["iso_" + suffixed(name).lower()] = value
     notes.extend(f"ISO texture: {note}" for note in texture.notes)
     warnings.extend(texture.warnings)
     figures["texture"] = (lambda: plot_texture(texture, title=case.title),
@@ -333,7 +338,10 @@ def _summary(spec, surfaces, evaluated) -> dict:
         summary.update(spacing_m=list(first.spacing),
                        size_m=[first.x.size * first.spacing[0], first.y.size * first.spacing[1]])
     summary["periodic"] = first.periodic
-    summary.update({_key(name): value for name, value in ev.parameters.items()})
+    summary.update({_key(name): value for name, value in ev.parameters.items()
+                    if name != "Sdr"})
+    if "Sdr" in ev.parameters:  # a ratio: in percent, as the summary shows ratios (ISO Sdr too)
+        summary["sdr_percent"] = 100.0 * ev.parameters["Sdr"]
     if ev.waviness is not None:
         waviness = s.roughness_parameters(ev.waviness)
         for name in ("a", "q", "t"):

@@ -15,7 +15,7 @@ from numpy.polynomial import polynomial
 from ..errors import InputError, check_int
 from .topography import Profile, Topography
 
-__all__ = ["remove_form"]
+__all__ = ["principal_radii", "remove_form"]
 
 
 def _scaled(coord: np.ndarray) -> np.ndarray:
@@ -57,3 +57,33 @@ def remove_form(surface, degree: int = 1):
                          degree)
     coef = np.linalg.lstsq(terms, z.ravel(), rcond=None)[0]
     return surface.with_heights(z - (terms @ coef).reshape(z.shape))
+
+
+def principal_radii(topography: Topography) -> tuple[float, float, float]:
+    """Principal radii of curvature of the least-squares quadric of a topography.
+
+    The quadric ``z = c0 + c1 x + c2 y + a x^2 + b x y + c y^2`` is fitted to all points in
+    centred physical coordinates; its Hessian ``[[2 a, b], [b, 2 c]]`` has the principal
+    curvatures k1, k2 as eigenvalues (the second fundamental form of a nearly flat surface,
+    slopes << 1), and the radii are ``1 / |k|`` (inf where k = 0).
+
+    Returns
+    -------
+    (float, float, float)
+        The smaller radius, the larger (m), and the direction of the stronger curvature in
+        degrees counter-clockwise from x, in [0, 180).
+    """
+    if not isinstance(topography, Topography):
+        raise InputError("surface", "a Topography", type(topography).__name__)
+    X, Y = np.meshgrid(topography.x - topography.x.mean(), topography.y - topography.y.mean(),
+                       indexing="ij")
+    terms = np.stack([np.ones(X.size), X.ravel(), Y.ravel(), X.ravel() ** 2,
+                      (X * Y).ravel(), Y.ravel() ** 2], axis=1)
+    a, b, c = np.linalg.lstsq(terms, topography.z.ravel(), rcond=None)[0][3:]
+    curvatures, directions = np.linalg.eigh(np.array([[2 * a, b], [b, 2 * c]]))
+    order = np.argsort(-np.abs(curvatures))
+    with np.errstate(divide="ignore"):
+        radii = 1.0 / np.abs(curvatures[order])
+    strong = directions[:, order[0]]
+    return (float(radii[0]), float(radii[1]),
+            float(np.degrees(np.arctan2(strong[1], strong[0])) % 180.0))

@@ -46,6 +46,7 @@ from functools import cached_property
 import numpy as np
 
 from ..errors import InputError
+from .areal import form_left_in
 from .features import feature_surface
 from .filters import gaussian_filter
 from .form import remove_form
@@ -141,6 +142,10 @@ class FormRemoval:
         Peak-to-valley height of the removed form, m.
     periodic : bool
         A periodic surface has no form: only its mean is removed.
+    left_in : str or None
+        The start of a warning when a map still holds form (a cylinder under a plane:
+        :func:`~asperity.surfaces.areal.form_left_in`), for :meth:`SurfaceBuild.file_report`
+        to end with the case's key.
     """
 
     degree: int
@@ -148,6 +153,7 @@ class FormRemoval:
     tilt: tuple[float, ...]
     form_height: float
     periodic: bool = False
+    left_in: str | None = None
 
     def describe(self) -> str:
         """What was removed, in words (heights in um to 0.1 nm, tilts in mrad to 0.1 urad)."""
@@ -207,6 +213,13 @@ class SurfaceBuild:
         if self.form is not None:
             notes.append(f"{key} ({name}): {self.form.describe()}")
         doubts = self.reading.slope_warnings(*self.rms_slope)
+        if self.form is not None and self.form.left_in:
+            table = key.removesuffix(".path")
+            doubts = (*doubts, self.form.left_in + (
+                "and the contact takes it as part of the gap, on top of the bodies' radii; "
+                "remove the measured curvature when the case's radius already gives it: "
+                f"{table}.form_degree = {self.form.degree + 1}; waviness as long as the map "
+                "belongs to the gap and stays"))
         return tuple(notes), tuple(f"{key}: {w}" for w in (*self.reading.warnings, *doubts))
 
 
@@ -239,8 +252,10 @@ def level(surface, degree: int) -> tuple[Profile | Topography, FormRemoval]:
     levelled = remove_form(surface, degree)
     z = np.asarray(surface.z, dtype=float)
     form = z - np.asarray(levelled.z)
+    left_in = (form_left_in(levelled, degree, advice="")
+               if isinstance(surface, Topography) and not surface.periodic else None)
     return levelled, FormRemoval(degree, float(z.mean()), _tilt(surface), float(np.ptp(form)),
-                                 bool(surface.periodic))
+                                 bool(surface.periodic), left_in)
 
 
 def _measured(recipe: SurfaceRecipe) -> SurfaceBuild:

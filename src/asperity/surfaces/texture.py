@@ -14,18 +14,25 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .areal import AreaFamilies, areal_families, areal_parameters
+from .areal import AreaFamilies, areal_evaluation, areal_families
 from .material_ratio import relative_material_ratio, rk_parameters, section_height_difference
 from .profiles import ProfileFamilies, profile_families, profile_parameters
 from .topography import Profile, Topography
 
-__all__ = ["TextureEvaluation", "UNITS", "evaluate_texture", "suffixed", "unit_of"]
+__all__ = ["PERCENT", "ROUND_OFF", "TextureEvaluation", "UNITS", "evaluate_texture",
+           "shape_at_round_off", "suffixed", "unit_of"]
 
 _LENGTH_SUFFIXES = ("a", "q", "p", "v", "z", "t", "k", "pk", "vk", "dc", "al", "Sm")
 #: Parameters that are not lengths: their SI unit ("1" for ratios and moments).
 UNITS = {"Mr1": "1", "Mr2": "1", "Smr1": "1", "Smr2": "1", "Sdr": "1", "Str": "1",
          "Rmr": "1", "Smr": "1",
          "Std": "deg", "Vmp": "m3/m2", "Vmc": "m3/m2", "Vvc": "m3/m2", "Vvv": "m3/m2"}
+#: Ratios that tables and case summaries show in percent (the JSON of ``surface stats`` keeps
+#: them as fractions, their SI unit "1"; a case summary has them as ``iso_<name>_percent``).
+PERCENT = frozenset({"Mr1", "Mr2", "Smr1", "Smr2", "Sdr", "Str", "Rmr", "Smr"})
+#: Fraction of Pq below which the rms of a W or R profile is taken as round-off
+#: (:func:`shape_at_round_off`).
+ROUND_OFF = 1e-3
 
 
 def unit_of(name: str) -> str:
@@ -85,9 +92,37 @@ def _depth_warnings(heights: np.ndarray, depth, name: str) -> tuple[str, ...]:
             "metres: give the unit, e.g. --rmr-depth \"0.5 um\"",)
 
 
+def shape_at_round_off(params: dict) -> tuple[str, ...]:
+    """Leave out the skewness and kurtosis of a W or R profile whose rms is round-off.
+
+    When Wq (Rq) is below :data:`ROUND_OFF` times Pq the profile holds less than 1e-6 of the
+    primary's variance: what is left is the filter's truncation (the weighting function is cut
+    at +-lambda_c, 6.5e-7 of its peak), its end correction and the heights' printed precision,
+    not the surface (a turned trace at lambda_c = 2.5 mm: Wq 0.05 nm under Pq 463 nm). Wsk and
+    Wku, moments divided by Wq^3 and Wq^4, would turn that into numbers of order one (-0.1 and
+    1.8 there), so they are set to NaN (shown as n/a) and a note says why; the heights Wa, Wq
+    ... stay, as the upper bound they are. ``params`` (of :func:`profile_parameters`) is
+    changed in place; returns the notes.
+    """
+    primary = params["P"]["Pq"]
+    notes = []
+    for name in ("W", "R"):
+        rms = params[name][f"{name}q"]
+        if not rms < ROUND_OFF * primary:
+            continue
+        params[name][f"{name}sk"] = params[name][f"{name}ku"] = float("nan")
+        notes.append(f"{name} profile at round-off: {name}q = {rms * 1e9:.3g} nm is "
+                     f"{rms / primary:.2g} of Pq ({primary * 1e6:.4g} um; limit "
+                     f"{ROUND_OFF:g}), so there is no {name} profile at this cut-off to speak "
+                     f"of; {name}sk and {name}ku, which would measure the shape of the "
+                     "round-off, are left out (n/a)")
+    return tuple(notes)
+
+
 def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = profile_families(profile, cutoff, form_degree=form_degree)
     params = profile_parameters(fam, exclude)
+    round_off = shape_at_round_off(params)
     r = fam.evaluated("R")
     if exclude is not None:
         r = r[~np.asarray(exclude, bool)[fam.evaluation]]
@@ -107,15 +142,15 @@ def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> Textu
                  f", Rmr {rmr_depth * 1e6:.4g} um below the highest peak")
               + "; ISO 13565-2 Rk family)",
     }
-    return TextureEvaluation(profile, fam, params, titles, fam.notes,
+    return TextureEvaluation(profile, fam, params, titles, fam.notes + round_off,
                              fam.warnings + _depth_warnings(r, rmr_depth, "Rmr"))
 
 
 def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
-    params = areal_parameters(fam, exclude)
+    params, spatial = areal_evaluation(fam, exclude)
     z = fam.scale_limited.z
-    z = z if exclude is None else z[~np.asarray(exclude, bool)]
+    z = z if exclude is None else z[~fam.evaluated(exclude)]
     if rmr_depth is not None:
         params["functional"]["Smr"] = relative_material_ratio(z, rmr_depth)
     what = f"{fam.label} surface"
@@ -129,8 +164,8 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
                       + f"), {what}",
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
-    return TextureEvaluation(topography, fam, params, titles, fam.notes,
-                             _depth_warnings(z, rmr_depth, "Smr"))
+    return TextureEvaluation(topography, fam, params, titles, fam.notes + spatial,
+                             fam.warnings + _depth_warnings(z, rmr_depth, "Smr"))
 
 
 def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None,
