@@ -687,3 +687,88 @@ def test_a_crowned_pair_keeps_its_inlet():
              * (float(res.load[0]) / (e_prime * rx**2)) ** -0.073 * (1 - math.exp(-0.68 * k))
              * rx)  # Hamrock & Dowson (1977) minimum film, by hand
     assert res.minimum_film[0] == pytest.approx(h_min, rel=0.15)
+
+
+def test_a_negative_film_at_a_plausible_load_names_the_mesh_not_the_torque():
+    """A slow heavily loaded spur pair (z 15/61, m 10, x 0.3/0, b 120 mm, 28 kN m at 25 rpm,
+    0.6 Pa s, 22 1/GPa) at its pitch point on a 17-node mesh: Hertz pressure 2.33 GPa by hand
+    (below the 2.5 GPa of a unit slip) and a minimum film of -0.003 nm. The line advised
+    "check operation.torque and its unit"; it now names [ehl] nx."""
+    pair = GearPair((15, 61), 10e-3, 20 * DEG, 0.0, (0.3, 0.0), 120e-3)
+    oil = Lubricant(viscosity=0.6, pressure_viscosity=22e-9, viscosity_model="barus",
+                    compressible=False)
+    res = solve_path(pair, np.array([pair.points["C"]]), pinion_speed=25 * 2 * math.pi / 60,
+                     torque=28e3, body1=STEEL, body2=STEEL, lubricant=oil, roughness=0.5e-6,
+                     mesh=EHLMesh(nx=17, levels=1, adapt=False))
+    r1 = 0.5 * pair.dw[0] * math.sin(pair.alpha_wt)
+    r2 = 0.5 * pair.dw[1] * math.sin(pair.alpha_wt)
+    w = 28e3 / pair.rb[0] / pair.face_width
+    p_h = math.sqrt(w * 206e9 / (2 * (1 - 0.3**2)) / (math.pi * r1 * r2 / (r1 + r2)))
+    assert res.hertz_pressure[0] == pytest.approx(p_h, rel=1e-9)
+    assert 2.3e9 < p_h < 2.5e9
+    film = [w for w in res.warnings if "minimum film is zero or negative" in w]
+    assert len(film) == 1 and not res.converged[0]
+    assert "[ehl] nx" in film[0] and "operation.torque" not in film[0]
+
+
+def test_unloaded_tip_relief_ends_have_no_friction():
+    """A relieved pinion and wheel carry nothing at A and E (ISO/TR 13989-1): the friction
+    coefficient there is NaN (it was written and drawn as 0), and the flash temperature 0
+    (no heat without load)."""
+    pair = GearPair((20, 20), 5e-3, 25 * DEG, 0.0, (0.0, 0.0), 30e-3,
+                    tip_relief=(10e-6, 10e-6))
+    rho = np.array([pair.points["A"], pair.points["E"]])
+    res = solve_path(pair, rho, pinion_speed=OMEGA, torque=100.0, body1=STEEL, body2=STEEL,
+                     lubricant=EYRING, roughness=0.42e-6)
+    assert np.all(res.load == 0)
+    assert np.all(np.isnan(res.friction))
+    assert np.all(res.flash_temperature == 0)
+
+
+def test_the_handoff_of_a_thick_film_gets_a_fully_flooded_inlet():
+    """The turbo pair's pitch point (z 37/113, m_n 4, beta 12 deg, b 150 mm, 3000 N m at
+    12 000 rpm, 12 mPa s, 12 1/GPa Barus): the emitted transient case kept the hand-off's
+    -2.5 a, where the steady minimum film is 14 % below Dowson-Higginson (1.109 against
+    1.289 um by hand). Its grid now starts at the contact's fully flooded inlet at no coarser a
+    spacing, and a steady solve on it is within 3 % of Dowson-Higginson."""
+    from asperity.gears import contact_problem
+
+    pair = GearPair((37, 113), 4e-3, 20 * DEG, 12 * DEG, (0.0, 0.0), 150e-3)
+    oil = Lubricant(viscosity=0.012, pressure_viscosity=12e-9, viscosity_model="barus",
+                    compressible=False)
+    omega = 12000 * 2 * math.pi / 60
+    res = solve_path(pair, np.array([pair.points["C"]]), pinion_speed=omega, torque=3000.0,
+                     body1=STEEL, body2=STEEL, lubricant=oil, roughness=0.42e-6)
+    problem = contact_problem(pair, res.kin, 0, float(res.load[0]), STEEL, STEEL, oil)
+    grid = {"nx": 129, "x_min": -2.5, "x_max": 1.5}
+    tables = {k: {} for k in ("body1", "body2", "lubricant", "surface1", "surface2", "time")}
+    case = transient_case(res, 0, title="t", grid=grid, inlet_extent=problem.inlet_extent(),
+                          **tables)
+    x_min, nx = case["grid"]["x_min"], case["grid"]["nx"]
+    assert x_min < -6.0
+    assert (1.5 - x_min) / (nx - 1) <= 4.0 / 128 + 1e-12
+    a = problem.a
+    steady = solve_steady(problem, nx=nx, domain=((x_min * a, 1.5 * a), (0.0, 0.0)), levels=1,
+                          damping=0.3, max_iter=20000)
+    radius, w, u = _pitch_by_hand(pair, 3000.0, omega)
+    assert steady.converged
+    assert steady.minimum_film == pytest.approx(
+        _dowson_higginson_by_hand(w, radius, u, 0.012, 12e-9), rel=0.03)
+
+
+def test_a_constant_helical_load_is_drawn_from_zero():
+    """A helical pair with eps_beta >= 1 carries w' = F_bn cos beta_b/(eps_alpha b) all along
+    the path (135.9 N/mm for the user's z 21/79, beta 25 deg pair at 250 N m, by hand); its
+    load axis spanned 130-142 N/mm, which made the constant look like a value in mid-range.
+    The axis now starts at zero."""
+    from asperity.plotting.gear import conditions_figure
+
+    pair = GearPair((21, 79), 3e-3, 20 * DEG, 25 * DEG, (0.2, 0.0), 40e-3)
+    res = solve_path(pair, pair.path(5), pinion_speed=OMEGA, torque=250.0, body1=STEEL,
+                     body2=STEEL, lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=33, levels=1, adapt=False))
+    w = 250.0 / pair.rb[0] / pair.contact_ratio / pair.face_width
+    assert res.load == pytest.approx(np.full(5, w), rel=1e-9)
+    assert w == pytest.approx(135.9e3, rel=1e-3)
+    low, high = conditions_figure(res, "t").axes[0].get_ylim()
+    assert low == 0.0 and high > w * 1e-3
