@@ -33,6 +33,7 @@ from .mixed import asperity_share, mixed_friction
 from .thermal import (
     LOW_PECLET_OVERESTIMATE,
     flash_temperature,
+    low_peclet_overestimate,
     peclet_number,
     thermal_contact_coefficient,
 )
@@ -427,11 +428,14 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     low_pe = (load > 0) & (heat > 0) & (pe < 5.0)
     if np.any(low_pe):
         over = LOW_PECLET_OVERESTIMATE[thermal.profile]
-        notes.append(f"flash temperature: Peclet number down to {pe[low_pe].min():.2g} < 5 at "
+        lowest = float(pe[low_pe].min())
+        worst = low_peclet_overestimate(thermal.profile, lowest)
+        size = (f"more than {worst:.0%}" if lowest < min(over) else f"about {worst:.0%}")
+        notes.append(f"flash temperature: Peclet number down to {lowest:.2g} < 5 at "
                      f"{int(low_pe.sum())} point(s); Blok's high-speed formula overestimates "
-                     f"there (for the {thermal.profile} source by {over[1.0]:.0%} at Pe = 1 "
-                     f"and {over[0.3]:.0%} at Pe = 0.3 against Jaeger's exact moving band "
-                     "source), so treat those values as upper bounds")
+                     f"there, for the {thermal.profile} source by {size} at Pe = {lowest:.2g} "
+                     f"({over[1.0]:.0%} at Pe = 1, {over[0.3]:.0%} at Pe = 0.3) against "
+                     "Jaeger's exact moving band source, so treat those values as upper bounds")
     return GearPathResult(
         pair=pair, kin=kin, share=share, load=load, hertz_a=a, hertz_b=b, hertz_pressure=p_hz,
         max_pressure=out["pmax"], central_film=out["hc"], minimum_film=out["hm"],
