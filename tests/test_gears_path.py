@@ -795,3 +795,17 @@ def test_a_constant_helical_load_is_drawn_from_zero():
     assert w == pytest.approx(135.9e3, rel=1e-3)
     low, high = conditions_figure(res, "t").axes[0].get_ylim()
     assert low == 0.0 and high > w * 1e-3
+
+
+@pytest.mark.parametrize("power, watts", [("50 kW", 50e3), ("30 hp", 30 * 745.69987158227)])
+def test_a_power_given_as_the_torque_is_refused_with_the_torque_it_means(power, watts):
+    """A user who knows the power writes it as the torque; the unit check said only "expected a
+    quantity convertible to N*m". The line now gives T = P / omega at the pinion speed, by
+    hand 50 kW at 1500 rpm = 318.3 N m and 30 hp (745.7 W each) 142.4 N m."""
+    text = GEAR_CASE.replace('torque = "302 N m"', f'torque = "{power}"')
+    assert text != GEAR_CASE
+    with pytest.raises(InputError) as err:
+        load_case(text.replace('speed = "2170 rpm"', 'speed = "1500 rpm"'))
+    torque = watts / (1500 * 2 * math.pi / 60)
+    assert str(err.value).startswith("operation: ")
+    assert f'torque = "{torque:.4g} N m"' in str(err.value) and "power" in str(err.value)

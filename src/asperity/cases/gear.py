@@ -224,12 +224,24 @@ def _rotational_speed(value):
     return rad_per_s
 
 
+def _power(value) -> float | None:
+    """``value`` in W where it is a text quantity of power ("50 kW", "30 hp"), else None."""
+    if not isinstance(value, str):
+        return None
+    try:
+        q = registry().Quantity(value.strip())
+        return float(q.to("W").magnitude)
+    except Exception:  # pint raises many kinds on odd text; not a power: the unit check decides
+        return None
+
+
 class OperationSpec(CaseModel):
     """``[operation]``: pinion ``torque``, pinion ``speed`` (with its unit: rpm, rad/s), the
     ``bulk_temperature`` of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     torque: Quantity("moment", gt=0)
-    """Pinion torque."""
+    """Pinion torque ("318 N m", "2800 lbf in"); a power ("50 kW") is refused with the torque
+    it means at the pinion speed."""
     speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s"})]
     """Pinion speed with its unit: "2170 rpm", "2170 min^-1", "36 rev/s" or "227 rad/s"; a
     bare number (rpm or rad/s?), "25 Hz" and "227 1/s" (revolutions or radians?) are
@@ -239,6 +251,27 @@ class OperationSpec(CaseModel):
     """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
+
+    @model_validator(mode="before")
+    @classmethod
+    def _not_a_power(cls, data):
+        """A power given as the torque ("50 kW", "30 hp") is refused with the torque it means
+        at the pinion speed, T = P / omega (the unit check named only the dimension:
+        "expected a quantity convertible to N*m, got '50 kW'")."""
+        if not isinstance(data, dict):
+            return data
+        watts = _power(data.get("torque"))
+        if watts is None:
+            return data
+        try:
+            omega = _rotational_speed(data.get("speed"))
+        except ValueError:
+            give = "T = P / omega (P in W, omega in rad/s)"
+        else:
+            give = (f"\"{watts / omega:.4g} N m\" (T = P / omega at the pinion speed "
+                    f"{data['speed']})")
+        raise ValueError(f"a torque in operation.torque, not the power {data['torque']!r} "
+                         f"({watts / 1e3:.4g} kW): give torque = {give}")
 
 
 class RoughnessSpec(CaseModel):
