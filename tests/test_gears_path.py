@@ -809,3 +809,18 @@ def test_a_power_given_as_the_torque_is_refused_with_the_torque_it_means(power, 
     torque = watts / (1500 * 2 * math.pi / 60)
     assert str(err.value).startswith("operation: ")
     assert f'torque = "{torque:.4g} N m"' in str(err.value) and "power" in str(err.value)
+
+
+@pytest.mark.parametrize("pitch, per_inch", [("8 1/in", 8.0), ("10 per inch", 10.0)])
+def test_a_diametral_pitch_given_as_the_module_is_refused_with_the_module(pitch, per_inch):
+    """An imperial user writes the diametral pitch P (teeth per inch of pitch diameter) as the
+    module; the unit check said only "expected a quantity convertible to m". The line gives
+    the module m = 25.4 mm / P (3.175 mm for P 8, 2.54 mm for P 10); a module written in
+    inches is read as such (the case's 4.5 mm as 0.17717 in)."""
+    with pytest.raises(InputError) as err:
+        load_case(GEAR_CASE.replace('normal_module = "4.5 mm"', f'normal_module = "{pitch}"'))
+    assert str(err.value).startswith("gear.normal_module: ")
+    assert f'normal_module = "{25.4 / per_inch:.4g} mm"' in str(err.value)
+    case = load_case(GEAR_CASE.replace('normal_module = "4.5 mm"',
+                                       f'normal_module = "{4.5 / 25.4!r} in"'))
+    assert case.gear.normal_module == pytest.approx(4.5e-3, rel=1e-12)

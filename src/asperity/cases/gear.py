@@ -127,7 +127,8 @@ class GearSpec(CaseModel):
     teeth: tuple[Annotated[int, Field(ge=5, le=1000)], Annotated[int, Field(ge=5, le=1000)]]
     """Numbers of teeth [pinion, wheel]."""
     normal_module: GearLength(*MODULE_RANGE)
-    """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres)."""
+    """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres; a diametral
+    pitch "8 1/in" is refused with the module it means, 1/P)."""
     pressure_angle: Quantity("angle", gt=0) = math.radians(20.0)
     """Normal pressure angle (e.g. "20 deg")."""
     helix_angle: Angle = 0.0
@@ -157,6 +158,24 @@ class GearSpec(CaseModel):
                 "expected the numbers of teeth of an external pair [pinion, wheel], both >= 5 "
                 "(a negative number of teeth is an internal gear in ISO 21771: internal, "
                 f"ring-gear and planetary meshes are not modelled), got {list(value)}")
+        return value
+
+    @field_validator("normal_module", mode="before")
+    @classmethod
+    def _not_a_diametral_pitch(cls, value):
+        """Refuse a diametral pitch ("8 1/in") given as the module with the module it means,
+        m = 1 / P (25.4 mm / 8 = 3.175 mm); the unit check said only "expected a quantity
+        convertible to m"."""
+        if isinstance(value, str):
+            try:
+                per_metre = float(registry().Quantity(value.strip()).to("1/m").magnitude)
+            except Exception:  # pint raises many kinds on odd text; the unit check decides
+                return value
+            if per_metre > 0:
+                raise ValueError(
+                    "expected a module (a length), not a diametral pitch P: the module is "
+                    f"m = 1 / P, here normal_module = \"{1e3 / per_metre:.4g} mm\" (a normal "
+                    "diametral pitch gives the normal module)")
         return value
 
     @model_validator(mode="after")
