@@ -127,7 +127,8 @@ class GearSpec(CaseModel):
     teeth: tuple[Annotated[int, Field(ge=5, le=1000)], Annotated[int, Field(ge=5, le=1000)]]
     """Numbers of teeth [pinion, wheel]."""
     normal_module: GearLength(*MODULE_RANGE)
-    """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres)."""
+    """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres; a diametral
+    pitch "8 1/in" is refused with the module it means, 1/P)."""
     pressure_angle: Quantity("angle", gt=0) = math.radians(20.0)
     """Normal pressure angle (e.g. "20 deg")."""
     helix_angle: Angle = 0.0
@@ -157,6 +158,24 @@ class GearSpec(CaseModel):
                 "expected the numbers of teeth of an external pair [pinion, wheel], both >= 5 "
                 "(a negative number of teeth is an internal gear in ISO 21771: internal, "
                 f"ring-gear and planetary meshes are not modelled), got {list(value)}")
+        return value
+
+    @field_validator("normal_module", mode="before")
+    @classmethod
+    def _not_a_diametral_pitch(cls, value):
+        """Refuse a diametral pitch ("8 1/in") given as the module with the module it means,
+        m = 1 / P (25.4 mm / 8 = 3.175 mm); the unit check said only "expected a quantity
+        convertible to m"."""
+        if isinstance(value, str):
+            try:
+                per_metre = float(registry().Quantity(value.strip()).to("1/m").magnitude)
+            except Exception:  # pint raises many kinds on odd text; the unit check decides
+                return value
+            if per_metre > 0:
+                raise ValueError(
+                    "expected a module (a length), not a diametral pitch P: the module is "
+                    f"m = 1 / P, here normal_module = \"{1e3 / per_metre:.4g} mm\" (a normal "
+                    "diametral pitch gives the normal module)")
         return value
 
     @model_validator(mode="after")
@@ -224,12 +243,24 @@ def _rotational_speed(value):
     return rad_per_s
 
 
+def _power(value) -> float | None:
+    """``value`` in W where it is a text quantity of power ("50 kW", "30 hp"), else None."""
+    if not isinstance(value, str):
+        return None
+    try:
+        q = registry().Quantity(value.strip())
+        return float(q.to("W").magnitude)
+    except Exception:  # pint raises many kinds on odd text; not a power: the unit check decides
+        return None
+
+
 class OperationSpec(CaseModel):
     """``[operation]``: pinion ``torque``, pinion ``speed`` (with its unit: rpm, rad/s), the
     ``bulk_temperature`` of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     torque: Quantity("moment", gt=0)
-    """Pinion torque."""
+    """Pinion torque ("318 N m", "2800 lbf in"); a power ("50 kW") is refused with the torque
+    it means at the pinion speed."""
     speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s"})]
     """Pinion speed with its unit: "2170 rpm", "2170 min^-1", "36 rev/s" or "227 rad/s"; a
     bare number (rpm or rad/s?), "25 Hz" and "227 1/s" (revolutions or radians?) are
@@ -239,6 +270,27 @@ class OperationSpec(CaseModel):
     """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
     _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
+
+    @model_validator(mode="before")
+    @classmethod
+    def _not_a_power(cls, data):
+        """A power given as the torque ("50 kW", "30 hp") is refused with the torque it means
+        at the pinion speed, T = P / omega (the unit check named only the dimension:
+        "expected a quantity convertible to N*m, got '50 kW'")."""
+        if not isinstance(data, dict):
+            return data
+        watts = _power(data.get("torque"))
+        if watts is None:
+            return data
+        try:
+            omega = _rotational_speed(data.get("speed"))
+        except ValueError:
+            give = "T = P / omega (P in W, omega in rad/s)"
+        else:
+            give = (f"\"{watts / omega:.4g} N m\" (T = P / omega at the pinion speed "
+                    f"{data['speed']})")
+        raise ValueError(f"a torque in operation.torque, not the power {data['torque']!r} "
+                         f"({watts / 1e3:.4g} kW): give torque = {give}")
 
 
 class RoughnessSpec(CaseModel):

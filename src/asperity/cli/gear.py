@@ -54,7 +54,8 @@ def gear(
     done.case = model
     files = done.write(out)
     for key in ("transverse_contact_ratio", "overlap_ratio", "minimum_lambda",
-                "maximum_flash_temperature_k", "maximum_hertz_pressure_pa", "ehl_wall_time_s"):
+                "maximum_flash_temperature_k", "maximum_hertz_pressure_pa",
+                "pitch_hertz_pressure_pa", "iso_nominal_contact_stress_pa", "ehl_wall_time_s"):
         console.print(f"{key:32s} {done.summary[key]:.4g}")
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     if emit_transient is not None:

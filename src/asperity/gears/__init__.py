@@ -6,6 +6,7 @@ from .geometry import MIN_TIP_THICKNESS, GearPair, inverse_involute, involute
 from .handoff import (
     LINE_MAX_SWEEPS,
     NODES_PER_CORRELATION,
+    flooded_grid,
     point_index,
     roughness_nodes,
     toml_text,
@@ -22,6 +23,7 @@ from .path import (
     contact_problem,
     solve_path,
 )
+from .rating import NominalContactStress, nominal_contact_stress
 from .thermal import (
     FLASH_CONSTANTS,
     flash_temperature,
@@ -32,9 +34,10 @@ from .thermal import (
 __all__ = [
     "FLASH_CONSTANTS", "LINE_MAX_SWEEPS", "MIN_TIP_THICKNESS", "NODES_PER_CORRELATION",
     "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPair",
-    "GearPathResult", "Kinematics", "Thermal",
+    "GearPathResult", "Kinematics", "NominalContactStress", "Thermal",
     "asperity_share", "composite_roughness", "contact_problem", "flash_temperature",
-    "hertz_along_path", "involute", "inverse_involute", "kinematics", "load_per_length",
-    "load_sharing", "mixed_friction", "normal_force", "peclet_number", "point_index",
+    "flooded_grid", "hertz_along_path", "involute", "inverse_involute", "kinematics",
+    "load_per_length", "load_sharing", "mixed_friction", "nominal_contact_stress",
+    "normal_force", "peclet_number", "point_index",
     "roughness_nodes", "solve_path", "thermal_contact_coefficient", "toml_text", "transient_case",
 ]

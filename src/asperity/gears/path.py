@@ -33,6 +33,7 @@ from .mixed import asperity_share, mixed_friction
 from .thermal import (
     LOW_PECLET_OVERESTIMATE,
     flash_temperature,
+    low_peclet_overestimate,
     peclet_number,
     thermal_contact_coefficient,
 )
@@ -370,9 +371,12 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         # eta du/h of a Newtonian film at the pressure-raised viscosity grows without bound
         # (1e4 .. 1e13 on gear flanks): no traction, so not reported as one (docs/gears.md)
         out["mu"][loaded] = np.nan
-    mu = mixed_friction(np.where(loaded, out["mu"], 0.0), boundary_friction, f_asp)
+    # an unloaded position (the end of a relieved tip) has no friction coefficient: NaN, not
+    # the 0 of its absent film; it makes no heat (flash temperature 0)
+    mu = np.where(loaded, mixed_friction(np.where(loaded, out["mu"], 0.0), boundary_friction,
+                                         f_asp), np.nan)
     b1, b2 = thermal.coefficients()
-    heat = mu * 0.25 * math.pi * p_hz * np.abs(kin.sliding_speed)
+    heat = np.where(loaded, mu, 0.0) * 0.25 * math.pi * p_hz * np.abs(kin.sliding_speed)
     flash = flash_temperature(heat, a, kin.u1, kin.u2, b1, b2, thermal.profile)
     pe = np.minimum(*(peclet_number(u, a, k, r, c) for u, k, r, c in zip(
         (kin.u1, kin.u2), thermal.conductivity, thermal.density, thermal.specific_heat,
@@ -386,11 +390,20 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     if bad.size:
         finite = out["hm"][bad][np.isfinite(out["hm"][bad])]
         depth = f"down to {finite.min() * 1e9:.3g} nm" if finite.size else "not finite"
+        p_bad = float(np.max(p_hz[bad]))
+        if p_bad > PLAUSIBLE_HERTZ_PRESSURE:
+            advice = ("check operation.torque and its unit (the Hertz pressure there is up to "
+                      f"{p_bad / 1e9:.3g} GPa, above {PLAUSIBLE_HERTZ_PRESSURE / 1e9:g} GPa), "
+                      "then the lubricant")
+        else:
+            # a plausible load: the film is too thin for the mesh or the relaxation
+            advice = (f"the Hertz pressure there (up to {p_bad / 1e9:.3g} GPa) is a plausible "
+                      "load, so the film is thinner than the solve resolves: raise [ehl] nx "
+                      "(and max_sweeps), or give [ehl] damping a smaller value")
         notes.append(f"EHL solve: the minimum film is zero or negative ({depth}) at "
                      f"{bad.size} of {n} path points "
                      f"(roll angles {_angles(kin, bad)} deg), so they are not converged "
-                     "solutions; check operation.torque and its unit (the maximum Hertz "
-                     f"pressure is {np.max(p_hz) / 1e9:.3g} GPa), then the lubricant")
+                     f"solutions; {advice}")
     bad = np.flatnonzero(solver_failed)
     if bad.size:
         notes.append(f"EHL solve: {bad.size} of {n} path points did not converge (roll angles "
@@ -415,11 +428,14 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     low_pe = (load > 0) & (heat > 0) & (pe < 5.0)
     if np.any(low_pe):
         over = LOW_PECLET_OVERESTIMATE[thermal.profile]
-        notes.append(f"flash temperature: Peclet number down to {pe[low_pe].min():.2g} < 5 at "
+        lowest = float(pe[low_pe].min())
+        worst = low_peclet_overestimate(thermal.profile, lowest)
+        size = (f"more than {worst:.0%}" if lowest < min(over) else f"about {worst:.0%}")
+        notes.append(f"flash temperature: Peclet number down to {lowest:.2g} < 5 at "
                      f"{int(low_pe.sum())} point(s); Blok's high-speed formula overestimates "
-                     f"there (for the {thermal.profile} source by {over[1.0]:.0%} at Pe = 1 "
-                     f"and {over[0.3]:.0%} at Pe = 0.3 against Jaeger's exact moving band "
-                     "source), so treat those values as upper bounds")
+                     f"there, for the {thermal.profile} source by {size} at Pe = {lowest:.2g} "
+                     f"({over[1.0]:.0%} at Pe = 1, {over[0.3]:.0%} at Pe = 0.3) against "
+                     "Jaeger's exact moving band source, so treat those values as upper bounds")
     return GearPathResult(
         pair=pair, kin=kin, share=share, load=load, hertz_a=a, hertz_b=b, hertz_pressure=p_hz,
         max_pressure=out["pmax"], central_film=out["hc"], minimum_film=out["hm"],

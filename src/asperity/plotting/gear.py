@@ -135,6 +135,8 @@ def conditions_figure(result, title):
     axes[0].plot(xs, load, "C0-", label="normal load")
     axes[0].plot(x, result.load * scale, "C0o", ms=3)
     axes[0].set_ylabel(f"normal load ({unit})")
+    # from zero: a helical pair's constant load was drawn on a 130-142 N/mm axis
+    axes[0].set_ylim(0.0, 1.1 * float(np.nanmax(load)))
     twin = axes[0].twinx()
     xs, p = step_curve(result, result.hertz_pressure * 1e-9, 0.5 if result.line else 1 / 3)
     twin.plot(xs, p, "C3-", label="Hertz p_max")

@@ -17,7 +17,8 @@ import xarray as xr
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness
-from ..gears.path import GearPathResult, solve_path
+from ..gears.path import GearPathResult, contact_problem, solve_path
+from ..gears.rating import nominal_contact_stress
 from ..results import Comparison, Outcome, variable
 from ..surfaces import Profile, autocorrelation_length, roughness_parameters
 
@@ -143,6 +144,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
                    "maximum_contact_temperature_c": float(result.contact_temperature[i_fl]),
                    **_at(result, i_fl, "maximum_flash_temperature")}
     rb1 = pair.rb[0]
+    iso = nominal_contact_stress(pair, case.operation.torque, *case.bodies())
     summary = {
         "transverse_contact_ratio": pair.contact_ratio,
         "overlap_ratio": pair.overlap_ratio,
@@ -158,6 +160,13 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         **hottest,
         "maximum_hertz_pressure_pa": float(result.hertz_pressure[i_p]),
         **_at(result, i_p, "maximum_hertz_pressure"),
+        "pitch_hertz_pressure_pa": float(result.hertz_pressure[i_c]),
+        "iso_nominal_contact_stress_pa": iso.stress,
+        "iso_zone_factor": iso.zone,
+        "iso_elasticity_factor_sqrt_mpa": iso.elasticity / 1e3,
+        "iso_contact_ratio_factor": iso.contact_ratio,
+        "iso_helix_angle_factor": iso.helix,
+        "iso_nominal_tangential_force_n": iso.tangential_force,
         "minimum_film_m": float(np.nanmin(result.minimum_film)),
         "pitch_central_film_m": float(result.central_film[i_c]),
         "pitch_minimum_film_m": float(result.minimum_film[i_c]),
@@ -185,6 +194,14 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         f" and mu_b = {case.friction.boundary:g} (an engineering assumption). Flash "
         "temperature: Blok's formula (band source, high Peclet number, equal maximum surface "
         "temperatures); the EHL solutions are isothermal.",
+        f"ISO 6336-2:2019 nominal contact stress sigma_H0 = Z_H Z_E Z_eps Z_beta "
+        f"sqrt(F_t/(d1 b) (u+1)/u) = {iso.stress / 1e6:.4g} MPa (Z_H {iso.zone:.4g}, Z_E "
+        f"{iso.elasticity / 1e3:.4g} sqrt(MPa), Z_eps {iso.contact_ratio:.4g}, Z_beta = "
+        f"1/sqrt(cos beta) {iso.helix:.4g}, F_t {iso.tangential_force:.5g} N; no K or Z_B/Z_D "
+        f"factors) beside the Hertz pressure {result.hertz_pressure[i_c] / 1e6:.4g} MPa at the "
+        "pitch point: Z_eps is ISO's contact-ratio factor, not the load sharing of the path, "
+        "and Z_beta an empirical factor of the standard (for eps_beta >= 1 sigma_H0 is exactly "
+        "Z_beta times the pitch Hertz pressure; docs/gears.md).",
         f"Mesh: {case.ehl.nx} nodes on {case.ehl.levels} grid(s) over "
         f"{case.ehl.x_min:g}a..{case.ehl.x_max:g}a"
         + (f" (at the same spacing, the inlet moved upstream to the fully flooded distance "
@@ -252,6 +269,11 @@ def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, 
     h = case.handoff
     grid = {"nx": h.nx, "ny": h.ny, "x_min": h.x_min, "x_max": h.x_max}
     length = correlation_length(case)
+    inlet = None
+    if result.line:
+        problem = contact_problem(result.pair, result.kin, index, float(result.load[index]),
+                                  *case.bodies(), case.lubricant.lubricant())
+        inlet = problem.inlet_extent()
     dump = {"exclude_none": True, "by_alias": True}
     data = transient_case(
         result, index, title=f"{case.title}: transient mixed EHL at {spec.at}",
@@ -261,7 +283,7 @@ def handoff(case, result: GearPathResult, at: str | None = None) -> tuple[dict, 
         surface2=case.surface2.model_dump(exclude_defaults=True, **dump),
         grid=grid, time=h.time.model_dump(**dump),
         solver=None if h.solver is None else h.solver.model_dump(exclude_unset=True, **dump),
-        correlation_length=length if math.isfinite(length) else None)
+        correlation_length=length if math.isfinite(length) else None, inlet_extent=inlet)
     header = (f"Written by `asperity gear` from the case \"{case.title}\" ({spec.at}).\n"
               "Surface 1 is the pinion flank, surface 2 the wheel flank; SI units.")
     return data, toml_text(data, header)
