@@ -162,3 +162,11 @@ def test_swept_values_as_shown_in_a_study():
     assert format_axis_value(0.005, "m") == "5 mm"
     assert format_axis_value(1.5e-7, "m2") == "0.15 mm²"
     assert format_axis_value("steel-al", "1") == "steel-al"
+
+
+@pytest.mark.parametrize("key, label", [
+    ("iso_elasticity_factor_sqrt_mpa", "ISO 6336-2 elasticity factor Z_E (√MPa)"),
+    ("iso_nominal_contact_stress_pa", "ISO 6336-2 nominal contact stress sigma_H0")])
+def test_the_iso_6336_rows_of_a_gear_summary_read_as_the_standard_writes_them(key, label):
+    """The elasticity factor's row read "ISO elasticity factor sqrt mpa"."""
+    assert describe_key(key)[0] == label

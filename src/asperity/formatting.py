@@ -98,6 +98,12 @@ _ISO_PARAMETER = re.compile(r"[prws](a|q|sk|ku|p|v|t|z|dq|dc|k|pk|vk|dr|al|tr|td
 
 #: Labels of summary keys that words alone would not make clear (key without its suffix).
 _LABELS = {
+    "iso_zone_factor": "ISO 6336-2 zone factor Z_H",
+    "iso_elasticity_factor_sqrt_mpa": "ISO 6336-2 elasticity factor Z_E (√MPa)",
+    "iso_contact_ratio_factor": "ISO 6336-2 contact ratio factor Z_eps",
+    "iso_helix_angle_factor": "ISO 6336-2 helix angle factor Z_beta",
+    "iso_nominal_contact_stress": "ISO 6336-2 nominal contact stress sigma_H0",
+    "iso_nominal_tangential_force": "ISO 6336-2 nominal tangential force F_t",
     "hertz_a": "Hertz semi-axis a (along x)",
     "hertz_b": "Hertz semi-axis b (along y)",
     "minimum_film_thickness_centreline": "minimum film thickness on the centre line",
