@@ -375,3 +375,75 @@ def test_a_ball_past_first_yield_below_the_hardness_warns():
     assert not [w for w in run("9 N").warnings if w.startswith("pressure")]  # p0 = 0.563 H
     above = run("50 N", hardness="1 GPa").warnings  # above H: the hardness line alone
     assert len(above) == 1 and "exceeds the hardness" in above[0]
+
+
+def _egg_crate(cells_per_period, shift=0.0):
+    """One period of z = amp (cos kx + cos ky) on a periodic grid, loaded so that each peak's
+    Hertz radius is 0.07 of the wavelength: the peak's radius of curvature is 1 / (amp k^2),
+    the load P = 4 E* a^3 / (3 R), the area pi a^2 and the peak pressure 3 P / (2 pi a^2)
+    (Johnson, Greenwood & Higginson 1985: an isolated Hertz contact at light load).
+    ``shift`` moves the peak by that fraction of the period along x and y."""
+    from asperity.contact.spots import contact_spots
+
+    e, nu = 210e9, 0.3
+    e_star = e / (2 * (1 - nu**2))
+    wavelength, amp = 100e-6, 0.5e-6
+    k = 2 * np.pi / wavelength
+    radius = 1 / (amp * k**2)
+    a = 0.07 * wavelength
+    load = 4 * e_star * a**3 / (3 * radius)
+    h = wavelength / cells_per_period
+    x = (np.arange(cells_per_period) + 0.5) * h - wavelength / 2
+    xs = x[:, None] - shift * wavelength
+    ys = x[None, :] - shift * wavelength
+    gap0 = amp * (2 - np.cos(k * xs) - np.cos(k * ys))
+    res = solve_normal(gap0, x, x, Material(e, nu), Material(e, nu), load=load, periodic=True)
+    spots = contact_spots(res.contact, res.pressure, h * h, periodic=True)
+    reference = {"area": np.pi * a**2, "p0": 3 * load / (2 * np.pi * a**2), "load": load}
+    return res, spots, x, reference
+
+
+def test_spots_of_a_few_cells_are_reported_where_the_peak_pressure_is_not_converged():
+    """A periodic egg-crate at light load: each peak is a Hertz contact of radius 0.07
+    wavelengths. With 16 cells a period the spot is 4 cells and its peak pressure 34 % below
+    Hertz's: the spot check warns (limit 50 cells at the load's median) and names a grid that
+    resolves it. With 128 cells (a spot of 256 cells) there is no line, the peak pressure is
+    within 2 % of Hertz's p0 and the real area within 3 % of pi a^2."""
+    from asperity import diagnostics
+
+    coarse, spots, x, ref = _egg_crate(16)
+    assert spots.count == 1 and spots.load_median_cells() < diagnostics.MIN_CELLS_PER_SPOT
+    assert coarse.pressure.max() < 0.8 * ref["p0"]
+    (line,) = diagnostics.spot_resolution(spots, x, x)
+    assert line.startswith("mesh: half the load is carried by contact spots of 4 cells")
+    assert "nx >= 57 and ny >= 57" in line  # 16 sqrt(50 / 4) = 56.6
+    fine, spots, x, ref = _egg_crate(128)
+    assert diagnostics.spot_resolution(spots, x, x) == []
+    assert fine.pressure.max() == pytest.approx(ref["p0"], rel=0.02)
+    assert fine.contact_area == pytest.approx(ref["area"], rel=0.03)
+    assert spots.loads.sum() == pytest.approx(ref["load"], rel=1e-9)
+
+
+def test_a_spot_across_the_periodic_edge_is_one_spot():
+    """The egg-crate's peak moved onto the corner of the periodic cell is cut into four
+    pieces by the grid's edges; labelled periodically it is still one spot of the same cells
+    as the centred one (the same lattice, shifted by half a period)."""
+    _, centred_spots, _, _ = _egg_crate(64)
+    _, corner, _, _ = _egg_crate(64, shift=0.5)
+    assert corner.count == 1 and corner.cells[0] == centred_spots.cells[0]
+
+
+def test_a_user_rough_flat_with_spots_of_a_few_cells_is_warned_and_told_to_fix_the_cutoff():
+    """The self-affine rough flat example (H = 0.8, Sq = 0.5 um, 25 N on 0.5 mm, 128 cells)
+    carries half its load on spots of 16 cells or fewer. With its shortest wavelength fixed
+    at 7.81 um the real area fraction was 4.14 % on 128 cells, 3.43 % on 256, 3.144 % on 512
+    and 3.153 % on 1024 (docs/tangential.md): the line says a finer grid adds roughness
+    without short_cutoff and names that key."""
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    out = run_case(load_case(example_text("rough-flat-normal")))
+    assert out.summary["load_median_spot_cells"] == 16
+    (line,) = [w for w in out.warnings if "contact spots" in w]
+    assert "nx >= 227 and ny >= 227" in line and "give roughness.short_cutoff" in line

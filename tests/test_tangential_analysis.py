@@ -747,3 +747,27 @@ def test_a_force_about_an_off_centre_point_is_not_checked_as_a_force_alone():
                            "rotation": "fixed"})
     (row,) = [r for r in fixed.comparisons if r.quantity == "rigid shift (relative)"]
     assert row.passed and row.reference == pytest.approx(_mindlin_shift(30.0), rel=1e-9)
+
+
+def test_a_rough_ball_under_a_force_lists_its_spots_count_not_520_rows_and_warns_of_them():
+    """A user's rough steel ball (R = 10 mm, 50 N, Sq = 0.3 um, correlation length 12 um,
+    64 x 64 cells) under 10 N at mu = 0.3: its normal solve touches on 104 spots, each a
+    contact region of the tangential solve. The summary gave five rows per region (520
+    rows); now it gives their number and a note, and the spot check warns that half the load
+    is on spots of 9 cells or fewer (limit 50). The friction capacity is mu N = 15 N."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    out = run_case(load_case({
+        "analysis": "tangential", "mu": 0.3,
+        "body1": {"youngs_modulus": "210 GPa"}, "body2": {"youngs_modulus": "210 GPa"},
+        "pressure": {"source": "normal", "load": "50 N", "rx": "10 mm",
+                     "roughness": {"kind": "gaussian", "rms": "0.3 um",
+                                   "correlation_length": "12 um", "seed": 2}},
+        "loading": {"force": "10 N"}, "grid": {"nx": 64, "ny": 64}}))
+    s = out.summary
+    assert s["regions"] > 10 and not [k for k in s if k.startswith("region_")]
+    assert [n for n in out.notes if f"has {s['regions']} separate regions" in n]
+    assert s["friction_capacity_n"] == pytest.approx(0.3 * 50, rel=1e-9)
+    (line,) = [w for w in out.warnings if "contact spots" in w]
+    assert line.startswith("mesh: half the load is carried by contact spots of 9 cells")

@@ -52,6 +52,8 @@ __all__ = [
     "decimated_roughness_file",
     "contact_at_grid_edge",
     "contact_resolution",
+    "spot_resolution",
+    "MIN_CELLS_PER_SPOT",
     "ehl_inlet",
     "ehl_rigid_domain",
     "ehl_inlet_film",
@@ -336,6 +338,73 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
         return []
     return ["mesh: the contact is resolved by " + " and ".join(lines) + f" (limit {min_cells:g}"
             " cells per semi-axis); pressures and contact size are then mesh-dependent"]
+
+
+#: Cells of the spot at the load's median below which a rough contact's spots are reported
+#: unresolved: in a refinement study of a rough ball (docs/tangential.md, "Contact spots") the
+#: real area was 20 % too large at a median of 20 cells per spot and 9 % at 84, the error
+#: falling as about 0.8 / sqrt(cells).
+MIN_CELLS_PER_SPOT = 50.0
+
+
+def spot_resolution(spots, x, y, min_cells: float = MIN_CELLS_PER_SPOT,
+                    file_spacing=None, cutoff_key: str | None = None) -> list[str]:
+    """A rough contact whose load is carried mostly by spots of a few cells.
+
+    :func:`contact_resolution` judges the apparent contact; this judges its spots (the
+    connected patches of the contact mask, :func:`asperity.contact.spots.contact_spots`). A
+    spot's boundary cells count whole, so a spot of a few cells has too large an area and too
+    low a mean pressure; the error falls as about ``0.8 / sqrt(cells)``.
+
+    Parameters
+    ----------
+    spots : asperity.contact.spots.ContactSpots
+        The contact's spots.
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    min_cells : float
+        Fewest cells of the spot at the load's median.
+    file_spacing : sequence of float, optional
+        A measured file's sampling interval along x (and y), m: where the grid asked for is
+        finer than the file's points, the line says that the file limits the answer.
+    cutoff_key : str, optional
+        The key of a generated surface's shortest wavelength when it was left to the grid
+        (a self-affine surface without ``short_cutoff``): a finer grid then adds roughness
+        too, and the line says to fix the wavelength before refining.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    median = spots.load_median_cells()
+    if spots.count == 0 or not median < min_cells:
+        return []
+    factor = math.sqrt(min_cells / median)
+    need = [(name, math.ceil(len(coord) * factor), len(coord) * _spacing(coord))
+            for name, coord in (("x", x), ("y", y)) if len(coord) > 1]
+    advice = "use " + " and ".join(f"n{name} >= {n}" for name, n, _ in need) + \
+        " on the same extents and check that the real contact area no longer moves"
+    if file_spacing is not None:
+        coarse = [name for (name, n, extent), h in zip(need, file_spacing, strict=False)
+                  if extent / n < h * (1 - 1e-9)]
+        if coarse:
+            advice = ("that grid would be finer than the measured file's points along "
+                      f"{' and '.join(coarse)}: the file's sampling limits the spots' size, so "
+                      "read the real contact area as an upper bound and the mean contact "
+                      "pressure as a lower bound, or measure finer")
+    if cutoff_key is not None:
+        shortest = 2.0 * min(_spacing(x), _spacing(y))
+        advice += (f"; the surface's shortest wavelength is the grid's (2 cells, "
+                   f"{shortest * 1e6:.3g} um), so a finer grid adds roughness as well: give "
+                   f"{cutoff_key} (e.g. {shortest * 1e6:.3g} um) to refine the same surface")
+    share = spots.load_share_below(min_cells)
+    estimate = 0.8 / math.sqrt(max(median, 1.0))
+    return [f"mesh: half the load is carried by contact spots of {median:g} cells or fewer "
+            f"({spots.count} spots; {_pct(share)} of the load on spots under "
+            f"{min_cells:g} cells; limit: {min_cells:g} cells at the load's median); a spot's "
+            "edge cells count whole, so the real contact area is too large and the mean "
+            f"contact pressure too low, by about {_pct(estimate)}; {advice}"]
 
 
 def hardness_given(materials: Iterable) -> bool:

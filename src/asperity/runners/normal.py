@@ -10,6 +10,7 @@ import xarray as xr
 from .. import diagnostics
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
+from ..contact.spots import contact_spots
 from ..formatting import format_quantity
 from ..materials import contact_modulus
 from ..references import cite
@@ -61,6 +62,12 @@ def run(case, progress=None) -> Outcome:
         "residual": float(res.residual),
         "converged": bool(res.converged),
     }
+    spots = None
+    if rough is not None:  # the real area's spots (docs/tangential.md, "Contact spots")
+        spots = contact_spots(res.contact, res.pressure, (x[1] - x[0]) * (y[1] - y[0]),
+                              periodic=case.grid.periodic)
+        summary.update(contact_spots=spots.count,
+                       load_median_spot_cells=spots.load_median_cells())
     rx, ry = case.geometry.radii()
     if not np.isfinite(rx):  # a nominally flat interface: its mean separation (Persson's u)
         summary["mean_separation_m"] = float(np.mean(res.gap))
@@ -129,13 +136,14 @@ def run(case, progress=None) -> Outcome:
             " (approach_from_first_contact_m). loading.approach is read the same way, from the "
             "mean plane.")
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=_warnings(case, res, x, y, body1, body2, rough))
+                   warnings=_warnings(case, res, x, y, body1, body2, rough, spots))
 
 
-def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
+def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
     """Trust checks (:mod:`asperity.diagnostics`): a measured file's doubts first (the
     reader's and its units', its sampling against the grid's), a surface that is not periodic
-    on a periodic grid, then domain, mesh, roughness on the mesh and hardness."""
+    on a periodic grid, then domain, mesh (the apparent contact, then a rough contact's
+    spots), roughness on the mesh and hardness."""
     size = None
     lines = [] if on_grid is None else diagnostics.measured_file_on_grid("roughness", on_grid,
                                                                          x, y)
@@ -154,6 +162,11 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
     lines += diagnostics.contact_resolution(
         res.contact, x, y, expected_size=size,
         file_spacing=None if on_grid is None else on_grid.file_spacing)
+    if spots is not None:
+        free = case.roughness.kind == "self-affine" and case.roughness.short_cutoff is None
+        lines += diagnostics.spot_resolution(
+            spots, x, y, file_spacing=on_grid.file_spacing,
+            cutoff_key="roughness.short_cutoff" if free else None)
     rough = case.roughness
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
         ell = rough.correlation_length

@@ -27,6 +27,7 @@ from ..contact.reference import (
     lubkin_twist,
     masing_history,
 )
+from ..contact.spots import contact_spots
 from ..errors import InputError
 from ..formatting import format_quantity
 from ..materials import contact_modulus, coupling_compliance
@@ -176,6 +177,12 @@ def _zeroed(value: float, scale: float) -> float:
     return 0.0 if abs(value) <= ROUND_OFF * scale else value
 
 
+#: Most contact regions whose forces, capacity and stick fraction are listed one by one in
+#: the summary: a rough normal solve's contact is a region per spot (a user's rough ball had
+#: 104, five rows each); beyond it only their number is given, and the map is in result.nc.
+REGION_ROWS = 10
+
+
 def _summary(case, fld, res, applied, identical):
     contact_area = float((fld.pressure > 0).sum() * fld.cell_area)
     # equivalent contact radius: the length scale (the domain's if nothing touches)
@@ -219,7 +226,7 @@ def _summary(case, fld, res, applied, identical):
                  excess_moment_nm=_zeroed(res.excess[2], moment_scale))
     if case.loading.rotation == "fixed":
         s["reaction_moment_nm"] = _zeroed(res.reaction_moment, moment_scale)
-    for reg in res.regions:
+    for reg in res.regions if len(res.regions) <= REGION_ROWS else ():
         k = reg.label
         s.update({f"region_{k}_force_x_n": _zeroed(reg.force[0], force_scale),
                   f"region_{k}_force_y_n": _zeroed(reg.force[1], force_scale),
@@ -414,6 +421,21 @@ def _long_ellipse_note(case, fld, res) -> list[str]:
             f"{format_quantity(short[1] - short[0], 'm')} cells), not Cattaneo's 2-D strip, "
             f"sqrt(1 - Q/(mu P)) = {math.sqrt(1 - ratio):.3g}, which asperity does not "
             "solve (no line contact in a tangential case)."]
+
+
+def _spot_warnings(case, fld) -> list[str]:
+    """A rough normal solve's contact spots of a few cells
+    (:func:`asperity.diagnostics.spot_resolution`): its pressures, and the stick and slip on
+    each spot, are then set by the mesh."""
+    rough = fld.roughness
+    if rough is None:
+        return []
+    spots = contact_spots(fld.pressure > 0, fld.pressure, fld.cell_area)
+    spec = case.pressure.roughness
+    free = spec.kind == "self-affine" and spec.short_cutoff is None
+    return diagnostics.spot_resolution(
+        spots, fld.x, fld.y, file_spacing=rough.file_spacing,
+        cutoff_key="pressure.roughness.short_cutoff" if free else None)
 
 
 def _file_warnings(fld) -> list[str]:
@@ -681,6 +703,11 @@ def run(case, progress=None) -> Outcome:
                      "torsion about the true centre and pure translation; an approximation "
                      "otherwise).")
     notes += _long_ellipse_note(case, fld, res)
+    if len(res.regions) > REGION_ROWS:
+        notes.append(f"The contact has {len(res.regions)} separate regions (a rough contact's "
+                     f"spots); their forces are not listed one by one (only up to {REGION_ROWS} "
+                     "are): the variable region of result.nc maps them, and the traction and "
+                     "stick variables give each region's share.")
     if case.pressure.source == "hertz":
         notes.append("Hertz pressure sampled at the cell centres and scaled so that the "
                      "discrete load equals the applied load.")
@@ -698,6 +725,7 @@ def run(case, progress=None) -> Outcome:
     trust += (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
               if case.pressure.source == "normal" else [])
     trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
+    trust += _spot_warnings(case, fld)
     trust += _file_warnings(fld)
     trust += diagnostics.above_hardness(fld.pressure, [("body1", body1), ("body2", body2)])
     trust += _validity_warnings(case, fld, body1, body2)
