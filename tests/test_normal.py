@@ -540,3 +540,31 @@ def test_a_rough_ball_spreads_its_load_as_greenwood_and_tripp_predict_within_the
     assert np.sqrt(0.4) * a0 < rms_num == pytest.approx(rms_gt, rel=0.06)
     assert centre_num == pytest.approx(centre_gt, rel=0.10)
     assert centre_num < 0.95 * 1.5 * load / (np.pi * a0**2)
+
+
+def test_a_measured_flat_patch_on_an_open_grid_is_not_told_to_enlarge_the_grid(tmp_path):
+    """A user's measured 64 x 64 patch (0.49 um points) pressed flat on a non-periodic grid
+    the file's size: the contact reaches every edge, as a flat's does on any grid. The line
+    said "enlarge the grid", which the file's size does not allow; it now says what the
+    answer is (a rough punch of the grid's size), that the file bounds the grid, and names
+    grid.periodic. On the periodic grid the same patch's real area differs by a few per cent
+    (docs/tangential.md)."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    n, h = 64, 0.48828125e-6
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(3).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * (6e-6) ** 2 / 8) * np.fft.fft2(noise)))
+    np.save(tmp_path / "patch.npy", 0.3e-6 * z / z.std())
+    case = {"analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "flat"},
+            "loading": {"load": "0.5 N"},
+            "grid": {"nx": n, "ny": n, "x_extent": n * h, "y_extent": n * h},
+            "roughness": {"kind": "file", "path": str(tmp_path / "patch.npy"),
+                          "spacing": h}}
+    out = run_case(load_case(case))
+    (line,) = [w for w in out.warnings if w.startswith("domain:")]
+    assert "enlarge the grid" not in line and "rough punch the size of the grid" in line
+    assert "cannot be enlarged" in line and "grid.periodic = true" in line

@@ -51,6 +51,7 @@ __all__ = [
     "coarse_roughness_file",
     "decimated_roughness_file",
     "contact_at_grid_edge",
+    "flat_on_open_grid",
     "contact_resolution",
     "spot_resolution",
     "MIN_CELLS_PER_SPOT",
@@ -186,6 +187,50 @@ def contact_at_grid_edge(pressure, x, y, contact_size=None) -> list[str]:
             f"({int(np.count_nonzero(edge & (p > 0)))} edge cells carry {_pct(share)} of the "
             "load; limit: no contact on the edge cells); the pressure beyond the grid is taken "
             f"as zero, so the contact is cut off and its pressures are wrong; {advice}"]
+
+
+def flat_on_open_grid(pressure, x, y, measured: bool = False) -> list[str]:
+    """A nominally flat contact on a non-periodic grid: it reaches the edges by construction.
+
+    :func:`contact_at_grid_edge` would say to enlarge the grid, which does not help a flat:
+    its contact spans any grid, and a measured file's size bounds it. The solve is then that
+    of a rough punch the size of the grid whose surroundings carry nothing, not of an
+    interface (a user's measured 125 um patch at 2 N: real area 733 um^2 on the open grid,
+    720 um^2 periodic, docs/tangential.md).
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (nx, ny)
+        Contact pressure, Pa.
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    measured : bool
+        The roughness is a measured file, whose extent bounds the grid.
+
+    Returns
+    -------
+    list of str
+        One line when the contact reaches an edge, else empty.
+    """
+    p = np.asarray(pressure, dtype=float)
+    total = float(p.sum())
+    edge = np.zeros(p.shape, dtype=bool)
+    edge[[0, -1], :] = True
+    if p.shape[1] > 2:
+        edge[:, [0, -1]] = True
+    touching = edge & (p > 0)
+    if not total > 0 or not touching.any():
+        return []
+    share = float(p[edge].sum()) / total
+    bound = ("; the measured file's extent bounds the grid, so it cannot be enlarged"
+             if measured else "")
+    return [f"domain: a nominally flat contact on a non-periodic grid reaches its edges "
+            f"({int(np.count_nonzero(touching))} edge cells carry {_pct(share)} of the load; "
+            "limit: no contact on the edge cells), as it does on any grid: the answer is that of a rough punch the size of the grid "
+            "whose surroundings carry nothing, not of an interface" + bound + "; for the "
+            "interface use grid.periodic = true (with a periodic surface: a measured one "
+            "mirrored or windowed first), or a curved body (geometry.shape = \"sphere\") "
+            "whose contact lies inside the grid"]
 
 
 def _patch_widths(contact) -> list[tuple[float, float]]:

@@ -158,7 +158,12 @@ def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
         if np.isfinite(rx) and np.isfinite(ry) and load > 0.0:
             h = hertz_point(load, rx, ry, body1, body2)
             size = (2.0 * h.a, 2.0 * h.b)
-        lines += diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
+        if np.isfinite(rx):
+            lines += diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
+        else:  # a flat reaches any grid's edges
+            lines += diagnostics.flat_on_open_grid(
+                res.pressure, x, y, measured=on_grid is not None and on_grid.file_spacing
+                is not None)
     lines += diagnostics.contact_resolution(
         res.contact, x, y, expected_size=size,
         file_spacing=None if on_grid is None else on_grid.file_spacing)
