@@ -226,8 +226,9 @@ def flat_on_open_grid(pressure, x, y, measured: bool = False) -> list[str]:
              if measured else "")
     return [f"domain: a nominally flat contact on a non-periodic grid reaches its edges "
             f"({int(np.count_nonzero(touching))} edge cells carry {_pct(share)} of the load; "
-            "limit: no contact on the edge cells), as it does on any grid: the answer is that of a rough punch the size of the grid "
-            "whose surroundings carry nothing, not of an interface" + bound + "; for the "
+            "limit: no contact on the edge cells), as it does on any grid: the answer is that "
+            "of a rough punch the size of the grid whose surroundings carry nothing, not of an "
+            "interface" + bound + "; for the "
             "interface use grid.periodic = true (with a periodic surface: a measured one "
             "mirrored or windowed first), or a curved body (geometry.shape = \"sphere\") "
             "whose contact lies inside the grid"]
