@@ -568,3 +568,35 @@ def test_a_measured_flat_patch_on_an_open_grid_is_not_told_to_enlarge_the_grid(t
     (line,) = [w for w in out.warnings if w.startswith("domain:")]
     assert "enlarge the grid" not in line and "rough punch the size of the grid" in line
     assert "cannot be enlarged" in line and "grid.periodic = true" in line
+
+
+def test_a_steel_ball_on_peek_past_first_yield_is_noted_and_a_rubber_is_not_told_to_yield():
+    """Steel ball (210 GPa, 0.3) on PEEK (3.6 GPa, 0.4), R = 10 mm, 200 N: E* = 4.208 GPa,
+    a = (3 P R / 4 E*)^(1/3) = 709 um, p0 = 3 P / (2 pi a^2) = 189.9 MPa, p0/E* = 0.0451,
+    past PEEK's first yield (p0 = 1.6 Y near 160 MPa) but under the 0.05 strain warning; the
+    run was silent and now notes it, naming both bodies' hardness. A 5 MPa rubber ball
+    (R = 2 mm, 1 N; E* = 6.58 MPa, p0/E* = 0.194) is warned that its law, not plasticity, is
+    unchecked, and not told to give a hardness."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def case(e1, nu1, e2, nu2, radius, load, extent):
+        return {"analysis": "normal",
+                "body1": {"youngs_modulus": e1, "poisson_ratio": nu1},
+                "body2": {"youngs_modulus": e2, "poisson_ratio": nu2},
+                "geometry": {"rx": radius}, "loading": {"load": load},
+                "grid": {"nx": 48, "ny": 48, "x_extent": extent, "y_extent": extent}}
+
+    e_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.4**2) / 3.6e9)
+    a = (3 * 200 * 0.01 / (4 * e_star)) ** (1 / 3)
+    p0 = 3 * 200 / (2 * np.pi * a**2)
+    out = run_case(load_case(case("210 GPa", 0.3, "3.6 GPa", 0.4, "10 mm", "200 N", "2.2 mm")))
+    assert out.summary["hertz_max_pressure_pa"] == pytest.approx(p0, rel=1e-9)
+    assert out.warnings == []
+    (note,) = [n for n in out.notes if n.startswith("p0/E*")]
+    assert f"p0/E* = {p0 / e_star:.3g}" in note and "give body1.hardness and body2.hardness" \
+        in note
+    rubber = run_case(load_case(case("5 MPa", 0.49, "210 GPa", 0.3, "2 mm", "1 N", "3 mm")))
+    (strain,) = [w for w in rubber.warnings if "p0/E*" in w]
+    assert "elastomer (body1)" in strain and "hardness" not in strain
+    assert "E* = 6.58 MPa" in strain

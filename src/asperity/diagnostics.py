@@ -20,6 +20,7 @@ import numpy as np
 
 from .ehl.formulas import flooded_film, flooded_inlet_distance, starved_film_ratio
 from .ehl.problem import FILM_ERROR, MESH_TARGET, MIN_CELL_ASPECT
+from .formatting import format_quantity
 from .surfaces.parameters import rms_gradient
 from .surfaces.topography import Topography
 
@@ -81,6 +82,9 @@ __all__ = [
     "HERTZ_STRAIN_LIMIT",
     "hertz_first_yield",
     "hertz_validity",
+    "hertz_plasticity_note",
+    "ELASTOMER_MODULUS",
+    "FIRST_YIELD_STRAIN",
 ]
 
 #: Contact fraction of a periodic cell above which the contact "fills the cell".
@@ -1670,8 +1674,63 @@ def hertz_first_yield(p0: float, load: float, materials: Iterable,
     return lines
 
 
+#: Young's modulus below which a body is taken for an elastomer, Pa: it does not yield, and a
+#: strain of several per cent leaves its linear law (rubbers 1-100 MPa; PTFE, nylon, PEEK
+#: 0.4-4 GPa are polymers that do yield).
+ELASTOMER_MODULUS = 0.1e9
+#: p0 / E* above which a smooth contact with no hardness given gets a note (not a warning)
+#: that first yield was not checked: hardened steel first yields near p0 / E* = 0.02-0.03,
+#: PEEK against steel near 0.038 (p0 = 1.6 Y, Y about 100 MPa, E* = 4.21 GPa).
+FIRST_YIELD_STRAIN = 0.02
+
+
+def _soft_bodies(bodies) -> tuple[list[str], list[str]]:
+    """Labels of the bodies without a hardness, and of those that are elastomers."""
+    bodies = list(bodies or [])
+    unchecked = [label for label, m in bodies if getattr(m, "hardness", None) is None]
+    rubber = [label for label, m in bodies if m.youngs_modulus < ELASTOMER_MODULUS]
+    return unchecked, rubber
+
+
+def hertz_plasticity_note(p0: float, e_star: float, bodies) -> list[str]:
+    """A note for a smooth Hertz contact past ``FIRST_YIELD_STRAIN`` E* with no hardness
+    given and below the strain limit of :func:`hertz_validity`, which warns above it.
+
+    A user's steel ball on PEEK (R = 10 mm, 200 N: p0 = 189.9 MPa, p0/E* = 0.045) is past
+    PEEK's first yield (p0 = 1.6 Y near 160 MPa) and nothing said so. The note names the
+    bodies to give a hardness; an elastomer (E below ``ELASTOMER_MODULUS``) does not yield
+    and gets none.
+
+    Parameters
+    ----------
+    p0 : float
+        Maximum Hertz pressure, Pa.
+    e_star : float
+        Contact modulus, Pa.
+    bodies : iterable of (label, Material)
+        The bodies.
+
+    Returns
+    -------
+    list of str
+        At most one note.
+    """
+    unchecked, rubber = _soft_bodies(bodies)
+    strain = p0 / e_star
+    if rubber or len(unchecked) < len(list(bodies)) or not (
+            FIRST_YIELD_STRAIN < strain <= HERTZ_STRAIN_LIMIT):
+        return []
+    return [f"p0/E* = {strain:.3g} (p0 = {format_quantity(p0, 'Pa')}, E* = "
+            f"{format_quantity(e_star, 'Pa')}): "
+            f"above {FIRST_YIELD_STRAIN:g}, where many bodies first yield beneath the surface "
+            "(hardened steel near p0/E* = 0.02-0.03, PEEK on steel near 0.038: p0 = 1.6 Y), "
+            "and plasticity was not checked (no hardness given); give "
+            + " and ".join(f"{label}.hardness" for label in unchecked) + " to check it"]
+
+
 def hertz_validity(a: float, radius: float, p0: float, e_star: float,
-                   hardness_given: bool = False, load_key: str = "pressure.load") -> list[str]:
+                   hardness_given: bool = False, load_key: str = "pressure.load",
+                   bodies=None) -> list[str]:
     """Whether a Hertz contact is small and elastic enough for half-space theory.
 
     Two checks of the contact's own numbers, independent of the grid:
@@ -1697,6 +1756,10 @@ def hertz_validity(a: float, radius: float, p0: float, e_star: float,
         it by :func:`above_hardness`, and the strain check here is skipped).
     load_key : str
         The case key of the load, which the size check names.
+    bodies : iterable of (label, Material), optional
+        The bodies: the strain line names those without a hardness, and for an elastomer
+        (E below ``ELASTOMER_MODULUS``, which does not yield) says that its law, not
+        plasticity, is what such strains leave unchecked.
 
     Returns
     -------
@@ -1713,10 +1776,20 @@ def hertz_validity(a: float, radius: float, p0: float, e_star: float,
                      f"the load ({load_key}), or the body is too soft for half-space theory "
                      "(a large-deformation model is needed)")
     strain = p0 / e_star
+    unchecked, rubber = _soft_bodies(bodies)
     if not hardness_given and strain > HERTZ_STRAIN_LIMIT:
-        lines.append(f"pressure: p0/E* = {strain:.3g} (p0 = {p0 / 1e6:.4g} MPa, E* = "
-                     f"{e_star / 1e9:.4g} GPa; limit {HERTZ_STRAIN_LIMIT:g}): strains of "
-                     "several per cent, at which metals and polymers yield, and plasticity was "
-                     "not checked (no hardness given); give body1.hardness and body2.hardness "
-                     "to check it, or reduce the load")
+        head = (f"pressure: p0/E* = {strain:.3g} (p0 = {format_quantity(p0, 'Pa')}, E* = "
+                f"{format_quantity(e_star, 'Pa')}; limit {HERTZ_STRAIN_LIMIT:g}): strains of "
+                "several per cent, ")
+        if rubber:
+            lines.append(head + f"which an elastomer ({' and '.join(rubber)}) takes without "
+                         "yielding but not linearly: Hertz's linear elastic law no longer "
+                         "holds (a rubber's stiffens or softens with strain), so read the "
+                         "result as a small-strain estimate or reduce the load")
+        else:
+            keys = " and ".join(f"{label}.hardness" for label in unchecked) if unchecked \
+                else "body1.hardness and body2.hardness"
+            lines.append(head + "at which metals and polymers yield, and plasticity was not "
+                         f"checked (no hardness given); give {keys} to check it, or reduce "
+                         "the load")
     return lines

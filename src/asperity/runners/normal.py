@@ -196,18 +196,24 @@ def _plasticity(case, res, body1, body2) -> list[str]:
         a, radius = max((h.a, rx), (h.b, ry), key=lambda pair: pair[0] / pair[1])
         lines += diagnostics.hertz_validity(a, radius, h.p_max, contact_modulus(body1, body2),
                                             diagnostics.hardness_given(bodies),
-                                            load_key="loading.load")
+                                            load_key="loading.load", bodies=bodies)
         lines += diagnostics.hertz_first_yield(h.p_max, res.load, bodies, "loading.load")
     return lines
 
 
 def _unchecked_plasticity(case, res, body1, body2) -> list[str]:
-    """A note for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
+    """A smooth Hertz contact's note past first yield (:func:`diagnostics.hertz_plasticity_note`)
+    or one for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
     with no hardness given: its asperities would yield, which nothing checked (a user's rough
     flat reported asperity pressures of 10-29 GPa, 0.09-0.25 E*, between steel bodies without
     a word). A note, not a warning: the elastic answer is what such a case asks for, and
     nearly every elastic rough contact's asperities are that loaded (about E* Sdq / 2)."""
     e_star = contact_modulus(body1, body2)
+    rx, ry = case.geometry.radii()
+    if case.roughness is None and np.isfinite(rx) and res.load > 0.0:
+        h = hertz_point(res.load, rx, ry, body1, body2)
+        return diagnostics.hertz_plasticity_note(h.p_max, e_star,
+                                                 [("body1", body1), ("body2", body2)])
     p_max = float(res.pressure.max())
     given = diagnostics.hardness_given([("body1", body1), ("body2", body2)])
     if case.roughness is None or given or not p_max > diagnostics.HERTZ_STRAIN_LIMIT * e_star:

@@ -565,7 +565,7 @@ def _validity_warnings(case, fld, body1, body2) -> list[str]:
     a, radius = max(((h.a, rx), (h.b, ry)), key=lambda ar: ar[0] / ar[1])
     bodies = [("body1", body1), ("body2", body2)]
     lines = diagnostics.hertz_validity(a, radius, h.p_max, h.modulus,
-                                       diagnostics.hardness_given(bodies))
+                                       diagnostics.hardness_given(bodies), bodies=bodies)
     if fld.roughness is None:  # a rough normal solve's pressure is not Hertz's
         lines += diagnostics.hertz_first_yield(h.p_max, h.load, bodies)
     return lines
@@ -703,6 +703,9 @@ def run(case, progress=None) -> Outcome:
                      "torsion about the true centre and pure translation; an approximation "
                      "otherwise).")
     notes += _long_ellipse_note(case, fld, res)
+    if fld.hertz is not None and fld.roughness is None:  # first yield unchecked (a note)
+        notes += diagnostics.hertz_plasticity_note(fld.hertz.p_max, fld.hertz.modulus,
+                                                   [("body1", body1), ("body2", body2)])
     if len(res.regions) > REGION_ROWS:
         notes.append(f"The contact has {len(res.regions)} separate regions (a rough contact's "
                      f"spots); their forces are not listed one by one (only up to {REGION_ROWS} "
