@@ -532,8 +532,9 @@ def test_a_path_taken_to_gross_slip_on_purpose_reads_as_such():
     # was listed under "Solver", away from the yes it belongs to)
     page = render_report("ball", {}, out, {})
     results, solver = page.split("<h3>Solver</h3>")[0], page.split("<h3>Solver</h3>")[1]
-    assert "path gross slip step" in results.split("Key results")[1]
-    assert "path gross slip" not in solver.split("</table>")[0]
+    assert "load-path step of gross slip" in results.split("Key results")[1]
+    assert "gross slip on the load path" in results.split("Key results")[1]
+    assert "load path" not in solver.split("</table>")[0]
     none = _ball("30 N", grid={"nx": 32, "ny": 32}, load_path={"steps": 2})
     assert none.summary["path_gross_slip"] is False
     assert "path_gross_slip_step" not in none.summary
