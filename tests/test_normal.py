@@ -600,3 +600,21 @@ def test_a_steel_ball_on_peek_past_first_yield_is_noted_and_a_rubber_is_not_told
     (strain,) = [w for w in rubber.warnings if "p0/E*" in w]
     assert "elastomer (body1)" in strain and "hardness" not in strain
     assert "E* = 6.58 MPa" in strain
+
+
+@pytest.mark.parametrize("key", ["coating_thickness", "layer", "substrate_modulus"])
+def test_a_coated_body_is_told_that_bodies_are_homogeneous_not_to_check_the_spelling(key):
+    """A user's DLC-coated PEEK disc: a coating key was refused as "unknown key (check the
+    spelling)", as if a layer could be spelt right; the line now says that the bodies are
+    homogeneous half-spaces and which modulus stands for a thick or a thin coating."""
+    from asperity.cases import load_case
+
+    case = {"analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "3.6 GPa", key: "5 um"},
+            "geometry": {"rx": "10 mm"}, "loading": {"load": "200 N"},
+            "grid": {"x_extent": "2 mm", "y_extent": "2 mm"}}
+    with pytest.raises(InputError) as err:
+        load_case(case)
+    line = str(err.value)
+    assert line.startswith("body2: expected a homogeneous body, got " + key)
+    assert "no coating or layer" in line and "spelling" not in line
