@@ -755,7 +755,9 @@ def test_a_rough_ball_under_a_force_lists_its_spots_count_not_520_rows_and_warns
     64 x 64 cells) under 10 N at mu = 0.3: its normal solve touches on 104 spots, each a
     contact region of the tangential solve. The summary gave five rows per region (520
     rows); now it gives their number and a note, and the spot check warns that half the load
-    is on spots of 9 cells or fewer (limit 50). The friction capacity is mu N = 15 N."""
+    is on spots of 9 cells or fewer (limit 50). The friction capacity is mu N = 15 N. The
+    "stick radius" (51 um, sqrt of the stick area over pi) described stick cells scattered
+    over the spots and is left out."""
     from asperity.cases import load_case
     from asperity.runners import run_case
 
@@ -768,6 +770,7 @@ def test_a_rough_ball_under_a_force_lists_its_spots_count_not_520_rows_and_warns
         "loading": {"force": "10 N"}, "grid": {"nx": 64, "ny": 64}}))
     s = out.summary
     assert s["regions"] > 10 and not [k for k in s if k.startswith("region_")]
+    assert "stick_radius_m" not in s  # its stick cells lie on many spots: no one radius
     assert [n for n in out.notes if f"has {s['regions']} separate regions" in n]
     assert s["friction_capacity_n"] == pytest.approx(0.3 * 50, rel=1e-9)
     (line,) = [w for w in out.warnings if "contact spots" in w]

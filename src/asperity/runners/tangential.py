@@ -198,7 +198,8 @@ def _summary(case, fld, res, applied, identical):
         "load_capacity": float(res.load_capacity),
         "stick_fraction": float(res.stick.sum() / max((res.labels > 0).sum(), 1)),
     }
-    if not res.gross_slip and res.stick.any():
+    if not res.gross_slip and res.stick.any() and fld.roughness is None:
+        # (a rough contact's stick zone is scattered over its spots: no radius describes it)
         s["stick_radius_m"] = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
     # undefined quantities are left out, not NaN: the rigid motion in gross slip, the centre
     # of a motion without rotation; round-off (a force's twist, a moment's shift) is 0
