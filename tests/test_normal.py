@@ -618,3 +618,25 @@ def test_a_coated_body_is_told_that_bodies_are_homogeneous_not_to_check_the_spel
     line = str(err.value)
     assert line.startswith("body2: expected a homogeneous body, got " + key)
     assert "no coating or layer" in line and "spelling" not in line
+
+
+def test_a_ground_plate_is_judged_along_its_profile_not_across_its_ridges():
+    """A user's ball on a ground plate (R = 10 mm, 100 N, Ra 0.2 um, default correlation
+    length 15 um) on 128 x 64 cells over 0.6 mm: 3.2 cells per correlation length along x,
+    the profile's direction; across y the ridges are the same on every row. The run warned
+    that 15 um was 1.6 cells across y and asked for 3.8 um cells there; it is now silent, and
+    on 32 cells along x (0.8 cells) it still warns along x."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def run(nx):
+        return run_case(load_case({
+            "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"rx": "10 mm"},
+            "loading": {"load": "100 N"},
+            "grid": {"nx": nx, "ny": 64, "x_extent": "0.6 mm", "y_extent": "0.6 mm"},
+            "roughness": {"kind": "ground", "ra": "0.2 um"}}))
+
+    assert not [w for w in run(128).warnings if w.startswith("roughness:")]
+    (line,) = [w for w in run(32).warnings if w.startswith("roughness:")]
+    assert "0.8 cells of 18.7 um along x" in line

@@ -1337,7 +1337,7 @@ MIN_CELLS_PER_CORRELATION_LENGTH = 2.0
 def roughness_resolution(label: str, correlation_length: float, x, y,
                          min_cells: float = MIN_CELLS_PER_CORRELATION_LENGTH,
                          correlation_length_y: float | None = None,
-                         along_x: bool = True) -> list[str]:
+                         along_x: bool = True, across_y: bool = True) -> list[str]:
     """A generated roughness whose correlation length is shorter than a couple of cells.
 
     The surface is generated on the grid: with fewer than ``min_cells`` cells per
@@ -1364,6 +1364,10 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
         False: judge the cells across y only: a transient
         run's surface is sampled finer than the mesh along x, where
         :func:`unresolved_roughness` judges it, and generated on the mesh's rows across y.
+    across_y : bool
+        False: judge the cells along x only: a ground profile is extruded across y, the same
+        on every row (a ball on a ground plate, 128 x 64 cells over 0.6 mm, was told its
+        15 um correlation length was 1.6 cells across y and to use cells of 3.8 um there).
 
     Returns
     -------
@@ -1372,7 +1376,7 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
     """
     directions = [("correlation_length", " along x", correlation_length, _spacing(x))
                   ] if along_x else []
-    if len(y) > 1:
+    if len(y) > 1 and across_y:
         directions.append(("correlation_length" if correlation_length_y is None else
                            "correlation_length_y", " across y",
                            correlation_length if correlation_length_y is None else

@@ -179,7 +179,8 @@ def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
             ell = GROUND_CORRELATION_LENGTH
         if ell is not None:
             lines += diagnostics.roughness_resolution(
-                "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y)
+                "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y,
+                across_y=rough.kind != "ground")  # a ground profile is the same on every row
     return lines + _plasticity(case, res, body1, body2)
 
 
