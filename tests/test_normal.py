@@ -416,6 +416,7 @@ def test_spots_of_a_few_cells_are_reported_where_the_peak_pressure_is_not_conver
     assert coarse.pressure.max() < 0.8 * ref["p0"]
     (line,) = diagnostics.spot_resolution(spots, x, x)
     assert line.startswith("mesh: half the load is carried by contact spots of 4 cells")
+    assert "(1 spot of 4, 4 and 4 cells at the 10th, 50th and 90th percentiles" in line
     assert "nx >= 57 and ny >= 57" in line  # 16 sqrt(50 / 4) = 56.6
     fine, spots, x, ref = _egg_crate(128)
     assert diagnostics.spot_resolution(spots, x, x) == []

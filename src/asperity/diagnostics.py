@@ -450,8 +450,11 @@ def spot_resolution(spots, x, y, min_cells: float = MIN_CELLS_PER_SPOT,
                    f"{cutoff_key} (e.g. {shortest * 1e6:.3g} um) to refine the same surface")
     share = spots.load_share_below(min_cells)
     estimate = 0.8 / math.sqrt(max(median, 1.0))
+    p10, p50, p90 = spots.cell_percentiles()
     return [f"mesh: half the load is carried by contact spots of {median:g} cells or fewer "
-            f"({spots.count} spots; {_pct(share)} of the load on spots under "
+            f"({spots.count} spot{'s' if spots.count != 1 else ''} of {p10:.3g}, {p50:.3g} "
+            f"and {p90:.3g} cells at the 10th, 50th and 90th percentiles; {_pct(share)} of the "
+            "load on spots under "
             f"{min_cells:g} cells; limit: {min_cells:g} cells at the load's median); a spot's "
             "edge cells count whole, so the real contact area is too large and the mean "
             f"contact pressure too low, by about {_pct(estimate)}; {advice}"]

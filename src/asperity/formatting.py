@@ -114,6 +114,7 @@ _LABELS = {
     "path_gross_slip": "gross slip on the load path",
     "path_gross_slip_step": "load-path step of gross slip",
     "load_median_spot_cells": "cells per spot at the load's median",
+    "largest_spot_cells": "cells of the largest spot",
     "kinematic_rt": "kinematic Rt, parabola f^2/(8 r) (Seireg eq. 4.1)",
     "kinematic_ra": "kinematic Ra, parabola f^2/(18 sqrt(3) r)",
     "kinematic_rt_arc": "kinematic Rt of the nose arcs, r - sqrt(r^2 - f^2/4)",

@@ -67,7 +67,8 @@ def run(case, progress=None) -> Outcome:
         spots = contact_spots(res.contact, res.pressure, (x[1] - x[0]) * (y[1] - y[0]),
                               periodic=case.grid.periodic)
         summary.update(contact_spots=spots.count,
-                       load_median_spot_cells=spots.load_median_cells())
+                       load_median_spot_cells=spots.load_median_cells(),
+                       largest_spot_cells=int(spots.cells.max(initial=0)))
     rx, ry = case.geometry.radii()
     if not np.isfinite(rx):  # a nominally flat interface: its mean separation (Persson's u)
         summary["mean_separation_m"] = float(np.mean(res.gap))
