@@ -375,3 +375,269 @@ def test_a_ball_past_first_yield_below_the_hardness_warns():
     assert not [w for w in run("9 N").warnings if w.startswith("pressure")]  # p0 = 0.563 H
     above = run("50 N", hardness="1 GPa").warnings  # above H: the hardness line alone
     assert len(above) == 1 and "exceeds the hardness" in above[0]
+
+
+def _egg_crate(cells_per_period, shift=0.0):
+    """One period of z = amp (cos kx + cos ky) on a periodic grid, loaded so that each peak's
+    Hertz radius is 0.07 of the wavelength: the peak's radius of curvature is 1 / (amp k^2),
+    the load P = 4 E* a^3 / (3 R), the area pi a^2 and the peak pressure 3 P / (2 pi a^2)
+    (Johnson, Greenwood & Higginson 1985: an isolated Hertz contact at light load).
+    ``shift`` moves the peak by that fraction of the period along x and y."""
+    from asperity.contact.spots import contact_spots
+
+    e, nu = 210e9, 0.3
+    e_star = e / (2 * (1 - nu**2))
+    wavelength, amp = 100e-6, 0.5e-6
+    k = 2 * np.pi / wavelength
+    radius = 1 / (amp * k**2)
+    a = 0.07 * wavelength
+    load = 4 * e_star * a**3 / (3 * radius)
+    h = wavelength / cells_per_period
+    x = (np.arange(cells_per_period) + 0.5) * h - wavelength / 2
+    xs = x[:, None] - shift * wavelength
+    ys = x[None, :] - shift * wavelength
+    gap0 = amp * (2 - np.cos(k * xs) - np.cos(k * ys))
+    res = solve_normal(gap0, x, x, Material(e, nu), Material(e, nu), load=load, periodic=True)
+    spots = contact_spots(res.contact, res.pressure, h * h, periodic=True)
+    reference = {"area": np.pi * a**2, "p0": 3 * load / (2 * np.pi * a**2), "load": load}
+    return res, spots, x, reference
+
+
+def test_spots_of_a_few_cells_are_reported_where_the_peak_pressure_is_not_converged():
+    """A periodic egg-crate at light load: each peak is a Hertz contact of radius 0.07
+    wavelengths. With 16 cells a period the spot is 4 cells and its peak pressure 34 % below
+    Hertz's: the spot check warns (limit 50 cells at the load's median) and names a grid that
+    resolves it. With 128 cells (a spot of 256 cells) there is no line, the peak pressure is
+    within 2 % of Hertz's p0 and the real area within 3 % of pi a^2."""
+    from asperity import diagnostics
+
+    coarse, spots, x, ref = _egg_crate(16)
+    assert spots.count == 1 and spots.load_median_cells() < diagnostics.MIN_CELLS_PER_SPOT
+    assert coarse.pressure.max() < 0.8 * ref["p0"]
+    (line,) = diagnostics.spot_resolution(spots, x, x)
+    assert line.startswith("mesh: half the load is carried by contact spots of 4 cells")
+    assert "(1 spot of 4, 4 and 4 cells at the 10th, 50th and 90th percentiles" in line
+    assert "nx >= 57 and ny >= 57" in line  # 16 sqrt(50 / 4) = 56.6
+    fine, spots, x, ref = _egg_crate(128)
+    assert diagnostics.spot_resolution(spots, x, x) == []
+    assert fine.pressure.max() == pytest.approx(ref["p0"], rel=0.02)
+    assert fine.contact_area == pytest.approx(ref["area"], rel=0.03)
+    assert spots.loads.sum() == pytest.approx(ref["load"], rel=1e-9)
+
+
+def test_a_spot_across_the_periodic_edge_is_one_spot():
+    """The egg-crate's peak moved onto the corner of the periodic cell is cut into four
+    pieces by the grid's edges; labelled periodically it is still one spot of the same cells
+    as the centred one (the same lattice, shifted by half a period)."""
+    _, centred_spots, _, _ = _egg_crate(64)
+    _, corner, _, _ = _egg_crate(64, shift=0.5)
+    assert corner.count == 1 and corner.cells[0] == centred_spots.cells[0]
+
+
+def test_a_user_rough_flat_with_spots_of_a_few_cells_is_warned_and_told_to_fix_the_cutoff():
+    """The self-affine rough flat example (H = 0.8, Sq = 0.5 um, 25 N on 0.5 mm, 128 cells)
+    carries half its load on spots of 16 cells or fewer. With its shortest wavelength fixed
+    at 7.81 um the real area fraction was 4.14 % on 128 cells, 3.43 % on 256, 3.144 % on 512
+    and 3.153 % on 1024 (docs/tangential.md): the line says a finer grid adds roughness
+    without short_cutoff and names that key."""
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    out = run_case(load_case(example_text("rough-flat-normal")))
+    assert out.summary["load_median_spot_cells"] == 16
+    (line,) = [w for w in out.warnings if "contact spots" in w]
+    assert "nx >= 227 and ny >= 227" in line and "give roughness.short_cutoff" in line
+
+
+def _greenwood_tripp(load, radius, e_star, eta, beta, sigma_s, rings=120, reach=3.0):
+    """Nominal pressure of a smooth sphere on a rough flat by Greenwood & Tripp (1967),
+    solved here from the paper's equations, not by asperity: summits of density ``eta``,
+    radius ``beta`` and Gaussian heights of rms ``sigma_s``, each a Hertz contact, carry
+    ``p = (4/3) eta E* beta^(1/2) sigma_s^(3/2) F_3/2(d / sigma_s)`` at the separation
+    ``d(r) = -delta + r^2 / (2 R) + w(r)`` of the sphere from the summits' mean plane; ``w``
+    is the half-space's displacement under the axisymmetric p (ring kernel
+    ``4 / (pi E*) s / (r + s) K(k)``, ``k^2 = 4 r s / (r + s)^2``); the approach ``delta``
+    gives the load. Returns the ring radii and the pressure."""
+    from scipy.special import ellipk
+
+    a0 = (3 * load * radius / (4 * e_star)) ** (1 / 3)
+    edges = np.linspace(0.0, reach * a0, rings + 1)
+    r = 0.5 * (edges[1:] + edges[:-1])
+    dr = edges[1] - edges[0]
+    sub = 16
+    s = (edges[:-1, None] + (np.arange(sub) + 0.5) * dr / sub).ravel()
+    k2 = np.minimum(4 * r[:, None] * s[None, :] / (r[:, None] + s[None, :]) ** 2, 1 - 1e-12)
+    kernel = (4 / (np.pi * e_star)) * s / (r[:, None] + s[None, :]) * ellipk(k2) * dr / sub
+    kernel = kernel.reshape(rings, rings, sub).sum(axis=2)
+    t = np.linspace(-8.0, 8.0, 3201)
+    phi = np.exp(-0.5 * t**2) / np.sqrt(2 * np.pi)
+    table_d = np.linspace(-8.0, 8.0, 801)
+    table = np.array([np.trapezoid(np.clip(t - d, 0, None) ** 1.5 * phi, t) for d in table_d])
+    scale = (4 / 3) * eta * e_star * np.sqrt(beta) * sigma_s**1.5
+
+    def pressure(separation):
+        return scale * np.interp(separation / sigma_s, table_d, table, right=0.0)
+
+    def total(p):
+        return 2 * np.pi * np.sum(p * r) * dr
+
+    p = np.zeros_like(r)
+    for _ in range(300):
+        w = kernel @ p
+        lo, hi = -10 * sigma_s - 10 * a0**2 / radius, 10 * sigma_s + 10 * a0**2 / radius
+        for _ in range(70):
+            delta = 0.5 * (lo + hi)
+            new = pressure(-delta + r**2 / (2 * radius) + w)
+            lo, hi = (lo, delta) if total(new) > load else (delta, hi)
+        if p.any() and np.abs(new - p).max() < 1e-6 * new.max():
+            break
+        p = new if not p.any() else 0.7 * p + 0.3 * new
+    return r, new
+
+
+def test_a_rough_ball_spreads_its_load_as_greenwood_and_tripp_predict_within_their_model():
+    """A steel ball (R = 10 mm, E* = 115.4 GPa, 50 N: a0 = 148.1 um, p0 = 1.088 GPa) on a
+    gaussian surface of our own (Sq 0.3 um, correlation length 12 um, 1.95 um cells; alpha =
+    sigma R / a0^2 = 0.137). Greenwood & Tripp's model with McCool's summit parameters from
+    the surface's spectral moments (eta = m4 / (6 pi sqrt 3 m2), beta = 0.375 sqrt(pi / m4),
+    sigma_s^2 = (1 - 0.8968 / alpha_b) m0) spreads the load to an rms radius 0.738 a0 (Hertz
+    0.632 a0) and lowers the mean pressure inside a0 / 4 to 0.879 GPa (Hertz 1.07). The
+    deterministic solve gives 0.711 a0 (-3.6 %) and 0.882 GPa; on a 1024-point surface of
+    the same statistics 0.706 a0 and 0.953 GPa (+8.5 %: the centre holds about nine
+    summits, and one surface's scatter). GT's summits carry load without interacting, so the
+    tolerances are 6 % on the rms radius and 10 % on the centre (docs/tangential.md)."""
+    e, nu = 210e9, 0.3
+    e_star = e / (2 * (1 - nu**2))
+    radius, load = 0.01, 50.0
+    n, length, rms, ell = 256, 0.5e-3, 0.3e-6, 12e-6
+    h = length / n
+    beta_acf = ell / np.sqrt(np.log(5.0))
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(7).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * beta_acf**2 / 8) * np.fft.fft2(noise)))
+    z *= rms / z.std()
+    spectrum = np.abs(np.fft.fft2(z) / z.size) ** 2
+    m0 = spectrum.sum()
+    m2 = 0.5 * ((qx**2 + qy**2) * spectrum).sum()
+    m4 = 3 / 8 * ((qx**2 + qy**2) ** 2 * spectrum).sum()
+    eta = m4 / (6 * np.pi * np.sqrt(3) * m2)
+    beta = 0.375 * np.sqrt(np.pi / m4)
+    sigma_s = np.sqrt((1 - 0.8968 * m2**2 / (m0 * m4)) * m0)
+    r, p_gt = _greenwood_tripp(load, radius, e_star, eta, beta, sigma_s)
+    a0 = (3 * load * radius / (4 * e_star)) ** (1 / 3)
+    rms_gt = np.sqrt(np.sum(p_gt * r**3) / np.sum(p_gt * r))
+    inner = r < a0 / 4
+    centre_gt = np.sum((p_gt * r)[inner]) / np.sum(r[inner])
+
+    x = (np.arange(n) + 0.5) * h - length / 2
+    gap0 = (x[:, None] ** 2 + x[None, :] ** 2) / (2 * radius) - z
+    res = solve_normal(gap0, x, x, Material(e, nu), Material(e, nu), load=load)
+    rr = np.hypot(x[:, None], x[None, :])
+    rms_num = np.sqrt((res.pressure * rr**2).sum() / res.pressure.sum())
+    centre_num = res.pressure[rr < a0 / 4].mean()
+    assert rms_gt / a0 == pytest.approx(0.738, abs=0.01)
+    assert np.sqrt(0.4) * a0 < rms_num == pytest.approx(rms_gt, rel=0.06)
+    assert centre_num == pytest.approx(centre_gt, rel=0.10)
+    assert centre_num < 0.95 * 1.5 * load / (np.pi * a0**2)
+
+
+def test_a_measured_flat_patch_on_an_open_grid_is_not_told_to_enlarge_the_grid(tmp_path):
+    """A user's measured 64 x 64 patch (0.49 um points) pressed flat on a non-periodic grid
+    the file's size: the contact reaches every edge, as a flat's does on any grid. The line
+    said "enlarge the grid", which the file's size does not allow; it now says what the
+    answer is (a rough punch of the grid's size), that the file bounds the grid, and names
+    grid.periodic. On the periodic grid the same patch's real area differs by a few per cent
+    (docs/tangential.md)."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    n, h = 64, 0.48828125e-6
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(3).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * (6e-6) ** 2 / 8) * np.fft.fft2(noise)))
+    np.save(tmp_path / "patch.npy", 0.3e-6 * z / z.std())
+    case = {"analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "flat"},
+            "loading": {"load": "0.5 N"},
+            "grid": {"nx": n, "ny": n, "x_extent": n * h, "y_extent": n * h},
+            "roughness": {"kind": "file", "path": str(tmp_path / "patch.npy"),
+                          "spacing": h}}
+    out = run_case(load_case(case))
+    (line,) = [w for w in out.warnings if w.startswith("domain:")]
+    assert "enlarge the grid" not in line and "rough punch the size of the grid" in line
+    assert "cannot be enlarged" in line and "grid.periodic = true" in line
+
+
+def test_a_steel_ball_on_peek_past_first_yield_is_noted_and_a_rubber_is_not_told_to_yield():
+    """Steel ball (210 GPa, 0.3) on PEEK (3.6 GPa, 0.4), R = 10 mm, 200 N: E* = 4.208 GPa,
+    a = (3 P R / 4 E*)^(1/3) = 709 um, p0 = 3 P / (2 pi a^2) = 189.9 MPa, p0/E* = 0.0451,
+    past PEEK's first yield (p0 = 1.6 Y near 160 MPa) but under the 0.05 strain warning; the
+    run was silent and now notes it, naming both bodies' hardness. A 5 MPa rubber ball
+    (R = 2 mm, 1 N; E* = 6.58 MPa, p0/E* = 0.194) is warned that its law, not plasticity, is
+    unchecked, and not told to give a hardness."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def case(e1, nu1, e2, nu2, radius, load, extent):
+        return {"analysis": "normal",
+                "body1": {"youngs_modulus": e1, "poisson_ratio": nu1},
+                "body2": {"youngs_modulus": e2, "poisson_ratio": nu2},
+                "geometry": {"rx": radius}, "loading": {"load": load},
+                "grid": {"nx": 48, "ny": 48, "x_extent": extent, "y_extent": extent}}
+
+    e_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.4**2) / 3.6e9)
+    a = (3 * 200 * 0.01 / (4 * e_star)) ** (1 / 3)
+    p0 = 3 * 200 / (2 * np.pi * a**2)
+    out = run_case(load_case(case("210 GPa", 0.3, "3.6 GPa", 0.4, "10 mm", "200 N", "2.2 mm")))
+    assert out.summary["hertz_max_pressure_pa"] == pytest.approx(p0, rel=1e-9)
+    assert out.warnings == []
+    (note,) = [n for n in out.notes if n.startswith("p0/E*")]
+    assert f"p0/E* = {p0 / e_star:.3g}" in note and "give body1.hardness and body2.hardness" \
+        in note
+    rubber = run_case(load_case(case("5 MPa", 0.49, "210 GPa", 0.3, "2 mm", "1 N", "3 mm")))
+    (strain,) = [w for w in rubber.warnings if "p0/E*" in w]
+    assert "elastomer (body1)" in strain and "hardness" not in strain
+    assert "E* = 6.58 MPa" in strain
+
+
+@pytest.mark.parametrize("key", ["coating_thickness", "layer", "substrate_modulus"])
+def test_a_coated_body_is_told_that_bodies_are_homogeneous_not_to_check_the_spelling(key):
+    """A user's DLC-coated PEEK disc: a coating key was refused as "unknown key (check the
+    spelling)", as if a layer could be spelt right; the line now says that the bodies are
+    homogeneous half-spaces and which modulus stands for a thick or a thin coating."""
+    from asperity.cases import load_case
+
+    case = {"analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "3.6 GPa", key: "5 um"},
+            "geometry": {"rx": "10 mm"}, "loading": {"load": "200 N"},
+            "grid": {"x_extent": "2 mm", "y_extent": "2 mm"}}
+    with pytest.raises(InputError) as err:
+        load_case(case)
+    line = str(err.value)
+    assert line.startswith("body2: expected a homogeneous body, got " + key)
+    assert "no coating or layer" in line and "spelling" not in line
+
+
+def test_a_ground_plate_is_judged_along_its_profile_not_across_its_ridges():
+    """A user's ball on a ground plate (R = 10 mm, 100 N, Ra 0.2 um, default correlation
+    length 15 um) on 128 x 64 cells over 0.6 mm: 3.2 cells per correlation length along x,
+    the profile's direction; across y the ridges are the same on every row. The run warned
+    that 15 um was 1.6 cells across y and asked for 3.8 um cells there; it is now silent, and
+    on 32 cells along x (0.8 cells) it still warns along x."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def run(nx):
+        return run_case(load_case({
+            "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"rx": "10 mm"},
+            "loading": {"load": "100 N"},
+            "grid": {"nx": nx, "ny": 64, "x_extent": "0.6 mm", "y_extent": "0.6 mm"},
+            "roughness": {"kind": "ground", "ra": "0.2 um"}}))
+
+    assert not [w for w in run(128).warnings if w.startswith("roughness:")]
+    (line,) = [w for w in run(32).warnings if w.startswith("roughness:")]
+    assert "0.8 cells of 18.7 um along x" in line

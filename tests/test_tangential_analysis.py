@@ -532,8 +532,9 @@ def test_a_path_taken_to_gross_slip_on_purpose_reads_as_such():
     # was listed under "Solver", away from the yes it belongs to)
     page = render_report("ball", {}, out, {})
     results, solver = page.split("<h3>Solver</h3>")[0], page.split("<h3>Solver</h3>")[1]
-    assert "path gross slip step" in results.split("Key results")[1]
-    assert "path gross slip" not in solver.split("</table>")[0]
+    assert "load-path step of gross slip" in results.split("Key results")[1]
+    assert "gross slip on the load path" in results.split("Key results")[1]
+    assert "load path" not in solver.split("</table>")[0]
     none = _ball("30 N", grid={"nx": 32, "ny": 32}, load_path={"steps": 2})
     assert none.summary["path_gross_slip"] is False
     assert "path_gross_slip_step" not in none.summary
@@ -747,3 +748,30 @@ def test_a_force_about_an_off_centre_point_is_not_checked_as_a_force_alone():
                            "rotation": "fixed"})
     (row,) = [r for r in fixed.comparisons if r.quantity == "rigid shift (relative)"]
     assert row.passed and row.reference == pytest.approx(_mindlin_shift(30.0), rel=1e-9)
+
+
+def test_a_rough_ball_under_a_force_lists_its_spots_count_not_520_rows_and_warns_of_them():
+    """A user's rough steel ball (R = 10 mm, 50 N, Sq = 0.3 um, correlation length 12 um,
+    64 x 64 cells) under 10 N at mu = 0.3: its normal solve touches on 104 spots, each a
+    contact region of the tangential solve. The summary gave five rows per region (520
+    rows); now it gives their number and a note, and the spot check warns that half the load
+    is on spots of 9 cells or fewer (limit 50). The friction capacity is mu N = 15 N. The
+    "stick radius" (51 um, sqrt of the stick area over pi) described stick cells scattered
+    over the spots and is left out."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    out = run_case(load_case({
+        "analysis": "tangential", "mu": 0.3,
+        "body1": {"youngs_modulus": "210 GPa"}, "body2": {"youngs_modulus": "210 GPa"},
+        "pressure": {"source": "normal", "load": "50 N", "rx": "10 mm",
+                     "roughness": {"kind": "gaussian", "rms": "0.3 um",
+                                   "correlation_length": "12 um", "seed": 2}},
+        "loading": {"force": "10 N"}, "grid": {"nx": 64, "ny": 64}}))
+    s = out.summary
+    assert s["regions"] > 10 and not [k for k in s if k.startswith("region_")]
+    assert "stick_radius_m" not in s  # its stick cells lie on many spots: no one radius
+    assert [n for n in out.notes if f"has {s['regions']} separate regions" in n]
+    assert s["friction_capacity_n"] == pytest.approx(0.3 * 50, rel=1e-9)
+    (line,) = [w for w in out.warnings if "contact spots" in w]
+    assert line.startswith("mesh: half the load is carried by contact spots of 9 cells")

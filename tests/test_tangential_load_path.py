@@ -82,3 +82,32 @@ def test_masing_history_follows_mindlin_deresiewicz_and_closes_its_loop():
     over, f_over = ref.masing_history([2 * MU * P], P, MU, A, STEEL, STEEL)
     assert f_over[-1] == pytest.approx(MU * P) and over[-1] == pytest.approx(
         ref.cattaneo_mindlin(P, MU * P, MU, A, STEEL, STEEL).shift)
+
+
+def test_a_path_past_gross_slip_says_so_in_the_headline_and_the_applied_load_matches_mindlin():
+    """A steel ball (R = 10 mm, 50 N, mu = 0.3: mu P = 15 N, a = 148.1 um) under 10 N, its
+    load path continued to twice that (20 N, past gross slip). At 10 N, Cattaneo-Mindlin:
+    c/a = (1 - Q / mu P)^(1/3) = 0.693 (c = 102.7 um), and the relative shift
+    3 mu P / (16 a) (2 (2 - nu) / G) (1 - (1 - Q / mu P)^(2/3)) = 415.1 nm. The headline said
+    "gross slip: no" only, for the applied load; it now also shows the path's "yes"."""
+    from asperity.cases import load_case
+    from asperity.report import render_report
+    from asperity.runners import run_case
+
+    case = {"analysis": "tangential", "mu": 0.3,
+            "body1": {"youngs_modulus": "210 GPa"}, "body2": {"youngs_modulus": "210 GPa"},
+            "pressure": {"source": "hertz", "load": "50 N", "rx": "10 mm"},
+            "loading": {"force": "10 N"}, "load_path": {"steps": 8, "scale": 2.0}}
+    out = run_case(load_case(case))
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    a = (3 * 50 * 0.01 / (4 * e_star)) ** (1 / 3)
+    g = 210e9 / 2.6
+    shift = 3 * 15 / (16 * a) * 2 * 1.7 / g * (1 - (1 / 3) ** (2 / 3))
+    s = out.summary
+    assert s["stick_radius_m"] == pytest.approx(a * (1 / 3) ** (1 / 3), rel=0.01)
+    assert s["shift_m"] == pytest.approx(shift, rel=0.01)
+    assert not s["gross_slip"] and s["path_gross_slip"]
+    headline = render_report("t", case, out, {}).split("<div class=headline>")[1]
+    headline = headline.split("</div></div>" * 4)[0]
+    assert "gross slip at the applied load" in headline
+    assert "gross slip on the load path" in headline

@@ -159,3 +159,27 @@ def test_a_constant_line_of_action_is_drawn_without_round_off():
     assert np.all(offsets == offsets[0]) and offsets[0] == pytest.approx(0.1, rel=1e-6)
     fig.canvas.draw()
     assert ax.yaxis.get_offset_text().get_text() == ""
+
+
+def test_a_traction_map_of_single_cell_spots_colours_every_contact_cell():
+    """Spots of one cell each (a rough contact's smallest, 104 spots of a user's rough ball
+    mostly of a few cells) were blank in the traction map: filled contours need four corners
+    in contact. Such a map now colours each cell; a Hertz contact keeps its contours."""
+    import matplotlib.collections as mcoll
+
+    x = np.linspace(-0.5e-3, 0.5e-3, 20)
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    p = np.zeros_like(X)
+    p[2::4, 2::4] = 1e9  # isolated one-cell spots
+    res = solve_tangential(p, x, x, 0.3, STEEL, STEEL, force=(0.2 * 0.3 * p.sum() * (
+        x[1] - x[0]) ** 2, 0.0))
+    fig = tplot.traction_map(res, x, x)
+    (mesh,) = [c for c in fig.axes[0].collections if isinstance(c, mcoll.QuadMesh)]
+    coloured = ~np.ma.getmaskarray(mesh.get_array()).reshape(20, 20).T
+    assert np.array_equal(coloured, p > 0)
+    hz = hertz_point(200.0, 5e-3, 5e-3, STEEL, STEEL)
+    x = np.linspace(-1.05 * hz.a, 1.05 * hz.a, 24)
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    res = solve_tangential(hz.pressure(X, Y), x, x, 0.3, STEEL, STEEL, force=(20.0, 0.0))
+    fig = tplot.traction_map(res, x, x)
+    assert not [c for c in fig.axes[0].collections if isinstance(c, mcoll.QuadMesh)]

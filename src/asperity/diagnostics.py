@@ -20,6 +20,7 @@ import numpy as np
 
 from .ehl.formulas import flooded_film, flooded_inlet_distance, starved_film_ratio
 from .ehl.problem import FILM_ERROR, MESH_TARGET, MIN_CELL_ASPECT
+from .formatting import format_quantity
 from .surfaces.parameters import rms_gradient
 from .surfaces.topography import Topography
 
@@ -51,7 +52,10 @@ __all__ = [
     "coarse_roughness_file",
     "decimated_roughness_file",
     "contact_at_grid_edge",
+    "flat_on_open_grid",
     "contact_resolution",
+    "spot_resolution",
+    "MIN_CELLS_PER_SPOT",
     "ehl_inlet",
     "ehl_rigid_domain",
     "ehl_inlet_film",
@@ -78,6 +82,9 @@ __all__ = [
     "HERTZ_STRAIN_LIMIT",
     "hertz_first_yield",
     "hertz_validity",
+    "hertz_plasticity_note",
+    "ELASTOMER_MODULUS",
+    "FIRST_YIELD_STRAIN",
 ]
 
 #: Contact fraction of a periodic cell above which the contact "fills the cell".
@@ -184,6 +191,51 @@ def contact_at_grid_edge(pressure, x, y, contact_size=None) -> list[str]:
             f"({int(np.count_nonzero(edge & (p > 0)))} edge cells carry {_pct(share)} of the "
             "load; limit: no contact on the edge cells); the pressure beyond the grid is taken "
             f"as zero, so the contact is cut off and its pressures are wrong; {advice}"]
+
+
+def flat_on_open_grid(pressure, x, y, measured: bool = False) -> list[str]:
+    """A nominally flat contact on a non-periodic grid: it reaches the edges by construction.
+
+    :func:`contact_at_grid_edge` would say to enlarge the grid, which does not help a flat:
+    its contact spans any grid, and a measured file's size bounds it. The solve is then that
+    of a rough punch the size of the grid whose surroundings carry nothing, not of an
+    interface (a user's measured 125 um patch at 2 N: real area 733 um^2 on the open grid,
+    720 um^2 periodic, docs/tangential.md).
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (nx, ny)
+        Contact pressure, Pa.
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    measured : bool
+        The roughness is a measured file, whose extent bounds the grid.
+
+    Returns
+    -------
+    list of str
+        One line when the contact reaches an edge, else empty.
+    """
+    p = np.asarray(pressure, dtype=float)
+    total = float(p.sum())
+    edge = np.zeros(p.shape, dtype=bool)
+    edge[[0, -1], :] = True
+    if p.shape[1] > 2:
+        edge[:, [0, -1]] = True
+    touching = edge & (p > 0)
+    if not total > 0 or not touching.any():
+        return []
+    share = float(p[edge].sum()) / total
+    bound = ("; the measured file's extent bounds the grid, so it cannot be enlarged"
+             if measured else "")
+    return [f"domain: a nominally flat contact on a non-periodic grid reaches its edges "
+            f"({int(np.count_nonzero(touching))} edge cells carry {_pct(share)} of the load; "
+            "limit: no contact on the edge cells), as it does on any grid: the answer is that "
+            "of a rough punch the size of the grid whose surroundings carry nothing, not of an "
+            "interface" + bound + "; for the "
+            "interface use grid.periodic = true (with a periodic surface: a measured one "
+            "mirrored or windowed first), or a curved body (geometry.shape = \"sphere\") "
+            "whose contact lies inside the grid"]
 
 
 def _patch_widths(contact) -> list[tuple[float, float]]:
@@ -336,6 +388,76 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
         return []
     return ["mesh: the contact is resolved by " + " and ".join(lines) + f" (limit {min_cells:g}"
             " cells per semi-axis); pressures and contact size are then mesh-dependent"]
+
+
+#: Cells of the spot at the load's median below which a rough contact's spots are reported
+#: unresolved: in a refinement study of a rough ball (docs/tangential.md, "Contact spots") the
+#: real area was 20 % too large at a median of 20 cells per spot and 9 % at 84, the error
+#: falling as about 0.8 / sqrt(cells).
+MIN_CELLS_PER_SPOT = 50.0
+
+
+def spot_resolution(spots, x, y, min_cells: float = MIN_CELLS_PER_SPOT,
+                    file_spacing=None, cutoff_key: str | None = None) -> list[str]:
+    """A rough contact whose load is carried mostly by spots of a few cells.
+
+    :func:`contact_resolution` judges the apparent contact; this judges its spots (the
+    connected patches of the contact mask, :func:`asperity.contact.spots.contact_spots`). A
+    spot's boundary cells count whole, so a spot of a few cells has too large an area and too
+    low a mean pressure; the error falls as about ``0.8 / sqrt(cells)``.
+
+    Parameters
+    ----------
+    spots : asperity.contact.spots.ContactSpots
+        The contact's spots.
+    x, y : ndarray
+        Cell-centre coordinates, m.
+    min_cells : float
+        Fewest cells of the spot at the load's median.
+    file_spacing : sequence of float, optional
+        A measured file's sampling interval along x (and y), m: where the grid asked for is
+        finer than the file's points, the line says that the file limits the answer.
+    cutoff_key : str, optional
+        The key of a generated surface's shortest wavelength when it was left to the grid
+        (a self-affine surface without ``short_cutoff``): a finer grid then adds roughness
+        too, and the line says to fix the wavelength before refining.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    median = spots.load_median_cells()
+    if spots.count == 0 or not median < min_cells:
+        return []
+    factor = math.sqrt(min_cells / median)
+    need = [(name, math.ceil(len(coord) * factor), len(coord) * _spacing(coord))
+            for name, coord in (("x", x), ("y", y)) if len(coord) > 1]
+    advice = "use " + " and ".join(f"n{name} >= {n}" for name, n, _ in need) + \
+        " on the same extents and check that the real contact area no longer moves"
+    if file_spacing is not None:
+        coarse = [name for (name, n, extent), h in zip(need, file_spacing, strict=False)
+                  if extent / n < h * (1 - 1e-9)]
+        if coarse:
+            advice = ("that grid would be finer than the measured file's points along "
+                      f"{' and '.join(coarse)}: the file's sampling limits the spots' size, so "
+                      "read the real contact area as an upper bound and the mean contact "
+                      "pressure as a lower bound, or measure finer")
+    if cutoff_key is not None:
+        shortest = 2.0 * min(_spacing(x), _spacing(y))
+        advice += (f"; the surface's shortest wavelength is the grid's (2 cells, "
+                   f"{shortest * 1e6:.3g} um), so a finer grid adds roughness as well: give "
+                   f"{cutoff_key} (e.g. {shortest * 1e6:.3g} um) to refine the same surface")
+    share = spots.load_share_below(min_cells)
+    estimate = 0.8 / math.sqrt(max(median, 1.0))
+    p10, p50, p90 = spots.cell_percentiles()
+    return [f"mesh: half the load is carried by contact spots of {median:g} cells or fewer "
+            f"({spots.count} spot{'s' if spots.count != 1 else ''} of {p10:.3g}, {p50:.3g} "
+            f"and {p90:.3g} cells at the 10th, 50th and 90th percentiles; {_pct(share)} of the "
+            "load on spots under "
+            f"{min_cells:g} cells; limit: {min_cells:g} cells at the load's median); a spot's "
+            "edge cells count whole, so the real contact area is too large and the mean "
+            f"contact pressure too low, by about {_pct(estimate)}; {advice}"]
 
 
 def hardness_given(materials: Iterable) -> bool:
@@ -1218,7 +1340,7 @@ MIN_CELLS_PER_CORRELATION_LENGTH = 2.0
 def roughness_resolution(label: str, correlation_length: float, x, y,
                          min_cells: float = MIN_CELLS_PER_CORRELATION_LENGTH,
                          correlation_length_y: float | None = None,
-                         along_x: bool = True) -> list[str]:
+                         along_x: bool = True, across_y: bool = True) -> list[str]:
     """A generated roughness whose correlation length is shorter than a couple of cells.
 
     The surface is generated on the grid: with fewer than ``min_cells`` cells per
@@ -1245,6 +1367,10 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
         False: judge the cells across y only: a transient
         run's surface is sampled finer than the mesh along x, where
         :func:`unresolved_roughness` judges it, and generated on the mesh's rows across y.
+    across_y : bool
+        False: judge the cells along x only: a ground profile is extruded across y, the same
+        on every row (a ball on a ground plate, 128 x 64 cells over 0.6 mm, was told its
+        15 um correlation length was 1.6 cells across y and to use cells of 3.8 um there).
 
     Returns
     -------
@@ -1253,7 +1379,7 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
     """
     directions = [("correlation_length", " along x", correlation_length, _spacing(x))
                   ] if along_x else []
-    if len(y) > 1:
+    if len(y) > 1 and across_y:
         directions.append(("correlation_length" if correlation_length_y is None else
                            "correlation_length_y", " across y",
                            correlation_length if correlation_length_y is None else
@@ -1555,8 +1681,63 @@ def hertz_first_yield(p0: float, load: float, materials: Iterable,
     return lines
 
 
+#: Young's modulus below which a body is taken for an elastomer, Pa: it does not yield, and a
+#: strain of several per cent leaves its linear law (rubbers 1-100 MPa; PTFE, nylon, PEEK
+#: 0.4-4 GPa are polymers that do yield).
+ELASTOMER_MODULUS = 0.1e9
+#: p0 / E* above which a smooth contact with no hardness given gets a note (not a warning)
+#: that first yield was not checked: hardened steel first yields near p0 / E* = 0.02-0.03,
+#: PEEK against steel near 0.038 (p0 = 1.6 Y, Y about 100 MPa, E* = 4.21 GPa).
+FIRST_YIELD_STRAIN = 0.02
+
+
+def _soft_bodies(bodies) -> tuple[list[str], list[str]]:
+    """Labels of the bodies without a hardness, and of those that are elastomers."""
+    bodies = list(bodies or [])
+    unchecked = [label for label, m in bodies if getattr(m, "hardness", None) is None]
+    rubber = [label for label, m in bodies if m.youngs_modulus < ELASTOMER_MODULUS]
+    return unchecked, rubber
+
+
+def hertz_plasticity_note(p0: float, e_star: float, bodies) -> list[str]:
+    """A note for a smooth Hertz contact past ``FIRST_YIELD_STRAIN`` E* with no hardness
+    given and below the strain limit of :func:`hertz_validity`, which warns above it.
+
+    A user's steel ball on PEEK (R = 10 mm, 200 N: p0 = 189.9 MPa, p0/E* = 0.045) is past
+    PEEK's first yield (p0 = 1.6 Y near 160 MPa) and nothing said so. The note names the
+    bodies to give a hardness; an elastomer (E below ``ELASTOMER_MODULUS``) does not yield
+    and gets none.
+
+    Parameters
+    ----------
+    p0 : float
+        Maximum Hertz pressure, Pa.
+    e_star : float
+        Contact modulus, Pa.
+    bodies : iterable of (label, Material)
+        The bodies.
+
+    Returns
+    -------
+    list of str
+        At most one note.
+    """
+    unchecked, rubber = _soft_bodies(bodies)
+    strain = p0 / e_star
+    if rubber or len(unchecked) < len(list(bodies)) or not (
+            FIRST_YIELD_STRAIN < strain <= HERTZ_STRAIN_LIMIT):
+        return []
+    return [f"p0/E* = {strain:.3g} (p0 = {format_quantity(p0, 'Pa')}, E* = "
+            f"{format_quantity(e_star, 'Pa')}): "
+            f"above {FIRST_YIELD_STRAIN:g}, where many bodies first yield beneath the surface "
+            "(hardened steel near p0/E* = 0.02-0.03, PEEK on steel near 0.038: p0 = 1.6 Y), "
+            "and plasticity was not checked (no hardness given); give "
+            + " and ".join(f"{label}.hardness" for label in unchecked) + " to check it"]
+
+
 def hertz_validity(a: float, radius: float, p0: float, e_star: float,
-                   hardness_given: bool = False, load_key: str = "pressure.load") -> list[str]:
+                   hardness_given: bool = False, load_key: str = "pressure.load",
+                   bodies=None) -> list[str]:
     """Whether a Hertz contact is small and elastic enough for half-space theory.
 
     Two checks of the contact's own numbers, independent of the grid:
@@ -1582,6 +1763,10 @@ def hertz_validity(a: float, radius: float, p0: float, e_star: float,
         it by :func:`above_hardness`, and the strain check here is skipped).
     load_key : str
         The case key of the load, which the size check names.
+    bodies : iterable of (label, Material), optional
+        The bodies: the strain line names those without a hardness, and for an elastomer
+        (E below ``ELASTOMER_MODULUS``, which does not yield) says that its law, not
+        plasticity, is what such strains leave unchecked.
 
     Returns
     -------
@@ -1598,10 +1783,20 @@ def hertz_validity(a: float, radius: float, p0: float, e_star: float,
                      f"the load ({load_key}), or the body is too soft for half-space theory "
                      "(a large-deformation model is needed)")
     strain = p0 / e_star
+    unchecked, rubber = _soft_bodies(bodies)
     if not hardness_given and strain > HERTZ_STRAIN_LIMIT:
-        lines.append(f"pressure: p0/E* = {strain:.3g} (p0 = {p0 / 1e6:.4g} MPa, E* = "
-                     f"{e_star / 1e9:.4g} GPa; limit {HERTZ_STRAIN_LIMIT:g}): strains of "
-                     "several per cent, at which metals and polymers yield, and plasticity was "
-                     "not checked (no hardness given); give body1.hardness and body2.hardness "
-                     "to check it, or reduce the load")
+        head = (f"pressure: p0/E* = {strain:.3g} (p0 = {format_quantity(p0, 'Pa')}, E* = "
+                f"{format_quantity(e_star, 'Pa')}; limit {HERTZ_STRAIN_LIMIT:g}): strains of "
+                "several per cent, ")
+        if rubber:
+            lines.append(head + f"which an elastomer ({' and '.join(rubber)}) takes without "
+                         "yielding but not linearly: Hertz's linear elastic law no longer "
+                         "holds (a rubber's stiffens or softens with strain), so read the "
+                         "result as a small-strain estimate or reduce the load")
+        else:
+            keys = " and ".join(f"{label}.hardness" for label in unchecked) if unchecked \
+                else "body1.hardness and body2.hardness"
+            lines.append(head + "at which metals and polymers yield, and plasticity was not "
+                         f"checked (no hardness given); give {keys} to check it, or reduce "
+                         "the load")
     return lines

@@ -60,9 +60,10 @@ figure.wide img{max-width:min(100%,1000px)} figure.wide figcaption{max-width:100
 HEADLINE_KEYS = (
     "contact_time_percent", "contact_time_fraction", "central_film_thickness_m",
     "minimum_film_thickness_m", "max_pressure_pa", "contact_area_m2", "approach_m",
-    "max_contact_count_rate_per_ms", "gross_slip", "stick_fraction", "shift_m", "rotation_rad",
-    "friction_capacity_n", "mean_contact_pressure_pa", "friction_coefficient", "ra_m", "rq_m",
-    "rz_m", "correlation_length_m", "kinematic_rt_m", "minimum_lambda", "minimum_film_m",
+    "max_contact_count_rate_per_ms", "gross_slip", "path_gross_slip", "stick_fraction",
+    "shift_m", "rotation_rad", "friction_capacity_n", "mean_contact_pressure_pa",
+    "friction_coefficient", "ra_m", "rq_m", "rz_m", "correlation_length_m", "kinematic_rt_m",
+    "minimum_lambda", "minimum_film_m",
     "maximum_flash_temperature_k", "maximum_hertz_pressure_pa",
 )
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from ..materials import Material
 from .fields import CaseModel, Quantity
@@ -30,6 +30,24 @@ class MaterialSpec(CaseModel):
     """Indentation hardness; contact pressures above it make the run warn that the elastic answer is
     not physical there, and in a dry contact a Hertz peak above 0.57 of it that the body yields
     beneath the surface (p0 = 1.6 Y with H = 2.8 Y)."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _homogeneous(cls, data):
+        """A coating or layer key is refused as what it is, not as a misspelling: every
+        solver's influence coefficients are those of a homogeneous half-space (Love,
+        Cerruti), so no key could give a layered body."""
+        layered = [k for k in data if isinstance(k, str) and any(
+            w in k.lower() for w in ("coat", "layer", "substrate"))] if isinstance(data, dict) \
+            else []
+        if layered:
+            raise ValueError(
+                f"expected a homogeneous body, got {', '.join(layered)}: asperity's bodies "
+                "are homogeneous elastic half-spaces, with no coating or layer; give the "
+                "coating's modulus when it is several contact radii thick, the substrate's "
+                "when it is a small fraction of one; between them a run with each bounds "
+                "the contact's size and pressure")
+        return data
 
     def material(self) -> Material:
         """The :class:`asperity.Material` this table describes."""

@@ -23,6 +23,25 @@ def _border(ax, x, y, mask, **kwargs):
         ax.contour(xp * MM, yp * MM, np.pad(mask, 1).T.astype(float), levels=[0.5], **kwargs)
 
 
+#: Share of the contact cells that filled contours must colour; below it (a rough contact's
+#: spots of a cell or two, which contourf leaves blank) the map colours each cell instead.
+CONTOUR_SHARE = 0.9
+
+
+def _contoured_share(contact) -> float:
+    """Share of the contact cells inside a 2 x 2 block of contact cells: the cells that
+    filled contours (matplotlib's contourf, which needs four corners) can colour."""
+    c = np.asarray(contact, dtype=bool)
+    if not c.any() or min(c.shape) < 2:
+        return 1.0
+    block = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
+    covered = np.zeros_like(c)
+    for i in (0, 1):
+        for j in (0, 1):
+            covered[i:c.shape[0] - 1 + i, j:c.shape[1] - 1 + j] |= block
+    return float(covered[c].mean())
+
+
 def _figure_for(x, y, width=7.0):
     """A figure whose height follows the domain's aspect ratio (room for the colour bar)."""
     lx, ly = np.ptp(x) + (x[1] - x[0]), np.ptp(y) + (y[1] - y[0])
@@ -39,7 +58,12 @@ def traction_map(result, x, y, title="Tangential traction", arrows=16):
     fig, ax = _figure_for(x, y)
     q = np.hypot(*result.traction) * MPA
     contact = result.labels > 0
-    cs = ax.contourf(x * MM, y * MM, np.where(contact, q, np.nan).T, levels=12, cmap="viridis")
+    field = np.where(contact, q, np.nan).T
+    if _contoured_share(contact) < CONTOUR_SHARE:  # spots of a cell or two: colour each cell
+        cs = ax.pcolormesh(x * MM, y * MM, np.ma.masked_invalid(field), shading="nearest",
+                           cmap="viridis")
+    else:
+        cs = ax.contourf(x * MM, y * MM, field, levels=12, cmap="viridis")
     fig.colorbar(cs, ax=ax, label="|q| (MPa)", shrink=0.9)
     dx, dy = x[1] - x[0], y[1] - y[0]
     spacing = max(np.ptp(x) + dx, np.ptp(y) + dy) / arrows

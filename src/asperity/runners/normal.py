@@ -10,6 +10,7 @@ import xarray as xr
 from .. import diagnostics
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
+from ..contact.spots import contact_spots
 from ..formatting import format_quantity
 from ..materials import contact_modulus
 from ..references import cite
@@ -61,6 +62,13 @@ def run(case, progress=None) -> Outcome:
         "residual": float(res.residual),
         "converged": bool(res.converged),
     }
+    spots = None
+    if rough is not None:  # the real area's spots (docs/tangential.md, "Contact spots")
+        spots = contact_spots(res.contact, res.pressure, (x[1] - x[0]) * (y[1] - y[0]),
+                              periodic=case.grid.periodic)
+        summary.update(contact_spots=spots.count,
+                       load_median_spot_cells=spots.load_median_cells(),
+                       largest_spot_cells=int(spots.cells.max(initial=0)))
     rx, ry = case.geometry.radii()
     if not np.isfinite(rx):  # a nominally flat interface: its mean separation (Persson's u)
         summary["mean_separation_m"] = float(np.mean(res.gap))
@@ -129,13 +137,14 @@ def run(case, progress=None) -> Outcome:
             " (approach_from_first_contact_m). loading.approach is read the same way, from the "
             "mean plane.")
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
-                   warnings=_warnings(case, res, x, y, body1, body2, rough))
+                   warnings=_warnings(case, res, x, y, body1, body2, rough, spots))
 
 
-def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
+def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
     """Trust checks (:mod:`asperity.diagnostics`): a measured file's doubts first (the
     reader's and its units', its sampling against the grid's), a surface that is not periodic
-    on a periodic grid, then domain, mesh, roughness on the mesh and hardness."""
+    on a periodic grid, then domain, mesh (the apparent contact, then a rough contact's
+    spots), roughness on the mesh and hardness."""
     size = None
     lines = [] if on_grid is None else diagnostics.measured_file_on_grid("roughness", on_grid,
                                                                          x, y)
@@ -150,10 +159,20 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
         if np.isfinite(rx) and np.isfinite(ry) and load > 0.0:
             h = hertz_point(load, rx, ry, body1, body2)
             size = (2.0 * h.a, 2.0 * h.b)
-        lines += diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
+        if np.isfinite(rx):
+            lines += diagnostics.contact_at_grid_edge(res.pressure, x, y, size)
+        else:  # a flat reaches any grid's edges
+            lines += diagnostics.flat_on_open_grid(
+                res.pressure, x, y, measured=on_grid is not None and on_grid.file_spacing
+                is not None)
     lines += diagnostics.contact_resolution(
         res.contact, x, y, expected_size=size,
         file_spacing=None if on_grid is None else on_grid.file_spacing)
+    if spots is not None:
+        free = case.roughness.kind == "self-affine" and case.roughness.short_cutoff is None
+        lines += diagnostics.spot_resolution(
+            spots, x, y, file_spacing=on_grid.file_spacing,
+            cutoff_key="roughness.short_cutoff" if free else None)
     rough = case.roughness
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
         ell = rough.correlation_length
@@ -161,7 +180,8 @@ def _warnings(case, res, x, y, body1, body2, on_grid) -> list[str]:
             ell = GROUND_CORRELATION_LENGTH
         if ell is not None:
             lines += diagnostics.roughness_resolution(
-                "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y)
+                "roughness", ell, x, y, correlation_length_y=rough.correlation_length_y,
+                across_y=rough.kind != "ground")  # a ground profile is the same on every row
     return lines + _plasticity(case, res, body1, body2)
 
 
@@ -178,18 +198,24 @@ def _plasticity(case, res, body1, body2) -> list[str]:
         a, radius = max((h.a, rx), (h.b, ry), key=lambda pair: pair[0] / pair[1])
         lines += diagnostics.hertz_validity(a, radius, h.p_max, contact_modulus(body1, body2),
                                             diagnostics.hardness_given(bodies),
-                                            load_key="loading.load")
+                                            load_key="loading.load", bodies=bodies)
         lines += diagnostics.hertz_first_yield(h.p_max, res.load, bodies, "loading.load")
     return lines
 
 
 def _unchecked_plasticity(case, res, body1, body2) -> list[str]:
-    """A note for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
+    """A smooth Hertz contact's note past first yield (:func:`diagnostics.hertz_plasticity_note`)
+    or one for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
     with no hardness given: its asperities would yield, which nothing checked (a user's rough
     flat reported asperity pressures of 10-29 GPa, 0.09-0.25 E*, between steel bodies without
     a word). A note, not a warning: the elastic answer is what such a case asks for, and
     nearly every elastic rough contact's asperities are that loaded (about E* Sdq / 2)."""
     e_star = contact_modulus(body1, body2)
+    rx, ry = case.geometry.radii()
+    if case.roughness is None and np.isfinite(rx) and res.load > 0.0:
+        h = hertz_point(res.load, rx, ry, body1, body2)
+        return diagnostics.hertz_plasticity_note(h.p_max, e_star,
+                                                 [("body1", body1), ("body2", body2)])
     p_max = float(res.pressure.max())
     given = diagnostics.hardness_given([("body1", body1), ("body2", body2)])
     if case.roughness is None or given or not p_max > diagnostics.HERTZ_STRAIN_LIMIT * e_star:

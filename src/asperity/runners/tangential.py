@@ -27,6 +27,7 @@ from ..contact.reference import (
     lubkin_twist,
     masing_history,
 )
+from ..contact.spots import contact_spots
 from ..errors import InputError
 from ..formatting import format_quantity
 from ..materials import contact_modulus, coupling_compliance
@@ -176,6 +177,12 @@ def _zeroed(value: float, scale: float) -> float:
     return 0.0 if abs(value) <= ROUND_OFF * scale else value
 
 
+#: Most contact regions whose forces, capacity and stick fraction are listed one by one in
+#: the summary: a rough normal solve's contact is a region per spot (a user's rough ball had
+#: 104, five rows each); beyond it only their number is given, and the map is in result.nc.
+REGION_ROWS = 10
+
+
 def _summary(case, fld, res, applied, identical):
     contact_area = float((fld.pressure > 0).sum() * fld.cell_area)
     # equivalent contact radius: the length scale (the domain's if nothing touches)
@@ -191,7 +198,8 @@ def _summary(case, fld, res, applied, identical):
         "load_capacity": float(res.load_capacity),
         "stick_fraction": float(res.stick.sum() / max((res.labels > 0).sum(), 1)),
     }
-    if not res.gross_slip and res.stick.any():
+    if not res.gross_slip and res.stick.any() and fld.roughness is None:
+        # (a rough contact's stick zone is scattered over its spots: no radius describes it)
         s["stick_radius_m"] = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
     # undefined quantities are left out, not NaN: the rigid motion in gross slip, the centre
     # of a motion without rotation; round-off (a force's twist, a moment's shift) is 0
@@ -219,7 +227,7 @@ def _summary(case, fld, res, applied, identical):
                  excess_moment_nm=_zeroed(res.excess[2], moment_scale))
     if case.loading.rotation == "fixed":
         s["reaction_moment_nm"] = _zeroed(res.reaction_moment, moment_scale)
-    for reg in res.regions:
+    for reg in res.regions if len(res.regions) <= REGION_ROWS else ():
         k = reg.label
         s.update({f"region_{k}_force_x_n": _zeroed(reg.force[0], force_scale),
                   f"region_{k}_force_y_n": _zeroed(reg.force[1], force_scale),
@@ -416,6 +424,21 @@ def _long_ellipse_note(case, fld, res) -> list[str]:
             "solve (no line contact in a tangential case)."]
 
 
+def _spot_warnings(case, fld) -> list[str]:
+    """A rough normal solve's contact spots of a few cells
+    (:func:`asperity.diagnostics.spot_resolution`): its pressures, and the stick and slip on
+    each spot, are then set by the mesh."""
+    rough = fld.roughness
+    if rough is None:
+        return []
+    spots = contact_spots(fld.pressure > 0, fld.pressure, fld.cell_area)
+    spec = case.pressure.roughness
+    free = spec.kind == "self-affine" and spec.short_cutoff is None
+    return diagnostics.spot_resolution(
+        spots, fld.x, fld.y, file_spacing=rough.file_spacing,
+        cutoff_key="pressure.roughness.short_cutoff" if free else None)
+
+
 def _file_warnings(fld) -> list[str]:
     """A measured roughness file's doubts (:func:`asperity.diagnostics.measured_file_on_grid`)."""
     rough = fld.roughness
@@ -543,7 +566,7 @@ def _validity_warnings(case, fld, body1, body2) -> list[str]:
     a, radius = max(((h.a, rx), (h.b, ry)), key=lambda ar: ar[0] / ar[1])
     bodies = [("body1", body1), ("body2", body2)]
     lines = diagnostics.hertz_validity(a, radius, h.p_max, h.modulus,
-                                       diagnostics.hardness_given(bodies))
+                                       diagnostics.hardness_given(bodies), bodies=bodies)
     if fld.roughness is None:  # a rough normal solve's pressure is not Hertz's
         lines += diagnostics.hertz_first_yield(h.p_max, h.load, bodies)
     return lines
@@ -681,6 +704,14 @@ def run(case, progress=None) -> Outcome:
                      "torsion about the true centre and pure translation; an approximation "
                      "otherwise).")
     notes += _long_ellipse_note(case, fld, res)
+    if fld.hertz is not None and fld.roughness is None:  # first yield unchecked (a note)
+        notes += diagnostics.hertz_plasticity_note(fld.hertz.p_max, fld.hertz.modulus,
+                                                   [("body1", body1), ("body2", body2)])
+    if len(res.regions) > REGION_ROWS:
+        notes.append(f"The contact has {len(res.regions)} separate regions (a rough contact's "
+                     f"spots); their forces are not listed one by one (only up to {REGION_ROWS} "
+                     "are): the variable region of result.nc maps them, and the traction and "
+                     "stick variables give each region's share.")
     if case.pressure.source == "hertz":
         notes.append("Hertz pressure sampled at the cell centres and scaled so that the "
                      "discrete load equals the applied load.")
@@ -698,6 +729,7 @@ def run(case, progress=None) -> Outcome:
     trust += (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
               if case.pressure.source == "normal" else [])
     trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
+    trust += _spot_warnings(case, fld)
     trust += _file_warnings(fld)
     trust += diagnostics.above_hardness(fld.pressure, [("body1", body1), ("body2", body2)])
     trust += _validity_warnings(case, fld, body1, body2)
