@@ -62,7 +62,7 @@ EXAMPLES = {
     "holmes-rough-sqrt2C-smooth:surface1": "eeda99b64ef083ba",
     "holmes-rough-sqrt2C-smooth:surface2": None,
     "measured-profile:surface:file": "df7c594783754cd1",
-    "rough-flat-normal:roughness": "a408bf1742d5b564",
+    "rough-flat-normal:roughness": "2e141c9c16bd4cca",  # 512 cells, short_cutoff (session 37)
     "rough-sphere-normal:roughness": "e7dc1d6f3e299018",
     "seireg-turning-kinematic:surface:kinematic": "327878a785d2ff10",
     "seireg-turning-vibration:surface:150 Hz": "ae48b6f35aa390e0",

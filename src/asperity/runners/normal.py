@@ -143,18 +143,21 @@ def run(case, progress=None) -> Outcome:
 def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
     """Trust checks (:mod:`asperity.diagnostics`): a measured file's doubts first (the
     reader's and its units', its sampling against the grid's), a surface that is not periodic
-    on a periodic grid, then domain, mesh (the apparent contact, then a rough contact's
-    spots), roughness on the mesh and hardness."""
+    on a periodic grid, then domain (a curved body's contact against the period; a nominally
+    flat patch is a periodic representative surface, whose contact may span the period near
+    full contact), mesh (the apparent contact, then a rough contact's spots), roughness on the
+    mesh and hardness."""
     size = None
     lines = [] if on_grid is None else diagnostics.measured_file_on_grid("roughness", on_grid,
                                                                          x, y)
     if on_grid is not None and case.grid.periodic:
         lines += diagnostics.periodic_seam("roughness", on_grid.heights,
                                            on_grid.sampling_cells(x, y))
+    rx, ry = case.geometry.radii()
     if case.grid.periodic:
-        lines += diagnostics.periodic_contact(res.contact, x, y)
+        if np.isfinite(rx) or np.isfinite(ry):  # a nominally flat patch is periodic by design:
+            lines += diagnostics.periodic_contact(res.contact, x, y)  # its contact may span it
     else:
-        rx, ry = case.geometry.radii()
         load = case.loading.load if case.loading.load is not None else res.load
         if np.isfinite(rx) and np.isfinite(ry) and load > 0.0:
             h = hertz_point(load, rx, ry, body1, body2)
