@@ -540,7 +540,7 @@ def test_figures_step_at_b_and_d_and_say_what_they_draw():
     fig = film_figure(res, "t", "sigma = sqrt(Ra1² + Ra2²)")
     assert "single tooth contact B-D" in [t.get_text() for t in
                                           fig.axes[0].get_legend().get_texts()]
-    assert "sqrt(Ra1² + Ra2²) = 0.42 um" in fig.axes[1].get_ylabel()
+    assert "sqrt(Ra1² + Ra2²) = 0.42 µm" in fig.axes[1].get_ylabel()
     fig = friction_temperature_figure(res, "t", 90.0)
     temp = fig.axes[1]
     assert temp.get_ylabel() == "temperature (deg C)"

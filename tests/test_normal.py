@@ -1,9 +1,8 @@
 """Dry normal contact (Polonsky-Keer CCG) against Hertz, against itself, and on rough surfaces."""
 
-import tomllib
-
 import numpy as np
 import pytest
+import tomllib
 
 from asperity.contact import hertz_point, solve_normal
 from asperity.elastic import normal_influence

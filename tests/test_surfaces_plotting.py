@@ -74,14 +74,14 @@ def test_texture_figure_of_a_small_map_is_in_um_with_its_colour_bar_beside_it():
     fig = plot_texture(evaluate_texture(Topography(x, y, z)), title="t")
     surface_ax = fig.axes[0]
     psd_ax = next(a for a in fig.axes if a.get_title().startswith("Power spectral"))
-    assert surface_ax.get_xlabel() == "x (um)" and surface_ax.get_ylabel() == "y (um)"
+    assert surface_ax.get_xlabel() == "x (µm)" and surface_ax.get_ylabel() == "y (µm)"
     mesh = surface_ax.collections[0]
     assert mesh.get_coordinates()[0, 0, 0] == pytest.approx(0.0, abs=1e-9)
     assert mesh.get_coordinates()[-1, -1, 0] == pytest.approx(60.0)  # cell edges, um
     assert mesh.get_coordinates()[-1, -1, 1] == pytest.approx(64.0)
     fig.canvas.draw()
     colour_bar = mesh.colorbar.ax
-    assert colour_bar.get_ylabel() == "height (um)"
+    assert colour_bar.get_ylabel() == "height (µm)"
     gap = colour_bar.get_position().x0 - surface_ax.get_position().x1
     assert 0 < gap < 0.05  # figure fractions: against the map
     centre = 0.5 * (surface_ax.get_position().x0 + surface_ax.get_position().x1)

@@ -140,10 +140,10 @@ def test_the_shift_of_a_twisted_path_names_its_point():
     twisted, x, y = _ball_path(proportional_path((20.0, 0.0), m, steps=2))
     ax = tplot.compliance_curves(twisted).axes[0]
     assert ax.get_xlabel() == ("rigid shift of the moment's reference point along the largest "
-                               "force (um)")
+                               "force (µm)")
     alone, x, y = _ball_path(proportional_path((20.0, 0.0), steps=2))
     assert tplot.compliance_curves(alone).axes[0].get_xlabel() == (
-        "rigid shift along the largest force (um)")
+        "rigid shift along the largest force (µm)")
 
 
 def test_a_constant_line_of_action_is_drawn_without_round_off():

@@ -111,7 +111,7 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
             label=f"minimum ({result.formula_names[1]})")
     _cross_unconverged(ax, result, result.central_film * 1e6, label=True)
     _cross_unconverged(ax, result, result.minimum_film * 1e6)
-    ax.set_ylabel("film thickness (um)")
+    ax.set_ylabel("film thickness (µm)")
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
     ax.set_title(title, pad=14)
@@ -119,7 +119,7 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
     _cross_unconverged(ax2, result, result.specific_film)
     ax2.axhline(1.0, color="C3", lw=0.8, ls="--")
     ax2.set_ylabel(f"lambda = h_min / sigma\n{sigma_label} = "
-                   f"{result.composite_roughness * 1e6:.3g} um", fontsize=9)
+                   f"{result.composite_roughness * 1e6:.3g} µm", fontsize=9)
     ax2.set_xlabel("pinion roll angle (deg)")
     _mark_points(ax2, result)
     return fig

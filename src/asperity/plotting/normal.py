@@ -37,7 +37,7 @@ def centre_line(x, pressure_line, gap_line, reference=None, title="Centre line y
     ax.set(xlabel="x (mm)", ylabel="pressure (GPa)", title=title)
     ax2 = ax.twinx()
     ax2.plot(xm, gap_line * 1e6, "b-", lw=1.0, label="gap")
-    ax2.set_ylabel("gap (um)", color="b")
+    ax2.set_ylabel("gap (µm)", color="b")
     lines = ax.get_lines() + ax2.get_lines()
     fig.legend(lines, [ln.get_label() for ln in lines], loc="outside lower center", ncols=3,
                fontsize=8, frameon=False)

@@ -40,7 +40,7 @@ def plot_profiles(profiles, offset=None, title="Surface profiles"):
                         color="0.85", lw=0)
         if name:
             ax.text(p.x[0] * 1e3, (shift + 0.25 * offset) * 1e6, f"({name})", fontsize=9)
-    ax.set(xlabel="x (mm)", ylabel="height (um, offset)", title=title)
+    ax.set(xlabel="x (mm)", ylabel="height (µm, offset)", title=title)
     return fig
 
 
@@ -50,16 +50,16 @@ MAP_IN_UM = 1e-3
 
 
 def _draw_map(ax, topography: Topography, title: str):
-    """A height map (um) drawn to scale over x, y in um (fields under :data:`MAP_IN_UM`) or
+    """A height map (µm) drawn to scale over x, y in um (fields under :data:`MAP_IN_UM`) or
     mm, x to the right and y up, with its colour bar beside it: the colour bar is an inset of
     the map's axes, so that it stays against the map when the map is narrower than its
     cell."""
-    scale, unit = (1e6, "um") if max(np.ptp(topography.x), np.ptp(topography.y)) < MAP_IN_UM \
+    scale, unit = (1e6, "µm") if max(np.ptp(topography.x), np.ptp(topography.y)) < MAP_IN_UM \
         else (1e3, "mm")
     mesh = ax.pcolormesh(topography.x * scale, topography.y * scale, topography.z.T * 1e6,
                          shading="auto", cmap="viridis")
     ax.set(xlabel=f"x ({unit})", ylabel=f"y ({unit})", title=title, aspect="equal")
-    ax.figure.colorbar(mesh, cax=ax.inset_axes([1.03, 0.0, 0.035, 1.0]), label="height (um)")
+    ax.figure.colorbar(mesh, cax=ax.inset_axes([1.03, 0.0, 0.035, 1.0]), label="height (µm)")
     return mesh
 
 
@@ -77,7 +77,7 @@ def _log_q_axis(ax, q) -> None:
 
 
 def plot_topography(topography: Topography, title="Topography"):
-    """Height map (um) over x, y (um or mm, :func:`_draw_map`), x to the right."""
+    """Height map (µm) over x, y (um or mm, :func:`_draw_map`), x to the right."""
     fig, ax = new_figure(5.8, 4.8)
     _draw_map(ax, topography, title)
     return fig
@@ -126,7 +126,7 @@ def plot_turning_roughness(results, window, labels=None, parameter="Rt",
     if parameter == "Rt":
         ax.axhline(results[0].kinematic_rt * 1e6, color="k", ls="--", lw=0.8,
                    label="kinematic f^2/(8r)")
-    ax.set(xlabel="distance along workpiece (mm)", ylabel=f"{parameter} (um)", title=title)
+    ax.set(xlabel="distance along workpiece (mm)", ylabel=f"{parameter} (µm)", title=title)
     if any(labels) or parameter == "Rt":
         ax.legend(fontsize=8)
     return fig
@@ -163,11 +163,11 @@ def plot_material_ratio(heights, prefix="R", ax=None, title="Material ratio curv
     ax.axvspan(lo * 100, hi * 100, color="C0", alpha=0.08, lw=0, label="40 % window")
     ax.hlines([top * 1e6, bottom * 1e6], 0, 100, colors="0.5", lw=0.6)
     ax.fill([0, 0, m1 * 100], [top * 1e6, (top + pk) * 1e6, top * 1e6], color="C3", alpha=0.3,
-            lw=0, label=f"{names[1]} = {pk * 1e6:.3g} um")
+            lw=0, label=f"{names[1]} = {pk * 1e6:.3g} µm")
     ax.fill([100, 100, m2 * 100], [bottom * 1e6, (bottom - vk) * 1e6, bottom * 1e6], color="C2",
-            alpha=0.3, lw=0, label=f"{names[2]} = {vk * 1e6:.3g} um")
-    ax.set(xlabel="material ratio (%)", ylabel="height (um)", xlim=(0, 100),
-           title=f"{title}: {names[0]} = {k * 1e6:.3g} um, {names[3]} = {m1 * 100:.3g} %, "
+            alpha=0.3, lw=0, label=f"{names[2]} = {vk * 1e6:.3g} µm")
+    ax.set(xlabel="material ratio (%)", ylabel="height (µm)", xlim=(0, 100),
+           title=f"{title}: {names[0]} = {k * 1e6:.3g} µm, {names[3]} = {m1 * 100:.3g} %, "
                  f"{names[4]} = {m2 * 100:.3g} %")
     ax.title.set_fontsize(9)
     ax.legend(fontsize=7, loc="upper right")
@@ -189,8 +189,8 @@ def plot_families(families, title="Profiles", axes=None):
         axes[1].axvline(edge * 1e3, color="C0", lw=0.8, ls="--")
     for k in range(1, families.sampling_lengths):
         axes[1].axvline(r.x[ev.start] * 1e3 + k * families.cutoff * 1e3, color="0.7", lw=0.5)
-    axes[0].set(ylabel="height (um)", title=title)
-    axes[1].set(xlabel="x (mm)", ylabel="height (um)")
+    axes[0].set(ylabel="height (µm)", title=title)
+    axes[1].set(xlabel="x (mm)", ylabel="height (µm)")
     for ax in axes:
         ax.legend(fontsize=7, loc="upper right")
     return fig if fig is not None else axes[0].figure

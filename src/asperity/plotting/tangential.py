@@ -232,7 +232,7 @@ def compliance_curves(path, title="Compliance", *, closed_form=None):
             # with a twist the shift depends on the point: the solver's is the moment's
             # reference point (a twisting pair of pads moved it against the force)
             where = " of the moment's reference point" if has_moment else ""
-            ax.set(xlabel=f"rigid shift{where} along the largest force (um)",
+            ax.set(xlabel=f"rigid shift{where} along the largest force (µm)",
                    ylabel="tangential force along it (N)")
         else:
             ax.plot(path.rotation * 1e3, path.loads[:, 2], "o-", label="load steps")
