@@ -2,7 +2,6 @@
 
 import numpy as np
 import pytest
-import tomllib
 
 from asperity.contact import hertz_point, solve_normal
 from asperity.elastic import normal_influence
@@ -442,6 +441,8 @@ def test_a_user_rough_flat_with_spots_of_a_few_cells_is_warned_and_told_to_fix_t
     on 256, 3.144 % on 512 and 3.153 % on 1024 (docs/tangential.md): the line says a finer grid
     adds roughness without short_cutoff and names that key. The example itself now fixes the
     cutoff and runs on 512 cells, where it is silent."""
+    import tomllib
+
     from asperity.cases import load_case
     from asperity.examples import example_text
     from asperity.runners import run_case
@@ -464,6 +465,8 @@ def test_a_nominally_flat_periodic_patch_near_full_contact_is_not_told_its_image
     contact over half its patch (49 %), which percolates across the period: that is the
     representative patch's answer, not periodic images of a single contact, and the line that
     said "use a period at least twice the patch" is left to curved bodies."""
+    import tomllib
+
     from asperity.cases import load_case
     from asperity.examples import example_text
     from asperity.runners import run_case
