@@ -87,3 +87,20 @@ def test_texture_figure_of_a_small_map_is_in_um_with_its_colour_bar_beside_it():
     centre = 0.5 * (surface_ax.get_position().x0 + surface_ax.get_position().x1)
     assert centre == pytest.approx(0.5, abs=0.08)
     assert not _labels_overlap(fig, psd_ax.xaxis)
+
+
+def test_the_spectrum_of_a_gaussian_map_is_drawn_down_to_twelve_decades_below_its_peak():
+    """A Gaussian-correlated map's PSD falls as exp(-q^2 l^2 / 4) to the FFT's round-off
+    (1e-57 m^4 against a peak of 1e-24 for Sq 0.3 um, l 10 um): drawn to the floor, the
+    measured part filled the top tenth of the panel. It is drawn down to 1e-12 of its peak
+    and its unit is written as a power."""
+    from asperity.plotting.surfaces import PSD_DECADES, plot_texture
+    from asperity.surfaces import evaluate_texture, gaussian_topography
+
+    surface = gaussian_topography(200e-6, 1e-6, 0.3e-6, 10e-6, seed=1)
+    fig = plot_texture(evaluate_texture(surface), title="t")
+    psd_ax = next(a for a in fig.axes if a.get_title().startswith("Power spectral"))
+    peak = max(line.get_ydata().max() for line in psd_ax.get_lines())
+    low = psd_ax.get_ylim()[0]
+    assert peak * 10.0**-PSD_DECADES / 3 < low < peak * 1e-9
+    assert psd_ax.get_ylabel() == "C (q) (m⁴)"

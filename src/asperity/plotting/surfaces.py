@@ -96,11 +96,25 @@ def plot_spectrum(surface, title="Power spectral density"):
     """Log-log PSD (1-D, or radially averaged 2-D) against wavevector q (rad/m)."""
     spec = power_spectrum(surface)
     fig, ax = new_figure()
+    _draw_spectrum(ax, spec, title)
+    return fig
+
+
+#: Decades of the PSD drawn below its peak: lower values are the FFT's round-off floor.
+PSD_DECADES = 12
+
+
+def _draw_spectrum(ax, spec, title):
+    """The PSD on log-log axes, its unit as a power (m³ for a profile, m⁴ for a map), down to
+    :data:`PSD_DECADES` below its peak (a Gaussian spectrum falls to round-off at 1e-57 m⁴,
+    which squeezed the measured part into the top of the panel)."""
     ax.loglog(spec.q, spec.psd, "k-", lw=0.8)
     _log_q_axis(ax, spec.q)
-    unit = "m^3" if spec.dim == 1 else "m^4"
-    ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({unit})", title=title)
-    return fig
+    positive = spec.psd[spec.psd > 0]
+    if positive.size:
+        ax.set_ylim(bottom=max(positive.min(), positive.max() * 10.0**-PSD_DECADES) / 2)
+    ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({'m³' if spec.dim == 1 else 'm⁴'})",
+           title=title)
 
 
 def plot_turning_roughness(results, window, labels=None, parameter="Rt",
@@ -217,11 +231,8 @@ def plot_texture(texture, title="Surface texture"):
     ax = fig.add_subplot(grid[1, 0])
     primary = fam.primary
     spec = power_spectrum(primary, window=None if primary.periodic else "hann")
-    ax.loglog(spec.q, spec.psd, "k-", lw=0.8)
-    _log_q_axis(ax, spec.q)
-    ax.set(xlabel="q (rad/m)", ylabel=f"C (q) ({'m^3' if spec.dim == 1 else 'm^4'})",
-           title="Power spectral density (form removed" + (
-               "" if texture.surface.periodic else ", Hann window") + ")")
+    _draw_spectrum(ax, spec, "Power spectral density (form removed" + (
+        "" if texture.surface.periodic else ", Hann window") + ")")
     ax.title.set_fontsize(9)
     plot_material_ratio(heights, prefix, ax=fig.add_subplot(grid[1, 1]),
                         title=f"{'R' if prefix == 'R' else fam.label}")
