@@ -170,3 +170,12 @@ def test_swept_values_as_shown_in_a_study():
 def test_the_iso_6336_rows_of_a_gear_summary_read_as_the_standard_writes_them(key, label):
     """The elasticity factor's row read "ISO elasticity factor sqrt mpa"."""
     assert describe_key(key)[0] == label
+
+
+@pytest.mark.parametrize("value, unit, text", [
+    (0.9999999999, "N", "1 N"), (0.99996, "m", "1 m"), (999.99996, "N", "1 kN"),
+    (0.99994, "N", "999.9 mN")])
+def test_a_value_that_rounds_up_to_the_next_unit_is_written_in_it(value, unit, text):
+    """A gross-slip excess force of 0.9999999999 N was written "1000 mN": the unit is chosen
+    from the value as it is printed, to 4 digits."""
+    assert format_quantity(value, unit) == text

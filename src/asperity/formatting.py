@@ -199,15 +199,16 @@ def unit_label(unit: str) -> str:
     return unit.replace("^2", "²").replace("^3", "³").replace("*", " ")
 
 
-def _convert(value: float, si_unit: str, choices) -> tuple[float, str]:
-    """``value`` (in ``si_unit``) in the first of ``choices`` where it reads at least the
-    choice's smallest magnitude; zero in the SI unit itself where it is a choice."""
+def _convert(value: float, si_unit: str, choices, digits: int = 4) -> tuple[float, str]:
+    """``value`` (in ``si_unit``) in the first of ``choices`` where it reads, rounded to
+    ``digits`` significant digits, at least the choice's smallest magnitude (0.9999999999 N
+    is 1 N, not 1000 mN); zero in the SI unit itself where it is a choice."""
     base = registry().Quantity(value, "percent" if si_unit == "%" else si_unit)
     if value == 0:
         choices = [c for c in choices if c[0] == si_unit] or choices[:1]
     for pint_unit, label, *smallest in choices:
         converted = float(base.to(pint_unit).magnitude)
-        if abs(converted) >= (smallest[0] if smallest else 1.0):
+        if float(f"{abs(converted):.{digits}g}") >= (smallest[0] if smallest else 1.0):
             return converted, label
     return converted, label
 
@@ -271,10 +272,10 @@ def format_quantity(value, unit: str = "", *, imperial: bool = False, digits: in
         number = format_number(value, digits)
         label = unit_label(unit)
         return f"{number} {label}" if label else number
-    converted, label = _convert(value, unit, choices)
+    converted, label = _convert(value, unit, choices, digits)
     text = f"{format_number(converted, digits)} {label}"
     if imperial and unit in _IMPERIAL_CHOICES:
-        converted, label = _convert(value, unit, _IMPERIAL_CHOICES[unit])
+        converted, label = _convert(value, unit, _IMPERIAL_CHOICES[unit], digits)
         text += f" ({format_number(converted, digits)} {label})"
     return text
 
