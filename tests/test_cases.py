@@ -144,3 +144,13 @@ def test_a_steady_default_mesh_beyond_the_node_limit_is_refused():
     with pytest.raises(InputError, match=r"expected at most 644004 nodes, got \d+ \(the "
                                          r"default mesh \d+ x \d+ .*set grid\.nx"):
         load_case(huge)
+
+
+def test_an_item_of_a_list_of_tables_is_named_as_the_runners_name_it():
+    """A bad region pressure was named pressure.regions.0.pressure by the schema and
+    pressure.regions[0] by the runner's own checks."""
+    text = example_text("seireg-squares-combined-1").replace('pressure = "20000 psi"',
+                                                             'pressure = "10 kg"', 1)
+    with pytest.raises(InputError) as err:
+        load_case(text)
+    assert err.value.field == "pressure.regions[0].pressure"

@@ -243,9 +243,9 @@ def _set(data, dotted, value):
     ("seireg-sphere-torsion", "method", "simplex", "method"),
     ("seireg-sphere-torsion", "method", "lp", "method"),  # 64 x 64 is too big for the LP
     ("seireg-squares-torsion-2", "pressure.regions.0.pressure", "-20000 psi",
-     "pressure.regions.0.pressure"),
+     "pressure.regions[0].pressure"),
     ("seireg-squares-torsion-2", "pressure.spacing", "0.5 in", "pressure"),
-    ("seireg-squares-torsion-2", "pressure.regions.0.radius", "1 in", "pressure.regions.0"),
+    ("seireg-squares-torsion-2", "pressure.regions.0.radius", "1 in", "pressure.regions[0]"),
     ("seireg-squares-torsion-2", "grid.x_extent", "1 in", "grid"),
     ("seireg-squares-torsion-2", "load_path.history", "twice", "load_path.history"),
     ("seireg-squares-torsion-2", "load_path.stepz", 3, "load_path.stepz"),

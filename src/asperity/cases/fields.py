@@ -132,7 +132,14 @@ def first_error(exc: ValidationError, prefix: str = "") -> InputError:
     if isinstance(raised, InputError):
         field = ".".join(p for p in (prefix, raised.field) if p)
         return InputError(field, raised.expected, raised.got, problem=raised.problem)
-    loc = ".".join(_key(p) for p in err["loc"] if not str(p).startswith("function-"))
+    loc = ""
+    for part in err["loc"]:
+        if str(part).startswith("function-"):
+            continue
+        if isinstance(part, int):  # a list's item as the case file's readers write it
+            loc += f"[{part}]"
+        else:
+            loc += ("." if loc else "") + _key(part)
     field = ".".join(p for p in (prefix, loc) if p) or "case"
     if err["type"] in _PROBLEMS:
         return InputError(field, "", problem=_PROBLEMS[err["type"]])
