@@ -32,3 +32,27 @@ def test_a_soft_contact_is_drawn_in_kpa_and_um():
     fig = transverse_section(y, p[40], h[40], 1e-3)
     assert fig.axes[0].get_ylabel() == "pressure (kPa)"
     assert fig.axes[1].get_ylabel() == "film (µm)"
+
+
+def _histogram(counts):
+    import types
+
+    edges = np.linspace(0.0, 1e-6, 11)
+    return types.SimpleNamespace(film_edges=edges, film_counts=np.asarray(counts))
+
+
+def test_film_histogram_names_its_overflow_bin_only_when_it_holds_films():
+    """An empty overflow bin had its "overflow: h >= ..." legend entry all the same."""
+    import matplotlib.pyplot as plt
+
+    from asperity.plotting.ehl_transient import plot_film_histogram
+
+    empty = plot_film_histogram(_histogram([5, 4, 3, 2, 1, 1, 1, 1, 1, 0]))
+    full = plot_film_histogram(_histogram([5, 4, 3, 2, 1, 1, 1, 1, 1, 2]))
+    try:
+        names = [[t.get_text() for t in fig.axes[0].get_legend().texts] for fig in (empty, full)]
+        assert names[0] == ["film thickness"]
+        assert names[1] == ["film thickness", "overflow: h >= 0.9 um"]
+    finally:
+        plt.close(empty)
+        plt.close(full)

@@ -377,3 +377,21 @@ def test_bad_input(gear_steady):
         solve_transient(line, topo, nx=65)
     with pytest.raises(InputError, match="problem"):
         solve_transient("gear")
+
+
+def test_result_file_has_a_time_coordinate_in_seconds(tmp_path, gear_steady):
+    """result.nc's per-step series carry ``time`` (s) along ``step``: step k ends at k dt.
+
+    Before, only the step number was there, and a user had to rebuild the time axis from the
+    ``timestep_s`` attribute."""
+    import xarray as xr
+
+    from asperity.results import write_netcdf
+
+    r = solve_transient(gear_point(), nx=65, ny=33, steady=gear_steady, counting_steps=4)
+    write_netcdf(r.to_dataset(), tmp_path / "result.nc")
+    with xr.open_dataset(tmp_path / "result.nc") as ds:
+        assert ds["time"].dims == ("step",) and ds["time"].attrs["units"] == "s"
+        assert ds["time"].dtype.kind == "f"  # an elapsed time, not decoded as dates
+        np.testing.assert_allclose(ds["time"].values, r.dt * np.arange(1, 5), rtol=1e-12)
+        assert ds["max_pressure"].swap_dims(step="time").dims == ("time",)

@@ -73,6 +73,7 @@ def test_killed_run_resumes_to_the_same_result(tmp_path):
     with xr.open_dataset(out / "result.nc") as partial:
         assert partial.attrs.get("partial") == 1, "the run finished before it could be killed"
         assert partial["contact_count_rate"].attrs["units"] == "ms-1"
+        assert partial["time"].dims == ("step",) and partial["time"].attrs["units"] == "s"
     resumed = _run(case, out, "--resume")
     assert resumed.wait(timeout=300) == 0, resumed.stderr.read()
     a = json.loads((tmp_path / "whole" / "summary.json").read_text())
@@ -83,6 +84,7 @@ def test_killed_run_resumes_to_the_same_result(tmp_path):
             xr.open_dataset(out / "result.nc") as db:
         np.testing.assert_array_equal(da["film"].values, db["film"].values)
         np.testing.assert_array_equal(da["max_pressure"].values, db["max_pressure"].values)
+        np.testing.assert_allclose(db["time"].values, db.attrs["timestep_s"] * db["step"].values)
         assert "partial" not in db.attrs
 
 

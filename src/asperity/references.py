@@ -314,6 +314,18 @@ def fretting_cycle_comparisons(forces, dissipated, width, hertz, mu, body1, body
 _NEWTONIAN_NOTE = (
     "Newtonian isothermal fit; the solution uses the case's lubricant laws ({laws}), so the "
     "two differ by design: not a check")
+#: What is known of the central-film fits at L -> 0 (``alpha p_h <= ISOVISCOUS``), measured in
+#: session 37 (docs/ehl-robustness.md, "Isoviscous line contacts at M >= 30" and "Low L").
+_LOW_L_NOTES = {
+    "moes_central_film_m": (
+        "; at L = 0 the fit lies 2.5-4.2 % above Herrebrugh's isoviscous-elastic line contact "
+        "solved independently (M = 30-117)"),
+    "nijenbanning_central_film_m": (
+        "; at L near 0 the solver stays 5-8 % under this fit on refined meshes and domains "
+        "(M = 100-1000), and Hamrock-Dowson's soft-EHL fit lies 10-23 % under it: the "
+        "fit's own accuracy there is not known better, so a difference up to about 8 % need "
+        "not be the solver's"),
+}
 
 
 def lubricant_laws(lubricant) -> str:
@@ -464,9 +476,11 @@ def ehl_steady_comparisons(problem, result, reference=None) -> list[Comparison]:
     for key, film in film_formulas(problem).items():
         quantity, attribute, source, anchor = _FILM_ROWS[key]
         checked = own_model and key in _CHECKED_FITS
+        note = own_note if own_model else other_note
+        if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
+            note += _LOW_L_NOTES.get(key, "")
         rows.append(Comparison(quantity, getattr(result, attribute), film,
-                               cite(source, anchor), "m", 0.05 if checked else None,
-                               own_note if own_model else other_note))
+                               cite(source, anchor), "m", 0.05 if checked else None, note))
     rows.append(Comparison(
         "maximum pressure", result.max_pressure, problem.hertz.p_max,
         cite("dry Hertz", "hertz"), "Pa",

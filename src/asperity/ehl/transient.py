@@ -340,9 +340,21 @@ class TransientResult(SolverResult):
                 "film_bin": (0.5 * (self.film_edges[1:] + self.film_edges[:-1]), "m",
                              "film thickness bin centre")}
 
+    #: Attributes of the ``time`` coordinate along ``step`` (CF: an elapsed time in s; no
+    #: reference date, so xarray keeps it as numbers instead of decoding dates).
+    TIME_ATTRS = {"units": "s", "long_name": "time since the start of the run, at the end of "
+                  "the step", "axis": "T"}
+
+    def to_dataset(self):
+        """:meth:`SolverResult.to_dataset` with a ``time`` coordinate (s) along ``step``
+        (:attr:`times`), so that ``ds.swap_dims(step="time")`` or ``ds.max_pressure.plot(
+        x="time")`` work as they do for any time series."""
+        dataset = super().to_dataset()
+        return dataset.assign_coords(time=("step", self.times, dict(self.TIME_ATTRS)))
+
     @property
     def times(self) -> np.ndarray:
-        """Time of each step, s."""
+        """Time at the end of each step, s (``dt`` times the step number)."""
         return self.dt * np.arange(1, self.steps + 1)
 
     @property

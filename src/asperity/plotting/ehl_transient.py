@@ -143,13 +143,18 @@ def surfaces_below(ax, x, film_um, z1, z2, offset=None):
 
 
 def plot_film_histogram(result):
-    """Distribution of the film thickness over the Hertz area and the counting period."""
+    """Distribution of the film thickness over the Hertz area and the counting period.
+
+    The last bin holds every film at or above its lower edge; it is drawn (and named in the
+    legend) only where it holds node-steps.
+    """
     fig, ax = new_figure()
     edges = result.film_edges * 1e6
     share = result.film_counts / max(result.film_counts.sum(), 1)
     ax.stairs(share[:-1], edges[:-1], fill=True, color="tab:gray", label="film thickness")
-    ax.stairs(share[-1:], edges[-2:], fill=True, color="tab:orange",
-              label=f"overflow: h >= {edges[-2]:.3g} um")
+    if result.film_counts[-1] > 0:
+        ax.stairs(share[-1:], edges[-2:], fill=True, color="tab:orange",
+                  label=f"overflow: h >= {edges[-2]:.3g} um")
     ax.set_xlabel("film thickness h (um)")
     ax.set_ylabel("fraction of node-steps in the Hertz contact")
     ax.set_ylim(0.0, 1.15 * max(float(share.max()), 1e-12))

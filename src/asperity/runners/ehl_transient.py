@@ -25,6 +25,7 @@ from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
+from ..ehl.transient import TransientResult
 from ..formatting import format_duration
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
@@ -165,7 +166,9 @@ def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
          "contact_count": variable(("x", "y"), count, "1", "contact count (so far)"),
          "max_pressure": variable("step", max_p, "Pa", "maximum pressure per step")},
         coords={"x": variable("x", x, "m", "x"), "y": variable("y", y, "m", "y"),
-                "step": variable("step", np.arange(1, max_p.size + 1), "1", "time step")},
+                "step": variable("step", np.arange(1, max_p.size + 1), "1", "time step"),
+                "time": xr.Variable("step", dt * np.arange(1, max_p.size + 1),
+                                    dict(TransientResult.TIME_ATTRS))},
         attrs={"analysis": "ehl-transient", "partial": 1, "status": "partial", "steps_done": done,
                "counting_steps_done": steps})
 

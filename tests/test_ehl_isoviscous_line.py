@@ -1,0 +1,120 @@
+"""Isoviscous line contacts at M >= 30 (a rubber roller in water, L = 0): what converges.
+
+The reference is Herrebrugh's isoviscous-elastic line contact solved here independently: the
+once-integrated Reynolds equation ``H^3 dP/dX = lam (H - H_e)`` with the Reynolds exit
+condition at an unknown cavitation point, the half-space line deflection
+``-(1/pi) int P ln|X - S| dS`` (panel integrals), and the load ``int P dX = pi/2``, solved
+by Newton (``scipy.optimize.root``) in Hertzian units. On 800 cells its central film is
+converged to 0.05 % (400 cells: 3.2820, 800: 3.2826 um at M = 30); against Moes' fit it is
+0.975, 0.964, 0.958 at M = 30, 60, 117 (docs/ehl-robustness.md).
+"""
+
+import types
+
+import numpy as np
+import pytest
+from scipy.optimize import root
+
+from asperity.cases import load_case
+from asperity.runners import run_case
+from asperity.runners.ehl_steady import POISEUILLE_LINE_NODES, isoviscous_line_advice
+
+R, LOAD, ETA = 0.01, 2000.0, 1e-3
+E_RUBBER, NU_RUBBER, E_GLASS, NU_GLASS = 10e6, 0.49, 70e9, 0.22
+
+
+def _reduced_modulus():
+    return 2.0 / ((1 - NU_RUBBER**2) / E_RUBBER + (1 - NU_GLASS**2) / E_GLASS)
+
+
+def _speed(M):
+    """Mean speed for Moes' M = W' (2U)^-1/2 of the roller."""
+    ep = _reduced_modulus()
+    return (LOAD / (ep * R) / M) ** 2 * ep * R / (2.0 * ETA)
+
+
+def _herrebrugh_central_film(M, x_in=-2.5, cells=(100, 400)):
+    """Central film (m) of the isoviscous-elastic line contact, solved here (Newton on 100
+    cells from a Hertzian start, then on 400 from that solution)."""
+    ep = _reduced_modulus()
+    a = np.sqrt(8.0 * LOAD * R / (np.pi * ep))
+    ph = a * ep / (4.0 * R)
+    lam = 12.0 * ETA * _speed(M) * R**2 / (a**3 * ph)
+
+    def antiderivative(t):
+        return np.where(t == 0.0, 0.0, t * np.log(np.abs(t) + (t == 0.0)) - t)
+
+    def fields(z, n):
+        X = np.linspace(x_in, z[-1], n + 1)
+        P = np.r_[0.0, z[:n - 1], 0.0]
+        e = np.r_[X[0], 0.5 * (X[1:] + X[:-1]), X[-1]]
+        d = X[:, None] - e[None, :]
+        kernel = antiderivative(d[:, :-1]) - antiderivative(d[:, 1:])
+        return X, P, z[n - 1] + X**2 / 2 - kernel @ P / np.pi
+
+    def residual(z, n):
+        X, P, H = fields(z, n)
+        Hm = 0.5 * (H[1:] + H[:-1])
+        flow = Hm**3 * np.diff(P) / np.diff(X) - lam * (Hm - H[-1])
+        return np.r_[flow / lam, np.trapezoid(P, X) - np.pi / 2]
+
+    moes = 2.621 * M**-0.2 * np.sqrt(2 * ETA * _speed(M) / (ep * R)) * R**2 / a**2
+    X = np.linspace(x_in, 1.1, cells[0] + 1)
+    P = np.sqrt(np.clip(1 - X**2, 0, None))
+    P *= np.pi / 2 / np.trapezoid(P, X)
+    z = np.r_[P[1:-1], 0.3 * moes, 1.1]
+    for n in cells:
+        sol = root(residual, z, args=(n,), method="hybr", options={"xtol": 1e-12})
+        assert sol.success and np.abs(sol.fun).max() < 1e-9
+        X, P, H = fields(sol.x, n)
+        finer = np.linspace(x_in, sol.x[-1], cells[-1] + 1)
+        z = np.r_[np.interp(finer, X, P)[1:-1], sol.x[n - 1], sol.x[-1]]
+    return float(np.interp(0.0, X, H)) * a**2 / R
+
+
+CASE = {
+    "analysis": "ehl-steady", "title": "rubber roller in water",
+    "body1": {"youngs_modulus": "10 MPa", "poisson_ratio": NU_RUBBER},
+    "body2": {"youngs_modulus": "70 GPa", "poisson_ratio": NU_GLASS},
+    "contact": {"type": "line", "radius": "10 mm", "load_per_length": "2 kN/m"},
+    "lubricant": {"eta0": "1 mPa s", "alpha": "0 1/GPa", "viscosity_model": "barus",
+                  "density_model": "incompressible"},
+}
+
+
+def test_the_advised_mesh_converges_near_an_independent_isoviscous_solution(tmp_path):
+    """M = 60: the default mesh (1025 nodes) ended at residual 1e-3 after 160,000 sweeps;
+    the advised 257 nodes on -1.5a..1.2a converge, 1.390 um against 1.412 um solved here
+    (-1.6 %), and the mesh line says that a finer mesh would not converge."""
+    reference = _herrebrugh_central_film(60.0)
+    assert reference == pytest.approx(1.412e-6, rel=2e-3)
+    data = {**CASE, "speeds": {"u": f"{_speed(60.0)} m/s"},
+            "grid": {"nx": POISEUILLE_LINE_NODES, "x_min": -1.5, "x_max": 1.2}}
+    outcome = run_case(load_case(data))
+    assert outcome.converged
+    film = outcome.summary["central_film_thickness_m"]
+    assert film == pytest.approx(reference, rel=0.03)
+    mesh = [w for w in outcome.warnings if w.startswith("mesh: dx")]
+    assert len(mesh) == 1 and f"at most {POISEUILLE_LINE_NODES} nodes" in mesh[0]
+    moes = [c for c in outcome.comparisons if c.source.startswith("Moes")]
+    assert len(moes) == 1 and "2.5-4.2 % above Herrebrugh" in moes[0].note
+
+
+@pytest.mark.parametrize("M, ratio", [(30.0, 0.975), (60.0, 0.964), (117.0, 0.958)])
+def test_moes_fit_at_l_zero_lies_above_the_isoviscous_solution(M, ratio):
+    """The comparison row's note at L = 0: Moes' line fit lies 2.5-4.2 % above the
+    isoviscous-elastic solution solved here (-2.5a inlet; 400 cells, within 0.05 % of 800)."""
+    from asperity.ehl.formulas import moes_line
+
+    fit = moes_line(LOAD, R, _speed(M), ETA, 0.0, _reduced_modulus()).central
+    assert _herrebrugh_central_film(M) / fit == pytest.approx(ratio, abs=2e-3)
+
+
+def test_an_unconverged_isoviscous_line_contact_is_told_what_converges():
+    """The generic advice (more sweeps, the inlet and the mesh) did not help: the note now
+    names the mesh and domain that converged."""
+    problem = load_case({**CASE, "speeds": {"u": f"{_speed(117.0)} m/s"}}).problem()
+    advice = isoviscous_line_advice(problem, types.SimpleNamespace(x=np.zeros(2049)))
+    assert "grid.nx = 257" in advice and "grid.x_min = -1.5" in advice
+    assert "M = 117" in advice
+    assert isoviscous_line_advice(problem, types.SimpleNamespace(x=np.zeros(257))) == ""
