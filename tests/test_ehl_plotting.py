@@ -52,7 +52,7 @@ def test_film_histogram_names_its_overflow_bin_only_when_it_holds_films():
     try:
         names = [[t.get_text() for t in fig.axes[0].get_legend().texts] for fig in (empty, full)]
         assert names[0] == ["film thickness"]
-        assert names[1] == ["film thickness", "overflow: h >= 0.9 um"]
+        assert names[1] == ["film thickness", "overflow: h >= 0.9 µm"]
     finally:
         plt.close(empty)
         plt.close(full)

@@ -152,7 +152,7 @@ def test_film_histogram_labels_its_overflow_bin():
     result, _ = _transient_result()
     fig = plot_film_histogram(result)
     labels = [t.get_text() for t in fig.axes[0].get_legend().texts]
-    assert any(label.startswith("overflow: h >= 0.9 um") for label in labels)
+    assert any(label.startswith("overflow: h >= 0.9 µm") for label in labels)
 
 
 def test_flow_vectors_have_an_arrow_scale_and_equal_axes():

@@ -65,7 +65,7 @@ def plot_centre_line(result, problem, index=-1, offset=None):
     ax.set_ylabel("pressure (GPa)")
     ax2 = ax.twinx()
     h = result.centre_film[index] * 1e6
-    ax2.plot(x, h, color="tab:blue", lw=1.0, label="film h (um)")
+    ax2.plot(x, h, color="tab:blue", lw=1.0, label="film h (µm)")
     surfaces_below(ax2, x, h, result.centre_surface1[index], result.centre_surface2[index],
                    offset)
     band = ax.axvspan(-1.0, 1.0, color="0.92", zorder=0)
@@ -139,7 +139,7 @@ def surfaces_below(ax, x, film_um, z1, z2, offset=None):
     ax.plot(x, -gap - z1, color="tab:gray", lw=0.8)
     ax.plot(x, -2.0 * gap + z2, color="tab:gray", lw=0.8)
     ax.set_ylim(-2.0 * gap - 1.2 * relief, 3.0 * h_contact)
-    ax.set_ylabel("film; surfaces below, offset (um)")
+    ax.set_ylabel("film; surfaces below, offset (µm)")
 
 
 def plot_film_histogram(result):
@@ -154,8 +154,8 @@ def plot_film_histogram(result):
     ax.stairs(share[:-1], edges[:-1], fill=True, color="tab:gray", label="film thickness")
     if result.film_counts[-1] > 0:
         ax.stairs(share[-1:], edges[-2:], fill=True, color="tab:orange",
-                  label=f"overflow: h >= {edges[-2]:.3g} um")
-    ax.set_xlabel("film thickness h (um)")
+                  label=f"overflow: h >= {edges[-2]:.3g} µm")
+    ax.set_xlabel("film thickness h (µm)")
     ax.set_ylabel("fraction of node-steps in the Hertz contact")
     ax.set_ylim(0.0, 1.15 * max(float(share.max()), 1e-12))
     ax.legend(loc="upper left", fontsize=8)
@@ -184,7 +184,7 @@ def plot_flow_vectors(result, problem, arrows=(14, 12)):
     top = 3.0 * float(np.median(h_um[inside])) if inside.any() else float(h_um.max())
     levels = MaxNLocator(12).tick_values(0.0, max(top, 1e-6))
     cs = ax.contourf(X, Y, np.clip(h_um, None, levels[-1]), levels=levels, cmap="viridis")
-    fig.colorbar(cs, ax=ax, label="film thickness h (um)", shrink=0.9)
+    fig.colorbar(cs, ax=ax, label="film thickness h (µm)", shrink=0.9)
     sx = max(len(xa) // arrows[0], 1)
     sy = max(len(ya) // arrows[1], 1)
     sub = (slice(sx // 2, None, sx), slice(sy // 2, None, sy))
