@@ -238,7 +238,7 @@ window = "0.5 mm"
     ('mass = "250 kg"', "", "surface.mass"),
     ('natural_frequency = [28, 34]', 'natural_frequency = [28, 28]', "surface.natural_frequency"),
     ('natural_frequency = [28, 34]', 'natural_frequency = [28, "x"]',
-     "surface.natural_frequency.1"),
+     "surface.natural_frequency[1]"),
     ('"0.794 mm"', '"0.01 mm"', "surface.feed"),
     ('"61 m/min"', '"0.001 m/min"', "surface.length"),
     ('"61 m/min"', '"61 kg"', "surface.cutting_speed"),
@@ -255,7 +255,7 @@ def test_bad_surface_case_gives_one_line_naming_the_key(old, new, field):
 
 
 @pytest.mark.parametrize("text, field", [
-    ('kind = "builtin"\nprofile = "D"', "surface.profile.0"),
+    ('kind = "builtin"\nprofile = "D"', "surface.profile[0]"),
     ('kind = "builtin"\nprofile = "A"\nmass = 3', "surface.mass"),
     ('kind = "file"\npath = "no-such-file.csv"', "surface.path"),
     ('kind = "gaussian"\nlength = 1e-3\nspacing = 1e-6\nrms = 1e-6', "surface.correlation_length"),
