@@ -569,6 +569,18 @@ def _pitch_by_hand(pair, torque, omega1):
     return radius, share * f_bn * cos_bb / pair.face_width, omega1 * rho1
 
 
+def _turbo_pitch_point():
+    """A user's turbo pair (z 37/113, m_n 4, beta 12 deg, b 150 mm, 3000 N m at 12 000 rpm,
+    Barus oil of 12 mPa s and 12 1/GPa) solved at its pitch point: (pair, oil, omega, path)."""
+    pair = GearPair((37, 113), 4e-3, 20 * DEG, 12 * DEG, (0.0, 0.0), 150e-3)
+    oil = Lubricant(viscosity=0.012, pressure_viscosity=12e-9, viscosity_model="barus",
+                    compressible=False)
+    omega = 12000 * 2 * math.pi / 60
+    return pair, oil, omega, solve_path(pair, np.array([pair.points["C"]]), pinion_speed=omega,
+                                        torque=3000.0, body1=STEEL, body2=STEEL,
+                                        lubricant=oil, roughness=0.42e-6)
+
+
 def test_a_thick_film_gets_a_fully_flooded_inlet():
     """A user's turbo pair (z 37/113, m_n 4, beta 12 deg, b 150 mm, 3000 N m at 12 000 rpm,
     12 mPa s, 12 1/GPa; M = 2.7, a film of 0.9 a^2/R in Hertzian units) had its pitch film
@@ -577,12 +589,7 @@ def test_a_thick_film_gets_a_fully_flooded_inlet():
     solver is within 2.5 % of them (a far inlet, -9.5 a, adds 0.7 %). The inlet of each
     position is now at least Hamrock & Dowson's fully flooded distance (counted 1.8 times:
     -6.2 a here), at the mesh's spacing; tolerance 4 % against the formula by hand."""
-    pair = GearPair((37, 113), 4e-3, 20 * DEG, 12 * DEG, (0.0, 0.0), 150e-3)
-    oil = Lubricant(viscosity=0.012, pressure_viscosity=12e-9, viscosity_model="barus",
-                    compressible=False)
-    omega = 12000 * 2 * math.pi / 60
-    res = solve_path(pair, np.array([pair.points["C"]]), pinion_speed=omega, torque=3000.0,
-                     body1=STEEL, body2=STEEL, lubricant=oil, roughness=0.42e-6)
+    pair, oil, omega, res = _turbo_pitch_point()
     radius, w, u = _pitch_by_hand(pair, 3000.0, omega)
     assert res.load[0] == pytest.approx(w, rel=1e-9)
     assert res.kin.reduced_radius[0] == pytest.approx(radius, rel=1e-9)
@@ -756,12 +763,7 @@ def test_the_handoff_of_a_thick_film_gets_a_fully_flooded_inlet():
     spacing, and a steady solve on it is within 3 % of Dowson-Higginson."""
     from asperity.gears import contact_problem
 
-    pair = GearPair((37, 113), 4e-3, 20 * DEG, 12 * DEG, (0.0, 0.0), 150e-3)
-    oil = Lubricant(viscosity=0.012, pressure_viscosity=12e-9, viscosity_model="barus",
-                    compressible=False)
-    omega = 12000 * 2 * math.pi / 60
-    res = solve_path(pair, np.array([pair.points["C"]]), pinion_speed=omega, torque=3000.0,
-                     body1=STEEL, body2=STEEL, lubricant=oil, roughness=0.42e-6)
+    pair, oil, omega, res = _turbo_pitch_point()
     problem = contact_problem(pair, res.kin, 0, float(res.load[0]), STEEL, STEEL, oil)
     grid = {"nx": 129, "x_min": -2.5, "x_max": 1.5}
     tables = {k: {} for k in ("body1", "body2", "lubricant", "surface1", "surface2", "time")}
