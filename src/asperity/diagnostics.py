@@ -1403,6 +1403,13 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
 COARSE_FILE_FACTOR = 2.0
 
 
+def _file_and_grid_axes(spacing, x, y):
+    """(axis, file interval, grid spacing, grid nodes) along x (and y) of a measured file's
+    sampling against a grid's cell centres."""
+    return [(axis, h, _spacing(coord), np.asarray(coord).size)
+            for axis, h, coord in zip("xy", spacing, (x, y), strict=False)]
+
+
 def coarse_roughness_file(label: str, spacing, x, y,
                           factor: float = COARSE_FILE_FACTOR) -> list[str]:
     """A measured roughness file sampled more coarsely than the contact grid.
@@ -1427,12 +1434,9 @@ def coarse_roughness_file(label: str, spacing, x, y,
     list of str
         At most one line.
     """
-    coarse = []
-    for axis, h, coord in zip("xy", spacing, (x, y), strict=False):
-        d = _spacing(coord)
-        if h > factor * d * (1.0 + 1e-9):  # (a grid of exactly half the interval: no line)
-            cells = math.floor(np.asarray(coord).size * d * factor / h + 1e-9)
-            coarse.append((axis, h, d, max(cells, 1)))
+    coarse = [(axis, h, d, max(math.floor(n * d * factor / h + 1e-9), 1))
+              for axis, h, d, n in _file_and_grid_axes(spacing, x, y)
+              if h > factor * d * (1.0 + 1e-9)]  # (a grid of exactly half: no line)
     if not coarse:
         return []
     found = " and ".join(f"{h * 1e6:.3g} um apart along {axis}, {h / d:.3g} times the grid's "
@@ -1482,11 +1486,9 @@ def decimated_roughness_file(label: str, spacing, x, y, file_slope: float,
     list of str
         At most one line.
     """
-    coarse = []
-    for axis, h, coord in zip("xy", spacing, (x, y), strict=False):
-        d = _spacing(coord)
-        if np.asarray(coord).size > 1 and d > factor * h * (1.0 + 1e-9):
-            coarse.append((axis, h, d, math.ceil(np.asarray(coord).size * d / h - 1e-9)))
+    coarse = [(axis, h, d, math.ceil(n * d / h - 1e-9))
+              for axis, h, d, n in _file_and_grid_axes(spacing, x, y)
+              if n > 1 and d > factor * h * (1.0 + 1e-9)]
     if not coarse:
         return []
     found = " and ".join(f"d{axis} = {d * 1e6:.3g} um, {d / h:.3g} times the file's "
