@@ -38,6 +38,7 @@ from .parameters import residual_heights
 from .readers.layout import interpret
 from .readers.text import read_table
 from .readers.units import parse_length
+from .readers.zygo import is_zygo, read_zygo
 from .topography import Profile, Topography
 
 __all__ = ["MAX_SPACING", "PLAUSIBLE_HEIGHT", "PLAUSIBLE_LENGTH", "PLAUSIBLE_SLOPE",
@@ -408,6 +409,35 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
                    missing == "mask", described, zf)
 
 
+def _read_zygo(path: Path, spacing, units: _Units, missing: str) -> Reading:
+    """A Zygo ASCII or XYZ data file (:mod:`asperity.surfaces.readers.zygo`): heights in
+    metres from its header's wavelength and factors, the pixel size its camera resolution."""
+    data = read_zygo(path)
+    notes: list[str] = [f"heights and pixel size from the Zygo header: {data.style}"]
+    warnings: list[str] = []
+    if units.x is not None or units.z is not None:
+        warnings.append("units: the Zygo header's (metres, from its wavelength and camera "
+                        "resolution) are used and the unit given is ignored: leave unit, "
+                        "x_unit and z_unit out for this file; a wrong pixel size is replaced "
+                        "by giving the spacing (--spacing; case file: spacing)")
+    heights, filled, lost = _missing(data.heights, missing, str(path), notes)
+    from_header = spacing is None
+    if from_header:
+        if data.pixel_size <= 0:
+            raise InputError("spacing", f"a grid spacing for {path}, whose Zygo header gives "
+                             "no camera resolution: give it with its unit, --spacing "
+                             "\"0.5 um\" (case file: spacing = \"0.5 um\")")
+        spacing = data.pixel_size
+    elif data.pixel_size > 0:
+        _replaced_spacing(spacing, (data.pixel_size, data.pixel_size), warnings)
+    surface = _from_heights(heights, spacing, str(path))
+    described = "x and heights in metres from the Zygo header"
+    if from_header:
+        _plausible(surface, (True, True), described, warnings, _CHECK_PIXEL)
+    return Reading(surface, data.style, tuple(notes), tuple(warnings), filled, lost,
+                   missing == "mask", described, 1.0)
+
+
 def _read_npz(path: Path, spacing, missing: str) -> Reading:
     with np.load(path, allow_pickle=False) as f:
         arrays = {k: f[k] for k in f.files}
@@ -543,6 +573,8 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         raise InputError("file", "an existing file", str(path))
     suffix = path.suffix.lower()
     if suffix in TEXT_SUFFIXES:
+        if is_zygo(path):
+            return _read_zygo(path, spacing, units, missing)
         return _read_text(path, spacing, units, missing, resample)
     if suffix == ".npz":
         return _read_npz(path, spacing, missing)
