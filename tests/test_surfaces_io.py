@@ -199,3 +199,19 @@ def test_a_spacing_given_over_the_headers_is_warned(tmp_path):
         "spacing: the spacing given (2 um) replaces the header's (1 um)")]
     assert not [w for w in read_measured(path, spacing=1e-6).warnings
                 if w.startswith("spacing")]
+
+
+def test_one_spacing_given_over_a_headers_dx_and_dy_is_warned(tmp_path):
+    """One spacing given for a file whose header gives dx and dy (``Pixel size: 0.5 x 0.8
+    um``) replaces both, with the warning naming the header's two; it was a traceback."""
+    from asperity.surfaces import read_measured
+
+    path = tmp_path / "map.txt"
+    path.write_text("# Pixel size: 0.5 x 0.8 um\n# Z unit: um\n"
+                    + "\n".join(" ".join(f"{0.1 * np.sin(i + 2 * j):.4f}" for i in range(6))
+                                for j in range(5)) + "\n")
+    given = read_measured(path, spacing=0.6e-6)
+    assert given.surface.spacing == pytest.approx((0.6e-6, 0.6e-6))
+    assert [w for w in given.warnings if w.startswith(
+        "spacing: the spacing given (0.6 um, 0.6 um) replaces the header's (0.5 um, 0.8 um)")]
+    assert read_measured(path).surface.spacing == pytest.approx((0.5e-6, 0.8e-6))
