@@ -11,6 +11,9 @@ Formats (chosen by the file's suffix):
   warned about whatever its unit came from, naming where (:attr:`Reading.units`). An x column
   rounded to its printed precision is taken as uniform (with a note); a non-uniform one is
   resampled by cubic spline on request.
+- Zygo MetroPro/Mx ASCII and XYZ data files and Wyko/Vision ASCII files (text suffixes,
+  recognised by their first line): read by their fixed headers
+  (:mod:`asperity.surfaces.readers.zygo`, :mod:`asperity.surfaces.readers.wyko`), in metres.
 - ``.npy``: a 1-D array of heights or a 2-D height matrix (needs a spacing).
 - ``.npz``: arrays ``z`` and optionally ``x``, ``y``, ``periodic`` (what :func:`write_surface`
   writes); without ``x`` a spacing is needed.
