@@ -276,6 +276,15 @@ def test_bad_kind_keys_name_the_key(text, field):
     assert str(exc.value).startswith(field + ":"), str(exc.value)
 
 
+def test_form_degree_under_surface_is_sent_to_evaluation():
+    """A surface analysis takes form_degree under [evaluation] (a contact under [roughness]);
+    under [surface] it read "unknown key (check the spelling)"."""
+    with pytest.raises(InputError, match=r"^surface\.form_degree: expected it under "
+                                         r"\[evaluation\] .*\(evaluation\.form_degree\)"):
+        load_case('analysis = "surface"\n[surface]\nkind = "file"\n'
+                  'path = "builtin:ground-profile.csv"\nform_degree = 2\n')
+
+
 @pytest.mark.parametrize("profile, message", [
     ('"D"', "surface.profile: expected 'A', 'B' or 'C', got 'D'"),
     ("[]", "surface.profile: expected a list of at least 1 item, got 0"),

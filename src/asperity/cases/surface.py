@@ -127,6 +127,16 @@ class SurfaceSpec(SurfaceKeys):
     mass: Quantity("mass", ge=1e-6, le=1e6) | None = None
     """Effective mass of the tool (tool-vibration model)."""
 
+    @model_validator(mode="before")
+    @classmethod
+    def _form_degree_elsewhere(cls, data):
+        """``form_degree`` belongs to ``[evaluation]`` here (a contact's ``[roughness]`` takes
+        it itself): say so rather than "unknown key"."""
+        if isinstance(data, dict) and "form_degree" in data:
+            raise _key_error("form_degree", "expected it under [evaluation] in a surface "
+                             "analysis (evaluation.form_degree)", data["form_degree"])
+        return data
+
     @field_validator("profile", "natural_frequency")
     @classmethod
     def _distinct(cls, value):
