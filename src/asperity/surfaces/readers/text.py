@@ -15,7 +15,9 @@ lines, a line of column names) followed by a block of numbers. The reader
    data line or more (a data line with a marker the reader does not know, which would
    otherwise cut the data in two and keep only the part after it);
 3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
-   the last header line with one name per column.
+   the last header line with one name per column; when that line holds only length units
+   (``mm,um``) and the line above it one name per column, the two make the names
+   (``Distance [mm]``), and a line of units alone makes names of units (``[mm]``).
 
 :func:`read_table` returns the numbers with NaN for missing values, the column names, the header
 pairs and the printed resolution of each column (for rounded coordinates). Interpreting them
@@ -179,6 +181,27 @@ _INTEGER = re.compile(r"^[+-]?\d+$")
 _DIGITS = re.compile(r"^\d+([eE][+-]?\d+)?$")
 
 
+def _unit_row(fields: list[str]) -> bool:
+    """Whether every field is a length unit (``mm``, ``[um]``, ``(nm)``): a line of units."""
+    return all(length_factor(f.strip().strip("[]()")) is not None for f in fields)
+
+
+def _names_over_units(units: list[str], header_lines: list[str], width: int):
+    """Column names for a line of units under a line of names (``Distance,Height`` then
+    ``mm,um``, as spreadsheets and several instruments export): ``Distance [mm]``; a line of
+    units alone gives ``[mm]``. The units line was taken for the names and its units lost: the
+    numbers were read as metres. Returns the names and the header lines left."""
+    bare = [u.strip().strip("[]()") for u in units]
+    plain = [line for line in header_lines
+             if line.strip() and _split(_COMMENT.sub("", line).strip()) != units]
+    above = _split(_COMMENT.sub("", plain[-1])) if plain else []
+    if (len(above) == width and not _unit_row(above)
+            and all(_value(f, False) is None for f in above)):
+        return ([f"{n} [{u}]" for n, u in zip(above, bare, strict=True)],
+                [h for h in header_lines if h is not plain[-1]])
+    return [f"[{u}]" for u in bare], header_lines
+
+
 def _decimal_commas(names: list[str], line: str, rows: list[list[str]]) -> bool:
     """Whether comma-separated column ``names`` over data lines of twice as many fields read
     as numbers written with decimal commas and a comma separator (``x_mm,z_um`` over
@@ -286,6 +309,8 @@ def read_table(path: Path) -> TextTable:
         if len(fields) == width and all(_value(f, False) is None for f in fields):
             names = fields
             header_lines = [h for h in header_lines if h is not line]
+            if _unit_row(fields):
+                names, header_lines = _names_over_units(fields, header_lines, width)
         elif _decimal_commas(fields, line, tokens):
             raise InputError(str(path), f"one field per column named in the header line "
                              f"{line.strip()!r}: its {len(fields)} names are separated by "
