@@ -251,3 +251,22 @@ def test_a_line_of_units_under_xyz_names_gives_each_its_unit(tmp_path):
     reading = read_measured(path)
     assert reading.surface.spacing == pytest.approx((0.5e-6, 0.5e-6))
     np.testing.assert_allclose(reading.surface.z, z * 1e-9, rtol=0, atol=1e-13)
+
+
+def test_results_after_the_data_are_a_footer(tmp_path):
+    """Results appended after the data (``"Ra","0.0376","um"``), as stylus exports write them,
+    are a footer; they were refused as a data line with a word. A data line with a word is
+    still refused, naming its line."""
+    from asperity.surfaces import read_measured
+
+    x = np.arange(200) * 0.5
+    z = 0.2 * np.sin(2 * np.pi * x / 30.0)
+    body = "".join(f'"{a:.2f}","{b:.5f}"\n' for a, b in zip(x, z, strict=True))
+    path = tmp_path / "sj.csv"
+    path.write_text('"X(um)","Z(um)"\n' + body + '"Ra","0.127","um"\n"Rz","0.62","um"\n'
+                    '"Judgement","OK"\n')
+    reading = read_measured(path)
+    np.testing.assert_allclose(reading.surface.z, z * 1e-6, rtol=0, atol=1e-11)
+    path.write_text('"X(um)","Z(um)"\n' + body + '"100.00","NoValue"\n')
+    with pytest.raises(InputError, match=r"sj\.csv:202: expected numbers only, got 'NoValue'"):
+        read_measured(path)

@@ -9,8 +9,9 @@ lines, a line of column names) followed by a block of numbers. The reader
    comma inside quotes is part of the field);
 2. takes as the data block the last run of lines whose fields are all numbers or missing-value
    markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, Zygo's
-   two-word ``No Data``, ...); every line before it is header; after it only lines of words (a
-   footer) may follow -- a line mixing numbers and words is an error naming the line, and so
+   two-word ``No Data``, ...); every line before it is header; after it only lines of words or
+   results written ``key,value[,unit]`` (a footer) may follow -- another line mixing numbers
+   and words is an error naming the line, and so
    is the line just above the block when it starts with a number and has as many fields as a
    data line or more (a data line with a marker the reader does not know, which would
    otherwise cut the data in two and keep only the part after it);
@@ -181,6 +182,15 @@ _INTEGER = re.compile(r"^[+-]?\d+$")
 _DIGITS = re.compile(r"^\d+([eE][+-]?\d+)?$")
 
 
+def _footer(fields: list[str]) -> bool:
+    """Whether a line after the data block is a footer: words only, or a result as
+    ``key,value[,unit]`` (``"Ra","0.0376","um"``, as stylus exports append their results) --
+    a word first and one number. Such a result line was refused as a data line with a word."""
+    numbers = sum(bool(_NUMBER.match(f)) for f in fields)
+    return numbers == 0 or (numbers == 1 and len(fields) <= 3
+                            and _value(fields[0], False) is None)
+
+
 def _unit_row(fields: list[str]) -> bool:
     """Whether every field is a length unit (``mm``, ``[um]``, ``(nm)``): a line of units."""
     return all(length_factor(f.strip().strip("[]()")) is not None for f in fields)
@@ -280,9 +290,8 @@ def read_table(path: Path) -> TextTable:
         if parsed[i] is None:
             text = lines[i].strip()
             fields = _split(text)
-            if not text or _COMMENT.match(lines[i]) or (
-                    i > last and not any(_NUMBER.match(f) for f in fields)):
-                continue  # blank, comment, or a footer of words after the data block
+            if not text or _COMMENT.match(lines[i]) or (i > last and _footer(fields)):
+                continue  # blank, comment, or a footer after the data block
             bad = next((f for f in _split(text) if _value(f, False) is None), text)
             raise InputError(f"{path}:{i + 1}", "numbers only", bad)
         values, fields = parsed[i]
