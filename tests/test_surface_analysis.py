@@ -239,6 +239,9 @@ window = "0.5 mm"
     ('natural_frequency = [28, 34]', 'natural_frequency = [28, 28]', "surface.natural_frequency"),
     ('natural_frequency = [28, 34]', 'natural_frequency = [28, "x"]',
      "surface.natural_frequency[1]"),
+    # one value where a list is taken is named as written, not as the list of one it becomes
+    ('natural_frequency = [28, 34]', 'natural_frequency = "x"', "surface.natural_frequency"),
+    ('natural_frequency = [28, 34]', 'natural_frequency = -5', "surface.natural_frequency"),
     ('"0.794 mm"', '"0.01 mm"', "surface.feed"),
     ('"61 m/min"', '"0.001 m/min"', "surface.length"),
     ('"61 m/min"', '"61 kg"', "surface.cutting_speed"),
@@ -255,7 +258,8 @@ def test_bad_surface_case_gives_one_line_naming_the_key(old, new, field):
 
 
 @pytest.mark.parametrize("text, field", [
-    ('kind = "builtin"\nprofile = "D"', "surface.profile[0]"),
+    ('kind = "builtin"\nprofile = "D"', "surface.profile"),
+    ('kind = "builtin"\nprofile = ["A", "D"]', "surface.profile[1]"),
     ('kind = "builtin"\nprofile = "A"\nmass = 3', "surface.mass"),
     ('kind = "file"\npath = "no-such-file.csv"', "surface.path"),
     ('kind = "gaussian"\nlength = 1e-3\nspacing = 1e-6\nrms = 1e-6', "surface.correlation_length"),
@@ -270,6 +274,25 @@ def test_bad_kind_keys_name_the_key(text, field):
     with pytest.raises(InputError) as exc:
         load_case(f'analysis = "surface"\n[surface]\n{text}\n')
     assert str(exc.value).startswith(field + ":"), str(exc.value)
+
+
+def test_form_degree_under_surface_is_sent_to_evaluation():
+    """A surface analysis takes form_degree under [evaluation] (a contact under [roughness]);
+    under [surface] it read "unknown key (check the spelling)"."""
+    with pytest.raises(InputError, match=r"^surface\.form_degree: expected it under "
+                                         r"\[evaluation\] .*\(evaluation\.form_degree\)"):
+        load_case('analysis = "surface"\n[surface]\nkind = "file"\n'
+                  'path = "builtin:ground-profile.csv"\nform_degree = 2\n')
+
+
+@pytest.mark.parametrize("profile, message", [
+    ('"D"', "surface.profile: expected 'A', 'B' or 'C', got 'D'"),
+    ("[]", "surface.profile: expected a list of at least 1 item, got 0"),
+])
+def test_a_single_value_for_a_list_is_reported_as_written(profile, message):
+    with pytest.raises(InputError) as exc:
+        load_case(f'analysis = "surface"\n[surface]\nkind = "builtin"\nprofile = {profile}\n')
+    assert str(exc.value) == message
 
 
 @pytest.mark.parametrize("evaluation, field", [

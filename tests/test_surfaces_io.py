@@ -199,3 +199,74 @@ def test_a_spacing_given_over_the_headers_is_warned(tmp_path):
         "spacing: the spacing given (2 um) replaces the header's (1 um)")]
     assert not [w for w in read_measured(path, spacing=1e-6).warnings
                 if w.startswith("spacing")]
+
+
+def test_one_spacing_given_over_a_headers_dx_and_dy_is_warned(tmp_path):
+    """One spacing given for a file whose header gives dx and dy (``Pixel size: 0.5 x 0.8
+    um``) replaces both, with the warning naming the header's two; it was a traceback."""
+    from asperity.surfaces import read_measured
+
+    path = tmp_path / "map.txt"
+    path.write_text("# Pixel size: 0.5 x 0.8 um\n# Z unit: um\n"
+                    + "\n".join(" ".join(f"{0.1 * np.sin(i + 2 * j):.4f}" for i in range(6))
+                                for j in range(5)) + "\n")
+    given = read_measured(path, spacing=0.6e-6)
+    assert given.surface.spacing == pytest.approx((0.6e-6, 0.6e-6))
+    assert [w for w in given.warnings if w.startswith(
+        "spacing: the spacing given (0.6 um, 0.6 um) replaces the header's (0.5 um, 0.8 um)")]
+    assert read_measured(path).surface.spacing == pytest.approx((0.5e-6, 0.8e-6))
+
+
+@pytest.mark.parametrize("head", ["Distance,Height\nmm,um\n", "Distance,Height\n[mm],(um)\n",
+                                  "mm,um\n", "# probe: 2 um tip\n# Distance Height\n# mm um\n"])
+def test_a_line_of_units_under_the_names_gives_the_units(tmp_path, head):
+    """A line of units under (or instead of) the column names, as spreadsheets and several
+    instruments export them: the x in mm and the heights in um were read as metres (a
+    0.3 um sine as 0.3 m, with warnings naming --x-unit um)."""
+    from asperity.surfaces import read_measured
+
+    x = np.arange(400) * 0.5e-6
+    z = 0.3e-6 * np.sin(2 * np.pi * x / 40e-6)
+    sep = " " if head.startswith("#") else ","
+    lines = [f"{a * 1e3:.4f}{sep}{b * 1e6:.5f}" for a, b in zip(x, z, strict=True)]
+    path = tmp_path / "trace.csv"
+    path.write_text(head + "\n".join(lines) + "\n")
+    reading = read_measured(path)
+    assert not reading.warnings
+    assert reading.surface.spacing == pytest.approx(0.5e-6, rel=1e-6)
+    np.testing.assert_allclose(reading.surface.z, z, rtol=0, atol=1e-11)
+
+
+def test_a_line_of_units_under_xyz_names_gives_each_its_unit(tmp_path):
+    """``X Y Z`` then ``um um nm``: a point list with nm heights (it was refused as unnamed
+    points, the units line taken for the names)."""
+    from asperity.surfaces import read_measured
+
+    col, row = np.meshgrid(np.arange(12), np.arange(8), indexing="ij")
+    z = 20.0 * np.sin(col + 2 * row)  # nm
+    lines = [f"{0.5 * i:.2f}\t{0.5 * j:.2f}\t{v:.4f}"
+             for i, j, v in zip(col.ravel(), row.ravel(), z.ravel(), strict=True)]
+    path = tmp_path / "map.txt"
+    path.write_text("X\tY\tZ\nµm\tµm\tnm\n" + "\n".join(lines) + "\n")
+    reading = read_measured(path)
+    assert reading.surface.spacing == pytest.approx((0.5e-6, 0.5e-6))
+    np.testing.assert_allclose(reading.surface.z, z * 1e-9, rtol=0, atol=1e-13)
+
+
+def test_results_after_the_data_are_a_footer(tmp_path):
+    """Results appended after the data (``"Ra","0.0376","um"``), as stylus exports write them,
+    are a footer; they were refused as a data line with a word. A data line with a word is
+    still refused, naming its line."""
+    from asperity.surfaces import read_measured
+
+    x = np.arange(200) * 0.5
+    z = 0.2 * np.sin(2 * np.pi * x / 30.0)
+    body = "".join(f'"{a:.2f}","{b:.5f}"\n' for a, b in zip(x, z, strict=True))
+    path = tmp_path / "sj.csv"
+    path.write_text('"X(um)","Z(um)"\n' + body + '"Ra","0.127","um"\n"Rz","0.62","um"\n'
+                    '"Judgement","OK"\n')
+    reading = read_measured(path)
+    np.testing.assert_allclose(reading.surface.z, z * 1e-6, rtol=0, atol=1e-11)
+    path.write_text('"X(um)","Z(um)"\n' + body + '"100.00","NoValue"\n')
+    with pytest.raises(InputError, match=r"sj\.csv:202: expected numbers only, got 'NoValue'"):
+        read_measured(path)

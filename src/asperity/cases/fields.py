@@ -9,7 +9,16 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, ValidationInfo
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    ValidationInfo,
+    WrapValidator,
+)
+from pydantic_core import PydanticCustomError
 
 from ..errors import InputError
 from ..units import DIMENSIONS, to_si
@@ -25,6 +34,7 @@ __all__ = [
     "PositivePressure",
     "Moment",
     "Speed",
+    "OneOrList",
     "existing_file",
     "first_error",
 ]
@@ -86,6 +96,31 @@ Moment = Quantity("moment")
 Speed = Quantity("speed")
 
 
+def _one_or_list(value, handler):
+    """Validate a list; a single value is validated as a list of one, and an error in it is
+    reported at the key itself (``surface.profile``), not at an item the user did not write
+    (``surface.profile[0]``)."""
+    if isinstance(value, list | tuple):
+        return handler(value)
+    try:
+        return handler([value])
+    except ValidationError as exc:
+        err = exc.errors(include_url=False)[0]
+        if err["loc"][:1] != (0,):  # not the item's own error (e.g. a length bound)
+            raise
+        raise PydanticCustomError(err["type"], err["msg"].replace("{", "{{").replace("}", "}}"),
+                                  err.get("ctx")) from None
+
+
+def OneOrList(item, **constraints):  # noqa: N802 - reads as a type in annotations
+    """A tuple field of ``item`` values that also takes one value (a list of one).
+
+    Keyword constraints (``min_length``, ``max_length``) apply to the list. An error in a
+    single value names the key as written, without the ``[0]`` of the list it became.
+    """
+    return Annotated[tuple[item, ...], Field(**constraints), WrapValidator(_one_or_list)]
+
+
 def existing_file(cls, value, info: ValidationInfo):
     """Field validator of file paths (use as ``field_validator("path")(existing_file)``).
 
@@ -116,6 +151,8 @@ _PROBLEMS = {
     "extra_forbidden": "unknown key (check the spelling)",
 }
 
+_LENGTHS = {"too_short": ("at least", "min_length"), "too_long": ("at most", "max_length")}
+
 
 def _key(part) -> str:
     """A key as written in a case file; odd keys (spaces, control characters) quoted."""
@@ -143,6 +180,12 @@ def first_error(exc: ValidationError, prefix: str = "") -> InputError:
     field = ".".join(p for p in (prefix, loc) if p) or "case"
     if err["type"] in _PROBLEMS:
         return InputError(field, "", problem=_PROBLEMS[err["type"]])
+    if err["type"] in _LENGTHS:
+        bound, key = _LENGTHS[err["type"]]
+        ctx = err["ctx"]
+        expected = f"a list of {bound} {ctx[key]} item{'s' * (ctx[key] != 1)}"
+        return InputError(field, expected, problem=f"expected {expected}, got "
+                          f"{ctx['actual_length']}")
     msg = err["msg"]
     for lead in ("Value error, ", "Assertion failed, "):
         msg = msg.removeprefix(lead)

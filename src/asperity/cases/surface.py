@@ -19,7 +19,7 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..surfaces.machining import feed_limit, feed_within_limit
-from .fields import CaseHeader, CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, OneOrList, Quantity
 from .roughness import MeasuredFile, SurfaceKeys
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
@@ -68,11 +68,6 @@ def _key_error(key: str | tuple, message: str, value=None) -> ValidationError:
     return ValidationError.from_exception_data("case", [detail])
 
 
-def _as_list(value):
-    """Accept one value where a list is expected."""
-    return value if isinstance(value, list | tuple) else [value]
-
-
 class SurfaceSpec(SurfaceKeys):
     """The surface to analyse: ``kind`` and the keys of that kind (others must be left out).
 
@@ -110,7 +105,7 @@ class SurfaceSpec(SurfaceKeys):
     """Length of a generated surface along x."""
     width: Quantity("length", gt=0) | None = None
     """Width along y of a generated topography (absent: a profile)."""
-    profile: Annotated[tuple[Literal["A", "B", "C"], ...], Field(min_length=1)] | None = None
+    profile: OneOrList(Literal["A", "B", "C"], min_length=1) | None = None
     """Built-in profile "A", "B", "C", or a list of them to compare."""
     feed: Quantity("length", gt=0, le=0.01) | None = None
     """Feed per revolution of a turning tool."""
@@ -118,8 +113,7 @@ class SurfaceSpec(SurfaceKeys):
     """Nose radius of the turning tool."""
     end_relief_angle: Quantity("angle", gt=0, le=math.pi / 2) | None = None
     """End-relief angle of the tool (checks f <= 2 r sin(kappa_e), Seireg eq. 4.1)."""
-    natural_frequency: Annotated[tuple[Frequency, ...],
-                                 Field(min_length=1, max_length=8)] | None = None
+    natural_frequency: OneOrList(Frequency, min_length=1, max_length=8) | None = None
     """Natural frequency of the tool (one value or a list to compare); turns on the tool-vibration
     model."""
     depth_of_cut: Quantity("length", gt=0, le=0.1) | None = None
@@ -133,10 +127,15 @@ class SurfaceSpec(SurfaceKeys):
     mass: Quantity("mass", ge=1e-6, le=1e6) | None = None
     """Effective mass of the tool (tool-vibration model)."""
 
-    @field_validator("profile", "natural_frequency", mode="before")
+    @model_validator(mode="before")
     @classmethod
-    def _one_or_list(cls, value):
-        return None if value is None else _as_list(value)
+    def _form_degree_elsewhere(cls, data):
+        """``form_degree`` belongs to ``[evaluation]`` here (a contact's ``[roughness]`` takes
+        it itself): say so rather than "unknown key"."""
+        if isinstance(data, dict) and "form_degree" in data:
+            raise _key_error("form_degree", "expected it under [evaluation] in a surface "
+                             "analysis (evaluation.form_degree)", data["form_degree"])
+        return data
 
     @field_validator("profile", "natural_frequency")
     @classmethod

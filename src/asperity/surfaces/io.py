@@ -11,6 +11,9 @@ Formats (chosen by the file's suffix):
   warned about whatever its unit came from, naming where (:attr:`Reading.units`). An x column
   rounded to its printed precision is taken as uniform (with a note); a non-uniform one is
   resampled by cubic spline on request.
+- Zygo MetroPro/Mx ASCII and XYZ data files and Wyko/Vision ASCII files (text suffixes,
+  recognised by their first line): read by their fixed headers
+  (:mod:`asperity.surfaces.readers.zygo`, :mod:`asperity.surfaces.readers.wyko`), in metres.
 - ``.npy``: a 1-D array of heights or a 2-D height matrix (needs a spacing).
 - ``.npz``: arrays ``z`` and optionally ``x``, ``y``, ``periodic`` (what :func:`write_surface`
   writes); without ``x`` a spacing is needed.
@@ -38,6 +41,8 @@ from .parameters import residual_heights
 from .readers.layout import interpret
 from .readers.text import read_table
 from .readers.units import parse_length
+from .readers.wyko import is_wyko, read_wyko
+from .readers.zygo import ZygoData, is_zygo, read_zygo
 from .topography import Profile, Topography
 
 __all__ = ["MAX_SPACING", "PLAUSIBLE_HEIGHT", "PLAUSIBLE_LENGTH", "PLAUSIBLE_SLOPE",
@@ -328,9 +333,11 @@ def _spacing_text(lay, given_spacing, given_x: float | None) -> str:
 def _replaced_spacing(given, header, warnings: list) -> None:
     """Warn when a spacing given for a file whose header gives its own differs from it: the
     given one is used, and one of the two is wrong (a user's 2 um over a header's 1 um pixel
-    size made the real contact area 3.1 % instead of 1.8 % without a word)."""
-    wanted = np.atleast_1d(np.asarray(given, dtype=float))
-    have = np.broadcast_to(np.atleast_1d(np.asarray(header, dtype=float)), wanted.shape)
+    size made the real contact area 3.1 % instead of 1.8 % without a word). One value given
+    against a header's dx, dy (``Pixel size: 0.5 x 0.8 um``) is compared with both; it ended
+    in a traceback."""
+    wanted, have = np.broadcast_arrays(np.atleast_1d(np.asarray(given, dtype=float)),
+                                       np.atleast_1d(np.asarray(header, dtype=float)))
     if not np.allclose(wanted, have, rtol=1e-3):
         warnings.append("spacing: the spacing given ("
                         + ", ".join(f"{v * 1e6:.4g} um" for v in wanted) + ") replaces the "
@@ -406,6 +413,38 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
     _plausible(surface, known, described, warnings)
     return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled, lost,
                    missing == "mask", described, zf)
+
+
+def _read_header_format(path: Path, spacing, units: _Units, missing: str) -> Reading:
+    """A Zygo ASCII or XYZ data file (:mod:`asperity.surfaces.readers.zygo`) or a Wyko ASCII
+    file (:mod:`asperity.surfaces.readers.wyko`): heights in metres from the header's
+    wavelength and factors, the pixel size from its camera resolution or ``Pixel_size``."""
+    data = read_zygo(path) if is_zygo(path) else read_wyko(path)
+    name = data.style.split(",")[0]
+    header_spacing = (data.pixel_size,) * 2 if isinstance(data, ZygoData) else data.spacing
+    notes: list[str] = [f"heights and pixel size from the header: {data.style}"]
+    warnings: list[str] = []
+    if units.x is not None or units.z is not None:
+        warnings.append(f"units: the {name}'s own (metres, from its header) are used and the "
+                        "unit given is ignored: leave unit, x_unit and z_unit out for this "
+                        "file; a wrong pixel size is replaced by giving the spacing "
+                        "(--spacing; case file: spacing)")
+    heights, filled, lost = _missing(data.heights, missing, str(path), notes)
+    from_header = spacing is None
+    if from_header:
+        if min(header_spacing) <= 0:
+            raise InputError("spacing", f"a grid spacing for {path}, whose header gives no "
+                             "pixel size: give it with its unit, --spacing \"0.5 um\" (case "
+                             "file: spacing = \"0.5 um\")")
+        spacing = header_spacing
+    elif min(header_spacing) > 0:
+        _replaced_spacing(spacing, header_spacing, warnings)
+    surface = _from_heights(heights, spacing, str(path))
+    described = f"x and heights in metres from the {name}'s header"
+    if from_header:
+        _plausible(surface, (True, True), described, warnings, _CHECK_PIXEL)
+    return Reading(surface, data.style, tuple(notes), tuple(warnings), filled, lost,
+                   missing == "mask", described, 1.0)
 
 
 def _read_npz(path: Path, spacing, missing: str) -> Reading:
@@ -543,6 +582,8 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         raise InputError("file", "an existing file", str(path))
     suffix = path.suffix.lower()
     if suffix in TEXT_SUFFIXES:
+        if is_zygo(path) or is_wyko(path):
+            return _read_header_format(path, spacing, units, missing)
         return _read_text(path, spacing, units, missing, resample)
     if suffix == ".npz":
         return _read_npz(path, spacing, missing)

@@ -353,7 +353,7 @@ def interpret(table: TextTable, where: str) -> Layout:
     if sentinel is not None:
         z = np.where(z == sentinel[0][0], np.nan, z)
     scale, z_unit = _scale(h, z_unit)
-    spacing = _spacing(h, z)
+    spacing = _spacing(h, z, where)
     periodic = str(h.get("periodic", "false")).lower() == "true"
     origin = _quantity(h.get("origin"))
     return Layout(np.asarray(z, float) * scale, x, y, x_unit[0], z_unit[0], x_unit[1],
@@ -363,13 +363,21 @@ def interpret(table: TextTable, where: str) -> Layout:
                   style + ("" if scale == 1.0 else f", heights scaled by {scale:g}"))
 
 
-def _spacing(h: dict, z: np.ndarray) -> tuple[tuple[float, ...], float | None] | None:
+def _spacing(h: dict, z: np.ndarray, where: str) -> tuple[tuple[float, ...], float | None] | None:
     """Spacing from the header's spacing or size keys, and metres per its unit (None: the
-    file's x unit)."""
+    file's x unit). A spacing entry of more than two numbers is refused, naming it: a Wyko
+    block table's ``Pixel_size 7 4 0.00164`` (type, length, value) was taken for three spacings
+    and ended in a traceback when a spacing was given."""
     text = _first(h, _SPACING_KEYS)
     q = _quantity(text)
     if q is not None and (q[1] is not None or "." in text or len(q[0]) > 1 or "spacing" in h):
         values = list(q[0])
+        if len(values) > 2:
+            key = next(k for k in _SPACING_KEYS if k in h)
+            raise InputError(f"{where}: header {key!r}", "one spacing, or two (dx, dy), with "
+                             "their unit: correct that header line, or delete it and give the "
+                             "spacing, --spacing \"0.5 um\" (case file: spacing = \"0.5 um\")",
+                             text)
         qy = _quantity(_first(h, _Y_SPACING_KEYS))
         if qy is not None and len(values) == 1 and qy[1] == q[1]:
             values += qy[0]

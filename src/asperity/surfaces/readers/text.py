@@ -9,13 +9,16 @@ lines, a line of column names) followed by a block of numbers. The reader
    comma inside quotes is part of the field);
 2. takes as the data block the last run of lines whose fields are all numbers or missing-value
    markers (empty field, ``NaN``, ``BAD``, ``***``, ``-``, ``undefined``, ``inf``, Zygo's
-   two-word ``No Data``, ...); every line before it is header; after it only lines of words (a
-   footer) may follow -- a line mixing numbers and words is an error naming the line, and so
+   two-word ``No Data``, ...); every line before it is header; after it only lines of words or
+   results written ``key,value[,unit]`` (a footer) may follow -- another line mixing numbers
+   and words is an error naming the line, and so
    is the line just above the block when it starts with a number and has as many fields as a
    data line or more (a data line with a marker the reader does not know, which would
    otherwise cut the data in two and keep only the part after it);
 3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
-   the last header line with one name per column.
+   the last header line with one name per column; when that line holds only length units
+   (``mm,um``) and the line above it one name per column, the two make the names
+   (``Distance [mm]``), and a line of units alone makes names of units (``[mm]``).
 
 :func:`read_table` returns the numbers with NaN for missing values, the column names, the header
 pairs and the printed resolution of each column (for rounded coordinates). Interpreting them
@@ -179,6 +182,36 @@ _INTEGER = re.compile(r"^[+-]?\d+$")
 _DIGITS = re.compile(r"^\d+([eE][+-]?\d+)?$")
 
 
+def _footer(fields: list[str]) -> bool:
+    """Whether a line after the data block is a footer: words only, or a result as
+    ``key,value[,unit]`` (``"Ra","0.0376","um"``, as stylus exports append their results) --
+    a word first and one number. Such a result line was refused as a data line with a word."""
+    numbers = sum(bool(_NUMBER.match(f)) for f in fields)
+    return numbers == 0 or (numbers == 1 and len(fields) <= 3
+                            and _value(fields[0], False) is None)
+
+
+def _unit_row(fields: list[str]) -> bool:
+    """Whether every field is a length unit (``mm``, ``[um]``, ``(nm)``): a line of units."""
+    return all(length_factor(f.strip().strip("[]()")) is not None for f in fields)
+
+
+def _names_over_units(units: list[str], header_lines: list[str], width: int):
+    """Column names for a line of units under a line of names (``Distance,Height`` then
+    ``mm,um``, as spreadsheets and several instruments export): ``Distance [mm]``; a line of
+    units alone gives ``[mm]``. The units line was taken for the names and its units lost: the
+    numbers were read as metres. Returns the names and the header lines left."""
+    bare = [u.strip().strip("[]()") for u in units]
+    plain = [line for line in header_lines
+             if line.strip() and _split(_COMMENT.sub("", line).strip()) != units]
+    above = _split(_COMMENT.sub("", plain[-1])) if plain else []
+    if (len(above) == width and not _unit_row(above)
+            and all(_value(f, False) is None for f in above)):
+        return ([f"{n} [{u}]" for n, u in zip(above, bare, strict=True)],
+                [h for h in header_lines if h is not plain[-1]])
+    return [f"[{u}]" for u in bare], header_lines
+
+
 def _decimal_commas(names: list[str], line: str, rows: list[list[str]]) -> bool:
     """Whether comma-separated column ``names`` over data lines of twice as many fields read
     as numbers written with decimal commas and a comma separator (``x_mm,z_um`` over
@@ -257,9 +290,8 @@ def read_table(path: Path) -> TextTable:
         if parsed[i] is None:
             text = lines[i].strip()
             fields = _split(text)
-            if not text or _COMMENT.match(lines[i]) or (
-                    i > last and not any(_NUMBER.match(f) for f in fields)):
-                continue  # blank, comment, or a footer of words after the data block
+            if not text or _COMMENT.match(lines[i]) or (i > last and _footer(fields)):
+                continue  # blank, comment, or a footer after the data block
             bad = next((f for f in _split(text) if _value(f, False) is None), text)
             raise InputError(f"{path}:{i + 1}", "numbers only", bad)
         values, fields = parsed[i]
@@ -286,6 +318,8 @@ def read_table(path: Path) -> TextTable:
         if len(fields) == width and all(_value(f, False) is None for f in fields):
             names = fields
             header_lines = [h for h in header_lines if h is not line]
+            if _unit_row(fields):
+                names, header_lines = _names_over_units(fields, header_lines, width)
         elif _decimal_commas(fields, line, tokens):
             raise InputError(str(path), f"one field per column named in the header line "
                              f"{line.strip()!r}: its {len(fields)} names are separated by "
