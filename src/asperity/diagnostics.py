@@ -181,11 +181,12 @@ def contact_at_grid_edge(pressure, x, y, contact_size=None) -> list[str]:
     advice = "enlarge the grid (x_extent, y_extent) well beyond the contact"
     if contact_size is not None:
         wx, wy = contact_size
-        need = [f"{name} >= {1.5 * w:.3g} m" for name, w, e in
+        need = [f"{name} >= {format_quantity(1.5 * w, 'm', digits=3)}" for name, w, e in
                 (("x_extent", wx, extent[0]), ("y_extent", wy, extent[1]))
                 if math.isfinite(e) and e < 1.5 * w]
         if need:
-            advice = (f"the expected contact is {wx:.3g} m x {wy:.3g} m wide; use "
+            advice = (f"the expected contact is {format_quantity(wx, 'm', digits=3)} x "
+                      f"{format_quantity(wy, 'm', digits=3)} wide; use "
                       + " and ".join(need))
     return [f"domain: the contact reaches the grid edge at {', '.join(sides)} "
             f"({int(np.count_nonzero(edge & (p > 0)))} edge cells carry {_pct(share)} of the "
@@ -318,9 +319,11 @@ def periodic_contact(contact, x, y) -> list[str]:
         return []
     period = c.shape[0 if axis == "x" else 1] * _spacing(x if axis == "x" else y)
     return [f"contact: one contact patch spans {_pct(width)} of the period along {axis} "
-            f"({width * period:.3g} of {period:.3g} m; limit {_pct(PATCH_PERIOD_FRACTION)}); "
+            f"({format_quantity(width * period, 'm', digits=3)} of "
+            f"{format_quantity(period, 'm', digits=3)}; limit {_pct(PATCH_PERIOD_FRACTION)}); "
             f"its periodic images interact; use a period at least twice the patch "
-            f"({axis}_extent >= {2 * width * period:.3g} m) unless the case is meant to be a "
+            f"({axis}_extent >= {format_quantity(2 * width * period, 'm', digits=3)}) unless the "
+            "case is meant to be a "
             "periodic array"]
 
 
@@ -358,7 +361,8 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
         if expected_size is None:
             return []
         spacing = (_spacing(x), _spacing(y))
-        narrow = [f"{w:.3g} m wide along {name} against cells of {d:.3g} m"
+        narrow = [f"{format_quantity(w, 'm', digits=3)} wide along {name} against cells of "
+                  f"{format_quantity(d, 'm', digits=3)}"
                   for w, d, name in zip(expected_size, spacing, "xy", strict=True) if w < d]
         if not narrow:
             return []
@@ -383,7 +387,8 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
             else:
                 advice = f"use n{name} >= {need} on the same extent, or a smaller {name}_extent"
             lines.append(f"{cells:g} cells per semi-axis along {name} (about "
-                         f"{cells * _spacing(coord):.3g} m; n{name} = {n}; {advice})")
+                         f"{format_quantity(cells * _spacing(coord), 'm', digits=3)}; "
+                         f"n{name} = {n}; {advice})")
     if not lines:
         return []
     return ["mesh: the contact is resolved by " + " and ".join(lines) + f" (limit {min_cells:g}"

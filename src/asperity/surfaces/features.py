@@ -29,6 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError, check_positive
+from ..formatting import format_quantity
 from .topography import Profile, Topography, cell_centres
 
 __all__ = ["FEATURE_KINDS", "STRAIGHT_FEATURES", "feature_shape", "feature_surface"]
@@ -84,7 +85,8 @@ def feature_surface(kind: str, length: float, spacing: float, *, amplitude: floa
     amplitude = check_positive("amplitude", amplitude)
     position = float(position)
     if not 0.0 <= position <= length:
-        raise InputError("position", f"a surface coordinate between 0 and {length:.4g} m",
+        raise InputError("position", f"a surface coordinate between 0 and "
+                         f"{format_quantity(length, 'm')}",
                          position)
     x = cell_centres(int(np.ceil(length / spacing)), spacing)
     height = -amplitude if kind in _HOLLOWS else amplitude

@@ -29,6 +29,7 @@ import scipy.fft
 from scipy.signal import fftconvolve
 
 from ..errors import InputError, check_positive
+from ..formatting import format_quantity
 from ..grids import grid_spacing
 from .topography import Profile
 
@@ -82,7 +83,8 @@ def gaussian_filter(heights, x, cutoff, *, periodic=False, axis=0,
         raise InputError("heights", "finite heights (no NaN or infinity)")
     cutoff = check_positive("cutoff", cutoff)
     if cutoff < 2 * h:
-        raise InputError("cutoff", f"a cut-off of at least two grid spacings ({2 * h:.4g} m)",
+        raise InputError("cutoff", f"a cut-off of at least two grid spacings "
+                         f"({format_quantity(2 * h, 'm')})",
                          cutoff)
     n = z.shape[axis]
     shape = [1] * z.ndim

@@ -20,6 +20,7 @@ import numpy as np
 import scipy.fft
 
 from ..errors import InputError, check_positive
+from ..formatting import format_quantity
 from .parameters import roughness_parameters
 from .topography import Profile, Topography, cell_centres
 
@@ -189,7 +190,8 @@ def _self_affine(shape, spacings, hurst, rms_height, rms_slope, rolloff, cutoff,
     rolloff = longest if rolloff is None else check_positive("rolloff_wavelength", rolloff)
     cutoff = shortest if cutoff is None else check_positive("short_cutoff", cutoff)
     if cutoff < shortest * (1 - 1e-12):
-        raise InputError("short_cutoff", f"at least two grid spacings ({shortest:.4g} m)", cutoff)
+        raise InputError("short_cutoff", f"at least two grid spacings "
+                         f"({format_quantity(shortest, 'm')})", cutoff)
     if rolloff <= cutoff:
         raise InputError("rolloff_wavelength", "a wavelength longer than short_cutoff", rolloff)
     q_r, q_s = 2 * np.pi / rolloff, 2 * np.pi / cutoff

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_int
+from ..formatting import format_quantity
 from .cutoffs import CUTOFFS, cutoff_for_ra, cutoff_for_rsm, lambda_s_for, largest_spacing
 from .filters import ALPHA, gaussian_filter
 from .form import remove_form
@@ -109,7 +110,7 @@ def _window(profile: Profile, cutoff: float, wanted: int) -> tuple[slice, int]:
     count = min(wanted, usable // per)
     if count < 1:
         raise InputError("cutoff", f"a cut-off the profile holds with its run-in and run-out "
-                         f"(at most {profile.length / 2:.4g} m)", cutoff)
+                         f"(at most {format_quantity(profile.length / 2, 'm')})", cutoff)
     start = (profile.x.size - count * per) // 2
     return slice(start, start + count * per), count
 
