@@ -773,3 +773,48 @@ def test_a_rough_ball_run_shows_greenwood_tripp_beside_its_real_area_and_load(tm
     data["roughness"] = {"kind": "ground", "ra": "0.2 um"}
     ground = run_case(load_case(data))
     assert "greenwood_tripp_real_area_m2" not in ground.summary
+
+
+def test_a_smooth_flat_punch_says_its_largest_pressure_is_the_meshs():
+    """A user's 1 mm square steel punch on steel (1 kN, open 1 mm grid): the edge singularity
+    of a rigid punch made "maximum pressure 5.58 GPa" on 32 x 32 cells and 9.02 GPa on
+    64 x 64 (+62 %), with nothing said but the flat-on-an-open-grid line. The approach is
+    checked against our own direct solve of Love's (1929) coefficients of a uniformly loaded
+    rectangle with a uniform approach, 7.6009 um on 32 x 32; a note now says the largest pressure is
+    the mesh's and names what converges."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def run(n):
+        return run_case(load_case({
+            "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "flat"},
+            "loading": {"load": "1 kN"},
+            "grid": {"nx": n, "ny": n, "x_extent": "1 mm", "y_extent": "1 mm"}}))
+
+    n, side, e_star = 32, 1e-3, 210e9 / (2 * (1 - 0.3**2))
+    d = side / n
+    c = (np.arange(n) + 0.5) * d
+    X, Y = (v.ravel() for v in np.meshgrid(c, c, indexing="ij"))
+
+    def f(a, b):
+        r = np.hypot(a, b)
+        return a * np.log(b + r) + b * np.log(a + r)
+
+    dx, dy = X[:, None] - X[None, :], Y[:, None] - Y[None, :]
+    love = (f(dx + d / 2, dy + d / 2) - f(dx + d / 2, dy - d / 2) - f(dx - d / 2, dy + d / 2)
+            + f(dx - d / 2, dy - d / 2)) / (np.pi * e_star)
+    p = np.linalg.solve(love, np.ones(n * n))  # unit approach
+    coarse, fine = run(32), run(64)
+    assert coarse.summary["approach_m"] == pytest.approx(1e3 / (p.sum() * d * d), rel=1e-6)
+    assert coarse.summary["max_pressure_pa"] == pytest.approx(1e3 / (p.sum() * d * d)
+                                                              * p.max(), rel=1e-5)
+    assert fine.summary["max_pressure_pa"] > 1.5 * coarse.summary["max_pressure_pa"]
+    (note,) = [s for s in fine.notes if s.startswith("A smooth flat on an open grid")]
+    assert "9.02 GPa" in note and "set by the cell size" in note
+    assert not [s for s in run_case(load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
+        "loading": {"load": "50 N"},
+        "grid": {"nx": 32, "ny": 32, "x_extent": "0.4 mm", "y_extent": "0.4 mm"}})).notes
+        if s.startswith("A smooth flat")]
