@@ -669,3 +669,152 @@ def test_a_ground_plate_is_judged_along_its_profile_not_across_its_ridges():
     assert not [w for w in run(128).warnings if w.startswith("roughness:")]
     (line,) = [w for w in run(32).warnings if w.startswith("roughness:")]
     assert "0.8 cells of 18.7 um along x" in line
+
+
+def _gaussian_heights(n, spacing, rms, correlation, seed):
+    """Our own gaussian surface: white noise filtered to a gaussian ACF (falls to 0.2 at the
+    correlation length), scaled to its rms."""
+    beta_acf = correlation / np.sqrt(np.log(5.0))
+    q = 2 * np.pi * np.fft.fftfreq(n, spacing)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(seed).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * beta_acf**2 / 8) * np.fft.fft2(noise)))
+    return z * rms / z.std(), qx, qy
+
+
+def test_greenwood_tripp_sphere_against_the_papers_equations_solved_here():
+    """The package's Greenwood-Tripp solve (exact annulus displacements, F_n by the parabolic
+    cylinder function, brentq on the approach) against this file's own solve of the same
+    equations (sub-sampled ring kernel, tabulated F_n, bisection) and F_n by quadrature: the
+    steel ball of the test above (R = 10 mm, 50 N) on Sq 0.3 um, correlation 12 um
+    (eta = 2035 /mm^2, beta = 58.4 um, sigma_s = 0.252 um): rms radius 0.738 a0, largest
+    nominal pressure 0.894 GPa, real area 0.01142 mm^2 (pi eta beta sigma_s F_1 on each ring,
+    F_1(h) = phi(h) - h Q(h))."""
+    from scipy.integrate import quad
+    from scipy.stats import norm
+
+    from asperity.contact.greenwood_tripp import (
+        greenwood_tripp_sphere,
+        gw_integral,
+        summit_parameters,
+    )
+
+    for h in (-3.0, -0.5, 0.0, 1.2, 4.0):
+        exact, _ = quad(lambda s, h=h: (s - h) ** 1.5 * norm.pdf(s), h, np.inf, epsrel=1e-12)
+        assert gw_integral(1.5, h) == pytest.approx(exact, rel=1e-9)
+        assert gw_integral(1.0, h) == pytest.approx(norm.pdf(h) - h * norm.sf(h), rel=1e-9)
+    n, h = 256, 0.5e-3 / 256
+    z, qx, qy = _gaussian_heights(n, h, 0.3e-6, 12e-6, 7)
+    s = summit_parameters(z, h, h)
+    spectrum = np.abs(np.fft.fft2(z) / z.size) ** 2
+    m2 = 0.5 * ((qx**2 + qy**2) * spectrum).sum()
+    m4 = 3 / 8 * ((qx**2 + qy**2) ** 2 * spectrum).sum()
+    assert s.density == pytest.approx(m4 / (6 * np.pi * np.sqrt(3) * m2), rel=1e-12)
+    assert s.anisotropy == pytest.approx(1.0, abs=0.05)
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    gt = greenwood_tripp_sphere(50.0, 0.01, e_star, s)
+    assert gt.converged and gt.load == pytest.approx(50.0, rel=1e-9)
+    r, p = _greenwood_tripp(50.0, 0.01, e_star, s.density, s.radius, s.sigma)
+    assert gt.rms_radius == pytest.approx(np.sqrt(np.sum(p * r**3) / np.sum(p * r)), rel=2e-3)
+    assert gt.pressure.max() == pytest.approx(p.max(), rel=5e-3)
+    # the real area of this file's solve: invert its pressure for the separation, then F_1
+    t = np.linspace(-8.0, 8.0, 3201)
+    table_d = np.linspace(-8.0, 8.0, 801)
+    f32 = np.array([np.trapezoid(np.clip(t - d, 0, None) ** 1.5 * norm.pdf(t), t)
+                    for d in table_d])
+    scale = (4 / 3) * s.density * e_star * np.sqrt(s.radius) * s.sigma**1.5
+    d = np.interp(p / scale, f32[::-1], table_d[::-1])
+    f1 = norm.pdf(d) - d * norm.sf(d)
+    area = np.sum(2 * np.pi * r * np.where(p > 0, np.pi * s.density * s.radius * s.sigma * f1,
+                                           0.0)) * (r[1] - r[0])
+    assert gt.real_area == pytest.approx(area, rel=5e-3)
+    assert gt.real_area == pytest.approx(0.01142e-6, rel=0.01)
+
+
+def test_a_rough_ball_run_shows_greenwood_tripp_beside_its_real_area_and_load(tmp_path):
+    """A user's rough ball (R = 10 mm, 50 N, our own gaussian file, Sq 0.3 um, correlation
+    12 um, 128 x 128 on 0.5 mm) was set beside smooth Hertz only. The run now has Greenwood &
+    Tripp's rms radius of the load and real area as estimates, from McCool's summits of the
+    heights it ran on, which this test recomputes with its own solve; a ground (anisotropic)
+    surface gets no such row."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    n, h = 128, 0.5e-3 / 128
+    z, _, _ = _gaussian_heights(n, h, 0.3e-6, 12e-6, 5)
+    np.save(tmp_path / "lapped.npy", z)
+    data = {"analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"},
+            "geometry": {"shape": "sphere", "rx": "10 mm"}, "loading": {"load": "50 N"},
+            "grid": {"nx": n, "ny": n, "x_extent": "0.5 mm", "y_extent": "0.5 mm"},
+            "roughness": {"kind": "file", "path": str(tmp_path / "lapped.npy"),
+                          "spacing": h, "form_degree": 0}}
+    out = run_case(load_case(data))
+    x = out.dataset.x.values
+    heights = (x[:, None] ** 2 + x[None, :] ** 2) / 0.02 - out.dataset.undeformed_gap.values
+    heights -= heights.mean()
+    spectrum = np.abs(np.fft.fft2(heights) / heights.size) ** 2
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    q2 = q[:, None] ** 2 + q[None, :] ** 2
+    m0, m2, m4 = spectrum.sum(), 0.5 * (q2 * spectrum).sum(), 3 / 8 * (q2**2 * spectrum).sum()
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    r, p = _greenwood_tripp(out.summary["load_n"], 0.01, e_star,
+                            m4 / (6 * np.pi * np.sqrt(3) * m2), 0.375 * np.sqrt(np.pi / m4),
+                            np.sqrt((1 - 0.8968 * m2**2 / (m0 * m4)) * m0))
+    rms_gt = np.sqrt(np.sum(p * r**3) / np.sum(p * r))
+    rows = {c.quantity: c for c in out.comparisons if "Greenwood" in c.source}
+    assert rows["load rms radius"].reference == pytest.approx(rms_gt, rel=3e-3)
+    assert rows["load rms radius"].passed is None and rows["real contact area"].passed is None
+    pressure = out.dataset.pressure.values
+    rms = np.sqrt((pressure * (x[:, None] ** 2 + x[None, :] ** 2)).sum() / pressure.sum())
+    assert out.summary["load_rms_radius_m"] == pytest.approx(rms, rel=1e-9)
+    assert rms == pytest.approx(rms_gt, rel=0.08)  # 4-5 % under GT (docs/tangential.md)
+    assert 1.1 < out.summary["contact_area_m2"] / out.summary["greenwood_tripp_real_area_m2"]
+    data["roughness"] = {"kind": "ground", "ra": "0.2 um"}
+    ground = run_case(load_case(data))
+    assert "greenwood_tripp_real_area_m2" not in ground.summary
+
+
+def test_a_smooth_flat_punch_says_its_largest_pressure_is_the_meshs():
+    """A user's 1 mm square steel punch on steel (1 kN, open 1 mm grid): the edge singularity
+    of a rigid punch made "maximum pressure 5.58 GPa" on 32 x 32 cells and 9.02 GPa on
+    64 x 64 (+62 %), with nothing said but the flat-on-an-open-grid line. The approach is
+    checked against our own direct solve of Love's (1929) coefficients of a uniformly loaded
+    rectangle with a uniform approach, 7.6009 um on 32 x 32; a note now says the largest pressure is
+    the mesh's and names what converges."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def run(n):
+        return run_case(load_case({
+            "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+            "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "flat"},
+            "loading": {"load": "1 kN"},
+            "grid": {"nx": n, "ny": n, "x_extent": "1 mm", "y_extent": "1 mm"}}))
+
+    n, side, e_star = 32, 1e-3, 210e9 / (2 * (1 - 0.3**2))
+    d = side / n
+    c = (np.arange(n) + 0.5) * d
+    X, Y = (v.ravel() for v in np.meshgrid(c, c, indexing="ij"))
+
+    def f(a, b):
+        r = np.hypot(a, b)
+        return a * np.log(b + r) + b * np.log(a + r)
+
+    dx, dy = X[:, None] - X[None, :], Y[:, None] - Y[None, :]
+    love = (f(dx + d / 2, dy + d / 2) - f(dx + d / 2, dy - d / 2) - f(dx - d / 2, dy + d / 2)
+            + f(dx - d / 2, dy - d / 2)) / (np.pi * e_star)
+    p = np.linalg.solve(love, np.ones(n * n))  # unit approach
+    coarse, fine = run(32), run(64)
+    assert coarse.summary["approach_m"] == pytest.approx(1e3 / (p.sum() * d * d), rel=1e-6)
+    assert coarse.summary["max_pressure_pa"] == pytest.approx(1e3 / (p.sum() * d * d)
+                                                              * p.max(), rel=1e-5)
+    assert fine.summary["max_pressure_pa"] > 1.5 * coarse.summary["max_pressure_pa"]
+    (note,) = [s for s in fine.notes if s.startswith("A smooth flat on an open grid")]
+    assert "9.02 GPa" in note and "set by the cell size" in note
+    assert not [s for s in run_case(load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
+        "loading": {"load": "50 N"},
+        "grid": {"nx": 32, "ny": 32, "x_extent": "0.4 mm", "y_extent": "0.4 mm"}})).notes
+        if s.startswith("A smooth flat")]

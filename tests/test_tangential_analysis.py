@@ -444,8 +444,15 @@ def test_dissimilar_bodies_warn_with_their_own_numbers():
     stated = _signed_percent(line, "the shift is")
     assert stated == pytest.approx(100 * (out.summary["shift_m"] / shift - 1), abs=0.06)
     assert 4.5 < stated < 6.5  # +5.6 %
-    stated = _signed_percent(line, "the stick radius")
-    assert stated == pytest.approx(100 * (out.summary["stick_radius_m"] / c - 1), abs=0.06)
+    stated = _signed_percent(line, "the stick zone's equivalent radius sqrt(A/pi)")
+    radius = math.sqrt(out.summary["stick_area_m2"] / math.pi)
+    assert stated == pytest.approx(100 * (radius / c - 1), abs=0.06)
+    # the coupled stick zone is no circle: off-centre along the force (40.8 um) and
+    # 176.9 um by 168.5 um; the summary gives that ellipse and no radius
+    s = out.summary
+    assert "stick_radius_m" not in s
+    assert s["stick_center_x_m"] == pytest.approx(40.8e-6, rel=0.02)
+    assert s["stick_semi_axis_x_m"] / s["stick_semi_axis_y_m"] == pytest.approx(1.05, abs=0.01)
     assert -9 < stated < -5  # -7 %
     assert not any("aluminium" in n for n in out.notes + out.warnings)
     # |beta|/mu = 0.039 at mu = 3: a note, with this pair's numbers
@@ -714,8 +721,11 @@ def test_a_long_ellipse_says_it_is_not_a_line_contact():
     1000 N, mu = 0.3, Q = 150 N = 0.5 mu P. There is no line tangential contact; the run gave
     a stick "radius" and no reference. Its stick zone is Mindlin's ellipse,
     c/a = (1 - Q/(mu P))^(1/3) = 0.7937 (Johnson sec. 7.2), not Cattaneo's 2-D strip
-    sqrt(1 - Q/(mu P)) = 0.7071; measured across the short axis 0.783 on 48 x 48 cells (a is
-    23 cells); the note says so."""
+    sqrt(1 - Q/(mu P)) = 0.7071; the note says so. Its ratio was counted along the row of
+    cells through the centre (0.783 on 48 x 48 cells, a being 23 cells); it is now the stick
+    ellipse's semi-axis (from its second moments of area) over a, 0.798 (+0.5 %), and the
+    summary gives both semi-axes (85.23 um and 5.785 mm against 84.78 um and 5.754 mm) rather
+    than the "stick radius" 702 um of a circle of the stick area."""
     out = run_case(load_case({
         "analysis": "tangential", "mu": 0.3,
         "body1": {"youngs_modulus": "210 GPa"}, "body2": {"youngs_modulus": "210 GPa"},
@@ -725,8 +735,11 @@ def test_a_long_ellipse_says_it_is_not_a_line_contact():
     assert f"= {0.5 ** (1 / 3):.3g} at Q = 0.5 mu P" in note
     assert f"sqrt(1 - Q/(mu P)) = {0.5 ** 0.5:.3g}" in note
     measured = float(re.search(r"here ([0-9.]+) across", note).group(1))
-    assert measured == pytest.approx(0.5 ** (1 / 3), abs=0.03)
+    assert measured == pytest.approx(0.5 ** (1 / 3), abs=0.01)
     assert "not a line contact" in note
+    a = 106.818e-6  # the Hertz ellipse solved independently (b/a = 67.9)
+    assert out.summary["stick_semi_axis_x_m"] == pytest.approx(0.5 ** (1 / 3) * a, rel=0.02)
+    assert "stick_radius_m" not in out.summary
 
 
 def test_a_force_about_an_off_centre_point_is_not_checked_as_a_force_alone():

@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from .contact import reference as ref
+from .contact.stick_zone import stick_zone
 from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
@@ -79,14 +80,40 @@ def _rectangles(spec, mu):
     return boxes, weights
 
 
-def _hertz_rows(mu, h, res, body1, body2, applied, free, identical, dx, cell_area):
+def _ellipse_rows(mu, h, res, body1, body2, force, axis, identical, x, y):
+    """Mindlin's elliptical partial slip under a force along an axis of the Hertz ellipse: the
+    shift and the stick ellipse's semi-axes (:func:`asperity.contact.reference.
+    cattaneo_mindlin_ellipse`); tolerances as the circle's, with the cell size over the
+    semi-axis along the same direction."""
+    shift, cx, cy = ref.cattaneo_mindlin_ellipse(h.load, force, mu, h.a, h.b, body1, body2,
+                                                 axis)
+    fine = max((x[1] - x[0]) / h.a, (y[1] - y[0]) / h.b)
+    tol = max(0.01, 2.0 * fine**2)
+    src = cite("Mindlin's ellipse, Cattaneo's construction (Johnson sec. 7.2)",
+               "cattaneo-mindlin-on-an-ellipse")
+    rows = [Comparison("rigid shift (relative)", math.hypot(*res.shift), shift, src, "m", tol)]
+    if identical:
+        rows.append(Comparison("rigid shift per body", 0.5 * math.hypot(*res.shift), 0.5 * shift,
+                               src, "m", tol))
+    zone = stick_zone(res.stick, x, y)
+    if zone is not None and zone.elliptical:
+        for name, measured, exact, cell in (("x", zone.semi_axes[0], cx, x[1] - x[0]),
+                                            ("y", zone.semi_axes[1], cy, y[1] - y[0])):
+            if exact > 2 * cell:
+                rows.append(Comparison(f"stick semi-axis along {name}", measured, exact, src,
+                                       "m", max(0.01, 1.5 * cell / exact)))
+    return rows
+
+
+def _hertz_rows(mu, h, res, body1, body2, applied, free, identical, x, y):
     """Closed forms of a Hertz pressure with one friction coefficient."""
     fx, fy, moment = applied
     force = math.hypot(fx, fy)
     rows = []
     circular = abs(h.a - h.b) <= 1e-9 * h.a
     size = min(h.a, h.b)
-    stick = math.sqrt(res.stick.sum() * cell_area / math.pi)
+    dx = max(x[1] - x[0], y[1] - y[0])
+    stick = math.sqrt(res.stick.sum() * (x[1] - x[0]) * (y[1] - y[0]) / math.pi)
     if force == 0.0 and free:
         gs = ref.gross_slip_moment_ellipse(mu, h.p_max, h.a, h.b)
         rows.append(Comparison("gross-slip moment", res.load_capacity * abs(moment), gs,
@@ -119,6 +146,10 @@ def _hertz_rows(mu, h, res, body1, body2, applied, free, identical, dx, cell_are
         if cm.stick_radius > 2 * dx:
             rows.append(Comparison("stick radius", stick, cm.stick_radius, src, "m",
                                    max(0.01, 1.5 * dx / cm.stick_radius)))
+    axis = "x" if abs(fy) <= 1e-12 * force else "y" if abs(fx) <= 1e-12 * force else None
+    if (not circular and moment == 0.0 and force > 0.0 and axis is not None
+            and not res.gross_slip):
+        rows += _ellipse_rows(mu, h, res, body1, body2, force, axis, identical, x, y)
     if circular and moment != 0.0 and force > 0.0 and not res.gross_slip:
         note = "one load alone: the combined load couples them; not a check"
         if force < mu * h.load:
@@ -230,15 +261,13 @@ def tangential_comparisons(case, result, x, y, mu, body1, body2, hertz=None) -> 
     uniform_mu = bool(np.all(mu == case.mu)) and all(
         r.mu is None for r in (case.pressure.regions or []))
     dx = max(x[1] - x[0], y[1] - y[0])
-    cell_area = (x[1] - x[0]) * (y[1] - y[0])
     free = case.loading.rotation == "free"
     rows = _equilibrium(result, applied, free)
     if uniform_mu and case.pressure.source == "hertz" and hertz is not None:
         # the closed forms take the moment about the contact's centre; a fixture that holds
         # the rotation carries it
         centred = (fx, fy, case.loading.moment_about_origin() if free else 0.0)
-        rows += _hertz_rows(case.mu, hertz, result, body1, body2, centred, free, identical, dx,
-                            cell_area)
+        rows += _hertz_rows(case.mu, hertz, result, body1, body2, centred, free, identical, x, y)
     if uniform_mu and case.pressure.source == "uniform":
         rows += _uniform_rows(case.pressure, case.mu, result, body1, body2, applied, free, dx)
     if case.reference is not None:

@@ -30,6 +30,7 @@ __all__ = [
     "rectangle_distance_integral",
     "CattaneoMindlin",
     "cattaneo_mindlin",
+    "cattaneo_mindlin_ellipse",
     "masing_history",
     "masing_unloading_shift",
     "mindlin_deresiewicz_energy",
@@ -114,6 +115,82 @@ def cattaneo_mindlin(normal_load, force, mu, a, body1: Material, body2: Material
     c = a * (1.0 - Q / (mu * P)) ** (1.0 / 3.0)
     delta = _cattaneo_shift(Q, P, mu, a, tangential_compliance(body1, body2))
     return CattaneoMindlin(a, c, delta, 3.0 * P / (2.0 * np.pi * a * a), mu, Q, P)
+
+
+def _centre_displacement_per_traction(sx, sy, body1: Material, body2: Material) -> tuple:
+    """Relative displacement (along x, along y) at the centre of an ellipse of semi-axes sx, sy
+    under the traction ``sqrt(1 - x^2/sx^2 - y^2/sy^2)`` (per unit amplitude) along x and
+    along y, m/Pa.
+
+    Cerruti's point force gives ``u_x = [(1 - nu) + nu cos^2 t] / (2 pi G r)`` at the angle t
+    from the force; integrating the traction along each ray (``int_0^R sqrt(1 - r^2/R^2) dr =
+    pi R / 4``) leaves ``(1 / (8 G)) int_0^2pi [(1 - nu) + nu cos^2 t] R(t) dt``, with
+    ``R(t) = (cos^2 t / sx^2 + sin^2 t / sy^2)^(-1/2)``. With s the short semi-axis and
+    ``m = 1 - s^2 / l^2``: ``int R dt = 4 s K(m)`` and, with t from the long axis,
+    ``int cos^2 t R dt = 4 s (K(m) - E(m)) / m`` (pi s at m = 0: a circle gives
+    ``pi a (2 - nu) / (8 G)``, Johnson eq. 7.8's centre value).
+    """
+    s, long_ = min(sx, sy), max(sx, sy)
+    m = 1.0 - (s / long_) ** 2
+    k = ellipk(m)
+    along_long = (4.0 * s * (k - ellipe(m)) / m if m > 1e-6
+                  else math.pi * s * (1.0 + 0.375 * m))
+    whole = 4.0 * s * k
+    along_x, along_y = ((along_long, whole - along_long) if sx >= sy
+                        else (whole - along_long, along_long))
+    out = []
+    for along in (along_x, along_y):
+        out.append(sum(((1.0 - b.poisson_ratio) * whole + b.poisson_ratio * along)
+                       / (8.0 * b.shear_modulus)
+                       for b in (body1, body2) if b is not None and not b.rigid))
+    return tuple(out)
+
+
+def cattaneo_mindlin_ellipse(normal_load, force, mu, a, b, body1: Material, body2: Material,
+                             axis: str = "x") -> tuple[float, float, float]:
+    """Mindlin's partial slip of an elliptical Hertz contact under a force along one of its axes.
+
+    The traction is Cattaneo's construction on the ellipse: ``mu p0 sqrt(1 - x^2/a^2 -
+    y^2/b^2)`` minus ``(c/a) mu p0 sqrt(1 - x^2/c^2 - y^2/d^2)`` on the similar stick ellipse
+    ``c/a = d/b = (1 - Q/(mu P))^(1/3)`` (Mindlin 1949; Johnson 1985, sec. 7.2): a Hertz-shaped
+    traction displaces the inside of its ellipse by a constant minus a quadratic whose
+    coefficients depend only on the ellipse's shape, so those of the two terms cancel in the
+    stick ellipse and the shift is the difference of their centre values,
+    ``delta = mu p0 C (1 - (c/a)^2)``, C from :func:`_centre_displacement_per_traction`.
+    Exact for similar bodies (Dundurs beta = 0) up to the slip's direction, which Mindlin's
+    construction takes along the force (as on a circle).
+
+    Parameters
+    ----------
+    normal_load, force : float
+        P and Q (0 <= Q <= mu P), N.
+    mu : float
+        Coefficient of friction.
+    a, b : float
+        Semi-axes of the Hertz ellipse along x and along y, m.
+    body1, body2 : Material
+        The bodies.
+    axis : {"x", "y"}
+        The axis the force lies along.
+
+    Returns
+    -------
+    tuple of float
+        The relative shift along the force (m) and the stick ellipse's semi-axes along x and
+        along y (m).
+    """
+    P = check_positive("normal_load", normal_load)
+    mu = check_positive("mu", mu)
+    Q = check_positive("force", force, allow_zero=True)
+    if Q > mu * P:
+        raise InputError("force", f"at most mu * normal_load = {mu * P:g} N (gross slip)", Q)
+    if axis not in ("x", "y"):
+        raise InputError("axis", '"x" or "y"', axis)
+    scale = (1.0 - Q / (mu * P)) ** (1.0 / 3.0)
+    p0 = 3.0 * P / (2.0 * math.pi * a * b)
+    cx, cy = _centre_displacement_per_traction(a, b, body1, body2)
+    shift = mu * p0 * (cx if axis == "x" else cy) * (1.0 - scale * scale)
+    return float(shift), float(a * scale), float(b * scale)
 
 
 def masing_unloading_shift(force, peak_force, normal_load, mu, a, body1, body2):

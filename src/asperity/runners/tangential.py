@@ -28,6 +28,7 @@ from ..contact.reference import (
     masing_history,
 )
 from ..contact.spots import contact_spots
+from ..contact.stick_zone import stick_zone
 from ..errors import InputError
 from ..formatting import format_quantity
 from ..materials import contact_modulus, coupling_compliance
@@ -198,9 +199,18 @@ def _summary(case, fld, res, applied, identical):
         "load_capacity": float(res.load_capacity),
         "stick_fraction": float(res.stick.sum() / max((res.labels > 0).sum(), 1)),
     }
-    if not res.gross_slip and res.stick.any() and fld.roughness is None:
-        # (a rough contact's stick zone is scattered over its spots: no radius describes it)
-        s["stick_radius_m"] = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
+    zone = None if res.gross_slip else stick_zone(res.stick, fld.x, fld.y)
+    if zone is not None:
+        s.update(stick_area_m2=zone.area, stick_parts=zone.parts)
+    if zone is not None and zone.elliptical and fld.roughness is None:
+        # one ellipse (Mindlin's, or an off-centre one under force and moment): its centre and
+        # semi-axes; a radius only for a circle. (A rough contact's stick zone is scattered
+        # over its spots, two pads' over the pads: its area and parts say what it is.)
+        s.update(stick_center_x_m=_zeroed(zone.centre[0], size),
+                 stick_center_y_m=_zeroed(zone.centre[1], size),
+                 stick_semi_axis_x_m=zone.semi_axes[0], stick_semi_axis_y_m=zone.semi_axes[1])
+        if zone.circular:
+            s["stick_radius_m"] = zone.radius
     # undefined quantities are left out, not NaN: the rigid motion in gross slip, the centre
     # of a motion without rotation; round-off (a force's twist, a moment's shift) is 0
     if not res.gross_slip:
@@ -410,11 +420,12 @@ def _long_ellipse_note(case, fld, res) -> list[str]:
             or _centred_moment(case) != 0.0 or max(h.a, h.b) < LONG_ELLIPSE * min(h.a, h.b)):
         return []
     ratio = force / float((fld.mu * fld.pressure).sum() * fld.cell_area)
-    # along the short axis through the cells nearest the centre
-    short, across = (fld.x, fld.y) if h.a < h.b else (fld.y, fld.x)
-    k = int(np.argmin(np.abs(across)))
-    line = (lambda f: f[:, k]) if h.a < h.b else (lambda f: f[k, :])
-    measured = np.count_nonzero(line(res.stick)) / max(np.count_nonzero(line(fld.pressure)), 1)
+    zone = stick_zone(res.stick, fld.x, fld.y)
+    if zone is None or not zone.elliptical:
+        return []
+    # the stick ellipse's semi-axis along the contact's short axis, over that axis
+    measured, short = ((zone.semi_axes[0] / h.a, fld.x) if h.a < h.b
+                       else (zone.semi_axes[1] / h.b, fld.y))
     return [f"A long ellipse (semi-axes {format_quantity(h.a, 'm')} by "
             f"{format_quantity(h.b, 'm')}) is not a line contact: its stick zone follows "
             f"Mindlin's ellipse, c/a = (1 - Q/(mu P))^(1/3) = {(1 - ratio) ** (1 / 3):.3g} at "
@@ -484,8 +495,9 @@ def _coupling_effect(case, fld, res, body1, body2) -> str:
     else:
         return ""
     if stick > 0.0:
-        text += (f", the stick radius {format_quantity(stick, 'm')}, "
-                 f"{_percent(stick, c)} from {format_quantity(c, 'm')}")
+        text += (", the stick zone's equivalent radius sqrt(A/pi) "
+                 f"{format_quantity(stick, 'm')}, {_percent(stick, c)} from "
+                 f"{format_quantity(c, 'm')}")
     return text
 
 
