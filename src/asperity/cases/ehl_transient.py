@@ -25,6 +25,7 @@ per surface, the time stepping and the per-step solver options of
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -40,6 +41,7 @@ from ..ehl.transient import (
 from ..errors import InputError
 from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import SurfaceBuild, build_surface_record
+from ..surfaces.topography import Topography
 from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
 from .fields import CaseModel, Quantity
 from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
@@ -54,11 +56,12 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
     the seed's transverse-ground profiles); ``ground`` (``ra``, ``correlation_length``,
     ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``acf``, ``seed``);
     ``self-affine`` (``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
-    ``short_cutoff``, ``seed``); ``file`` (a measured profile: ``path``, ``spacing`` when the
-    file has no x column, the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``,
-    ``resample``, and ``form_degree``: the least-squares form removed, default 1, its mean
-    line, as in a contact case's ``[roughness]``, so that the scan's offset and tilt do not
-    enter the inlet); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
+    ``short_cutoff``, ``seed``); ``file`` (a measured profile, or a map whose middle is placed on
+    the contact's centre line across y: ``path``, ``spacing`` when the file has no x column,
+    the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``, ``resample``, and
+    ``form_degree``: the least-squares form removed, default 1, its mean line, as in a
+    contact case's ``[roughness]``, so that the scan's offset and tilt do not enter the
+    inlet); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
     ``amplitude`` and ``half_width`` on a smooth surface, its centre ``lead`` upstream of the
     inlet at the start: the probes of Venner & Lubrecht, Kaneta, Ai & Cheng;
     :mod:`asperity.surfaces.features`). Profiles vary
@@ -148,6 +151,35 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
             return build_surface_record(recipe, length, (spacing, dy), width=y.size * dy,
                                         y=y)
         return build_surface_record(recipe, length, spacing, y=y)
+
+
+def _centred_across(key: str, path: str, built: SurfaceBuild, y: np.ndarray) -> SurfaceBuild:
+    """A measured map placed across y with its middle on the domain's middle (the contact's
+    centre line), as a map of the track under the contact is meant; its own y, which a text
+    export or an instrument gives from 0, would leave the rows y < 0 of the domain without
+    heights. Along x the map is fed in from the inlet as it is.
+
+    Raises
+    ------
+    InputError
+        A map narrower than the domain across y (naming ``key`` with the width needed and
+        ``grid.y_min``, ``grid.y_max``), or a map for a line contact, before the steady start
+        rather than after it.
+    """
+    surface = built.surface
+    if y.size == 1:
+        raise InputError(key, f"a profile (one trace along x) for a line contact "
+                         f"({Path(path).name} is a map of {surface.y.size} rows across y)")
+    have = float(surface.y[-1] - surface.y[0])
+    need = float(y[-1] - y[0])
+    if have < need * (1.0 - 1e-9):
+        raise InputError(key, f"a map at least {need * 1e3:.4g} mm wide across y, the domain's "
+                         f"width, since the map is centred on the contact ({Path(path).name} "
+                         f"is {have * 1e3:.4g} mm wide): a wider map, or a narrower domain "
+                         "(grid.y_min, grid.y_max)")
+    shift = 0.5 * (y[0] + y[-1]) - 0.5 * (surface.y[0] + surface.y[-1])
+    return replace(built, surface=Topography(surface.x, surface.y + shift, surface.z,
+                                             periodic=surface.periodic))
 
 
 def _check_trace_length(key: str, path: str, surface, travel: float, warmup: int,
@@ -377,6 +409,8 @@ class EHLTransientCase(EHLCaseBase):
             if built is not None and spec.kind == "file" and not built.surface.periodic:
                 _check_trace_length(f"surface{k}.path", spec.path, built.surface,
                                     abs(u) * dt * total, warmup, total - warmup)
+                if isinstance(built.surface, Topography):
+                    built = _centred_across(f"surface{k}.path", spec.path, built, y)
             out.append(built)
         return out
 
