@@ -4,6 +4,7 @@ warm-up the user shortened (docs/ehl-transient.md, "A measured map, a short warm
 import json
 
 import numpy as np
+import pytest
 from typer.testing import CliRunner
 
 from asperity.cases import load_case
@@ -157,3 +158,29 @@ def test_a_warm_up_too_short_for_the_roughness_warns(tmp_path):
     assert len(partly) == 1 and "only to x = 0.625 a" in partly[0], partly  # -2.5 + 100/32
     assert "the first 12 of the 20 counting steps" in partly[0]
     assert not [w for w in _warnings(tmp_path, 112, 3) if w.startswith("surface1:")]
+
+
+def test_a_feature_runs_snapshots_follow_it_through_the_hertz_zone():
+    """The dent-rolling example on 65 x 17 nodes with its own counting period (the dent from
+    the inlet until it has left): its 8 snapshots lie where the dent's centre, found as the
+    deepest point of the recorded surface on y = 0, is between -a and +a (a = 106.8 um from
+    a^3 = 3 F R / (4 E*)), the first at -a and the last at +a, each within a mesh spacing.
+    Before, they were spread over the whole counting period, and the first (the dent not yet
+    in the domain) and the last (it had left) showed the smooth contact."""
+    import tomllib
+
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    data = tomllib.loads(example_text("dent-rolling"))
+    data["grid"].update(nx=65, ny=17)
+    data["time"].pop("counting_steps")
+    ds = run_case(load_case(data)).dataset
+    a = (3 * 15.0 * 0.0125 / (4 * 210e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
+    x = ds.x.values / a
+    dx = x[1] - x[0]
+    deepest = [x[int(np.argmin(z))] for z in ds["centre_surface1"].values]
+    assert all(np.ptp(z) > 0 for z in ds["centre_surface1"].values)
+    assert len(deepest) >= 8 and all(-1 - dx <= d <= 1 + dx for d in deepest), deepest
+    assert deepest[0] == pytest.approx(-1.0, abs=dx) and \
+        deepest[-1] == pytest.approx(1.0, abs=dx)

@@ -186,7 +186,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     records = case.surface_records(problem, x, y, warmup, total, dt)
     rough1, rough2 = (None if built is None else built.surface for built in records)
     file_notes, file_warnings = _file_reports(case, records)
-    snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
+    snaps = case.snapshot_steps(problem, x, dt, warmup, total)
     shown = snaps[-1]  # the centre-line figure's step: the last, or a feature at x = 0
     centred = [int(np.rint(-start / step))
                for _, _, start, step in case.feature_tracks(problem, x, dt, warmup)]
