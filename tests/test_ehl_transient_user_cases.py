@@ -184,3 +184,37 @@ def test_a_feature_runs_snapshots_follow_it_through_the_hertz_zone():
     assert len(deepest) >= 8 and all(-1 - dx <= d <= 1 + dx for d in deepest), deepest
     assert deepest[0] == pytest.approx(-1.0, abs=dx) and \
         deepest[-1] == pytest.approx(1.0, abs=dx)
+
+
+def test_a_map_coarser_than_the_rows_across_y_warns(tmp_path):
+    """A measured map of isotropic random roughness (gaussian ACF, 0.2 at 25 um), sampled at
+    the mesh's rows 66.8 um apart (17 rows over 4b): the asperities between rows are lost,
+    which a generated topography was told and a map was not. The warning names surface2.path
+    and the map's decay length across y, within 10 % of the one measured here from the
+    written heights (numpy, the mean over x of z(y) z(y + lag))."""
+    h, lc = 4.0, 25.0
+    rng = np.random.default_rng(5)
+    n = (300, 300)
+    kx, ky = (2 * np.pi * np.fft.fftfreq(m, h) for m in n)
+    ell = lc / np.sqrt(np.log(5.0))  # exp(-(r / ell)^2) = 0.2 at r = lc
+    spectrum = np.exp(-(kx[:, None] ** 2 + ky[None, :] ** 2) * ell**2 / 8)
+    z = np.real(np.fft.ifft2(np.fft.fft2(rng.standard_normal(n)) * spectrum))
+    z *= 0.2 / z.std()
+    X, Y = np.meshgrid(np.arange(n[0]) * h, np.arange(n[1]) * h, indexing="ij")
+    with open(tmp_path / "map.csv", "w") as f:
+        f.write("X (um),Y (um),Z (um)\n")
+        np.savetxt(f, np.column_stack([X.ravel(order="F"), Y.ravel(order="F"),
+                                       z.ravel(order="F")]), fmt="%.5f", delimiter=",")
+    r = z - z.mean()
+    acf = np.array([np.mean(r[:, : n[1] - k] * r[:, k:]) for k in range(12)]) / np.mean(r * r)
+    k = int(np.argmax(acf < 0.2))
+    measured = h * (k - 1 + (acf[k - 1] - 0.2) / (acf[k - 1] - acf[k]))
+    (tmp_path / "case.toml").write_text(POINT)
+    result = runner.invoke(app, ["run", str(tmp_path / "case.toml"), "--out",
+                                 str(tmp_path / "out"), "--quiet"])
+    assert result.exit_code == 0, result.output
+    warnings = json.loads((tmp_path / "out" / "summary.json").read_text())["warnings"]
+    lines = [w for w in warnings if w.startswith("surface2.path: correlation_length_y")]
+    assert len(lines) == 1 and "cells of 66.8 um across y" in lines[0], warnings
+    said = float(lines[0].split("= ")[1].split(" um")[0])
+    assert said == pytest.approx(measured, rel=0.1) and measured == pytest.approx(lc, rel=0.15)

@@ -29,6 +29,7 @@ from ..ehl.transient import TransientResult, default_warmup_steps
 from ..formatting import format_duration
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
+from ..surfaces.parameters import acf_decay_lengths
 from ..surfaces.topography import Topography
 from .ehl_steady import chosen_mesh, ehl_warnings
 
@@ -347,7 +348,8 @@ def _file_reports(case, records) -> tuple[list[str], list[str]]:
 
 def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> list[str]:
     """Roughness the mesh cannot resolve (shorter than a few cells along x; a gaussian
-    topography's correlation length across y), or that ``lowpass`` removed, per surface."""
+    topography's correlation length across y, or a measured map's, from its autocorrelation),
+    or that ``lowpass`` removed, per surface."""
     dx = x[1] - x[0]
     specs = (case.surface1, case.surface2)
     raw = surfaces
@@ -369,6 +371,14 @@ def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> lis
             lines += diagnostics.roughness_resolution(
                 f"surface{k}", spec.correlation_length, x, y, along_x=False,
                 correlation_length_y=spec.correlation_length_y)
+        if spec.kind == "file" and isinstance(surf, Topography) and y.size > 1:
+            # a measured map sampled at the mesh's rows: its own decay length across y (the
+            # ACF's 0.2 lag along the y axis, ISO 25178-2's rays at 0 and 90 degrees)
+            _, (along, across) = acf_decay_lengths(surf, directions=2)
+            if np.isfinite(across):
+                lines += diagnostics.roughness_resolution(
+                    f"surface{k}.path", along, x, y, along_x=False,
+                    correlation_length_y=across)
     return lines
 
 
