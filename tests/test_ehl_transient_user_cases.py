@@ -2,6 +2,7 @@
 warm-up the user shortened (docs/ehl-transient.md, "A measured map, a short warm-up")."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -11,6 +12,7 @@ from asperity.cases import load_case
 from asperity.cli import app
 
 runner = CliRunner()
+CORPUS = Path(__file__).parent / "corpus"
 
 POINT = """
 analysis = "ehl-transient"
@@ -218,3 +220,21 @@ def test_a_map_coarser_than_the_rows_across_y_warns(tmp_path):
     assert len(lines) == 1 and "cells of 66.8 um across y" in lines[0], warnings
     said = float(lines[0].split("= ")[1].split(" um")[0])
     assert said == pytest.approx(measured, rel=0.1) and measured == pytest.approx(lc, rel=0.15)
+
+
+def test_a_feature_amplitude_as_a_bare_number_is_refused(tmp_path):
+    """``amplitude = 0.25`` for a dent of 15 um radius is read as 0.25 m: its flank slopes by
+    pi 0.25 / (2 15e-6) = 2.62e4, far past the half-space's small slopes, and the run took it
+    without a word; now one line naming surface1.amplitude with that slope, exit 2. A dent
+    of 0.25 um (slope 0.026) loads."""
+    text = (CORPUS / "error-transient-feature-amplitude-bare-number.toml").read_text()
+    (tmp_path / "case.toml").write_text(text)
+    result = runner.invoke(app, ["run", str(tmp_path / "case.toml"), "--out",
+                                 str(tmp_path / "out"), "--quiet"])
+    assert result.exit_code == 2
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    slope = np.pi * 0.25 / (2 * 15e-6)
+    assert len(lines) == 1 and lines[0].startswith("error: surface1.amplitude: expected a "
+                                                   "feature whose flank slopes"), lines
+    assert f"slopes by {slope:.3g}" in lines[0] and '"0.25 um"' in lines[0]
+    assert load_case(text.replace("amplitude = 0.25", 'amplitude = "0.25 um"'))

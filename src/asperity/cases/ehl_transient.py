@@ -30,7 +30,8 @@ from pathlib import Path
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, ValidationError, model_validator
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..ehl.transient import (
     FEATURE_CELLS_ACROSS,
@@ -46,7 +47,16 @@ from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
 from .fields import CaseModel, Quantity
 from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
 
-__all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
+__all__ = ["MAX_FEATURE_SLOPE", "EHLTransientCase", "MovingSurfaceSpec", "TimeSpec",
+           "TransientSolverSpec"]
+
+#: Largest slope of a single feature's flank, ``pi A / (2 w)`` for the cosine-squared cap of
+#: amplitude A and half-width w (:mod:`asperity.surfaces.features`), that a case takes: the
+#: half-space's influence coefficients assume small surface slopes, and the dents, bumps and
+#: ridges of the transient EHL literature slope by 0.001-0.1 (Kaneta's dents about 1.5 um deep
+#: and 30 um in half-width: 0.08). A user's amplitude written as a bare number (0.25, read as
+#: 0.25 m, meant 0.25 um) sloped by 2.6e4 and was taken without a word.
+MAX_FEATURE_SLOPE = 0.25
 
 
 class MovingSurfaceSpec(FormKeys, SurfaceKeys):
@@ -104,6 +114,17 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
         self.check_kind({"builtin": ("profile",), "ground": ("ra",), "self-affine": ("hurst",),
                          "gaussian": ("rms", "correlation_length"), "file": ("path",),
                          "feature": ("feature", "amplitude", "half_width")})
+        if self.kind == "feature":
+            slope = 0.5 * np.pi * self.amplitude / self.half_width
+            if slope > MAX_FEATURE_SLOPE:
+                message = (f"expected a feature whose flank slopes by at most "
+                           f"{MAX_FEATURE_SLOPE:g} (pi amplitude / (2 half_width); limit of the "
+                           f"half-space's small slopes): {self.amplitude:.4g} m over "
+                           f"{self.half_width * 1e6:.4g} um slopes by {slope:.3g}; check the "
+                           "amplitude's unit (a bare number is metres: write \"0.25 um\")")
+                detail = InitErrorDetails(type=PydanticCustomError("value_error", message),
+                                          loc=("amplitude",), input=self.amplitude)
+                raise ValidationError.from_exception_data("case", [detail])
         return self
 
     def feature_lead(self, warmup_travel: float = 0.0) -> float:
