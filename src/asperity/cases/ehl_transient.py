@@ -25,11 +25,13 @@ per surface, the time stepping and the per-step solver options of
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, ValidationError, model_validator
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..ehl.transient import (
     FEATURE_CELLS_ACROSS,
@@ -40,11 +42,21 @@ from ..ehl.transient import (
 from ..errors import InputError
 from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import SurfaceBuild, build_surface_record
+from ..surfaces.topography import Topography
 from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
 from .fields import CaseModel, Quantity
 from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
 
-__all__ = ["EHLTransientCase", "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
+__all__ = ["MAX_FEATURE_SLOPE", "EHLTransientCase", "MovingSurfaceSpec", "TimeSpec",
+           "TransientSolverSpec"]
+
+#: Largest slope of a single feature's flank, ``pi A / (2 w)`` for the cosine-squared cap of
+#: amplitude A and half-width w (:mod:`asperity.surfaces.features`), that a case takes: the
+#: half-space's influence coefficients assume small surface slopes, and the dents, bumps and
+#: ridges of the transient EHL literature slope by 0.001-0.1 (Kaneta's dents about 1.5 um deep
+#: and 30 um in half-width: 0.08). A user's amplitude written as a bare number (0.25, read as
+#: 0.25 m, meant 0.25 um) sloped by 2.6e4 and was taken without a word.
+MAX_FEATURE_SLOPE = 0.25
 
 
 class MovingSurfaceSpec(FormKeys, SurfaceKeys):
@@ -54,11 +66,12 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
     the seed's transverse-ground profiles); ``ground`` (``ra``, ``correlation_length``,
     ``run_in``, ``seed``); ``gaussian`` (``rms``, ``correlation_length``, ``acf``, ``seed``);
     ``self-affine`` (``hurst``, ``rms`` or ``rms_slope``, ``rolloff_wavelength``,
-    ``short_cutoff``, ``seed``); ``file`` (a measured profile: ``path``, ``spacing`` when the
-    file has no x column, the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``,
-    ``resample``, and ``form_degree``: the least-squares form removed, default 1, its mean
-    line, as in a contact case's ``[roughness]``, so that the scan's offset and tilt do not
-    enter the inlet); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
+    ``short_cutoff``, ``seed``); ``file`` (a measured profile, or a map whose middle is placed on
+    the contact's centre line across y: ``path``, ``spacing`` when the file has no x column,
+    the reading keys ``unit``, ``x_unit``, ``z_unit``, ``missing``, ``resample``, and
+    ``form_degree``: the least-squares form removed, default 1, its mean line, as in a
+    contact case's ``[roughness]``, so that the scan's offset and tilt do not enter the
+    inlet); ``feature`` (one ``feature`` "dent", "bump", "ridge" or "groove" of
     ``amplitude`` and ``half_width`` on a smooth surface, its centre ``lead`` upstream of the
     inlet at the start: the probes of Venner & Lubrecht, Kaneta, Ai & Cheng;
     :mod:`asperity.surfaces.features`). Profiles vary
@@ -101,6 +114,17 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
         self.check_kind({"builtin": ("profile",), "ground": ("ra",), "self-affine": ("hurst",),
                          "gaussian": ("rms", "correlation_length"), "file": ("path",),
                          "feature": ("feature", "amplitude", "half_width")})
+        if self.kind == "feature":
+            slope = 0.5 * np.pi * self.amplitude / self.half_width
+            if slope > MAX_FEATURE_SLOPE:
+                message = (f"expected a feature whose flank slopes by at most "
+                           f"{MAX_FEATURE_SLOPE:g} (pi amplitude / (2 half_width); limit of the "
+                           f"half-space's small slopes): {self.amplitude:.4g} m over "
+                           f"{self.half_width * 1e6:.4g} um slopes by {slope:.3g}; check the "
+                           "amplitude's unit (a bare number is metres: write \"0.25 um\")")
+                detail = InitErrorDetails(type=PydanticCustomError("value_error", message),
+                                          loc=("amplitude",), input=self.amplitude)
+                raise ValidationError.from_exception_data("case", [detail])
         return self
 
     def feature_lead(self, warmup_travel: float = 0.0) -> float:
@@ -150,6 +174,35 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
         return build_surface_record(recipe, length, spacing, y=y)
 
 
+def _centred_across(key: str, path: str, built: SurfaceBuild, y: np.ndarray) -> SurfaceBuild:
+    """A measured map placed across y with its middle on the domain's middle (the contact's
+    centre line), as a map of the track under the contact is meant; its own y, which a text
+    export or an instrument gives from 0, would leave the rows y < 0 of the domain without
+    heights. Along x the map is fed in from the inlet as it is.
+
+    Raises
+    ------
+    InputError
+        A map narrower than the domain across y (naming ``key`` with the width needed and
+        ``grid.y_min``, ``grid.y_max``), or a map for a line contact, before the steady start
+        rather than after it.
+    """
+    surface = built.surface
+    if y.size == 1:
+        raise InputError(key, f"a profile (one trace along x) for a line contact "
+                         f"({Path(path).name} is a map of {surface.y.size} rows across y)")
+    have = float(surface.y[-1] - surface.y[0])
+    need = float(y[-1] - y[0])
+    if have < need * (1.0 - 1e-9):
+        raise InputError(key, f"a map at least {need * 1e3:.4g} mm wide across y, the domain's "
+                         f"width, since the map is centred on the contact ({Path(path).name} "
+                         f"is {have * 1e3:.4g} mm wide): a wider map, or a narrower domain "
+                         "(grid.y_min, grid.y_max)")
+    shift = 0.5 * (y[0] + y[-1]) - 0.5 * (surface.y[0] + surface.y[-1])
+    return replace(built, surface=Topography(surface.x, surface.y + shift, surface.z,
+                                             periodic=surface.periodic))
+
+
 def _check_trace_length(key: str, path: str, surface, travel: float, warmup: int,
                         counting: int):
     """Refuse a measured trace shorter than the ``travel`` (m) its surface makes in the run:
@@ -183,7 +236,8 @@ class TimeSpec(CaseModel):
     dt: Quantity("time", gt=0) | None = None
     """Time step (default the seed's dx / (2 u_max))."""
     snapshots: Annotated[int, Field(ge=1, le=50)] = 4
-    """Centre-line snapshots spread over the counting period."""
+    """Centre-line snapshots spread over the counting period (with a single feature, over its
+    passage through the Hertz zone)."""
 
 
 class TransientSolverSpec(CaseModel):
@@ -331,6 +385,29 @@ class EHLTransientCase(EHLCaseBase):
             counting = max(passages, default=200)
         return warmup, counting
 
+    def snapshot_steps(self, problem, x: np.ndarray, dt: float, warmup: int,
+                       total: int) -> np.ndarray:
+        """Steps of the centre-line snapshots: ``time.snapshots`` spread evenly over the
+        counting period, or with single features over their passage through the Hertz zone,
+        from the first feature's centre at x = -a until every feature's centre, and the film
+        change it makes at the mean speed (Venner & Lubrecht), have reached x = +a (within the
+        counting period, and only where it holds that many steps; else as without). A feature
+        enters the inlet when counting starts and is counted until it has left the domain, so
+        the counting period's first and last steps show the smooth contact: a dent run's
+        five snapshots showed it at two (session 38)."""
+        first, last = warmup + 1, total
+        tracks = self.feature_tracks(problem, x, dt, warmup)
+        if tracks:
+            a = problem.a
+            enter = [(-a - start) / step for _, _, start, step in tracks]
+            leave = [max((a - start) / step, (-a - start) / step
+                         + 2.0 * a / (problem.mean_speed * dt))
+                     for _, _, start, step in tracks]
+            inside = max(first, int(np.ceil(min(enter)))), min(last, int(np.floor(max(leave))))
+            if inside[1] - inside[0] + 1 >= self.time.snapshots:
+                first, last = inside
+        return np.unique(np.linspace(first, last, self.time.snapshots).round().astype(int))
+
     def feature_tracks(self, problem, x: np.ndarray, dt: float, warmup: int) -> list:
         """``(label, spec, start, step)`` per single-feature surface: its centre's position
         (m) at the start of the run and the distance (m) it moves per step, placed as
@@ -377,6 +454,8 @@ class EHLTransientCase(EHLCaseBase):
             if built is not None and spec.kind == "file" and not built.surface.periodic:
                 _check_trace_length(f"surface{k}.path", spec.path, built.surface,
                                     abs(u) * dt * total, warmup, total - warmup)
+                if isinstance(built.surface, Topography):
+                    built = _centred_across(f"surface{k}.path", spec.path, built, y)
             out.append(built)
         return out
 

@@ -25,10 +25,12 @@ from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.statistics import count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
-from ..ehl.transient import TransientResult
+from ..ehl.transient import TransientResult, default_warmup_steps
 from ..formatting import format_duration
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
+from ..surfaces.parameters import acf_decay_lengths
+from ..surfaces.topography import Topography
 from .ehl_steady import chosen_mesh, ehl_warnings
 
 __all__ = ["CHECKPOINTS", "SECONDS_PER_NODE_STEP", "run"]
@@ -185,7 +187,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     records = case.surface_records(problem, x, y, warmup, total, dt)
     rough1, rough2 = (None if built is None else built.surface for built in records)
     file_notes, file_warnings = _file_reports(case, records)
-    snaps = np.unique(np.linspace(warmup + 1, total, case.time.snapshots).round().astype(int))
+    snaps = case.snapshot_steps(problem, x, dt, warmup, total)
     shown = snaps[-1]  # the centre-line figure's step: the last, or a feature at x = 0
     centred = [int(np.rint(-start / step))
                for _, _, start, step in case.feature_tracks(problem, x, dt, warmup)]
@@ -308,6 +310,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     trust += res.fixed_point_warning()
     trust += _roughness_warnings(case, problem, x, y, warmup, total, dt, (rough1, rough2))
     trust += _feature_warnings(case, problem, x, y, warmup, total, dt)
+    trust += _warmup_warnings(case, problem, x, warmup, total, dt)
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
                    converged=res.converged, notes=notes,
                    warnings=[*file_warnings, *trust],  # the file's doubts explain the rest
@@ -334,6 +337,10 @@ def _file_reports(case, records) -> tuple[list[str], list[str]]:
                                           strict=True), start=1):
         if built is not None and spec.kind == "file":
             more, doubts = built.file_report(f"surface{k}.path", Path(spec.path).name)
+            if isinstance(built.surface, Topography) and not built.surface.periodic:
+                more = (*more, f"surface{k}.path ({Path(spec.path).name}): a map of "
+                               f"{built.surface.y.size} rows, placed across y with its middle "
+                               "on the contact's centre line (y = 0)")
             notes += more
             lines += doubts
     return notes, lines
@@ -341,7 +348,8 @@ def _file_reports(case, records) -> tuple[list[str], list[str]]:
 
 def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> list[str]:
     """Roughness the mesh cannot resolve (shorter than a few cells along x; a gaussian
-    topography's correlation length across y), or that ``lowpass`` removed, per surface."""
+    topography's correlation length across y, or a measured map's, from its autocorrelation),
+    or that ``lowpass`` removed, per surface."""
     dx = x[1] - x[0]
     specs = (case.surface1, case.surface2)
     raw = surfaces
@@ -363,6 +371,14 @@ def _roughness_warnings(case, problem, x, y, warmup, total, dt, surfaces) -> lis
             lines += diagnostics.roughness_resolution(
                 f"surface{k}", spec.correlation_length, x, y, along_x=False,
                 correlation_length_y=spec.correlation_length_y)
+        if spec.kind == "file" and isinstance(surf, Topography) and y.size > 1:
+            # a measured map sampled at the mesh's rows: its own decay length across y (the
+            # ACF's 0.2 lag along the y axis, ISO 25178-2's rays at 0 and 90 degrees)
+            _, (along, across) = acf_decay_lengths(surf, directions=2)
+            if np.isfinite(across):
+                lines += diagnostics.roughness_resolution(
+                    f"surface{k}.path", along, x, y, along_x=False,
+                    correlation_length_y=across)
     return lines
 
 
@@ -412,5 +428,45 @@ def _feature_size(label: str, spec, problem, y) -> list[str]:
         lines.append(f"{label}.half_width: the {spec.feature} ({2e6 * spec.half_width:.4g} um "
                      f"across) is wider than the domain across y ({(y[-1] - y[0]) * 1e6:.4g} "
                      "um): it is cut off at the sides (grid.y_min, grid.y_max)")
+    return lines
+
+
+def _warmup_warnings(case, problem, x, warmup: int, total: int, dt: float) -> list[str]:
+    """A rough surface (not a single feature) that has not covered the Hertz zone when counting
+    starts, so that counted steps see a contact still partly smooth.
+
+    Its roughness enters at the inlet ``x[0]`` at ``t = 0`` and its front reaches ``x = a``
+    after ``(a - x[0]) / (u dt)`` steps; the default warm-up waits until it has crossed the
+    whole domain (:func:`~asperity.ehl.transient.default_warmup_steps`, the seed's rule). A
+    user's elliptical contact with a rough disc and ``warmup_steps = 5`` counted 5 steps in
+    which the roughness had come 18 um into a domain of 427 um and reported 0 % contact
+    time without a word (docs/ehl-transient.md, "A measured map, a short warm-up").
+    """
+    a = problem.a
+    rough = [(k, abs(u)) for k, (spec, u) in enumerate(
+        ((case.surface1, problem.u1), (case.surface2, problem.u2)), start=1)
+        if spec.kind not in ("smooth", "feature") or spec.waviness is not None]
+    default = default_warmup_steps(x, [u for _, u in rough], dt)
+    lines = []
+    for k, u in rough:
+        travel = u * dt
+        covered = int(np.ceil((a - x[0]) / travel - 1e-9))  # steps until its front is at +a
+        if warmup >= covered:
+            continue
+        advice = (f"leave time.warmup_steps out (the default, {default} steps: until the "
+                  f"roughness has crossed the domain) or set it >= {covered} (limit: the "
+                  "roughness over the whole Hertz zone, -a to +a, when counting starts)")
+        front = x[0] + travel * total
+        if front <= -a:
+            lines.append(f"surface{k}: its roughness never reaches the Hertz zone: in the run's "
+                         f"{total} steps it comes from the inlet (x = {x[0] / a:.3g} a) only to "
+                         f"x = {front / a:.3g} a, so every statistic is that of the smooth "
+                         f"contact; {advice}")
+        else:
+            lines.append(f"surface{k}: when counting starts (time.warmup_steps = {warmup}) its "
+                         f"roughness has come from the inlet (x = {x[0] / a:.3g} a) only to "
+                         f"x = {(x[0] + travel * warmup) / a:.3g} a, so the first "
+                         f"{min(covered, total) - warmup} of the {total - warmup} counting steps "
+                         f"count a contact that is still partly smooth; {advice}")
     return lines
 
