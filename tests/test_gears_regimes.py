@@ -11,6 +11,7 @@ from asperity.ehl import Lubricant
 from asperity.gears import GearPair, Thermal, solve_path
 from asperity.gears.path import EHLMesh
 from asperity.materials import STEEL, Material
+from asperity.plotting.gear import film_figure
 from asperity.runners.gear import outcome
 
 DEG = math.pi / 180
@@ -156,6 +157,9 @@ def test_boundary_lubrication_is_said():
                      "density = [7850, 8700]\nspecific_heat = [460, 380]\n")
     done = outcome(case, res, 0.0)
     assert done.summary["boundary_lubrication_points"] == 1 and lines[0] in done.warnings
+    fig = film_figure(res, "slow steel/bronze pair")  # lambda's panel marks the limit
+    labels = [t.get_text() for t in fig.axes[1].get_legend().get_texts()]
+    assert "lambda = 0.1: boundary lubrication" in labels
 
 
 def test_a_film_in_mixed_lubrication_gets_no_boundary_line():
