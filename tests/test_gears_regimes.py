@@ -8,6 +8,7 @@ import pytest
 
 from asperity.cases import load_case
 from asperity.ehl import Lubricant
+from asperity.errors import InputError
 from asperity.gears import GearPair, Thermal, solve_path
 from asperity.gears.path import EHLMesh
 from asperity.materials import STEEL, Material
@@ -189,3 +190,17 @@ def test_a_slow_pairs_film_13_percent_low_is_warned():
     lines = [w for w in res.warnings if w.startswith("ehl.nx:")]
     assert len(lines) == 1 and "estimated at up to 17%" in lines[0]
     assert "raise [ehl] nx to 167" in lines[0]
+
+
+@pytest.mark.parametrize(("line", "expected"), [
+    ("density = 8800", "expected a pair [pinion, wheel] of plain numbers in kg/m^3, e.g. "
+                       "[7850, 7850] for steel on steel"),
+    ('density = ["7850 kg/m^3", "8800 kg/m^3"]', "expected plain numbers in kg/m^3 (the unit "
+                                                 "is not read for thermal properties"),
+])
+def test_thermal_properties_are_refused_in_words(line, expected):
+    """A single number or a quantity with its unit read "expected a valid tuple, got 8800" and
+    "expected a valid number, got '7850 kg/m^3'"."""
+    with pytest.raises(InputError) as exc:
+        load_case(BRONZE_CASE + f"[thermal]\n{line}\n")
+    assert exc.value.field == "thermal.density" and expected in str(exc.value)

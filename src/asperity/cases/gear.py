@@ -349,6 +349,22 @@ class ThermalSpec(CaseModel):
     profile: Literal["semi-elliptic", "uniform"] = "semi-elliptic"
     """Heat-source profile of the flash temperature: "semi-elliptic" or "uniform"."""
 
+    @field_validator(*THERMAL_KEYS, mode="before")
+    @classmethod
+    def _plain_pair(cls, value, info):
+        """A pair [pinion, wheel] of plain SI numbers: a single number or a quantity with its
+        unit is refused in words (it read "expected a valid tuple, got 45" and "expected a
+        valid number, got '45 W/(m K)'"; units are not read for thermal properties)."""
+        spec = cls.model_fields[info.field_name]
+        unit = spec.json_schema_extra["unit"]
+        if not isinstance(value, list | tuple) or len(value) != 2:
+            raise ValueError(f"expected a pair [pinion, wheel] of plain numbers in {unit}, "
+                             f"e.g. {list(spec.default)} for steel on steel")
+        if any(isinstance(v, str) for v in value):
+            raise ValueError(f"expected plain numbers in {unit} (the unit is not read for "
+                             "thermal properties: write the SI value)")
+        return value
+
 
 class GearEHLSpec(CaseModel):
     """``[ehl]``: ``points`` along A-E and the steady mesh (:class:`asperity.gears.EHLMesh`)."""
