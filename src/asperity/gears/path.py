@@ -54,7 +54,8 @@ PLAUSIBLE_HERTZ_PRESSURE = 2.5e9
 #: about the error at high M: FZG pitch 12.7 % estimated, about 8 % measured (not reported);
 #: a slow steel/bronze pair at B 16.5 %, 10 % (reported; its minimum film 13 % below
 #: Dowson-Higginson); the crowned FZG example 19 %, about 18 %; a slow heavily loaded pair
-#: (M 161) 49 %, 53 %. The limit was 25 %, which let the last but one pass unreported.
+#: (M 161) 49 %, 53 %. The limit was 25 %, which let the bronze pair and the crowned
+#: example pass unreported.
 GEAR_FILM_MESH_ERROR = 0.15
 GEAR_FILM_MESH_TARGET = 0.10
 
