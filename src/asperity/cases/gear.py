@@ -29,7 +29,8 @@
     boundary = 0.1                       # boundary friction coefficient
     boundary_lambda = 1.0                # all load on asperities below this lambda
     full_film_lambda = 3.0               # none above this
-    [thermal]                            # k, rho, c of pinion and wheel (steel defaults)
+    [thermal]                            # k, rho, c of pinion and wheel (steel defaults;
+                                         # a body that is not steel is warned without them)
     [ehl]                                # points along A-E and the steady mesh
     points = 25
     [handoff]                            # the point `asperity gear --emit-transient` writes
@@ -324,9 +325,20 @@ class FrictionSpec(CaseModel):
 _Pair = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]]
 
 
+#: Young's moduli read as steel's where ``[thermal]`` is left at its steel defaults, Pa
+#: (carbon, alloy and case-hardening steels 200-215 GPa; cast irons, bronzes, titanium and
+#: polymers lie below it).
+STEEL_MODULUS_RANGE = (190e9, 220e9)
+
+#: The ``[thermal]`` keys whose defaults are steel's.
+THERMAL_KEYS = ("conductivity", "density", "specific_heat")
+
+
 class ThermalSpec(CaseModel):
     """``[thermal]``: conductivity (W/(m K)), density (kg/m^3) and specific heat (J/(kg K)) of
-    pinion and wheel (default steel: 45, 7850, 460), and the heat-source ``profile``."""
+    pinion and wheel (default steel: 45, 7850, 460; a body whose Young's modulus is not
+    steel's, 190-220 GPa, is warned where a key is left at that default), and the heat-source
+    ``profile``."""
 
     conductivity: _Pair = Field((45, 45), json_schema_extra={"unit": "W/(m*K)"})
     """Thermal conductivity [pinion, wheel] in W/(m K)."""
@@ -336,6 +348,22 @@ class ThermalSpec(CaseModel):
     """Specific heat [pinion, wheel] in J/(kg K)."""
     profile: Literal["semi-elliptic", "uniform"] = "semi-elliptic"
     """Heat-source profile of the flash temperature: "semi-elliptic" or "uniform"."""
+
+    @field_validator(*THERMAL_KEYS, mode="before")
+    @classmethod
+    def _plain_pair(cls, value, info):
+        """A pair [pinion, wheel] of plain SI numbers: a single number or a quantity with its
+        unit is refused in words (it read "expected a valid tuple, got 45" and "expected a
+        valid number, got '45 W/(m K)'"; units are not read for thermal properties)."""
+        spec = cls.model_fields[info.field_name]
+        unit = spec.json_schema_extra["unit"]
+        if not isinstance(value, list | tuple) or len(value) != 2:
+            raise ValueError(f"expected a pair [pinion, wheel] of plain numbers in {unit}, "
+                             f"e.g. {list(spec.default)} for steel on steel")
+        if any(isinstance(v, str) for v in value):
+            raise ValueError(f"expected plain numbers in {unit} (the unit is not read for "
+                             "thermal properties: write the SI value)")
+        return value
 
 
 class GearEHLSpec(CaseModel):
@@ -468,6 +496,36 @@ class GearCase(CaseHeader):
     def bodies(self) -> tuple[Material, Material]:
         """Pinion and wheel."""
         return self.body1.material(), self.body2.material()
+
+    def thermal_notes(self) -> list[str]:
+        """A ``thermal`` line for each body whose Young's modulus lies outside
+        :data:`STEEL_MODULUS_RANGE` while a ``[thermal]`` key it needs was left at the steel
+        default: its thermal contact coefficient B = sqrt(k rho c), and with it Blok's flash
+        temperature (:mod:`asperity.gears.thermal`), would be steel's. A steel pinion on a
+        bronze wheel ran as steel on steel without a word, and a steel pinion on a PA66 wheel
+        (B 696 against 12 750 W s^0.5/(m^2 K)) had flash temperatures 1.6-3.3 times too low
+        (docs/gears.md)."""
+        missing = [f"thermal.{key}" for key in THERMAL_KEYS
+                   if key not in self.thermal.model_fields_set]
+        if not missing:
+            return []
+        low, high = STEEL_MODULUS_RANGE
+        lines = []
+        for k, (role, spec) in enumerate((("pinion", self.body1), ("wheel", self.body2))):
+            if low <= spec.youngs_modulus <= high:
+                continue
+            name = "" if spec.name == "material" else f", {spec.name!r}"
+            lines.append(
+                f"thermal: the {role} (body{k + 1}{name}) has E = "
+                f"{spec.youngs_modulus / 1e9:.4g} GPa, outside steel's {low / 1e9:g}-"
+                f"{high / 1e9:g} GPa (the limit of the steel defaults), but "
+                f"{', '.join(missing)} {'was' if len(missing) == 1 else 'were'} left at "
+                "steel's (45 W/(m K), 7850 kg/m^3, 460 J/(kg K)), so the flash and contact "
+                f"temperatures assume a steel {role}; give its values as the "
+                f"{('first', 'second')[k]} of each pair (a polymer's B = sqrt(k rho c) is "
+                "about 1/18 of steel's: a steel pinion on a PA66 wheel has 1.6-3.3 times the "
+                "flash temperature of a steel wheel)")
+        return lines
 
     def thermal_model(self) -> Thermal:
         """The :class:`~asperity.gears.path.Thermal` of the case."""

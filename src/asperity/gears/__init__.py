@@ -16,6 +16,7 @@ from .kinematics import Kinematics, kinematics
 from .loading import hertz_along_path, load_per_length, load_sharing, normal_force
 from .mixed import asperity_share, composite_roughness, mixed_friction
 from .path import (
+    BOUNDARY_LUBRICATION_LAMBDA,
     PLAUSIBLE_HERTZ_PRESSURE,
     EHLMesh,
     GearPathResult,
@@ -32,9 +33,9 @@ from .thermal import (
 )
 
 __all__ = [
-    "FLASH_CONSTANTS", "LINE_MAX_SWEEPS", "MIN_TIP_THICKNESS", "NODES_PER_CORRELATION",
-    "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPair",
-    "GearPathResult", "Kinematics", "NominalContactStress", "Thermal",
+    "BOUNDARY_LUBRICATION_LAMBDA", "FLASH_CONSTANTS", "LINE_MAX_SWEEPS", "MIN_TIP_THICKNESS",
+    "NODES_PER_CORRELATION", "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPair", "GearPathResult",
+    "Kinematics", "NominalContactStress", "Thermal",
     "asperity_share", "composite_roughness", "contact_problem", "flash_temperature",
     "flooded_grid", "hertz_along_path", "involute", "inverse_involute", "kinematics",
     "load_per_length", "load_sharing", "mixed_friction", "nominal_contact_stress",

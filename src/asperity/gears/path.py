@@ -38,9 +38,9 @@ from .thermal import (
     thermal_contact_coefficient,
 )
 
-__all__ = ["GEAR_FILM_MESH_ERROR", "GEAR_FILM_MESH_TARGET", "PLAUSIBLE_HERTZ_PRESSURE",
-           "EHLMesh", "GearPathResult", "Thermal", "contact_problem", "film_mesh_error",
-           "position_mesh", "solve_path"]
+__all__ = ["BOUNDARY_LUBRICATION_LAMBDA", "GEAR_FILM_MESH_ERROR", "GEAR_FILM_MESH_TARGET",
+           "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPathResult", "Thermal", "contact_problem",
+           "film_mesh_error", "position_mesh", "solve_path"]
 
 #: Largest Hertz pressure of a gear flank taken as plausible when neither body gives a
 #: hardness, Pa: about the static (short-life) permissible contact stress of case-hardened
@@ -48,12 +48,23 @@ __all__ = ["GEAR_FILM_MESH_ERROR", "GEAR_FILM_MESH_TARGET", "PLAUSIBLE_HERTZ_PRE
 #: above it a torque typed in the wrong unit is the likelier cause (docs/gears.md).
 PLAUSIBLE_HERTZ_PRESSURE = 2.5e9
 
-#: Estimated central-film discretisation error (:func:`film_mesh_error`, an upper estimate)
-#: above which a path's mesh is reported, and the estimate the suggested ``[ehl] nx`` aims
-#: at. Below the limit lie the examples (FZG: 12 % estimated, about 8 % measured, documented
-#: in docs/gears.md); a slow heavily loaded pair's 49 % (53 % measured) is far above it.
-GEAR_FILM_MESH_ERROR = 0.25
+#: Estimated central-film discretisation error (:func:`film_mesh_error`) above which a path's
+#: mesh is reported, and the estimate the suggested ``[ehl] nx`` aims at. Measured against
+#: finer meshes (docs/gears.md) the estimate is 1.2-1.7 times the error at moderate loads and
+#: about the error at high M: FZG pitch 12.7 % estimated, about 8 % measured (not reported);
+#: a slow steel/bronze pair at B 16.5 %, 10 % (reported; its minimum film 13 % below
+#: Dowson-Higginson); the crowned FZG example 19 %, about 18 %; a slow heavily loaded pair
+#: (M 161) 49 %, 53 %. The limit was 25 %, which let the bronze pair and the crowned
+#: example pass unreported.
+GEAR_FILM_MESH_ERROR = 0.15
 GEAR_FILM_MESH_TARGET = 0.10
+
+#: Lambda below which a position is reported as in boundary lubrication: a smooth film of a
+#: tenth of the composite roughness or less, an order of magnitude below the classical limit
+#: of boundary lubrication, lambda = 1, where the friction rule of :mod:`asperity.gears.mixed`
+#: already puts all the load on the asperities (Hamrock, Schmid & Jacobson, *Fundamentals of
+#: Machine Elements*). There the smooth EHL film describes no real gap (docs/gears.md).
+BOUNDARY_LUBRICATION_LAMBDA = 0.1
 
 
 @dataclass(frozen=True)
@@ -123,10 +134,12 @@ def film_mesh_error(problem, spacing: float) -> float:
     """Estimated relative discretisation error of the central film on a mesh of ``spacing``
     (in a): ``FILM_ERROR dX^2 / H_c`` with ``H_c`` the Moes film in Hertzian units, the rule
     of the EHL default mesh (:meth:`asperity.ehl.LineContact.cells_per_a`, measured on point
-    contacts, where it is an upper estimate; docs/ehl-robustness.md). On gear line contacts
-    at a/32 it gave 49 % where the central film was 53 % low (M = 161, against 513 nodes) and
-    the minimum film 50 % below Dowson-Higginson, and 12 % where the central film was about
-    8 % low (the FZG pitch, M = 45)."""
+    contacts; docs/ehl-robustness.md). On gear contacts at a/32, against finer meshes
+    (Richardson-extrapolated from 129/257/513 nodes, docs/gears.md): 49 % where the central
+    film was 53 % low (M = 161) and the minimum film 50 % below Dowson-Higginson; 19 % where
+    it was about 18 % low (the crowned FZG example near B, an elliptical contact); 16.5 %
+    where it was 10 % low (a slow steel/bronze pair at B); 12.7 % where it was about 8 % low
+    (the FZG pitch, M = 45). It errs high at moderate loads, not at high ones."""
     return FILM_ERROR * spacing**2 / (problem.film_estimate() / problem.film_scale)
 
 
@@ -277,6 +290,27 @@ def _mesh_notes(kin: Kinematics, error, film_units, mesh: EHLMesh) -> list[str]:
             f"{GEAR_FILM_MESH_TARGET:.0%}"]
 
 
+def _boundary_notes(kin: Kinematics, lam, loaded, minimum_film,
+                    boundary_friction: float) -> list[str]:
+    """The ``lambda`` line where a loaded position's lambda lies below
+    :data:`BOUNDARY_LUBRICATION_LAMBDA`: which numbers of the path then hold and which not."""
+    low = np.flatnonzero(loaded & (lam < BOUNDARY_LUBRICATION_LAMBDA))
+    if not low.size:
+        return []
+    return [f"lambda: down to {np.min(lam[low]):.3g} at {low.size} of {int(loaded.sum())} "
+            f"loaded path points (roll angles {_angles(kin, low)} deg), below "
+            f"{BOUNDARY_LUBRICATION_LAMBDA:g}, the limit of boundary lubrication taken here: "
+            f"the smooth film (h_min down to {np.min(minimum_film[low]) * 1e9:.3g} nm) is a "
+            "tenth of the composite roughness or less, so the asperities carry the load and "
+            "that film, lambda and the EHL traction describe no real gap; the friction there is "
+            f"the assumed [friction] boundary = {boundary_friction:g}, and the flash "
+            "temperature follows from it (a nominal value; the asperity contacts run hotter). "
+            "Geometry, load, Hertz pressure and sigma_H0 stand. Wear and scuffing are then set "
+            "by the boundary films of the oil's additives, which asperity does not model; a "
+            "larger lambda needs a more viscous oil or more speed (h ~ (eta0 u)^0.7) or "
+            "smoother flanks"]
+
+
 def _pressure_notes(p_hz, torque: float, body1: Material, body2: Material) -> list[str]:
     """The Hertz pressure against the bodies' hardness, or without one against
     :data:`PLAUSIBLE_HERTZ_PRESSURE`."""
@@ -409,6 +443,7 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         notes.append(f"EHL solve: {bad.size} of {n} path points did not converge (roll angles "
                      f"{_angles(kin, bad)} deg); refine [ehl] nx/levels or raise max_sweeps")
     notes += _mesh_notes(kin, mesh_error, film_units, mesh)
+    notes += _boundary_notes(kin, lam, loaded & np.isfinite(lam), out["hm"], boundary_friction)
     if lubricant.newtonian and loaded.any():
         left_out = loaded & (f_asp < 1.0)
         raw = np.abs(newtonian_mu[loaded & np.isfinite(newtonian_mu)])

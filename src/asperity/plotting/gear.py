@@ -18,6 +18,7 @@ import math
 import numpy as np
 
 from ..gears.loading import load_sharing
+from ..gears.path import BOUNDARY_LUBRICATION_LAMBDA
 from .style import new_figure
 
 __all__ = ["conditions_figure", "film_figure", "friction_temperature_figure", "step_curve"]
@@ -117,7 +118,11 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
     ax.set_title(title, pad=14)
     ax2.plot(x, result.specific_film, "C2-o", ms=3)
     _cross_unconverged(ax2, result, result.specific_film)
-    ax2.axhline(1.0, color="C3", lw=0.8, ls="--")
+    ax2.axhline(1.0, color="C3", lw=0.8, ls="--", label="lambda = 1")
+    if np.nanmin(result.specific_film) < 1.0:
+        ax2.axhline(BOUNDARY_LUBRICATION_LAMBDA, color="C3", lw=0.8, ls=":",
+                    label=f"lambda = {BOUNDARY_LUBRICATION_LAMBDA:g}: boundary lubrication")
+    ax2.legend(fontsize=7)
     ax2.set_ylabel(f"lambda = h_min / sigma\n{sigma_label} = "
                    f"{result.composite_roughness * 1e6:.3g} µm", fontsize=9)
     ax2.set_xlabel("pinion roll angle (deg)")

@@ -17,7 +17,12 @@ import xarray as xr
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness
-from ..gears.path import GearPathResult, contact_problem, solve_path
+from ..gears.path import (
+    BOUNDARY_LUBRICATION_LAMBDA,
+    GearPathResult,
+    contact_problem,
+    solve_path,
+)
 from ..gears.rating import nominal_contact_stress
 from ..results import Comparison, Outcome, variable
 from ..surfaces import Profile, autocorrelation_length, roughness_parameters
@@ -156,6 +161,8 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "normal_force_n": normal_force(pair, case.operation.torque),
         "composite_roughness_m": result.composite_roughness,
         "minimum_lambda": float(result.specific_film[i_lam]),
+        "boundary_lubrication_points": int(np.sum((result.load > 0) & (
+            result.specific_film < BOUNDARY_LUBRICATION_LAMBDA))),
         **_at(result, i_lam, "minimum_lambda"),
         **hottest,
         "maximum_hertz_pressure_pa": float(result.hertz_pressure[i_p]),
@@ -236,7 +243,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     }
     # solve_path's lines include the lubricant.tau0 line of a Newtonian film (its traction
     # left out) and the minimum film <= 0 of an implausible load
-    trust = list(result.warnings)
+    trust = case.thermal_notes() + list(result.warnings)
     return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
                    notes=notes, warnings=trust)
 
