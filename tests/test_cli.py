@@ -1,5 +1,6 @@
 """The command line: the default run writes its files; bad input is one line and exit 2."""
 
+import itertools
 import json
 import math
 import subprocess
@@ -72,6 +73,28 @@ def test_examples_and_example(tmp_path):
     assert result.exit_code == 0 and "gear-dry-hertz" in result.output
     result = runner.invoke(app, ["example", "gear-dry-hertz"])
     assert result.exit_code == 0 and 'analysis = "normal"' in result.output
+
+
+HELP_SCREENS = [[], ["run"], ["examples"], ["example"], ["validate"], ["sweep"], ["schema"],
+                ["gear"], ["surface"], ["surface", "stats"], ["surface", "generate"],
+                ["surface", "plot"]]
+
+
+@pytest.mark.parametrize("command", HELP_SCREENS, ids=lambda c: " ".join(c) or "asperity")
+def test_help_text_is_filled_paragraphs(command):
+    """Each help screen's text reads as filled paragraphs at 80 columns: no line of a paragraph
+    (before the option boxes) stops short where the source's docstring broke its line."""
+    result = runner.invoke(app, [*command, "--help"], env={"COLUMNS": "80"})
+    assert result.exit_code == 0, result.output
+    text = result.output.split("╭", 1)[0].split("Usage:", 1)[1].split("\n", 1)[1]
+    lines = [ln.strip() for ln in text.splitlines()]
+    for line, following in itertools.pairwise(lines):
+        if line and following:  # within a paragraph: the next word would have fitted here
+            assert len(line) + 1 + len(following.split()[0]) > 78, (line, following)
+    if "Commands" in result.output:  # the list: each command's first line, in at most two
+        rows = result.output.split("Commands", 1)[1].splitlines()[1:-1]
+        starts = [n for n, row in enumerate(rows) if row[2:3].strip()]
+        assert starts and max(np.diff([*starts, len(rows)])) <= 2, result.output
 
 
 BAD_EDITS = [

@@ -335,7 +335,17 @@ def validate(
         raise typer.Exit(1)
 
 
-@app.command()
+#: ``asperity sweep --help``: a first line for the command list, then one paragraph (help
+#: text without line breaks inside a paragraph, which the help screen would keep).
+SWEEP_HELP = (
+    "Run a parameter study on Dask (or resume one): write OUT/study.nc and OUT/report.html."
+    "\n\nExits 3 when a case failed or did not converge; cases with warnings are counted on "
+    "the last line and listed in the report. Before it starts it says how many cases it runs "
+    "and, for transient EHL cases, about how long they take; Ctrl-C or SIGTERM stops it with "
+    "one line (the finished cases are kept; the same command goes on).")
+
+
+@app.command(help=SWEEP_HELP)
 @guarded
 def sweep(
     study: Annotated[Path, typer.Argument(help="Study file (TOML): base case + axes, or the "
@@ -350,11 +360,7 @@ def sweep(
                       ] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
 ):
-    """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc and
-    OUT/report.html. Exits 3 when a case failed or did not converge; cases with warnings are
-    counted on the last line and listed in the report. Before it starts it says how many cases
-    it runs and, for transient EHL cases, about how long they take; Ctrl-C or SIGTERM stops it
-    with one line (the finished cases are kept; the same command goes on)."""
+    """Run a parameter study (the help text: :data:`SWEEP_HELP`)."""
     from ..report import study_status
     from ..sweep import load_study, local_cluster, run_study
 
