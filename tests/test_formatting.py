@@ -95,6 +95,10 @@ def test_no_imperial_for_units_without_one():
     ("rsk_b", "Rsk (B)", ""),                                          # profile B's skewness
     ("iso_wdq", "ISO Wdq", ""),
     ("iso_mr1", "ISO Mr1", ""),
+    ("hamrock_dowson_central_film_m", "Hamrock-Dowson central film", "m"),   # one formula's
+    ("brewe_hamrock_taylor_minimum_film_m", "Brewe-Hamrock-Taylor minimum film", "m"),
+    ("moes_central_film_m", "Moes central film", "m"),
+    ("slide_roll_ratio", "slide/roll ratio", ""),
 ])
 def test_summary_keys_in_words(key, label, unit):
     assert describe_key(key) == (label, unit)
