@@ -121,6 +121,44 @@ def test_bad_case_file_exits_2_with_one_line(tmp_path, old, new, field):
     assert "Traceback" not in proc.stderr + proc.stdout
 
 
+LINE_CONTACT = """
+title = "line contact"
+analysis = "ehl-steady"
+reduced_modulus = "226 GPa"
+[contact]
+type = "line"
+radius = "10 mm"
+load_per_length = "100 kN/m"
+[speeds]
+u = "2 m/s"
+[lubricant]
+eta0 = "0.04 Pa*s"
+alpha = "20 1/GPa"
+[grid]
+nx = 65
+ny = 1
+x_min = -4.75
+[solver]
+max_sweeps = 3
+"""
+
+
+def test_unconverged_run_exits_3_saying_why_and_what_to_change(tmp_path):
+    """A steady line contact given 3 sweeps does not converge: exit code 3 and one error line
+    with the solver's own reason and the key to raise (it had said only "the solver did not
+    converge; see report.html")."""
+    case = tmp_path / "line.toml"
+    case.write_text(LINE_CONTACT)
+    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
+                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 3, proc.stderr
+    errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("error:")]
+    assert len(errors) == 1 and "Traceback" not in proc.stderr, proc.stderr
+    assert "did not converge in" in errors[0] and "solver.max_sweeps (now 3)" in errors[0]
+    assert str(tmp_path / "o" / "report.html") in errors[0]
+
+
 def test_missing_case_file_and_unknown_example():
     assert runner.invoke(app, ["run", "does-not-exist.toml"]).exit_code == 2
     result = runner.invoke(app, ["example", "nope"])
