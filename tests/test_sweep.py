@@ -603,6 +603,24 @@ def test_log_range_is_drawn_on_a_log_axis_and_study_nc_says_what_made_it(tmp_pat
     assert load_study("holmes-mesh-CC").base == "holmes-rough-CC-paper"   # an example
 
 
+@pytest.mark.parametrize("workers", [0, -2])
+def test_a_cluster_of_no_workers_is_one_line_naming_the_option(tmp_path, workers):
+    """``asperity sweep --workers 0`` ended in "internal: ZeroDivisionError" and exit code 1;
+    it is bad input: one line naming --workers, exit code 2, before anything runs."""
+    from typer.testing import CliRunner
+
+    from asperity.cli import app
+
+    _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = [5, 10]\n')
+    result = CliRunner().invoke(app, ["sweep", str(tmp_path / "study.toml"), "--out",
+                                      str(tmp_path / "out"), "--workers", str(workers), "-q"])
+    assert result.exit_code == 2, result.output
+    errors = [ln for ln in result.output.splitlines() if ln.startswith("error:")]
+    assert errors == [f"error: --workers: expected a whole number of at least 1 (the local "
+                      f"cluster's worker processes), got {workers}"], result.output
+    assert not (tmp_path / "out" / "cases").exists()
+
+
 def test_log_axis_tick_labels_do_not_overlap(tmp_path):
     """A log range within about a decade (5-80 N, 4 values) was labelled with matplotlib's minor
     ticks, 2×10¹ 3×10¹ 4×10¹ 6×10¹, written over each other; the ticks are now the swept values
