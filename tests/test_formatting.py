@@ -99,6 +99,8 @@ def test_no_imperial_for_units_without_one():
     ("brewe_hamrock_taylor_minimum_film_m", "Brewe-Hamrock-Taylor minimum film", "m"),
     ("moes_central_film_m", "Moes central film", "m"),
     ("slide_roll_ratio", "slide/roll ratio", ""),
+    ("fixed_point_distance_pressure_fraction", "last step's pressure change, relaxed further",
+     "%"),                                        # it read "fixed point distance pressure fraction"
 ])
 def test_summary_keys_in_words(key, label, unit):
     assert describe_key(key) == (label, unit)

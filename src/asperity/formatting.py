@@ -122,6 +122,10 @@ _LABELS = {
     "contact_time_fraction": "contact time",
     "friction_coefficient": "friction coefficient",
     "slide_roll_ratio": "slide/roll ratio",
+    # the transient's fixed-point check (ehl.stepper.check_fixed_point): its last step relaxed
+    # on to a hundredth of the tolerance, how far the fields moved
+    "fixed_point_distance_pressure_fraction": "last step's pressure change, relaxed further",
+    "fixed_point_distance_film_fraction": "last step's film change, relaxed further",
     "load_capacity": "gross-slip load / applied load",
     "gross_slip": "gross slip at the applied load",
     "path_gross_slip": "gross slip on the load path",
