@@ -22,8 +22,9 @@ def test_default_run_is_the_reduced_gear_case(tmp_path):
     result = runner.invoke(app, ["run", "--out", str(out), "--quiet"])
     assert result.exit_code == 0, result.output
     for name in ("result.nc", "summary.json", "report.html", "contact_count_rate.png",
-                 "centre_line.png"):
+                 "centre_line.png", "checkpoint.npz"):  # the files the README names
         assert (out / name).is_file(), name
+    assert len(list(out.glob("*.png"))) == 4
     summary = json.loads((out / "summary.json").read_text())
     for key in ("contact_time_fraction", "max_pressure_pa", "minimum_film_thickness_m"):
         assert key in summary
