@@ -90,8 +90,8 @@ _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "hamrock": "Hamrock", "chittenden": "Chittenden", "roelands": "Roelands",
           "greenwood": "Greenwood", "tripp": "Tripp", "brewe": "Brewe", "taylor": "Taylor",
           "eyring": "Eyring", "iso": "ISO",
-          "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
-          "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
+          "centreline": "centre line", "center": "centre", "rms": "rms", "u1": "u1", "u2": "u2",
+          "a": "a", "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
 
 #: Authors of a formula: written side by side in a key, joined by a hyphen in its label
 #: (``hamrock_dowson_central_film`` -> "Hamrock-Dowson central film").
