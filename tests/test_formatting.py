@@ -65,6 +65,9 @@ def test_zero_is_zero_in_the_si_unit(unit, text):
     (300e3 * 6894.757, "Pa", "2.068 GPa (300000 psi)"),
     (0.6 * 0.0254, "m", "15.24 mm (0.6 in)"),
     (10e-6 * 0.0254, "m", "254 nm (10 µin)"),                # roughness in microinches
+    (226.4e-6, "m", "226.4 µm (0.008913 in)"),    # a Hertz semi-axis: it read "(8913 µin)" while
+    (884.6e-6, "m", "884.6 µm (0.03483 in)"),     # the other semi-axis of the contact read in in
+    (11.74e-6, "m", "11.74 µm (462.2 µin)"),
     (100 * 4.4482216 * 0.0254, "N*m", "11.3 N m (100 in lbf)"),
 ])
 def test_imperial_beside_si(value, unit, text):

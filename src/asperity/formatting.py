@@ -68,7 +68,9 @@ _SI_CHOICES = {
 #: SI unit -> imperial units to choose from, largest first.
 _IMPERIAL_CHOICES = {
     "Pa": (("psi", "psi"),),
-    "m": (("in", "in", 0.01), ("microinch", "µin")),
+    # inches from a thou on (a Hertz semi-axis of 0.0089 in, not 8915 µin), microinches below
+    # (roughness, films, approaches: 16 µin)
+    "m": (("in", "in", 0.001), ("microinch", "µin")),
     "m^2": (("in^2", "in²"),),
     "N": (("lbf", "lbf"),),
     "N/m": (("lbf/in", "lbf/in"),),
