@@ -1,5 +1,6 @@
 """The command line: the default run writes its files; bad input is one line and exit 2."""
 
+import itertools
 import json
 import math
 import subprocess
@@ -21,8 +22,9 @@ def test_default_run_is_the_reduced_gear_case(tmp_path):
     result = runner.invoke(app, ["run", "--out", str(out), "--quiet"])
     assert result.exit_code == 0, result.output
     for name in ("result.nc", "summary.json", "report.html", "contact_count_rate.png",
-                 "centre_line.png"):
+                 "centre_line.png", "checkpoint.npz"):  # the files the README names
         assert (out / name).is_file(), name
+    assert len(list(out.glob("*.png"))) == 4
     summary = json.loads((out / "summary.json").read_text())
     for key in ("contact_time_fraction", "max_pressure_pa", "minimum_film_thickness_m"):
         assert key in summary
@@ -74,6 +76,28 @@ def test_examples_and_example(tmp_path):
     assert result.exit_code == 0 and 'analysis = "normal"' in result.output
 
 
+HELP_SCREENS = [[], ["run"], ["examples"], ["example"], ["validate"], ["sweep"], ["schema"],
+                ["gear"], ["surface"], ["surface", "stats"], ["surface", "generate"],
+                ["surface", "plot"]]
+
+
+@pytest.mark.parametrize("command", HELP_SCREENS, ids=lambda c: " ".join(c) or "asperity")
+def test_help_text_is_filled_paragraphs(command):
+    """Each help screen's text reads as filled paragraphs at 80 columns: no line of a paragraph
+    (before the option boxes) stops short where the source's docstring broke its line."""
+    result = runner.invoke(app, [*command, "--help"], env={"COLUMNS": "80"})
+    assert result.exit_code == 0, result.output
+    text = result.output.split("╭", 1)[0].split("Usage:", 1)[1].split("\n", 1)[1]
+    lines = [ln.strip() for ln in text.splitlines()]
+    for line, following in itertools.pairwise(lines):
+        if line and following:  # within a paragraph: the next word would have fitted here
+            assert len(line) + 1 + len(following.split()[0]) > 78, (line, following)
+    if "Commands" in result.output:  # the list: each command's first line, in at most two
+        rows = result.output.split("Commands", 1)[1].splitlines()[1:-1]
+        starts = [n for n, row in enumerate(rows) if row[2:3].strip()]
+        assert starts and max(np.diff([*starts, len(rows)])) <= 2, result.output
+
+
 BAD_EDITS = [
     ('rx = "19.1 mm"', 'rx = "19.1 parsec per kg"', "geometry.rx"),
     ('load = "962 N"', 'load = "-962 N"', "loading.load"),
@@ -96,6 +120,44 @@ def test_bad_case_file_exits_2_with_one_line(tmp_path, old, new, field):
     lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and lines[0].startswith(f"error: {field}"), proc.stderr
     assert "Traceback" not in proc.stderr + proc.stdout
+
+
+LINE_CONTACT = """
+title = "line contact"
+analysis = "ehl-steady"
+reduced_modulus = "226 GPa"
+[contact]
+type = "line"
+radius = "10 mm"
+load_per_length = "100 kN/m"
+[speeds]
+u = "2 m/s"
+[lubricant]
+eta0 = "0.04 Pa*s"
+alpha = "20 1/GPa"
+[grid]
+nx = 65
+ny = 1
+x_min = -4.75
+[solver]
+max_sweeps = 3
+"""
+
+
+def test_unconverged_run_exits_3_saying_why_and_what_to_change(tmp_path):
+    """A steady line contact given 3 sweeps does not converge: exit code 3 and one error line
+    with the solver's own reason and the key to raise (it had said only "the solver did not
+    converge; see report.html")."""
+    case = tmp_path / "line.toml"
+    case.write_text(LINE_CONTACT)
+    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
+                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 3, proc.stderr
+    errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("error:")]
+    assert len(errors) == 1 and "Traceback" not in proc.stderr, proc.stderr
+    assert "did not converge in" in errors[0] and "solver.max_sweeps (now 3)" in errors[0]
+    assert str(tmp_path / "o" / "report.html") in errors[0]
 
 
 def test_missing_case_file_and_unknown_example():

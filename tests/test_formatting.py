@@ -65,6 +65,9 @@ def test_zero_is_zero_in_the_si_unit(unit, text):
     (300e3 * 6894.757, "Pa", "2.068 GPa (300000 psi)"),
     (0.6 * 0.0254, "m", "15.24 mm (0.6 in)"),
     (10e-6 * 0.0254, "m", "254 nm (10 µin)"),                # roughness in microinches
+    (226.4e-6, "m", "226.4 µm (0.008913 in)"),    # a Hertz semi-axis: it read "(8913 µin)" while
+    (884.6e-6, "m", "884.6 µm (0.03483 in)"),     # the other semi-axis of the contact read in in
+    (11.74e-6, "m", "11.74 µm (462.2 µin)"),
     (100 * 4.4482216 * 0.0254, "N*m", "11.3 N m (100 in lbf)"),
 ])
 def test_imperial_beside_si(value, unit, text):
@@ -95,6 +98,13 @@ def test_no_imperial_for_units_without_one():
     ("rsk_b", "Rsk (B)", ""),                                          # profile B's skewness
     ("iso_wdq", "ISO Wdq", ""),
     ("iso_mr1", "ISO Mr1", ""),
+    ("hamrock_dowson_central_film_m", "Hamrock-Dowson central film", "m"),   # one formula's
+    ("brewe_hamrock_taylor_minimum_film_m", "Brewe-Hamrock-Taylor minimum film", "m"),
+    ("moes_central_film_m", "Moes central film", "m"),
+    ("moment_center_x_m", "moment centre x", "m"),             # the case key keeps "center"
+    ("slide_roll_ratio", "slide/roll ratio", ""),
+    ("fixed_point_distance_pressure_fraction", "last step's pressure change, relaxed further",
+     "%"),                                        # it read "fixed point distance pressure fraction"
 ])
 def test_summary_keys_in_words(key, label, unit):
     assert describe_key(key) == (label, unit)

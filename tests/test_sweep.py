@@ -1,5 +1,6 @@
 """Parameter studies: Dask matches serial, failures are recorded, interrupted studies resume."""
 
+import itertools
 import json
 import math
 import subprocess
@@ -97,6 +98,9 @@ def test_study_report_plots_results_against_the_axes_and_lists_cases(cross_study
     assert "<td>10 mm</td>" in html and "<td>5 N</td>" in html   # axis values in units
     assert "maximum pressure" in html and "max_pressure_pa" not in html
     assert "6 of 6 cases done" in html
+    # a long key may wrap after its dots and the table scrolls on its own: at 1200 px a study of
+    # loading.load x body2.youngs_modulus had pushed its last column off the page
+    assert "<th>geometry.<wbr>rx</th>" in html and "<div class=scroll><table>" in html
 
 
 def test_dask_two_workers_match_serial_and_share_the_cores(tmp_path):
@@ -597,6 +601,52 @@ def test_log_range_is_drawn_on_a_log_axis_and_study_nc_says_what_made_it(tmp_pat
     assert ds.attrs["asperity_version"] == asperity.__version__
     assert ds.attrs["base"] == str((tmp_path / "base.toml").resolve())
     assert load_study("holmes-mesh-CC").base == "holmes-rough-CC-paper"   # an example
+
+
+@pytest.mark.parametrize("workers", [0, -2])
+def test_a_cluster_of_no_workers_is_one_line_naming_the_option(tmp_path, workers):
+    """``asperity sweep --workers 0`` ended in "internal: ZeroDivisionError" and exit code 1;
+    it is bad input: one line naming --workers, exit code 2, before anything runs."""
+    from typer.testing import CliRunner
+
+    from asperity.cli import app
+
+    _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = [5, 10]\n')
+    result = CliRunner().invoke(app, ["sweep", str(tmp_path / "study.toml"), "--out",
+                                      str(tmp_path / "out"), "--workers", str(workers), "-q"])
+    assert result.exit_code == 2, result.output
+    errors = [ln for ln in result.output.splitlines() if ln.startswith("error:")]
+    assert errors == [f"error: --workers: expected a whole number of at least 1 (the local "
+                      f"cluster's worker processes), got {workers}"], result.output
+    assert not (tmp_path / "out" / "cases").exists()
+
+
+def test_log_axis_tick_labels_do_not_overlap(tmp_path):
+    """A log range within about a decade (5-80 N, 4 values) was labelled with matplotlib's minor
+    ticks, 2×10¹ 3×10¹ 4×10¹ 6×10¹, written over each other; the ticks are now the swept values
+    as plain numbers, side by side."""
+    from asperity.plotting.study import plot_study
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                             'range = {start = 5, stop = 80, num = 4, scale = "log", unit = "N"}\n')
+    out = tmp_path / "out"
+    loads = np.geomspace(5, 80, 4)
+    for n, load in enumerate(loads):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "converged": True, "summary": {"max_pressure_pa": 1e8 * load}}))
+    fig = plot_study(combine(study, out), ["max_pressure_pa", "max_pressure_pa"])
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for ax in fig.axes:
+        labels = [t for t in ax.get_xticklabels(which="both")
+                  if t.get_visible() and t.get_text() and
+                  ax.get_xlim()[0] <= t.get_position()[0] <= ax.get_xlim()[1]]
+        assert [t.get_text() for t in labels] == ["5", "12.6", "31.75", "80"]  # as in the table
+        boxes = sorted((t.get_window_extent(renderer) for t in labels), key=lambda b: b.x0)
+        assert all(left.x1 < right.x0 for left, right in itertools.pairwise(boxes))
 
 
 def test_local_cluster_is_quiet_and_its_workers_leave_ctrl_c_to_the_command(capfd):

@@ -82,3 +82,13 @@ def test_a_quantity_of_a_related_kind_says_what_it_is(text, dimension, hint):
     1500 x 2 pi / 60 x 0.05 = 7.85 m/s)."""
     with pytest.raises(InputError, match=hint):
         to_si(text, dimension, "f")
+
+
+@pytest.mark.parametrize("text", ["73 degC", "150 degF"])
+def test_a_temperature_for_another_quantity_is_called_a_temperature(text):
+    """'73 degC' for a modulus was refused as "a number with a known unit", as if degC were
+    unknown (pint will not multiply an offset unit); it is a known unit of the wrong kind."""
+    with pytest.raises(InputError) as info:
+        to_si(text, "pressure", "body2.youngs_modulus")
+    assert str(info.value) == (f"body2.youngs_modulus: expected a quantity convertible to Pa "
+                               f"(this is a temperature), got '{text}'")

@@ -10,6 +10,7 @@ unit-suffixed keys of ``summary.json`` (``max_pressure_pa``) into words and a un
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from dataclasses import dataclass
@@ -67,7 +68,9 @@ _SI_CHOICES = {
 #: SI unit -> imperial units to choose from, largest first.
 _IMPERIAL_CHOICES = {
     "Pa": (("psi", "psi"),),
-    "m": (("in", "in", 0.01), ("microinch", "µin")),
+    # inches from a thou on (a Hertz semi-axis of 0.0089 in, not 8915 µin), microinches below
+    # (roughness, films, approaches: 16 µin)
+    "m": (("in", "in", 0.001), ("microinch", "µin")),
     "m^2": (("in^2", "in²"),),
     "N": (("lbf", "lbf"),),
     "N/m": (("lbf/in", "lbf/in"),),
@@ -87,10 +90,15 @@ _SUFFIXES = (("_deg", "deg"), ("_per_ms", "1/ms"), ("_percent", "%"), ("_m_s", "
 _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "nijenbanning": "Nijenbanning", "dowson": "Dowson", "higginson": "Higginson",
           "hamrock": "Hamrock", "chittenden": "Chittenden", "roelands": "Roelands",
-          "greenwood": "Greenwood", "tripp": "Tripp",
+          "greenwood": "Greenwood", "tripp": "Tripp", "brewe": "Brewe", "taylor": "Taylor",
           "eyring": "Eyring", "iso": "ISO",
-          "centreline": "centre line", "rms": "rms", "u1": "u1", "u2": "u2", "a": "a",
-          "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
+          "centreline": "centre line", "center": "centre", "rms": "rms", "u1": "u1", "u2": "u2",
+          "a": "a", "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
+
+#: Authors of a formula: written side by side in a key, joined by a hyphen in its label
+#: (``hamrock_dowson_central_film`` -> "Hamrock-Dowson central film").
+_AUTHORS = frozenset({"Hamrock", "Dowson", "Higginson", "Greenwood", "Tripp", "Brewe", "Taylor",
+                      "Nijenbanning", "Moes", "Chittenden"})
 
 #: ISO 4287 / 13565 / 25178 parameter names as they appear (lower case) in summary keys.
 _ISO_PARAMETER = re.compile(r"[prws](a|q|sk|ku|p|v|t|z|dq|dc|k|pk|vk|dr|al|tr|td)|[rs]?mr[12]?"
@@ -115,6 +123,11 @@ _LABELS = {
     "steps_converged_fraction": "steps converged",
     "contact_time_fraction": "contact time",
     "friction_coefficient": "friction coefficient",
+    "slide_roll_ratio": "slide/roll ratio",
+    # the transient's fixed-point check (ehl.stepper.check_fixed_point): its last step relaxed
+    # on to a hundredth of the tolerance, how far the fields moved
+    "fixed_point_distance_pressure_fraction": "last step's pressure change, relaxed further",
+    "fixed_point_distance_film_fraction": "last step's film change, relaxed further",
     "load_capacity": "gross-slip load / applied load",
     "gross_slip": "gross slip at the applied load",
     "path_gross_slip": "gross slip on the load path",
@@ -333,7 +346,8 @@ def describe_key(key: str) -> tuple[str, str]:
 
 def _words(words: list[str]) -> str:
     """Key words as text: abbreviations written out, ISO roughness parameters as ISO spells
-    them (``ra`` -> ``Ra``), a profile's letter after its parameter in parentheses."""
+    them (``ra`` -> ``Ra``), a profile's letter after its parameter in parentheses, the authors
+    of one formula joined by hyphens (``Hamrock-Dowson``)."""
     out = []
     for i, word in enumerate(words):
         if _ISO_PARAMETER.fullmatch(word):
@@ -342,7 +356,11 @@ def _words(words: list[str]) -> str:
             out.append(f"({word.upper()})")
         else:
             out.append(_WORDS.get(word, word))
-    return " ".join(out)
+    text = out[:1]
+    for before, word in itertools.pairwise(out):
+        joined = before.rsplit("-", 1)[-1] in _AUTHORS and word in _AUTHORS
+        text.append(("-" if joined else " ") + word)
+    return "".join(text)
 
 
 @dataclass(frozen=True)

@@ -53,6 +53,7 @@ h3{font-size:1rem;margin:1rem 0 .2rem;color:#57606a}
 background:#f6f8fa} .cv{font-size:1.45rem;font-weight:600} .cl{color:#57606a;font-size:.9rem}
 code{font-size:.85rem}
 figure.wide img{max-width:min(100%,1000px)} figure.wide figcaption{max-width:1000px}
+.scroll{overflow-x:auto}
 """
 
 
@@ -355,7 +356,7 @@ def _cases_table(ds, variables) -> str:
     axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
     dims = list(ds["state"].dims)
     scale = {v: float(np.nanmax(np.abs(ds[v].values))) for v in variables}
-    head = "".join(f"<th>{html.escape(ds[a].attrs.get('long_name', a))}</th>" for a in axes)
+    head = "".join(f"<th>{_breakable(ds[a].attrs.get('long_name', a))}</th>" for a in axes)
     head += "".join(f"<th>{html.escape(describe_key(v)[0])}</th>" for v in variables)
     rows = []
     for n, index in enumerate(np.ndindex(*ds["state"].shape)):
@@ -391,6 +392,12 @@ def _cases_table(ds, variables) -> str:
     return (f"<table><tr><th>case</th>{head}<th>state</th><th class=l>error or warnings</th>"
             "</tr>"
             f"{''.join(rows)}</table>")
+
+
+def _breakable(key: str) -> str:
+    """A dotted case-file key as HTML that may wrap after each dot and underscore
+    (``body2.youngs_modulus``), so that a study's table of cases fits the page."""
+    return re.sub(r"([._])", r"\1<wbr>", html.escape(key))
 
 
 def _not_converged(ds, sel) -> bool:
@@ -490,7 +497,7 @@ def render_study_report(ds, figure_png: bytes | None = None) -> str:
 {states.size} cases.</p>
 {status}
 <h2>Results against the axes</h2>{figure}
-<h2>Cases</h2>{_cases_table(ds, variables[:6])}
+<h2>Cases</h2><div class=scroll>{_cases_table(ds, variables[:6])}</div>
 {warning_list}
 <p class=info>Written by asperity. Every case's files are in cases/NNNN; all scalars, with
 units, in study.nc.</p>

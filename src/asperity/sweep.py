@@ -453,6 +453,11 @@ def local_cluster(workers: int, cores: int | None = None):
     process of the terminal's group, and each worker printed its tracebacks (about 80 lines)
     before the command line's one line. The caller stops the study; closing the cluster ends
     the workers.
+
+    Raises
+    ------
+    InputError
+        ``--workers``: for fewer than one worker (0 had ended in a ZeroDivisionError).
     """
     import logging
     import os
@@ -461,6 +466,9 @@ def local_cluster(workers: int, cores: int | None = None):
 
     from dask.distributed import LocalCluster
 
+    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+        raise InputError("--workers", "a whole number of at least 1 (the local cluster's "
+                         "worker processes)", workers)
     cores = (os.cpu_count() or 1) if cores is None else cores
     threads = str(max(1, cores // workers))
     main = threading.current_thread() is threading.main_thread()

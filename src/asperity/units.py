@@ -147,6 +147,9 @@ def _parse(text: str, si_unit: str, field: str) -> float:
         read = re.sub(r"\bmils?\b", "thou", read)  # and a mil is a thousandth of an inch
     try:
         q = ureg.Quantity(read)
+    except pint.errors.OffsetUnitCalculusError:  # "73 degC": a known unit, a temperature
+        raise InputError(field, f"a quantity convertible to {si_unit or 'a pure number'} (this "
+                         "is a temperature)", text) from None
     except Exception:  # pint's parser raises many kinds (even AssertionError) on odd text
         raise InputError(field, f"a number with a known unit (e.g. '1.0 {si_unit or '1'}')",
                          text) from None

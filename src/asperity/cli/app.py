@@ -3,7 +3,8 @@
 The command line only parses arguments, loads cases, calls runners and writers, and prints.
 Bad input (a case file, an option, an output folder that cannot be written) ends with one line
 ``error: <field>: expected ...`` on stderr and exit code 2; a solver that did not converge ends
-with exit code 3 after its files are written. Every warning of a run (``Outcome.warnings``: a
+with exit code 3 after its files are written, on one line saying why (its own message: what
+did not converge, and the key to change). Every warning of a run (``Outcome.warnings``: a
 domain too small, a mesh too coarse, an inlet too short, ...) is one line ``warning: ...`` on
 stderr; ``run --strict`` makes them exit code 3. Ctrl-C or SIGTERM during a run prints one line
 saying where it stopped, where the partial results are and how to continue, and exits with
@@ -190,8 +191,10 @@ def run(
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
         err_console.print(f"warning: {line}", markup=False, highlight=False, soft_wrap=True)
-    if not outcome.converged:
-        fail("the solver did not converge; see report.html", EXIT_NOT_CONVERGED)
+    if not outcome.converged:  # the run's own reason, with the key to change where it has one
+        from ..sweep import convergence_message
+
+        fail(f"{convergence_message(outcome)} (report: {files['report']})", EXIT_NOT_CONVERGED)
     if outcome.warnings and strict:
         fail(f"{len(outcome.warnings)} warning(s) and --strict; see report.html", EXIT_WARNINGS)
     if not outcome.warnings:
@@ -335,7 +338,17 @@ def validate(
         raise typer.Exit(1)
 
 
-@app.command()
+#: ``asperity sweep --help``: a first line for the command list, then one paragraph (help
+#: text without line breaks inside a paragraph, which the help screen would keep).
+SWEEP_HELP = (
+    "Run a parameter study on Dask (or resume one): write OUT/study.nc and OUT/report.html."
+    "\n\nExits 3 when a case failed or did not converge; cases with warnings are counted on "
+    "the last line and listed in the report. Before it starts it says how many cases it runs "
+    "and, for transient EHL cases, about how long they take; Ctrl-C or SIGTERM stops it with "
+    "one line (the finished cases are kept; the same command goes on).")
+
+
+@app.command(help=SWEEP_HELP)
 @guarded
 def sweep(
     study: Annotated[Path, typer.Argument(help="Study file (TOML): base case + axes, or the "
@@ -350,11 +363,7 @@ def sweep(
                       ] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")] = False,
 ):
-    """Run a parameter study on Dask; resume an interrupted one; write OUT/study.nc and
-    OUT/report.html. Exits 3 when a case failed or did not converge; cases with warnings are
-    counted on the last line and listed in the report. Before it starts it says how many cases
-    it runs and, for transient EHL cases, about how long they take; Ctrl-C or SIGTERM stops it
-    with one line (the finished cases are kept; the same command goes on)."""
+    """Run a parameter study (the help text: :data:`SWEEP_HELP`)."""
     from ..report import study_status
     from ..sweep import load_study, local_cluster, run_study
 

@@ -1,6 +1,9 @@
 """Figures of a parameter study: each swept result against the first axis, one line per value of
 the other axes (small multiples, one panel per result); a logarithmic x axis for an axis
-swept on a log range (``scale = "log"``) or spanning more than a factor of 50. A result that
+swept on a log range (``scale = "log"``) or spanning more than a factor of 50, its ticks
+plain numbers at the swept values (at most ``LOG_TICKS`` of them; else at 1, 2 and 5 times the
+powers of ten), never matplotlib's default minor labels, which for a range within about a decade
+(5-80 N) are ``2×10¹ 3×10¹ 4×10¹ 6×10¹`` written over each other. A result that
 changes by less than ``FLAT_SPAN`` of its size over the study is drawn on a range of
 ``FLAT_RANGE`` about its mean, so that round-off does not look like a trend."""
 
@@ -9,11 +12,21 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
+from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullFormatter
 
-from ..formatting import describe_key, display_unit, format_axis_value, units_from_cf
+from ..formatting import (
+    describe_key,
+    display_unit,
+    format_axis_value,
+    format_number,
+    units_from_cf,
+)
 from .style import plt
 
-__all__ = ["FLAT_RANGE", "FLAT_SPAN", "plot_study"]
+__all__ = ["FLAT_RANGE", "FLAT_SPAN", "LOG_TICKS", "plot_study"]
+
+#: A log x axis with at most this many swept values has a tick at each of them.
+LOG_TICKS = 8
 
 #: A panel's values spanning less than this fraction of their largest magnitude are "flat".
 FLAT_SPAN = 1e-3
@@ -31,6 +44,17 @@ def _flat_limits(values: np.ndarray) -> tuple[float, float] | None:
         return None
     mean = float(np.mean(finite))
     return mean - FLAT_RANGE * abs(mean), mean + FLAT_RANGE * abs(mean)
+
+
+def _log_ticks(ax, x: np.ndarray) -> None:
+    """Plain-number ticks on a log x axis: at the swept values ``x`` when there are at most
+    :data:`LOG_TICKS`, else at 1, 2 and 5 times the powers of ten; no minor tick labels."""
+    values = np.unique(x)
+    locator = (FixedLocator(values) if values.size <= LOG_TICKS
+               else LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+    ax.xaxis.set_major_locator(locator)
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _pos: format_number(v)))
+    ax.xaxis.set_minor_formatter(NullFormatter())
 
 
 def _axis_values(ds, name):
@@ -107,6 +131,7 @@ def plot_study(ds, variables, columns: int = 3):
         elif np.all(x > 0) and (ds[first].attrs.get("scale") == "log"  # a log range
                                 or (len(x) > 2 and x.max() / x.min() > 50)):
             ax.set_xscale("log")
+            _log_ticks(ax, x)
         else:  # the whole axis on every panel, also where some cases have no value
             pad = 0.05 * (np.ptp(x) or 1.0)
             ax.set_xlim(x.min() - pad, x.max() + pad)
