@@ -80,7 +80,7 @@ def test_without_the_refresh_on_stall_the_fallback_cycles(cam, monkeypatch):
     (which solves the case)."""
     prob, domain = cam
     monkeypatch.setattr(steady_solver, "STALL_RATIO", np.inf)
-    monkeypatch.setattr(steady_solver, "solve_line_newton", lambda state, target: False)
+    monkeypatch.setattr(steady_solver, "solve_line_newton", lambda state, target, **options: False)
     res = solve_steady(prob, nx=161, domain=domain)
     assert not res.converged and res.residual > 1e-3
 

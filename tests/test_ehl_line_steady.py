@@ -282,6 +282,6 @@ def test_without_the_refresh_fallback_the_low_sliding_eyring_roller_does_not_con
     from asperity.ehl import solver
 
     monkeypatch.setattr(solver, "LINE_RETRY_REFRESH", 10)
-    monkeypatch.setattr(solver, "solve_line_newton", lambda state, target: False)
+    monkeypatch.setattr(solver, "solve_line_newton", lambda state, target, **options: False)
     prob = load_case(ROLLER_LOW_SLIDING + 'tau0 = "10 MPa"\n').problem()
     assert not solve_steady(prob).converged

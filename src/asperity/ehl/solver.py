@@ -112,6 +112,15 @@ LINE_RETRY_REFRESH = 3
 #: (:func:`_relax_line_or_newton`); from the solution it converges in one refresh cycle
 #: (10 sweeps, changes below 1e-10 on the rollers of docs/ehl-robustness.md, session 38).
 NEWTON_CHECK_SWEEPS = 500
+#: Newton steps at most from a line contact's unconverged relaxation, and from the finest
+#: grid's converged one (:func:`_relax_line_or_newton`). From a converged state Newton
+#: needs 2-4 steps where it converges (the isoviscous rollers); on a stiff piezoviscous
+#: Hertz zone (a roller bearing's inner race at M = 305, L = 6.8, 2049 nodes) it did not
+#: converge in 40 steps, which took 15 s; on the robustness table's piezoviscous line rows
+#: the converged relaxation's central film lay within 0.03 % of Newton's discrete solution
+#: (docs/ehl-robustness.md, session 38).
+NEWTON_STEPS = 40
+POLISH_STEPS = 6
 
 #: Sweep limit on the coarser grids of a point contact's grid sequence (at most ``max_iter``):
 #: a coarse grid only gives the next grid its start. A 6205 ball bearing's inner-race contact
@@ -984,7 +993,8 @@ def _relax_line_or_newton(state, method, line, polish=False, **relax):
     solved = False
     for P, H0 in ((relaxed[0], relaxed[2]),) if converged else (start, relaxed[::2]):
         state.P, state.H0 = P, H0
-        solved = solve_line_newton(state, target)
+        solved = solve_line_newton(state, target,
+                                   max_steps=POLISH_STEPS if converged else NEWTON_STEPS)
         if solved:
             break
     if solved:
