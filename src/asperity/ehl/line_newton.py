@@ -25,8 +25,9 @@ rows are elliptic through the whole contact and the point update relaxes their s
 pressure error only over about ``nx^2`` sweeps, under a load loop that then cycles: rubber
 and polymer rollers in water at Moes M = 30-117 did not converge on 513-2049 nodes in
 40,000 sweeps per grid (docs/ehl-robustness.md, "Isoviscous line contacts at M >= 30" and
-"session 38"). The discretisation is not changed: the Newton solution is handed back to the
-relaxation, whose own convergence test decides (:func:`asperity.ehl.solver.solve_steady`).
+"Session 38: line contacts"). The discretisation is not changed: the Newton solution is
+handed back to the relaxation, whose own convergence test decides
+(:func:`asperity.ehl.solver.solve_steady`).
 
 References
 ----------

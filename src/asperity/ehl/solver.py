@@ -981,7 +981,7 @@ def _relax_line_or_newton(state, method, line, polish=False, **relax):
     a sweep's changes passes while the slow smooth error is still large (a polyurethane
     roller at M = 62 on 1025 nodes: central film 0.66 % under the discrete solution), and the
     state is kept only if the relaxation from the Newton solution converges too
-    (docs/ehl-robustness.md, "Isoviscous line contacts at high M (session 38)"). Returns
+    (docs/ehl-robustness.md, "Session 38: line contacts"). Returns
     ``_relax``'s tuple, the sweeps and history of both relaxations together.
     """
     start = (state.P.copy(), state.H0) if line and method == "point" else None
