@@ -114,7 +114,8 @@ LINE_RETRY_REFRESH = 3
 NEWTON_CHECK_SWEEPS = 500
 #: Newton steps at most from a line contact's unconverged relaxation, and from the finest
 #: grid's converged one (:func:`_relax_line_or_newton`). From a converged state Newton
-#: needs 2-4 steps where it converges (the isoviscous rollers); on a stiff piezoviscous
+#: took 2-3 steps (the isoviscous rollers at M = 62 and 118, the robustness table's line
+#: rows M = 10, L = 10 and M = 20, L = 2); on a stiff piezoviscous
 #: Hertz zone (a roller bearing's inner race at M = 305, L = 6.8, 2049 nodes) it did not
 #: converge in 40 steps, which took 15 s; on the robustness table's piezoviscous line rows
 #: the converged relaxation's central film lay within 0.03 % of Newton's discrete solution
@@ -758,6 +759,10 @@ def solve_steady(
         x-line relaxation or the seed's point update (Eq. 7). Default: ``"line"`` for a point
         contact, ``"point"`` for a line contact (x-line relaxation of the single row of a line
         contact diverges: every off-centre pressure coefficient is then lagged at once).
+        A line contact's point update that ends a grid unconverged is followed by Newton on
+        the same discrete equations (up to 2049 nodes), and its finest grid's converged
+        relaxation is polished by up to :data:`POLISH_STEPS` Newton steps
+        (:mod:`asperity.ehl.line_newton`, :func:`_relax_line_or_newton`).
         A point contact whose x-line relaxation ends unconverged on cells with ``dY < 3 dX``
         is solved again with a y-line sweep after every x-line sweep
         (:data:`Y_LINES_BELOW`; ``y_lines`` of the result).
