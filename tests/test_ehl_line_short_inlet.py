@@ -50,11 +50,14 @@ def solutions(cam):
     return {nx: solve_steady(prob, nx=nx, domain=domain) for nx in (101, 161, 201)}
 
 
-@pytest.mark.parametrize("nx", [101, 161, 201])
-def test_short_domain_converges_with_defaults(solutions, nx):
+@pytest.mark.parametrize("nx, film", [(101, 142.2e-9), (161, 146.0e-9), (201, 146.9e-9)])
+def test_short_domain_converges_with_defaults(solutions, nx, film):
+    """Since session 38 the first sequence's finest grid, unconverged after its 5000 sweeps,
+    is solved by Newton (:mod:`asperity.ehl.line_newton`) and converges there, to the films
+    the refresh-on-stall fallback had found (the numbers of the module docstring, 0.1 %)."""
     res = solutions[nx]
     assert res.converged and abs(res.load_error) < 1e-5
-    assert res.sweeps < 5000
+    assert res.central_film == pytest.approx(film, rel=1e-3)
 
 
 def test_short_domain_films_agree_across_meshes(cam, solutions):
@@ -73,9 +76,11 @@ def test_short_domain_films_agree_across_meshes(cam, solutions):
 
 def test_without_the_refresh_on_stall_the_fallback_cycles(cam, monkeypatch):
     """Negative control: a fallback that never counts as stalled keeps its refresh every 10
-    sweeps and ends unconverged (measured residual 0.11 on 161 nodes)."""
+    sweeps and ends unconverged (measured residual 0.11 on 161 nodes), with Newton off
+    (which solves the case)."""
     prob, domain = cam
     monkeypatch.setattr(steady_solver, "STALL_RATIO", np.inf)
+    monkeypatch.setattr(steady_solver, "solve_line_newton", lambda state, target, **options: False)
     res = solve_steady(prob, nx=161, domain=domain)
     assert not res.converged and res.residual > 1e-3
 

@@ -41,6 +41,7 @@ from .kernels import (
     line_sweep,
     point_sweep,
 )
+from .line_newton import solve_line_newton
 from .lubricant import friction_coefficient
 from .nodal import at_centre as _at_centre
 from .nodal import centre_line as _centre_line
@@ -106,6 +107,21 @@ STUCK_SWEEPS = 5000
 #: with 3 sweeps). Only as a fallback: with 3 sweeps the seed's line contact did not
 #: converge on 1601 nodes (docs/ehl-robustness.md, "Not in the table").
 LINE_RETRY_REFRESH = 3
+
+#: Sweeps at most of the relaxation that checks a line contact's Newton solution
+#: (:func:`_relax_line_or_newton`); from the solution it converges in one refresh cycle
+#: (10 sweeps, changes below 1e-10 on the rollers of docs/ehl-robustness.md, session 38).
+NEWTON_CHECK_SWEEPS = 500
+#: Newton steps at most from a line contact's unconverged relaxation, and from the finest
+#: grid's converged one (:func:`_relax_line_or_newton`). From a converged state Newton
+#: took 2-3 steps (the isoviscous rollers at M = 62 and 118, the robustness table's line
+#: rows M = 10, L = 10 and M = 20, L = 2); on a stiff piezoviscous
+#: Hertz zone (a roller bearing's inner race at M = 305, L = 6.8, 2049 nodes) it did not
+#: converge in 40 steps, which took 15 s; on the robustness table's piezoviscous line rows
+#: the converged relaxation's central film lay within 0.03 % of Newton's discrete solution
+#: (docs/ehl-robustness.md, session 38).
+NEWTON_STEPS = 40
+POLISH_STEPS = 6
 
 #: Sweep limit on the coarser grids of a point contact's grid sequence (at most ``max_iter``):
 #: a coarse grid only gives the next grid its start. A 6205 ball bearing's inner-race contact
@@ -743,6 +759,10 @@ def solve_steady(
         x-line relaxation or the seed's point update (Eq. 7). Default: ``"line"`` for a point
         contact, ``"point"`` for a line contact (x-line relaxation of the single row of a line
         contact diverges: every off-centre pressure coefficient is then lagged at once).
+        A line contact's point update that ends a grid unconverged is followed by Newton on
+        the same discrete equations (up to 2049 nodes), and its finest grid's converged
+        relaxation is polished by up to :data:`POLISH_STEPS` Newton steps
+        (:mod:`asperity.ehl.line_newton`, :func:`_relax_line_or_newton`).
         A point contact whose x-line relaxation ends unconverged on cells with ``dY < 3 dX``
         is solved again with a y-line sweep after every x-line sweep
         (:data:`Y_LINES_BELOW`; ``y_lines`` of the result).
@@ -923,13 +943,13 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             exponent = LINE_GAIN_EXPONENT if line else POINT_GAIN_EXPONENT
             gain *= ((default_nx - 1) / (gx - 1)) ** exponent
         limit = max_iter if line or level + 1 == len(grids) else min(max_iter, COARSE_SWEEPS)
-        converged, residual, sweeps, history = _relax(
-            state, method, tol=tol, max_sweeps=limit, refresh=refresh, gain=gain,
-            callback=callback, sweep_offset=total, tangent=tangent,
-            stall_refresh=method == "line" or (tangents_from == "every_grid"
-                                               and tangent is not None),
-            give_up=tangents_from == "below_default",
-        )
+        relax = dict(tol=tol, max_sweeps=limit, refresh=refresh, gain=gain, callback=callback,
+                     tangent=tangent,
+                     stall_refresh=method == "line" or (tangents_from == "every_grid"
+                                                        and tangent is not None),
+                     give_up=tangents_from == "below_default")
+        converged, residual, sweeps, history = _relax_line_or_newton(
+            state, method, line, polish=level + 1 == len(grids), sweep_offset=total, **relax)
         total += sweeps
         wanted = tangents_from == "every_grid" or (
             tangents_from == "below_default" and level + 1 < len(grids)
@@ -940,14 +960,58 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             # the perturbed solve by the gain alone: steered by the coarser grid's tangent
             # it would end within tol by that tangent and hand it on (line M = 1000, L = 10
             # then cycled on its finest grid)
-            _, other_residual, extra, _ = _relax(
-                other, method, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
+            _, other_residual, extra, _ = _relax_line_or_newton(
+                other, method, line, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
                 callback=None, tangent=None if tangents_from == "every_grid" else tangent,
-                load_factor=1.0 + LoadTangent.STEP)
+                load_factor=1.0 + LoadTangent.STEP, give_up=tangents_from == "below_default")
             total += extra
             if other_residual < max(tol, LoadTangent.RESIDUAL):
                 tangent = LoadTangent.between(state, other)
     return _Sequenced(state, converged, residual, sweeps, total, history)
+
+
+def _relax_line_or_newton(state, method, line, polish=False, **relax):
+    """:func:`_relax`, then Newton for a line contact's point update that ended unconverged
+    (or, with ``polish``, converged).
+
+    The steady discrete equations are solved by Newton
+    (:func:`asperity.ehl.line_newton.solve_line_newton`) from the grid's start (the
+    interpolated coarser solution) or, failing that, from the relaxed state, and the
+    relaxation runs again from the solution for at most :data:`NEWTON_CHECK_SWEEPS` sweeps:
+    its own convergence test decides, so the discretisation and the test are those of the
+    relaxation. Isoviscous rollers at M = 31-118 (L = 0), whose point update relaxes the
+    smooth pressure error over about ``nx^2`` sweeps, did not converge on 513-2049 nodes in
+    40,000 sweeps per grid; with Newton every grid converges. With ``polish`` (the finest
+    grid) a converged relaxation is also solved by Newton from its state: there the test on
+    a sweep's changes passes while the slow smooth error is still large (a polyurethane
+    roller at M = 62 on 1025 nodes: central film 0.66 % under the discrete solution), and the
+    state is kept only if the relaxation from the Newton solution converges too
+    (docs/ehl-robustness.md, "Session 38: line contacts"). Returns
+    ``_relax``'s tuple, the sweeps and history of both relaxations together.
+    """
+    start = (state.P.copy(), state.H0) if line and method == "point" else None
+    converged, residual, sweeps, history = _relax(state, method, **relax)
+    if start is None or not np.all(np.isfinite(state.P)) or (converged and not polish):
+        return converged, residual, sweeps, history
+    relaxed = (state.P.copy(), state.H.copy(), state.H0)
+    target = state.problem.load_integral * relax.get("load_factor", 1.0)
+    solved = False
+    for P, H0 in ((relaxed[0], relaxed[2]),) if converged else (start, relaxed[::2]):
+        state.P, state.H0 = P, H0
+        solved = solve_line_newton(state, target,
+                                   max_steps=POLISH_STEPS if converged else NEWTON_STEPS)
+        if solved:
+            break
+    if solved:
+        check = {**relax, "max_sweeps": min(relax["max_sweeps"], NEWTON_CHECK_SWEEPS),
+                 "sweep_offset": relax.get("sweep_offset", 0) + sweeps}
+        checked, check_residual, more, tail = _relax(state, method, **check)
+        if checked or not converged:
+            history = history + [(sweeps + row[0], *row[1:]) for row in tail]
+            return checked, check_residual, sweeps + more, history
+    state.P, state.H, state.H0 = relaxed
+    state.refresh()
+    return converged, residual, sweeps, history
 
 
 def sequencing_levels(nx: int, ny: int, min_nx: int = 33) -> int:

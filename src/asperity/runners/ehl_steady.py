@@ -15,27 +15,19 @@ import xarray as xr
 from .. import diagnostics
 from ..cases.ehl import MAX_BOUND
 from ..ehl import solve_steady
+from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
 from ..ehl.sides import inlet_probe, side_probe
 from ..ehl.solver import Y_LINES_BELOW
 from ..references import ISOVISCOUS, ehl_steady_comparisons, film_formulas, lubricant_laws
 from ..results import Outcome, variable
 
-__all__ = ["POISEUILLE_LINE_NODES", "STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
+__all__ = ["STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
            "isoviscous_line_advice", "run", "stall_advice"]
 
 #: A steady solve that stopped before its sweep limit with a residual below this many times
 #: its tolerance stalled near a solution (:func:`stall_advice`).
 STALLED_WITHIN = 10.0
-
-#: Most nodes on which the point update of an isoviscous line contact (``alpha p_h <=
-#: ISOVISCOUS``) converged at M = 30, 60 and 117 (L = 0, a rubber roller in water); 513 and
-#: more did not, on any domain (docs/ehl-robustness.md, "Isoviscous line contacts at M >= 30").
-POISEUILLE_LINE_NODES = 257
-#: Domain (in a) advised with them: the isoviscous film's pressure ends by 1.02 a, and an
-#: inlet at -1.5 a cost the central film 0.4 % at M = 30 against one at -4 a.
-POISEUILLE_LINE_DOMAIN = (-1.5, 1.2)
-
 
 def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
@@ -124,26 +116,22 @@ def run(case, progress=None) -> Outcome:
 
 def isoviscous_line_advice(problem, res) -> str:
     """What works for an unconverged isoviscous line contact on more than
-    ``POISEUILLE_LINE_NODES`` nodes ('' for any other contact).
+    :data:`asperity.ehl.line_newton.MAX_NODES` nodes ('' for any other contact).
 
     With the viscosity constant the Poiseuille flow weighs in everywhere, the Reynolds rows
     are elliptic through the contact, and the point update's smooth pressure errors (and so
-    the load) relax only over about ``nx^2`` sweeps: a roller at M = 60, L = 0 on 513 nodes
-    with the separation fixed still moved its load by 8 % over 4,000 sweeps, and with the load
-    loop (tangent or gain) the iteration cycled at every M from 30 to 117 on 513 to 2049
-    nodes. On ``POISEUILLE_LINE_NODES`` nodes over ``POISEUILLE_LINE_DOMAIN`` it converged,
-    its central film 0.2 % (M = 30), 1.6 % (60) and 4.8 % (117) under a Reynolds-Newton
-    solution of the same contact on 800 cells (Herrebrugh's problem, solved independently
-    for docs/ehl-robustness.md); a multigrid solver would remove the limit."""
-    if not _isoviscous_line(problem) or res.x.size <= POISEUILLE_LINE_NODES:
+    the load) relax only over about ``nx^2`` sweeps: rollers at M = 30-118, L = 0 did not
+    converge on 513-2049 nodes. The steady solver then solves the grid by Newton
+    (:mod:`asperity.ehl.line_newton`), on at most ``MAX_NODES`` nodes: there they converge
+    within 0.3 % of an isoviscous-elastic solution of the same contacts solved independently
+    (docs/ehl-robustness.md, session 38)."""
+    if not _isoviscous_line(problem) or res.x.size <= NEWTON_MAX_NODES:
         return ""
     alpha_ph = problem.lubricant.pressure_viscosity * problem.p_hertz
-    x0, x1 = POISEUILLE_LINE_DOMAIN
     return (f" An isoviscous line contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) "
             f"does not converge on {res.x.size} nodes: its Poiseuille flow relaxes over about "
-            f"nx^2 sweeps and the load loop cycles; set grid.nx = {POISEUILLE_LINE_NODES} "
-            f"with grid.x_min = {x0:g} and grid.x_max = {x1:g} (converged at M = 30, 60, 117 "
-            "with the central film 0.2-4.8 % thin, the more the larger M).")
+            f"nx^2 sweeps; on at most grid.nx = {NEWTON_MAX_NODES} nodes the solver finishes "
+            "it by Newton's method (converged at M = 30-118).")
 
 
 def _isoviscous_line(problem) -> bool:
@@ -269,12 +257,6 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if not rigid:
         film_mesh = diagnostics.ehl_film_mesh(x, hz.a,
                                               problem.film_estimate() / problem.film_scale)
-        if film_mesh and _isoviscous_line(problem) and x.size <= POISEUILLE_LINE_NODES:
-            film_mesh = [film_mesh[0] + (
-                f"; but an isoviscous line contact converges on at most "
-                f"{POISEUILLE_LINE_NODES} nodes (docs/ehl-robustness.md): on a/95 its central "
-                "film was 4.8 % thin at M = 117, 1.6 % at M = 60, where this estimate gives "
-                "16 % and 7 %")]
         lines += film_mesh
     if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
         lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
