@@ -204,3 +204,19 @@ def test_thermal_properties_are_refused_in_words(line, expected):
     with pytest.raises(InputError) as exc:
         load_case(BRONZE_CASE + f"[thermal]\n{line}\n")
     assert exc.value.field == "thermal.density" and expected in str(exc.value)
+
+
+@pytest.mark.parametrize(("text", "celsius"), [('"60 degC"', 60.0), ('"333.15 K"', 60.0),
+                                               ('"140 degF"', 60.0), ("60", 60.0)])
+def test_a_bulk_temperature_with_its_unit_is_read_in_deg_c(text, celsius):
+    """"80 degC" was refused ("expected a valid number") though the key is a temperature; a
+    kelvin or Fahrenheit value is converted with its offset (140 degF = (140 - 32) / 1.8)."""
+    case = load_case(BRONZE_CASE.replace("bulk_temperature = 60", f"bulk_temperature = {text}"))
+    assert case.operation.bulk_temperature == pytest.approx(celsius, abs=1e-9)
+
+
+@pytest.mark.parametrize("text", ['"60 m"', '"warm"'])
+def test_a_bulk_temperature_that_is_no_temperature_is_refused_naming_the_key(text):
+    with pytest.raises(InputError) as exc:
+        load_case(BRONZE_CASE.replace("bulk_temperature = 60", f"bulk_temperature = {text}"))
+    assert exc.value.field == "operation.bulk_temperature" and "80 degC" in str(exc.value)

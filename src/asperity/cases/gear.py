@@ -45,6 +45,7 @@ import math
 import re
 from typing import Annotated, Literal
 
+import pint
 from pydantic import BeforeValidator, Field, field_validator, model_validator
 
 from ..errors import InputError
@@ -206,6 +207,25 @@ _BARE_SPEED = (f"expected a rotational speed with its unit: {_SPEED_EXAMPLES} (a
                "may be rpm or rad/s, a factor 9.55)")
 
 
+def _celsius(value):
+    """A temperature in deg C: a plain number is deg C already; a string is read with its unit
+    by pint's offset-aware conversion ("353.15 K" and "176 degF" are 80 deg C)."""
+    if not isinstance(value, str) or is_bare(value):
+        return value
+    expected = "expected a temperature such as 80 or \"80 degC\""
+    match = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)\s*", value)
+    if match is None:
+        raise ValueError(expected)
+    ureg = registry()
+    try:  # number and unit apart: pint refuses "80 degC" as a product with an offset unit
+        quantity = ureg.Quantity(float(match[1]), match[2])
+    except (pint.errors.PintError, ValueError, AttributeError, TypeError):
+        raise ValueError(expected) from None
+    if quantity.dimensionality != ureg.kelvin.dimensionality:
+        raise ValueError(expected)
+    return float(quantity.to("degC").magnitude)
+
+
 def _rotational_speed(value):
     """The pinion speed in rad/s.
 
@@ -262,15 +282,21 @@ class OperationSpec(CaseModel):
     torque: Quantity("moment", gt=0)
     """Pinion torque ("318 N m", "2800 lbf in"); a power ("50 kW") is refused with the torque
     it means at the pinion speed."""
-    speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s"})]
+    speed: Annotated[float, Field(gt=0, json_schema_extra={"unit": "rad/s",
+                                                           "type": "quantity"})]
     """Pinion speed with its unit: "2170 rpm", "2170 min^-1", "36 rev/s" or "227 rad/s"; a
     bare number (rpm or rad/s?), "25 Hz" and "227 1/s" (revolutions or radians?) are
     refused."""
     bulk_temperature: Annotated[float, Field(gt=-100, lt=1000,
-                                             json_schema_extra={"unit": "°C"})] = 90.0
-    """Bulk temperature of the teeth in deg C (the lubricant's eta0 is taken at it)."""
+                                             json_schema_extra={"unit": "°C",
+                                                                "type": "number or quantity"})
+                                ] = 90.0
+    """Bulk temperature of the teeth: a number in deg C, or with its unit ("80 degC",
+    "353.15 K", "176 degF"); the lubricant's eta0 is taken at it."""
 
     _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
+    _bulk_temperature = field_validator("bulk_temperature", mode="before")(
+        lambda cls, v: _celsius(v))
 
     @model_validator(mode="before")
     @classmethod

@@ -94,7 +94,8 @@ def _describe_type(annotation, info: FieldInfo | None) -> tuple[str, str]:
     if number_unit is not None:
         base = typing.get_args(annotation)[0] \
             if typing.get_origin(annotation) is typing.Annotated else annotation
-        return _describe_type(base, None)[0], number_unit
+        kind = _extra(annotation, info).get("type") or _describe_type(base, None)[0]
+        return kind, number_unit
     dimension = _dimension(annotation, info)
     if dimension is not None:
         unit = DIMENSIONS[dimension]
