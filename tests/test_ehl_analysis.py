@@ -322,6 +322,40 @@ def test_sides_that_thin_the_film_are_reported_though_their_pressure_is_small():
     assert not [w for w in out.warnings if w.startswith("sides:")], out.warnings
 
 
+def test_mesh_advice_counts_its_nodes_on_the_advised_domain():
+    """The ball-on-disc case with its sides at +-1.2 b and dY = b/10 (177 x 25 nodes) is told
+    to move its sides to +-2 b and that its minimum film (in the side lobes) is not resolved
+    across y. The node count of the mesh line was that of its own 2.4 b (ny >= 81: b/33):
+    followed with the sides, 81 nodes on 4 b give b/20, coarser than the line asks for. The
+    count is now for the advised sides: the spacing it gives there is at most the one the
+    line's own estimate asks for (its error falls as dy^2 to 2 %), and a multiple of 8 cells
+    above it. The same for the nodes along x under an advised inlet."""
+    from asperity import diagnostics
+
+    grid = "ny = 25\nnx = 177\ny_min = -1.2\ny_max = 1.2\n"
+    case = load_case(parse_toml(MTM.replace("nx = 129\n", "").replace(
+        "x_max = 1.5\n", "x_max = 1.5\n" + grid)))
+    out = run_case(case)
+    b = out.summary["hertz_b_m"]
+    sides = [w for w in out.warnings if w.startswith("sides:")]
+    assert len(sides) == 1 and "y_max >= 2 b" in sides[0], out.warnings
+    mesh = [w for w in out.warnings if w.startswith("mesh: the minimum film")]
+    assert len(mesh) == 1 and "across y" in mesh[0], out.warnings
+    error = float(re.search(r"estimated error up to ([\d.]+) %", mesh[0]).group(1)) / 100
+    ny = int(mesh[0].split("use ny >= ")[1].split(" ")[0])
+    assert "on the advised -2 b..2 b" in mesh[0]
+    wanted = 0.1 * b * np.sqrt(0.02 / error)  # the spacing for 2 %, by the dy^2 scaling
+    assert 4 * b / (ny - 1) <= wanted < 4 * b / (ny - 9)
+    assert 4 * b / (81 - 1) > wanted  # the count for the case's own sides fell short
+
+    a = out.summary["hertz_a_m"]
+    x = np.linspace(-2.5 * a, 1.5 * a, 65)  # a/16, for H_c = 0.1: dx <= a/50 wanted
+    line = diagnostics.ehl_film_mesh(x, a, 0.1, domain=((-4.5 * a, 1.5 * a), (0.0, 0.0)))
+    nx = int(line[0].split("use nx >= ")[1].split(" ")[0])
+    cells = int(line[0].split("cells_per_a >= ")[1].split(")")[0])
+    assert nx == 6 * cells + 1 and "on the advised -4.5 a..1.5 a" in line[0]
+
+
 GLASS_DISC = """
 analysis = "ehl-steady"
 title = "Ball on glass disc, PAO at 40 cP, 20 N, 0.3 m/s"

@@ -230,6 +230,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     domain's that the inlet pressure and (point contacts) Hamrock & Dowson's starvation fit
     pass is measured the same way (:func:`asperity.ehl.sides.inlet_probe`, inlet moved to the
     default domain's); where the fit warns, the probe's measured loss is added to its line.
+    The node counts of the mesh lines are counted on the domain the inlet, side and rigid
+    domain lines advise (:func:`asperity.diagnostics.advised_domain`), so that following
+    all of them gives the spacing each asks for.
     ``film_solved``: ``central_film`` is the solution's on this inlet (else a film formula's
     flooded estimate, for an unconverged solve).
     """
@@ -261,6 +264,11 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
+    # the node counts advised below are counted on the domain advised above: a ball whose
+    # sides at +-1.2 b were to go to +-2 b was told ny >= 81, b/33 on its 2.4 b, b/20 on 4 b
+    advised = diagnostics.advised_domain(x, y, lines)
+    if mesh:
+        mesh = diagnostics.ehl_mesh(x, y, hz.a, b, domain=advised)
     lines += mesh
     # fine enough for the film? Also where the Hertz zone has too few cells, whose advice
     # alone asked for nx >= 41 where the film needs 209 (a user's nx = 33: -93 % on the film).
@@ -268,7 +276,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     # ask for a mesh of the wrong film
     if not rigid:
         film_mesh = diagnostics.ehl_film_mesh(x, hz.a,
-                                              problem.film_estimate() / problem.film_scale)
+                                              problem.film_estimate() / problem.film_scale,
+                                              domain=advised)
         if film_mesh and _isoviscous_line(problem) and x.size <= POISEUILLE_LINE_NODES:
             film_mesh = [film_mesh[0] + (
                 f"; but an isoviscous line contact converges on at most "
@@ -277,7 +286,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
                 "16 % and 7 %")]
         lines += film_mesh
     if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
-        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
+        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b, domain=advised)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
