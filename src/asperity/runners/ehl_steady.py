@@ -51,7 +51,8 @@ def run(case, progress=None) -> Outcome:
         res = solve_steady(problem, **case.solve_options(problem), method=case.solver.method,
                            tol=case.solver.tolerance,
                            max_iter=case.solver.sweep_limit(line),
-                           boundary_friction=case.solver.boundary_friction, callback=callback)
+                           boundary_friction=case.solver.boundary_friction,
+                           load_gain=problem.load_gain(), callback=callback)
     lub = problem.lubricant
     hz = problem.hertz
     ds = xr.Dataset(
