@@ -230,7 +230,9 @@ def test_a_rigid_contact_gets_a_default_domain_and_mesh_on_its_inlet_length():
     that of the rigid ball's Reynolds equation solved here on the same domain (8.23 um;
     asperity 8.20 um, -0.4 %; tolerance 2 %, the discretisation error of l/8 cells). The
     domain line says what share of the unbounded film (11.1 um here, Brewe-Hamrock-Taylor
-    11.0 um) the domain keeps: 74.2 %, against 74.0 % by the solutions here."""
+    11.0 um) the domain keeps: 74.2 %, against 74.0 % by the solutions here. Its
+    Brewe-Hamrock-Taylor row, to which the line points, was missing: judged isoviscous on
+    alpha p_h = 0.65 where the film's pressure is 0.7 MPa (alpha p = 0.004)."""
     case = load_case(parse_toml(GLASS_IN_GLYCEROL))
     prob = case.problem()
     out = run_case(case)
@@ -248,3 +250,6 @@ def test_a_rigid_contact_gets_a_default_domain_and_mesh_on_its_inlet_length():
     unbounded = scale * 0.351**2  # C = 0.351 by the same solve extrapolated in S (1/S)
     assert share == pytest.approx(film / unbounded, abs=0.03)
     assert not [w for w in out.warnings if w.startswith("mesh")]
+    # the row the line points to: alpha p_h = 0.65 hid it, the film's pressure is 0.7 MPa
+    assert out.summary["brewe_hamrock_taylor_minimum_film_m"] == pytest.approx(unbounded,
+                                                                                rel=0.02)
