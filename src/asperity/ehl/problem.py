@@ -81,6 +81,14 @@ MAX_BOUND = 100.0
 #: mesh on l").
 RIGID_DEFAULT_LENGTH = 4.0
 
+#: Largest ``alpha`` times a rigid contact's own pressure scale
+#: (:func:`asperity.ehl.formulas.rigid_mean_pressure` of the estimated film) for its defaults
+#: to follow ``l``: the isoviscous-rigid regime (the limit of the isoviscous comparison rows,
+#: ``references.ISOVISCOUS``). A thick estimated film with a strongly piezoviscous oil (a
+#: traction drive at alpha = 900 1/GPa, millimetres of film: a unit mistake, most likely)
+#: keeps the EHL defaults and their refusal.
+RIGID_ISOVISCOUS = 0.1
+
 #: Inlet and sides of a rigid contact's default domain, in ``l`` (at most :data:`MAX_BOUND`
 #: semi-axes): its film is about ``(1 - 1.6/S)^2`` of the unbounded one there (0.81 at 16 l).
 RIGID_REACH_DEFAULT = 16.0
@@ -319,9 +327,14 @@ class PointContact(_Contact):
     @property
     def rigid(self) -> bool:
         """Whether the default domain and mesh follow :meth:`rigid_length` (at least
-        :data:`RIGID_DEFAULT_LENGTH` a): a hydrodynamic rather than an elastohydrodynamic
-        contact, whose pressure spreads far beyond the Hertz zone."""
-        return self.rigid_length() >= RIGID_DEFAULT_LENGTH * self.a
+        :data:`RIGID_DEFAULT_LENGTH` a, and ``alpha`` times the pressure scale
+        ``w / (2 pi Rx h)`` at most :data:`RIGID_ISOVISCOUS`): an isoviscous hydrodynamic
+        rather than an elastohydrodynamic contact, whose pressure spreads far beyond the
+        Hertz zone."""
+        film = self.film_estimate()
+        pressure = formulas.rigid_mean_pressure(self.load, self.rx, film)
+        return (self.rigid_length() >= RIGID_DEFAULT_LENGTH * self.a
+                and self.lubricant.pressure_viscosity * pressure <= RIGID_ISOVISCOUS)
 
     def load_gain(self) -> float | None:
         """Load gain for :func:`asperity.ehl.solve_steady` (None: the solver's default).
