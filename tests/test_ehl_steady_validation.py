@@ -253,3 +253,35 @@ def test_a_rigid_contact_gets_a_default_domain_and_mesh_on_its_inlet_length():
     # the row the line points to: alpha p_h = 0.65 hid it, the film's pressure is 0.7 MPa
     assert out.summary["brewe_hamrock_taylor_minimum_film_m"] == pytest.approx(unbounded,
                                                                                 rel=0.02)
+
+
+def test_a_rolling_rigid_contact_is_not_told_to_set_an_eyring_stress():
+    """A PTFE ball (R = 6.35 mm, 0.5 GPa, 0.46) rolling on steel in a silicone oil
+    (0.97 Pa s, alpha = 0), 0.2 N, 0.2 m/s, xi = 0: Moes M = 1.2, rigid. On its default
+    domain (-99.8 a..6.2 a, +-99.8 b, 209 x 385) the film is 28.44 um, against 28.53 um from
+    the rigid ball's Reynolds equation solved here on the same domain (tolerance 2 %). Its
+    friction coefficient, 0.105, is the rolling resistance of the Poiseuille flow, equal by
+    parts to the pressure's moment ``-int p x dA / (2 R w)`` (checked to 1 %). The run told
+    it to set lubricant.tau0 ("eta du/h grows without bound with the pressure-raised
+    viscosity"): with no sliding and no pressure-viscosity, an Eyring stress changes nothing."""
+    data = parse_toml(GLASS_IN_GLYCEROL)
+    data["body1"] = {"youngs_modulus": "0.5 GPa", "poisson_ratio": 0.46}
+    data["body2"] = {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3}
+    data["contact"].update(rx="6.35 mm", ry="6.35 mm", load="0.2 N")
+    data["speeds"] = {"u": "0.2 m/s"}
+    data["lubricant"].update(eta0="0.97 Pa s", alpha="0 1/GPa")
+    case = load_case(data)
+    prob = case.problem()
+    out = run_case(case)
+    assert out.converged
+    x, y = out.dataset.x.values, out.dataset.y.values
+    p = out.dataset.pressure.values
+    film = out.summary["minimum_film_thickness_m"]
+    length = np.sqrt(2 * prob.rx * film)
+    coefficient = _rigid_ball_coefficient(-x[0] / length, x[-1] / length, y[-1] / length)
+    assert film == pytest.approx((12 * 0.97 * 0.2 * (2 * prob.rx) ** 1.5 / 0.2) ** 2
+                                 * coefficient**2, rel=0.02)
+    moment = -np.sum(p * x[:, None]) / (2 * prob.rx * np.sum(p))
+    assert out.summary["friction_coefficient"] == pytest.approx(moment, rel=0.01)
+    assert out.summary["friction_coefficient"] > 0.1
+    assert not [w for w in out.warnings if w.startswith("lubricant.tau0")], out.warnings

@@ -114,13 +114,25 @@ def run(case, progress=None) -> Outcome:
                          film_solved=res.converged)
     collapse = diagnostics.ehl_film_collapse(res.film, estimate)
     trust += collapse
-    if not collapse:  # a collapsed film's friction is the collapse's, not the Newtonian law's
+    if not collapse and _sheared_piezoviscous(problem, res):
+        # a collapsed film's friction is the collapse's, not the Newtonian law's
         trust += diagnostics.newtonian_traction(res.friction_coefficient, lub.newtonian)
     chosen = chosen_mesh(case, problem, res.x, res.y)
     if "levels" not in case.solver.model_fields_set:  # the grid sequence chosen with the mesh
         chosen["solver.levels"] = len(res.levels)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust, chosen=chosen)
+
+
+def _sheared_piezoviscous(problem, res) -> bool:
+    """Whether a Newtonian film's friction can be the unbounded ``eta du / h`` of a
+    pressure-raised viscosity (:func:`asperity.diagnostics.newtonian_traction`): the surfaces
+    slide and ``alpha p_max > ISOVISCOUS``. A PTFE ball rolling in silicone oil (alpha = 0,
+    0.2 N, xi = 0) has a friction coefficient of 0.105 from its Poiseuille flow alone, the
+    rolling resistance ``int p x dA / (2 Rx w)`` of a hydrodynamic contact, which an Eyring
+    stress does not change; it was told to set lubricant.tau0."""
+    alpha_p = problem.lubricant.pressure_viscosity * res.max_pressure
+    return problem.sliding_speed != 0.0 and alpha_p > ISOVISCOUS
 
 
 def isoviscous_line_advice(problem, res) -> str:
