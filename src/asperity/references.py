@@ -379,8 +379,9 @@ def film_formulas(problem) -> dict[str, float]:
     water-lubricated contact), the contact deforms (``M >= ELASTIC_M``) and ``ry >= rx``,
     also Hamrock & Dowson's (1978) isoviscous-elastic films (soft EHL); a PDMS ball on glass
     in water-glycerol (M = 960, L = 0) had only Nijenbanning's film beside it. Below
-    ``ELASTIC_M`` an isoviscous contact is set beside Brewe, Hamrock & Taylor's (1979)
-    rigid-isoviscous minimum film instead.
+    ``ELASTIC_M`` a contact is set beside Brewe, Hamrock & Taylor's (1979) rigid-isoviscous
+    minimum film instead where alpha times its own pressure scale
+    (:func:`asperity.ehl.formulas.rigid_mean_pressure`) is at most ``ISOVISCOUS``.
 
     Returns
     -------
@@ -417,11 +418,15 @@ def film_formulas(problem) -> dict[str, float]:
                                                   problem.reduced_modulus)
         values.update(hamrock_dowson_soft_central_film_m=soft.central,
                       hamrock_dowson_soft_minimum_film_m=soft.minimum)
-    if (problem.ry >= problem.rx and lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
-            and problem.M < ELASTIC_M):
-        values["brewe_hamrock_taylor_minimum_film_m"] = formulas.brewe_hamrock_taylor_point(
+    if problem.ry >= problem.rx and problem.M < ELASTIC_M:
+        # judged on the rigid film's own pressure, not p_h (a glass ball in glycerol: p_h
+        # 109 MPa, film pressure 0.7 MPa; its domain line pointed to a row it did not have)
+        rigid = formulas.brewe_hamrock_taylor_point(
             problem.load, problem.rx, problem.ry, problem.mean_speed, lub.viscosity,
             problem.reduced_modulus).minimum
+        if lub.pressure_viscosity * formulas.rigid_mean_pressure(
+                problem.load, problem.rx, rigid) <= ISOVISCOUS:
+            values["brewe_hamrock_taylor_minimum_film_m"] = rigid
     if lub.pressure_viscosity > 0 and problem.ry >= problem.rx:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,

@@ -42,6 +42,7 @@ from typing import Annotated, Literal
 from pydantic import BeforeValidator, Field, field_validator, model_validator
 
 from ..ehl.lubricant import DH_GAMMA, DH_LAMBDA, ROELANDS_CHI, ROELANDS_KAPPA, Lubricant
+from ..ehl.problem import MAX_BOUND as PROBLEM_MAX_BOUND
 from ..ehl.problem import LineContact, PointContact
 from ..errors import InputError
 from ..materials import Material
@@ -332,7 +333,7 @@ def _domain_bound(lo: float, hi: float):
 
 
 #: Farthest domain bound from the contact's centre, in Hertz semi-axes (a number or a length).
-MAX_BOUND = 100.0
+MAX_BOUND = PROBLEM_MAX_BOUND
 
 LowerBound = _domain_bound(-MAX_BOUND, -1.0)
 UpperBound = _domain_bound(1.0, MAX_BOUND)

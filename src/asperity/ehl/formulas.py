@@ -48,6 +48,7 @@ __all__ = [
     "hamrock_dowson_soft_point",
     "brewe_hamrock_taylor_point",
     "martin_line",
+    "rigid_mean_pressure",
     "flooded_inlet_distance",
     "starved_film_ratio",
     "flooded_film",
@@ -254,6 +255,29 @@ def brewe_hamrock_taylor_point(load, rx, ry, mean_speed, eta0, reduced_modulus):
     h = float(hm * float(rx))
     return FilmThickness(central=h, minimum=h, formula="Brewe-Hamrock-Taylor",
                          dimensionless={"U": g.U, "W": g.W, "Hmin": float(hm)})
+
+
+def rigid_mean_pressure(load, rx, film):
+    """Pressure scale of a nearly rigid point contact, Pa: the load over the disc of radius
+    ``l = sqrt(2 rx h)`` over which its pressure builds up, ``w / (2 pi rx h)``.
+
+    The Hertz pressure does not measure such a contact: a glass ball in glycerol (R = 10 mm,
+    0.5 N, 0.1 m/s) has p_h = 109 MPa and a film pressure of 0.46 MPa at its peak (the rigid
+    ball's Reynolds equation solved in docs/ehl-robustness.md: ``p_max = 0.0707 x 12 eta u l /
+    h^2``); this scale gives 0.72 MPa, above the peak, so that ``alpha`` times it is a safe
+    test of whether the viscosity rises.
+
+    Parameters
+    ----------
+    load : float
+        Normal load w, N.
+    rx : float
+        Radius of relative curvature along the entrainment direction, m.
+    film : float
+        Film thickness h (e.g. Brewe, Hamrock & Taylor's, :func:`brewe_hamrock_taylor_point`), m.
+    """
+    return check_positive("load", load) / (
+        2.0 * np.pi * check_positive("rx", rx) * check_positive("film", film))
 
 
 def martin_line(load_per_length, radius, mean_speed, eta0):

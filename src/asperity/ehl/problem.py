@@ -70,6 +70,46 @@ MAX_CELL_ASPECT = 16.0
 MIN_CELL_ASPECT = 3.0
 
 
+#: Farthest bound of a domain from the contact's centre, in Hertz semi-axes (the cases' limit,
+#: ``cases.ehl.MAX_BOUND``; a rigid contact's default domain stops there too).
+MAX_BOUND = 100.0
+
+#: ``l = sqrt(2 Rx hc)`` (estimated film), in Hertz semi-axes a, from which a point contact's
+#: default domain and mesh follow ``l`` rather than the Hertz zone: a glass ball on glass in
+#: glycerol (l = 11 a, peak pressure 0.6 % of p_h) was given 1969 x 617 nodes of a/32 on
+#: -60 a..1.5 a and refused (docs/ehl-robustness.md, "Rigid contacts: a default domain and
+#: mesh on l").
+RIGID_DEFAULT_LENGTH = 4.0
+
+#: Largest ``alpha`` times a rigid contact's own pressure scale
+#: (:func:`asperity.ehl.formulas.rigid_mean_pressure` of the estimated film) for its defaults
+#: to follow ``l``: the isoviscous-rigid regime (the limit of the isoviscous comparison rows,
+#: ``references.ISOVISCOUS``). A thick estimated film with a strongly piezoviscous oil (a
+#: traction drive at alpha = 900 1/GPa, millimetres of film: a unit mistake, most likely)
+#: keeps the EHL defaults and their refusal.
+RIGID_ISOVISCOUS = 0.1
+
+#: Inlet and sides of a rigid contact's default domain, in ``l`` (at most :data:`MAX_BOUND`
+#: semi-axes): its film is about ``(1 - 1.6/S)^2`` of the unbounded one there (0.81 at 16 l).
+RIGID_REACH_DEFAULT = 16.0
+
+#: Outlet of a rigid contact's default domain, in ``l`` (an outlet at 0.5 l cost the film
+#: 0.4 %, docs/ehl-robustness.md).
+RIGID_OUTLET_DEFAULT = 1.0
+
+#: Cells per ``l`` of a rigid contact's default mesh (square cells): against the rigid ball's
+#: Reynolds equation solved independently the film was 5.8 % thin on l/4, 1.4 % on l/8 and
+#: 0.25 % on l/16. l/12 of the estimated film keeps the solved film's spacing within l/8
+#: (the glass ball's solved film on its domain is 0.63 of the estimate: 0.105 l).
+RIGID_CELLS_PER_LENGTH = 12
+
+#: Load gain per unit of the estimated film ``H_c`` (Hertzian units) of a rigid contact: the
+#: solver's default 0.05, made for ``H_c`` of 0.03-1, moves the separation of a film at
+#: ``H_c = 60`` by 1e-5 of it per sweep, and the glass ball's load error stalled near 0.9 %
+#: after 5,000 sweeps on every mesh; with ``0.05 H_c`` it converged in 570-3,230 sweeps.
+RIGID_GAIN_PER_FILM = 0.05
+
+
 def _check_common(u1, u2, body1, body2, lubricant):
     u1 = float(u1)
     u2 = float(u2)
@@ -188,6 +228,11 @@ class _Contact:
         film = self.film_estimate() / self.film_scale
         return max(MIN_INLET, formulas.flooded_inlet_distance(film, 1.8))
 
+    def load_gain(self) -> float | None:
+        """Load gain for :func:`asperity.ehl.solve_steady`: None, the solver's default (a
+        rigid point contact's own, :meth:`PointContact.load_gain`)."""
+        return None
+
     def cells_per_a(self) -> int:
         """Default mesh spacing along x: dX = 1/n with n a power of two from 32 to 1024.
 
@@ -274,6 +319,50 @@ class PointContact(_Contact):
             self.load, self.rx, max(self.ry, self.rx), self.mean_speed, lub.viscosity,
             lub.pressure_viscosity, self.reduced_modulus).central
 
+    def rigid_length(self) -> float:
+        """``l = sqrt(2 Rx hc)`` of the estimated central film (:meth:`film_estimate`), m: the
+        length over which a nearly rigid contact's pressure builds up and falls off."""
+        return math.sqrt(2.0 * self.rx * self.film_estimate())
+
+    @property
+    def rigid(self) -> bool:
+        """Whether the default domain and mesh follow :meth:`rigid_length` (at least
+        :data:`RIGID_DEFAULT_LENGTH` a, and ``alpha`` times the pressure scale
+        ``w / (2 pi Rx h)`` at most :data:`RIGID_ISOVISCOUS`): an isoviscous hydrodynamic
+        rather than an elastohydrodynamic contact, whose pressure spreads far beyond the
+        Hertz zone."""
+        film = self.film_estimate()
+        pressure = formulas.rigid_mean_pressure(self.load, self.rx, film)
+        return (self.rigid_length() >= RIGID_DEFAULT_LENGTH * self.a
+                and self.lubricant.pressure_viscosity * pressure <= RIGID_ISOVISCOUS)
+
+    def load_gain(self) -> float | None:
+        """Load gain for :func:`asperity.ehl.solve_steady` (None: the solver's default).
+
+        A rigid contact's (:attr:`rigid`) film in Hertzian units is large (``H_c`` = 60 for a
+        glass ball in glycerol) and the solver's default shift of the separation per unit
+        load error, 0.05, too small for it: ``RIGID_GAIN_PER_FILM H_c``, the shift Newton's
+        step would take with the rigid film's ``h ~ w^-2`` (``dH = -2 H_c dw/w``) times 0.025.
+        """
+        if not self.rigid:
+            return None
+        return RIGID_GAIN_PER_FILM * self.film_estimate() / self.film_scale
+
+    def rigid_domain(self):
+        """The default domain of a rigid contact (:attr:`rigid`), m: inlet and sides
+        ``RIGID_REACH_DEFAULT l`` from the centre, outlet ``RIGID_OUTLET_DEFAULT l`` (at
+        least 1.5 a), each within :data:`MAX_BOUND` semi-axes (``l`` =
+        :meth:`rigid_length`). A rigid ball's film on a square domain of half-width S l is
+        about ``(1 - 1.6/S)^2`` of the unbounded one: 0.81 at 16 l; the run's domain line
+        says how much its domain keeps, and the comparison rows give Brewe, Hamrock &
+        Taylor's unbounded film."""
+        length = self.rigid_length()
+        reach = RIGID_REACH_DEFAULT * length
+        x0 = -min(reach, MAX_BOUND * self.a)
+        x1 = min(max(RIGID_OUTLET_DEFAULT * length, OUTLET * self.a), MAX_BOUND * self.a)
+        half_y = min(reach, MAX_BOUND * self.b)
+        return (x0, x1), (-half_y, half_y)
+
     def default_domain(self):
         """-m a < x < 1.5 a, -w < y < w (m) with ``m`` = :meth:`inlet_extent` and
         ``w = max(b + max(b, SIDE_PER_INLET (m - 1) min(a, b)), a)`` rounded up to a multiple
@@ -285,7 +374,11 @@ class PointContact(_Contact):
         films, low M) widens the sides with it: a margin of half the inlet length beyond the
         contact, for circular contacts at M = 10-50 (an ellipse with b > a keeps 2 b while b
         exceeds half its inlet length (m - 1) a / 2).
+
+        A rigid contact (:attr:`rigid`) takes :meth:`rigid_domain` instead.
         """
+        if self.rigid:
+            return self.rigid_domain()
         inlet = self.inlet_extent()
         margin = max(self.b, SIDE_PER_INLET * (inlet - 1.0) * min(self.a, self.b))
         half_y = max(self.b + margin, self.a)
@@ -320,6 +413,8 @@ class PointContact(_Contact):
         """
         (x0, x1), (y0, y1) = _check_domain(
             self.default_domain() if domain is None else domain, self.a, self.b)
+        if self.rigid and not (max_dx or max_dy):
+            return self.rigid_nodes(((x0, x1), (y0, y1)))
         need = max(self.cells_per_a(), 30.0 * self.a / self.b,
                    self.a / max_dx if max_dx else 1.0,
                    MIN_CELL_ASPECT * self.a / max_dy if max_dy else 1.0)
@@ -335,6 +430,17 @@ class PointContact(_Contact):
                      8 * np.floor(widest / 8))
         cells = max(cells, 8 * np.ceil((y1 - y0) / (8 * MAX_CELL_ASPECT * dx)))
         return nx, int(max(cells, 16)) + 1
+
+    def rigid_nodes(self, domain) -> tuple[int, int]:
+        """Default mesh (nx, ny) of a rigid contact (:attr:`rigid`) on ``domain`` (m): square
+        cells of at most ``l / RIGID_CELLS_PER_LENGTH`` (``l`` = :meth:`rigid_length`), the
+        pressure varying over ``l`` and not over the Hertz zone; ``nx - 1`` and ``ny - 1``
+        multiples of 8 (grid sequencing). The glass ball in glycerol: 129 x 225 nodes on
+        -100 a..10.9 a, +-100 b, against 1969 x 617 of a/32 before."""
+        (x0, x1), (y0, y1) = domain
+        step = self.rigid_length() / RIGID_CELLS_PER_LENGTH
+        return tuple(8 * math.ceil((hi - lo) / (8 * step) - 1e-9) + 1
+                     for lo, hi in ((x0, x1), (y0, y1)))
 
     def grid(self, nx: int, ny: int, domain=None):
         """Node (cell-centre) coordinates ``x``, ``y`` in m on ``domain`` (default

@@ -43,7 +43,8 @@ def run(case, progress=None) -> Outcome:
         res = solve_steady(problem, **case.solve_options(problem), method=case.solver.method,
                            tol=case.solver.tolerance,
                            max_iter=case.solver.sweep_limit(line),
-                           boundary_friction=case.solver.boundary_friction, callback=callback)
+                           boundary_friction=case.solver.boundary_friction,
+                           load_gain=problem.load_gain(), callback=callback)
     lub = problem.lubricant
     hz = problem.hertz
     ds = xr.Dataset(
@@ -105,13 +106,25 @@ def run(case, progress=None) -> Outcome:
                          film_solved=res.converged)
     collapse = diagnostics.ehl_film_collapse(res.film, estimate)
     trust += collapse
-    if not collapse:  # a collapsed film's friction is the collapse's, not the Newtonian law's
+    if not collapse and _sheared_piezoviscous(problem, res):
+        # a collapsed film's friction is the collapse's, not the Newtonian law's
         trust += diagnostics.newtonian_traction(res.friction_coefficient, lub.newtonian)
     chosen = chosen_mesh(case, problem, res.x, res.y)
     if "levels" not in case.solver.model_fields_set:  # the grid sequence chosen with the mesh
         chosen["solver.levels"] = len(res.levels)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust, chosen=chosen)
+
+
+def _sheared_piezoviscous(problem, res) -> bool:
+    """Whether a Newtonian film's friction can be the unbounded ``eta du / h`` of a
+    pressure-raised viscosity (:func:`asperity.diagnostics.newtonian_traction`): the surfaces
+    slide and ``alpha p_max > ISOVISCOUS``. A PTFE ball rolling in silicone oil (alpha = 0,
+    0.2 N, xi = 0) has a friction coefficient of 0.105 from its Poiseuille flow alone, the
+    rolling resistance ``int p x dA / (2 Rx w)`` of a hydrodynamic contact, which an Eyring
+    stress does not change; it was told to set lubricant.tau0."""
+    alpha_p = problem.lubricant.pressure_viscosity * res.max_pressure
+    return problem.sliding_speed != 0.0 and alpha_p > ISOVISCOUS
 
 
 def isoviscous_line_advice(problem, res) -> str:
@@ -218,6 +231,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     domain's that the inlet pressure and (point contacts) Hamrock & Dowson's starvation fit
     pass is measured the same way (:func:`asperity.ehl.sides.inlet_probe`, inlet moved to the
     default domain's); where the fit warns, the probe's measured loss is added to its line.
+    The node counts of the mesh lines are counted on the domain the inlet, side and rigid
+    domain lines advise (:func:`asperity.diagnostics.advised_domain`), so that following
+    all of them gives the spacing each asks for.
     ``film_solved``: ``central_film`` is the solution's on this inlet (else a film formula's
     flooded estimate, for an unconverged solve).
     """
@@ -249,6 +265,11 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
+    # the node counts advised below are counted on the domain advised above: a ball whose
+    # sides at +-1.2 b were to go to +-2 b was told ny >= 81, b/33 on its 2.4 b, b/20 on 4 b
+    advised = diagnostics.advised_domain(x, y, lines)
+    if mesh:
+        mesh = diagnostics.ehl_mesh(x, y, hz.a, b, domain=advised)
     lines += mesh
     # fine enough for the film? Also where the Hertz zone has too few cells, whose advice
     # alone asked for nx >= 41 where the film needs 209 (a user's nx = 33: -93 % on the film).
@@ -256,10 +277,11 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     # ask for a mesh of the wrong film
     if not rigid:
         film_mesh = diagnostics.ehl_film_mesh(x, hz.a,
-                                              problem.film_estimate() / problem.film_scale)
+                                              problem.film_estimate() / problem.film_scale,
+                                              domain=advised)
         lines += film_mesh
     if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
-        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b)
+        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b, domain=advised)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
@@ -304,7 +326,8 @@ def _figures(title, problem, res, line):
         figures["contours"] = (
             lambda: contour_maps(res.x, res.y, res.pressure, res.film, a, b, res.central_film,
                                  title),
-            "Pressure (GPa, left) and film thickness (um, right) contours over x/a and y/a on "
+            "Pressure (left) and film thickness (right) contours, each in the unit its colour "
+            "bar names, over x/a and y/a on "
             "equal axes (y compressed where its label says so); the heavy ellipse is the "
             "Hertzian dry contact area (cf. Holmes et al. 2005, Fig. 2).",
         )
