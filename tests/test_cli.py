@@ -122,34 +122,40 @@ def test_bad_case_file_exits_2_with_one_line(tmp_path, old, new, field):
     assert "Traceback" not in proc.stderr + proc.stdout
 
 
-LINE_CONTACT = """
-title = "line contact"
+POINT_CONTACT = """
+title = "point contact"
 analysis = "ehl-steady"
-reduced_modulus = "226 GPa"
+reduced_modulus = "227 GPa"
 [contact]
-type = "line"
-radius = "10 mm"
-load_per_length = "100 kN/m"
+type = "point"
+rx = "19.1 mm"
+ry = "151 mm"
+load = "962 N"
 [speeds]
-u = "2 m/s"
+u = "25 m/s"
+xi = 0.25
 [lubricant]
-eta0 = "0.04 Pa*s"
-alpha = "20 1/GPa"
+eta0 = "0.005 Pa s"
+alpha = "11.1 1/GPa"
 [grid]
-nx = 65
-ny = 1
-x_min = -4.75
+nx = 81
+ny = 65
+x_min = -2.5
+x_max = 1.5
+y_min = -2.0
+y_max = 2.0
 [solver]
+levels = 1
 max_sweeps = 3
 """
 
 
 def test_unconverged_run_exits_3_saying_why_and_what_to_change(tmp_path):
-    """A steady line contact given 3 sweeps does not converge: exit code 3 and one error line
+    """A steady point contact given 3 sweeps does not converge: exit code 3 and one error line
     with the solver's own reason and the key to raise (it had said only "the solver did not
     converge; see report.html")."""
-    case = tmp_path / "line.toml"
-    case.write_text(LINE_CONTACT)
+    case = tmp_path / "point.toml"
+    case.write_text(POINT_CONTACT)
     proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
                            str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
                           timeout=300)

@@ -289,7 +289,7 @@ class OperationSpec(CaseModel):
     refused."""
     bulk_temperature: Annotated[float, Field(gt=-100, lt=1000,
                                              json_schema_extra={"unit": "°C",
-                                                                "type": "number or quantity"})
+                                                                "type": "number or temperature"})
                                 ] = 90.0
     """Bulk temperature of the teeth: a number in deg C, or with its unit ("80 degC",
     "353.15 K", "176 degF"); the lubricant's eta0 is taken at it."""
