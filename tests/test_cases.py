@@ -154,3 +154,21 @@ def test_an_item_of_a_list_of_tables_is_named_as_the_runners_name_it():
     with pytest.raises(InputError) as err:
         load_case(text)
     assert err.value.field == "pressure.regions[0].pressure"
+
+
+def test_a_misspelt_required_table_is_named_as_written():
+    """``[laoding]`` was answered "loading: missing (a value is required)", naming a table the
+    user believes they wrote; the unknown table that reads like it is named instead."""
+    text = example_text("rough-sphere-normal").replace("[loading]", "[laoding]")
+    with pytest.raises(InputError) as exc:
+        load_case(text)
+    assert exc.value.field == "laoding"
+    assert "did you mean 'loading' (which is missing)?" in str(exc.value)
+
+
+def test_a_missing_table_with_an_unrelated_unknown_key_is_reported_missing():
+    text = example_text("rough-sphere-normal").replace("[loading]", "[colour]")
+    with pytest.raises(InputError) as exc:
+        load_case(text)
+    assert exc.value.field in ("loading", "colour")
+    assert "did you mean" not in str(exc.value)

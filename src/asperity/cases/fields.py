@@ -7,6 +7,7 @@ reported instead of silently ignored.
 
 from __future__ import annotations
 
+import difflib
 from typing import Annotated
 
 from pydantic import (
@@ -160,11 +161,31 @@ def _key(part) -> str:
     return text if text.replace("_", "").replace("-", "").isalnum() else repr(text)
 
 
+def _misspelling(missing: dict, errors: list[dict]) -> dict | None:
+    """The unknown key beside a missing one that reads like it (``[laoding]`` for
+    ``loading``), so that the error names the key the user wrote rather than only the one
+    the case lacks; None where there is none."""
+    if missing["type"] != "missing":
+        return None
+    *parent, wanted = missing["loc"]
+    unknown = {str(e["loc"][-1]): e for e in errors
+               if e["type"] == "extra_forbidden" and list(e["loc"][:-1]) == parent}
+    close = difflib.get_close_matches(str(wanted), list(unknown), n=1, cutoff=0.75)
+    return unknown[close[0]] if close else None
+
+
 def first_error(exc: ValidationError, prefix: str = "") -> InputError:
     """Turn pydantic's first validation error into one :class:`InputError` line; an
     :class:`InputError` raised by a validator (one that checks a key against the rest of the
     case, such as a domain bound against the Hertz semi-axes) keeps the key it names."""
-    err = exc.errors(include_url=False)[0]
+    errors = exc.errors(include_url=False)
+    err = errors[0]
+    misspelt = _misspelling(err, errors)
+    if misspelt is not None:
+        *parent, wrong = misspelt["loc"]
+        name = ".".join(p for p in (prefix, *map(_key, parent), _key(wrong)) if p)
+        return InputError(name, "", problem=f"unknown key; did you mean '{_key(err['loc'][-1])}'"
+                          f" (which is missing)?")
     raised = err.get("ctx", {}).get("error")
     if isinstance(raised, InputError):
         field = ".".join(p for p in (prefix, raised.field) if p)
