@@ -84,7 +84,11 @@ def _forward_differences(r, h, axis, periodic):
     return np.diff(r, axis=axis) / h
 
 
-def _amplitude(r, prefix: str, scale: float) -> dict:
+def amplitude_moments(r, prefix: str, scale: float) -> dict:
+    """Mean |r|, rms, skewness, kurtosis, highest peak and deepest valley of heights ``r``
+    measured from their mean line or plane (ISO 4287 4.1-4.2, ISO 25178-2 4.1), keyed
+    ``{prefix}a``, ``q``, ``sk``, ``ku``, ``p``, ``v``; a surface whose rms is below ``1e-13
+    scale`` is refused as flat (its skewness and kurtosis are undefined)."""
     rq = float(np.sqrt(np.mean(r**2)))
     if rq <= 1e-13 * scale:
         raise InputError("heights", "a surface that is not flat after removing the mean "
@@ -158,7 +162,7 @@ def roughness_parameters(heights, x=None, y=None, *, periodic=False) -> dict:
     z, x, y, periodic = _unpack(heights, x, y, periodic)
     r = residual_heights(z, periodic)
     if r.ndim == 1:
-        out = _amplitude(r, "R", np.max(np.abs(z)))
+        out = amplitude_moments(r, "R", np.max(np.abs(z)))
         out["Rt"] = out["Rp"] + out["Rv"]
         if r.size >= N_SAMPLING * MIN_POINTS_PER_SAMPLING:
             out["Rz"] = float(np.mean([s.max() - s.min() for s in np.array_split(r, N_SAMPLING)]))
@@ -168,7 +172,7 @@ def roughness_parameters(heights, x=None, y=None, *, periodic=False) -> dict:
             dz = _forward_differences(r, grid_spacing(x, "x"), 0, periodic)
             out["Rdq"] = float(np.sqrt(np.mean(dz**2)))
         return out
-    out = _amplitude(r, "S", np.max(np.abs(z)))
+    out = amplitude_moments(r, "S", np.max(np.abs(z)))
     out["Sz"] = out["Sp"] + out["Sv"]
     if x is not None:
         gx = _forward_differences(r, grid_spacing(x, "x"), 0, periodic)

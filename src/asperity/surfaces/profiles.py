@@ -36,7 +36,7 @@ from ..formatting import format_quantity
 from .cutoffs import CUTOFFS, cutoff_for_ra, cutoff_for_rsm, lambda_s_for, largest_spacing
 from .filters import ALPHA, gaussian_filter
 from .form import remove_form
-from .parameters import _amplitude
+from .parameters import amplitude_moments
 from .topography import Profile
 
 __all__ = ["ProfileFamilies", "amplitude_parameters", "height_moments", "mean_element_width",
@@ -336,7 +336,7 @@ def height_moments(z: np.ndarray, prefix: str) -> dict:
     ``a`` mean |z|, ``q`` rms, ``sk`` skewness, ``ku`` kurtosis, ``p`` highest peak, ``v``
     deepest valley (positive), ``z`` = p + v (ISO 4287 clause 4.1-4.2, ISO 25178-2 4.1).
     """
-    out = _amplitude(np.asarray(z, dtype=float).ravel(), prefix, 0.0)  # flat: Rq == 0
+    out = amplitude_moments(np.asarray(z, dtype=float).ravel(), prefix, 0.0)  # flat: Rq == 0
     out[f"{prefix}z"] = out[f"{prefix}p"] + out[f"{prefix}v"]
     return out
 
