@@ -89,7 +89,7 @@ def test_killed_run_resumes_to_the_same_result(tmp_path):
 
 
 @pytest.mark.parametrize("old, new, field", [
-    ('xi = 0.25', 'xi = -2.5', "case: expected a positive speed of surface 1 (set by speeds"),
+    ('xi = 0.25', 'xi = -2.5', "speeds.xi: expected a slide/roll ratio with |xi| < 2"),
     ('kind = "smooth"', 'kind = "builtin"', "surface1"),
     ('counting_steps = 30', 'counting_steps = 0', "time.counting_steps"),
     ('amplitude = "0.05 um"', 'amplitude = "-1 um"', "surface1.waviness.amplitude"),
