@@ -27,6 +27,7 @@ from ..ehl.statistics import count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
 from ..ehl.transient import TransientResult, default_warmup_steps
 from ..formatting import format_duration
+from ..references import film_formula_comparisons
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.parameters import acf_decay_lengths
@@ -234,6 +235,11 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             "time with contact at >= 1 node", summary["contact_time_percent"],
             case.paper_contact_time_percent, "Holmes et al. (2005) Table 2", "%",
             note="synthetic stand-in profiles and a reduced mesh: a trend, not a check"))
+    if np.isfinite(res.steady_film).all():  # the smooth steady start is a steady EHL solution
+        comparisons += film_formula_comparisons(
+            problem, res.steady_central_film, float(res.steady_film.min()), checked=False,
+            label="steady start: ", note="; the smooth steady start of the run, on its mesh: "
+            "shown, not checked")
     notes = []
     if not res.steady_converged:
         notes.append(f"The smooth steady start did not converge (its central film "
