@@ -72,7 +72,7 @@ def test_killed_run_resumes_to_the_same_result(tmp_path):
     proc.wait()
     with xr.open_dataset(out / "result.nc") as partial:
         assert partial.attrs.get("partial") == 1, "the run finished before it could be killed"
-        assert partial["contact_count_rate"].attrs["units"] == "ms-1"
+        assert partial["contact_count_rate"].attrs["units"] == "1/ms"
         assert partial["time"].dims == ("step",) and partial["time"].attrs["units"] == "s"
     resumed = _run(case, out, "--resume")
     assert resumed.wait(timeout=300) == 0, resumed.stderr.read()
@@ -476,3 +476,43 @@ def test_the_steady_start_of_a_point_contact_is_set_beside_hamrock_dowson():
     assert least.value == pytest.approx(float(out.dataset["steady_film"].min()), rel=1e-12)
     assert ("steady start: central film", "Nijenbanning, Venner & Moes (1994)") in rows
     assert all(c.tolerance is None for c in out.comparisons)
+
+
+def test_the_contact_count_rate_is_written_per_millisecond_in_units_a_parser_reads(tmp_path):
+    """result.nc wrote the rate with units "ms-1", which reads as metres per second ("m s-1"
+    without its space) and which pint does not parse. It is now "1/ms" (UDUNITS and pint:
+    1000 s-1), with a long_name saying per millisecond, and the numbers are unchanged: pint's
+    conversion of the stored rate to 1/s equals the count over the counting time in s,
+    computed here from the file's own count, counting_steps and timestep_s. summary.json's
+    ``max_contact_count_rate_per_ms`` and the figure's axis (1/ms) give the same number."""
+    import matplotlib.pyplot as plt
+    import pint
+
+    from asperity.results import write_netcdf
+    from asperity.runners import run_case
+
+    rough = LINE_CASE.replace("max_sweeps = 2000", 'max_sweeps = 2000\ncontact_film = "0.35 um"')
+    rough = rough.replace("warmup_steps = 1", "warmup_steps = 60").replace(
+        "counting_steps = 2", "counting_steps = 10") + """
+[surface1]
+kind = "gaussian"
+rms = "0.2 um"
+correlation_length = "30 um"
+"""
+    out = run_case(load_case(rough))
+    write_netcdf(out.dataset, tmp_path / "result.nc")
+    with xr.open_dataset(tmp_path / "result.nc") as ds:
+        rate = ds["contact_count_rate"]
+        assert rate.attrs["units"] == "1/ms"
+        assert "per millisecond" in rate.attrs["long_name"]
+        per_second = pint.UnitRegistry().Quantity(rate.values, rate.attrs["units"]).to("1/s")
+        seconds = ds.attrs["counting_steps"] * ds.attrs["timestep_s"]
+        expected = ds["contact_count"].values / seconds
+        assert expected.max() > 0  # (measured: 4 of 10 steps of 0.373 us, 1071 per ms)
+        np.testing.assert_allclose(per_second.magnitude, expected, rtol=1e-12)
+        assert out.summary["max_contact_count_rate_per_ms"] == pytest.approx(
+            expected.max() / 1e3, rel=1e-12)
+    draw, caption = out.figures["contact_count_rate"]
+    fig = draw()
+    assert "(1/ms)" in fig.axes[0].get_ylabel() and "per ms" in caption
+    plt.close(fig)

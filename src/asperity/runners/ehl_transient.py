@@ -23,7 +23,7 @@ import xarray as xr
 from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
-from ..ehl.statistics import count_rate
+from ..ehl.statistics import COUNT_RATE_UNITS, count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
 from ..ehl.transient import TransientResult, default_warmup_steps
 from ..formatting import format_duration
@@ -164,8 +164,9 @@ def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
         return None
     rate = count_rate(count, steps, dt)
     return xr.Dataset(
-        {"contact_count_rate": variable(("x", "y"), rate, "ms-1",
-                                        "contact count rate Q per ms (so far)"),
+        {"contact_count_rate": variable(("x", "y"), rate, COUNT_RATE_UNITS,
+                                        "contact count rate Q: counting steps with contact at "
+                                        "the node per millisecond of counting time (so far)"),
          "contact_count": variable(("x", "y"), count, "1", "contact count (so far)"),
          "max_pressure": variable("step", max_p, "Pa", "maximum pressure per step")},
         coords={"x": variable("x", x, "m", "x"), "y": variable("y", y, "m", "y"),
