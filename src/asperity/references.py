@@ -28,8 +28,9 @@ from .ehl import formulas
 from .ehl.problem import LineContact
 from .results import Comparison
 
-__all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formulas",
-           "fretting_cycle_comparisons", "lubricant_laws", "tangential_comparisons"]
+__all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formula_comparisons",
+           "film_formulas", "fretting_cycle_comparisons", "lubricant_laws",
+           "tangential_comparisons"]
 
 DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
@@ -470,6 +471,47 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
 _CHECKED_FITS = {"moes_central_film_m", "nijenbanning_central_film_m"}
 
 
+def film_formula_comparisons(problem, central_film: float, minimum_film: float,
+                             checked: bool = True, label: str = "",
+                             note: str = "") -> list[Comparison]:
+    """A smooth steady solution's films beside the film formulas of :func:`film_formulas`.
+
+    Parameters
+    ----------
+    problem : asperity.ehl.PointContact or asperity.ehl.LineContact
+        The solved problem.
+    central_film, minimum_film : float
+        The solution's film at the contact's centre and its least film over the domain, m.
+    checked : bool
+        Check the central-film fits of Moes and Nijenbanning at 5 % when the lubricant is
+        Newtonian, Barus and incompressible, the fits' own model (every other row, and every
+        row when False, is shown with a note and not checked).
+    label : str
+        Put before each row's quantity (e.g. ``"steady start: "``).
+    note : str
+        Added to each row's note.
+
+    Returns
+    -------
+    list of Comparison
+    """
+    lub = problem.lubricant
+    own_model = lub.newtonian and lub.viscosity_model == "barus" and not lub.compressible
+    own_note = "Newtonian, Barus, incompressible: the formula's own model"
+    other_note = _NEWTONIAN_NOTE.format(laws=lubricant_laws(lub))
+    films = {"central_film": central_film, "minimum_film": minimum_film}
+    rows = []
+    for key, film in film_formulas(problem).items():
+        quantity, attribute, source, anchor = _FILM_ROWS[key]
+        check = checked and own_model and key in _CHECKED_FITS
+        row_note = own_note if own_model else other_note
+        if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
+            row_note += _LOW_L_NOTES.get(key, "")
+        rows.append(Comparison(label + quantity, films[attribute], film, cite(source, anchor),
+                               "m", 0.05 if check else None, row_note + note))
+    return rows
+
+
 def ehl_steady_comparisons(problem, result, reference=None) -> list[Comparison]:
     """The comparison rows of a steady EHL run.
 
@@ -503,18 +545,7 @@ def ehl_steady_comparisons(problem, result, reference=None) -> list[Comparison]:
             if published is not None:
                 rows.append(Comparison(quantity, getattr(result, key), published,
                                        reference.source, unit, reference.tolerance))
-    lub = problem.lubricant
-    own_model = lub.newtonian and lub.viscosity_model == "barus" and not lub.compressible
-    own_note = "Newtonian, Barus, incompressible: the formula's own model"
-    other_note = _NEWTONIAN_NOTE.format(laws=lubricant_laws(lub))
-    for key, film in film_formulas(problem).items():
-        quantity, attribute, source, anchor = _FILM_ROWS[key]
-        checked = own_model and key in _CHECKED_FITS
-        note = own_note if own_model else other_note
-        if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
-            note += _LOW_L_NOTES.get(key, "")
-        rows.append(Comparison(quantity, getattr(result, attribute), film,
-                               cite(source, anchor), "m", 0.05 if checked else None, note))
+    rows += film_formula_comparisons(problem, result.central_film, result.minimum_film)
     rows.append(Comparison(
         "maximum pressure", result.max_pressure, problem.hertz.p_max,
         cite("dry Hertz", "hertz"), "Pa",

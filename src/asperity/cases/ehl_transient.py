@@ -203,6 +203,29 @@ def _centred_across(key: str, path: str, built: SurfaceBuild, y: np.ndarray) -> 
                                              periodic=surface.periodic))
 
 
+def _backwards_error(speeds, k: int, u: float) -> ValidationError:
+    """The error of a rough surface ``k`` whose speed ``u`` (m/s) is not positive, located at
+    the key that set it: ``speeds.xi`` (``u_k = u (1 -+ xi/2)``, so ``|xi| < 2``) or
+    ``speeds.u1``/``speeds.u2``. The solver feeds a surface's heights in from the inlet
+    (x_min) and has none to feed from the outlet; a smooth surface may move backwards, since
+    the Reynolds equation sees only the mean speed and the sliding speed
+    (tests/test_ehl_features.py, a groove at xi = 2.5)."""
+    if speeds.xi is not None:
+        key, value = "xi", speeds.xi
+        message = (f"expected a slide/roll ratio with |xi| < 2 while surface{k} carries "
+                   f"roughness: xi = {speeds.xi:g} moves surface {k} backwards "
+                   f"(u{k} = {u:.4g} m/s), and rough surfaces enter from the inlet only; "
+                   f"or a smooth surface{k}")
+    else:
+        key, value = f"u{k}", u
+        message = (f"expected a positive speed of surface {k} while surface{k} carries "
+                   f"roughness (u{k} = {u:.4g} m/s moves it backwards, and rough surfaces "
+                   f"enter from the inlet only); or a smooth surface{k}")
+    detail = InitErrorDetails(type=PydanticCustomError("value_error", message),
+                              loc=("speeds", key), input=value)
+    return ValidationError.from_exception_data("case", [detail])
+
+
 def _check_trace_length(key: str, path: str, surface, travel: float, warmup: int,
                         counting: int):
     """Refuse a measured trace shorter than the ``travel`` (m) its surface makes in the run:
@@ -474,8 +497,7 @@ class EHLTransientCase(EHLCaseBase):
         for k, (spec, u) in enumerate(((self.surface1, u1), (self.surface2, u2)), start=1):
             rough = spec.kind != "smooth" or spec.waviness is not None
             if rough and not u > 0:
-                raise ValueError(f"expected a positive speed of surface {k} (set by speeds.u "
-                                 "and speeds.xi) to carry its roughness in from the inlet")
+                raise _backwards_error(self.speeds, k, u)
             if line and spec.kind == "feature" and spec.feature not in STRAIGHT_FEATURES:
                 raise ValueError(f"expected feature = \"ridge\" or \"groove\" on surface{k} "
                                  "of a line contact (a dent or a bump needs a point contact)")

@@ -13,7 +13,8 @@ import numpy as np
 
 from .problem import LineContact
 
-__all__ = ["ContactStatistics", "StepHistory", "count_rate", "flow_vectors", "hertz_mask"]
+__all__ = ["COUNT_RATE_UNITS", "ContactStatistics", "StepHistory", "count_rate", "flow_vectors",
+           "hertz_mask"]
 
 
 def hertz_mask(problem, x, y) -> np.ndarray:
@@ -65,8 +66,16 @@ def flow_vectors(problem, x, y, pressure, film):
     return qx, qy
 
 
+#: Units of :func:`count_rate` in result.nc: per millisecond, as the seed's Figs. 4-8, the
+#: figures and summary.json's ``max_contact_count_rate_per_ms`` give it. Written "1/ms", which
+#: UDUNITS and pint read as 1000 s-1; "ms-1", written before, reads to a person (and to a
+#: parser that splits it as "m s-1") as metres per second.
+COUNT_RATE_UNITS = "1/ms"
+
+
 def count_rate(count, steps: int, dt: float) -> np.ndarray:
-    """Contact count Q per node over ``steps`` timesteps of ``dt`` (s), per ms (Figs. 4-8)."""
+    """Contact count Q per node over ``steps`` timesteps of ``dt`` (s), per ms (Figs. 4-8):
+    ``count / (steps dt / 1 ms)``, in :data:`COUNT_RATE_UNITS`."""
     if not steps:
         return np.zeros(np.shape(count))
     return np.asarray(count) / (steps * dt * 1e3)

@@ -52,7 +52,13 @@ from .kernels import CAVITATED, CONTACT
 from .nodal import centre_line
 from .problem import LineContact
 from .solver import sequencing_levels, solve_steady
-from .statistics import ContactStatistics, StepHistory, flow_vectors, hertz_mask
+from .statistics import (
+    COUNT_RATE_UNITS,
+    ContactStatistics,
+    StepHistory,
+    flow_vectors,
+    hertz_mask,
+)
 from .stepper import StepOptions, TimeStepper
 
 __all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "FIXED_POINT_LIMIT", "GIVE_UP_STEPS",
@@ -299,7 +305,8 @@ class TransientResult(SolverResult):
     theta: float
 
     VARIABLES = {
-        "contact_count_rate": ("ms-1", "contact count rate Q per ms of counting time"),
+        "contact_count_rate": (COUNT_RATE_UNITS, "contact count rate Q: counting steps with "
+                               "contact at the node per millisecond of counting time"),
         "contact_count": ("1", "number of counting steps with contact at the node"),
         "pressure": ("Pa", "pressure at the last step"),
         "film": ("m", "film thickness at the last step"),

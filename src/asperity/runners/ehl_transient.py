@@ -23,10 +23,11 @@ import xarray as xr
 from .. import diagnostics
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
-from ..ehl.statistics import count_rate
+from ..ehl.statistics import COUNT_RATE_UNITS, count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
 from ..ehl.transient import TransientResult, default_warmup_steps
 from ..formatting import format_duration
+from ..references import film_formula_comparisons
 from ..results import Comparison, Outcome, variable, write_netcdf
 from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.parameters import acf_decay_lengths
@@ -163,8 +164,9 @@ def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
         return None
     rate = count_rate(count, steps, dt)
     return xr.Dataset(
-        {"contact_count_rate": variable(("x", "y"), rate, "ms-1",
-                                        "contact count rate Q per ms (so far)"),
+        {"contact_count_rate": variable(("x", "y"), rate, COUNT_RATE_UNITS,
+                                        "contact count rate Q: counting steps with contact at "
+                                        "the node per millisecond of counting time (so far)"),
          "contact_count": variable(("x", "y"), count, "1", "contact count (so far)"),
          "max_pressure": variable("step", max_p, "Pa", "maximum pressure per step")},
         coords={"x": variable("x", x, "m", "x"), "y": variable("y", y, "m", "y"),
@@ -234,6 +236,11 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             "time with contact at >= 1 node", summary["contact_time_percent"],
             case.paper_contact_time_percent, "Holmes et al. (2005) Table 2", "%",
             note="synthetic stand-in profiles and a reduced mesh: a trend, not a check"))
+    if np.isfinite(res.steady_film).all():  # the smooth steady start is a steady EHL solution
+        comparisons += film_formula_comparisons(
+            problem, res.steady_central_film, float(res.steady_film.min()), checked=False,
+            label="steady start: ", note="; the smooth steady start of the run, on its mesh: "
+            "shown, not checked")
     notes = []
     if not res.steady_converged:
         notes.append(f"The smooth steady start did not converge (its central film "
