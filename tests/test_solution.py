@@ -115,7 +115,7 @@ def test_ehl_transient_result_protocol():
                         "centre_film"])
     assert ds["step"].size == res.steps and ds["max_pressure"].dims == ("step",)
     assert ds["centre_film"].dims == ("snapshot", "x")
-    assert ds["contact_count_rate"].attrs["units"] == "ms-1"
+    assert ds["contact_count_rate"].attrs["units"] == "1/ms"
 
 
 def test_not_converged_says_so():

@@ -186,10 +186,12 @@ def _strip(text: str) -> str:
     return text.rstrip("0").rstrip(".") if "." in text else text
 
 
-#: asperity unit spellings -> CF/UDUNITS strings (for netCDF attributes).
+#: asperity unit spellings -> CF/UDUNITS strings (for netCDF attributes). A rate per
+#: millisecond stays "1/ms" (UDUNITS and pint read it as 1000 s-1): "ms-1", written before,
+#: reads to a person as metres per second, and pint cannot parse it.
 _CF = {"": "1", "m^2": "m2", "N*m": "N m", "m/s": "m s-1", "Pa*s": "Pa s", "1/Pa": "Pa-1",
-       "1/ms": "ms-1", "%": "percent", "kg/m^3": "kg m-3", "N/m": "N m-1", "N*s/m": "N s m-1"}
-_FROM_CF = {v: k for k, v in _CF.items()}
+       "%": "percent", "kg/m^3": "kg m-3", "N/m": "N m-1", "N*s/m": "N s m-1"}
+_FROM_CF = {v: k for k, v in _CF.items()} | {"ms-1": "1/ms"}  # files written before
 
 
 def cf_units(unit: str) -> str:
