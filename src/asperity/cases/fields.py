@@ -1,8 +1,9 @@
 """Building blocks of case files: quantities with units, strict models, error formatting.
 
 A quantity field accepts a plain number (SI) or a string with a unit (``"2160 lbf"``); it is
-converted once by :func:`asperity.units.to_si`. Models forbid unknown keys, so a misspelt key is
-reported instead of silently ignored.
+converted once by :func:`asperity.units.to_si`. A count (:data:`Integer`) or a plain number
+(:data:`Number`) takes a TOML number only: pydantic would read ``"128"`` as 128 and ``true`` as 1.
+Models forbid unknown keys, so a misspelt key is reported instead of silently ignored.
 """
 
 from __future__ import annotations
@@ -28,6 +29,8 @@ __all__ = [
     "CaseHeader",
     "CaseModel",
     "Quantity",
+    "Integer",
+    "Number",
     "Length",
     "PositiveLength",
     "Force",
@@ -87,6 +90,33 @@ def Quantity(dimension: str, **constraints):  # noqa: N802 - reads as a type in 
     return Annotated[float, BeforeValidator(_converter(dimension)),
                      Field(json_schema_extra={"dimension": dimension}, **constraints)]
 
+
+def _whole_number(value):
+    """A count as TOML writes it: an integer, or a float without a fraction (``128.0``, ``1e4``
+    are the same count); a string (``"128"``) or a bool is refused."""
+    if isinstance(value, float) and value.is_integer():
+        return int(value)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError("expected a whole number such as 128")
+    return value
+
+
+def _plain_number(value):
+    """A pure number as TOML writes it (an integer or a float); a string or a bool is
+    refused."""
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise ValueError("expected a number such as 0.5")
+    return value
+
+
+#: An integer field (mesh sizes, counts, seeds, steps, levels): a TOML integer, or a float
+#: without a fraction; ``"128"`` and ``true`` are refused. Constrain it with
+#: ``Annotated[Integer, Field(ge=..., le=...)]``.
+Integer = Annotated[int, BeforeValidator(_whole_number)]
+
+#: A pure-number field without a unit (a ratio, a tolerance, a coefficient): a TOML integer or
+#: float; ``"0.5"`` and ``true`` are refused.
+Number = Annotated[float, BeforeValidator(_plain_number)]
 
 Length = Quantity("length")
 PositiveLength = Quantity("length", gt=0)
