@@ -268,3 +268,28 @@ def test_a_quoted_or_true_plain_number_is_refused():
     for value in ('"0.3"', "true"):
         with pytest.raises(InputError, match="body2.poisson_ratio: expected a number such as"):
             load_case(BASE.replace("poisson_ratio = 0.3", f"poisson_ratio = {value}"))
+
+
+@pytest.mark.parametrize("example, old, new, message", [
+    ("rough-sphere-normal", 'load = "50 N"', 'lod = "50 N"',
+     "loading.lod: unknown key; did you mean 'load'?"),
+    ("rough-sphere-normal", "seed = 3", "sed = 3",
+     "roughness.sed: unknown key; did you mean 'seed'?"),
+    ("seireg-squares-combined-1", 'name = "region 2"', 'nmae = "region 2"',
+     "pressure.regions[1].nmae: unknown key; did you mean 'name'?"),
+])
+def test_an_unknown_key_names_the_key_of_its_table_it_reads_like(example, old, new, message):
+    """An unknown key was only "unknown key (check the spelling)"; the table's own key that
+    reads like it is named."""
+    with pytest.raises(InputError) as exc:
+        load_case(example_text(example).replace(old, new, 1))
+    assert str(exc.value) == message
+
+
+@pytest.mark.parametrize("old, new", [
+    ('rx = "10 mm"', 'rx = "10 mm"\nrxx = "1 mm"'),  # rx is written: rxx is no misspelt rx
+    ("seed = 3", "seed = 3\ncolour = 3"),  # nothing reads like it
+])
+def test_an_unknown_key_with_no_unwritten_key_like_it_says_check_the_spelling(old, new):
+    with pytest.raises(InputError, match=r"unknown key \(check the spelling\)$"):
+        load_case(example_text("rough-sphere-normal").replace(old, new, 1))
