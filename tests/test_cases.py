@@ -1,8 +1,12 @@
 """Case files: validation errors name the key path; examples validate."""
 
-import pytest
+import typing
 
-from asperity.cases import load_case
+import pytest
+from pydantic import BaseModel, TypeAdapter, ValidationError
+
+from asperity.cases import ANALYSES, load_case
+from asperity.cases.keys import case_keys
 from asperity.errors import InputError
 from asperity.examples import example_text, list_examples
 
@@ -172,3 +176,120 @@ def test_a_missing_table_with_an_unrelated_unknown_key_is_reported_missing():
         load_case(text)
     assert exc.value.field in ("loading", "colour")
     assert "did you mean" not in str(exc.value)
+
+
+def _models(annotation, found):
+    """Every case model an annotation reaches (tables, lists and unions of tables)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        if annotation not in found:
+            found.append(annotation)
+            for info in annotation.model_fields.values():
+                _models(info.annotation, found)
+        return found
+    for arg in typing.get_args(annotation):
+        _models(arg, found)
+    return found
+
+
+def _number_fields(kinds):
+    """(model, field name, a valid value) of every field whose key the schema lists as one of
+    ``kinds``, over every table of every analysis."""
+    fields = []
+    found = []
+    for analysis in ANALYSES.values():
+        _models(analysis, found)
+    for model in found:
+        for key in case_keys(model):
+            if "." in key.key or "[" in key.key or key.type not in kinds or key.unit:
+                continue
+            info = model.model_fields[key.key]
+            bounds = {type(m).__name__: m for m in info.metadata}
+            if key.type == "integer":
+                low = bounds["Ge"].ge if "Ge" in bounds else 5
+                fields.append((model, key.key, low))
+            else:
+                fields.append((model, key.key, None))
+    return fields
+
+
+def _validate_field(model, name, value):
+    info = model.model_fields[name]
+    annotation = typing.Annotated[(info.annotation, *info.metadata)] if info.metadata else (
+        info.annotation)
+    return TypeAdapter(annotation).validate_python(value)
+
+
+INTEGER_FIELDS = _number_fields({"integer"})
+
+
+def test_every_integer_key_is_listed_in_the_schema():
+    names = {name for _, name, _ in INTEGER_FIELDS}
+    assert {"nx", "ny", "seed", "levels", "counting_steps", "snapshots"} <= names
+
+
+@pytest.mark.parametrize("model, name, value", INTEGER_FIELDS,
+                         ids=[f"{m.__name__}.{n}" for m, n, _ in INTEGER_FIELDS])
+def test_an_integer_key_takes_a_toml_integer_only(model, name, value):
+    """pydantic's lax mode read ``nx = "128"`` as 128 and ``nx = true`` as 1; a count is a TOML
+    integer (or a float with no fraction, the same count)."""
+    assert _validate_field(model, name, value) == value
+    assert _validate_field(model, name, float(value)) == value
+    for wrong in (str(value), True, value + 0.5):
+        with pytest.raises(ValidationError, match="expected a whole number such as 128"):
+            _validate_field(model, name, wrong)
+
+
+NUMBER_FIELDS = _number_fields({"number"})
+
+
+@pytest.mark.parametrize("model, name, value", NUMBER_FIELDS,
+                         ids=[f"{m.__name__}.{n}" for m, n, _ in NUMBER_FIELDS])
+def test_a_number_key_refuses_a_bool(model, name, value):
+    with pytest.raises(ValidationError, match="expected a (number|quantity)"):
+        _validate_field(model, name, True)
+
+
+@pytest.mark.parametrize("value, message", [
+    ('"128"', "grid.nx: expected a whole number such as 128, got '128'"),
+    ("true", "grid.nx: expected a whole number such as 128, got True"),
+    ("32.5", "grid.nx: expected a whole number such as 128, got 32.5"),
+])
+def test_a_quoted_or_true_mesh_size_is_refused_naming_the_key(value, message):
+    with pytest.raises(InputError) as exc:
+        load_case(BASE.replace("nx = 32", f"nx = {value}"))
+    assert str(exc.value) == message
+
+
+def test_a_mesh_size_written_as_a_float_without_fraction_is_that_count():
+    assert load_case(BASE.replace("nx = 32", "nx = 32.0")).grid.nx == 32
+
+
+def test_a_quoted_or_true_plain_number_is_refused():
+    for value in ('"0.3"', "true"):
+        with pytest.raises(InputError, match="body2.poisson_ratio: expected a number such as"):
+            load_case(BASE.replace("poisson_ratio = 0.3", f"poisson_ratio = {value}"))
+
+
+@pytest.mark.parametrize("example, old, new, message", [
+    ("rough-sphere-normal", 'load = "50 N"', 'lod = "50 N"',
+     "loading.lod: unknown key; did you mean 'load'?"),
+    ("rough-sphere-normal", "seed = 3", "sed = 3",
+     "roughness.sed: unknown key; did you mean 'seed'?"),
+    ("seireg-squares-combined-1", 'name = "region 2"', 'nmae = "region 2"',
+     "pressure.regions[1].nmae: unknown key; did you mean 'name'?"),
+])
+def test_an_unknown_key_names_the_key_of_its_table_it_reads_like(example, old, new, message):
+    """An unknown key was only "unknown key (check the spelling)"; the table's own key that
+    reads like it is named."""
+    with pytest.raises(InputError) as exc:
+        load_case(example_text(example).replace(old, new, 1))
+    assert str(exc.value) == message
+
+
+@pytest.mark.parametrize("old, new", [
+    ('rx = "10 mm"', 'rx = "10 mm"\nrxx = "1 mm"'),  # rx is written: rxx is no misspelt rx
+    ("seed = 3", "seed = 3\ncolour = 3"),  # nothing reads like it
+])
+def test_an_unknown_key_with_no_unwritten_key_like_it_says_check_the_spelling(old, new):
+    with pytest.raises(InputError, match=r"unknown key \(check the spelling\)$"):
+        load_case(example_text("rough-sphere-normal").replace(old, new, 1))

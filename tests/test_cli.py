@@ -309,3 +309,28 @@ def test_sweep_stopped_by_sigterm_says_so_in_one_line(tmp_path):
                              f"--out {out} --serial --quiet")
     states = {json.loads(p.read_text())["state"] for p in out.glob("cases/*/status.json")}
     assert states == {"done"}
+
+
+@pytest.mark.parametrize("args, line", [
+    (["run", "case.toml", "--bogus"], "error: --bogus: no such option (Possible options: --out)"),
+    (["example", "--nope"], "error: --nope: no such option"),
+    (["example"], "error: name: missing (a value is required)"),
+    (["surface", "generate", "--nope"], "error: --nope: no such option"),
+    (["run", "case.toml", "--out"], "error: --out: requires an argument"),
+    (["frob"], "error: command: no such command 'frob'"),
+    (["--bogus"], "error: --bogus: no such option"),
+])
+def test_a_command_line_click_cannot_parse_is_one_error_line(args, line):
+    """An unknown option or a missing argument was click's boxed error panel; it is one
+    ``error:`` line like the other input errors, then at most a pointer to ``--help``."""
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2
+    lines = [text for text in result.stderr.splitlines() if text.strip()]
+    assert lines[0].startswith(line), result.stderr
+    assert len(lines) <= 2 and all("--help" in text for text in lines[1:]), result.stderr
+    assert "╭" not in result.stderr and "Usage:" not in result.stderr
+
+
+def test_asperity_alone_still_prints_its_help():
+    result = runner.invoke(app, [])
+    assert "Usage" in result.output and "error:" not in result.output

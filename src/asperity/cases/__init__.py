@@ -91,7 +91,8 @@ def load_case(source: str | Path | dict) -> Any:
     if not isinstance(analysis, str) or analysis not in ANALYSES:
         raise InputError("analysis", "one of " + ", ".join(f'"{a}"' for a in ANALYSES),
                          analysis)
+    model = ANALYSES[analysis]
     try:
-        return ANALYSES[analysis].model_validate(data, context={"base_dir": base_dir})
+        return model.model_validate(data, context={"base_dir": base_dir})
     except ValidationError as exc:
-        raise first_error(exc) from None
+        raise first_error(exc, model=model, data=data) from None

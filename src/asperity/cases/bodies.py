@@ -7,7 +7,7 @@ from typing import Annotated
 from pydantic import Field, model_validator
 
 from ..materials import Material
-from .fields import CaseModel, Quantity
+from .fields import CaseModel, Integer, Number, Quantity
 
 __all__ = ["MaterialSpec", "GridSpec"]
 
@@ -21,7 +21,7 @@ class MaterialSpec(CaseModel):
 
     youngs_modulus: Quantity("pressure", gt=0)
     """Young's modulus E of the body."""
-    poisson_ratio: Annotated[float, Field(gt=-1.0, le=0.5)] = 0.3
+    poisson_ratio: Annotated[Number, Field(gt=-1.0, le=0.5)] = 0.3
     """Poisson's ratio nu of the body."""
     name: str = "material"
     """Name of the material, shown in reports (not implied by the moduli: a glass disc left
@@ -61,9 +61,9 @@ class GridSpec(CaseModel):
     unless ``x_start``/``y_start`` are given.
     """
 
-    nx: Annotated[int, Field(ge=4, le=8192)] = 128
+    nx: Annotated[Integer, Field(ge=4, le=8192)] = 128
     """Cells along x."""
-    ny: Annotated[int, Field(ge=1, le=8192)] = 128
+    ny: Annotated[Integer, Field(ge=1, le=8192)] = 128
     """Cells along y."""
     x_extent: Quantity("length", gt=0)
     """Full length of the domain along x."""

@@ -48,7 +48,7 @@ from ..errors import InputError
 from ..materials import Material
 from ..units import to_si
 from .bodies import MaterialSpec
-from .fields import CaseHeader, CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 
 __all__ = [
     "ALPHA_MAX",
@@ -350,10 +350,10 @@ class EHLGridSpec(CaseModel):
     ``nx = 801``, ``ny = 201``. A line contact has ``ny = 1``.
     """
 
-    nx: Annotated[int, Field(ge=9, le=8193)] = 129
+    nx: Annotated[Integer, Field(ge=9, le=8193)] = 129
     """Nodes along x (or cells_per_a: nodes per Hertz semi-axis a). A steady case that sets
     neither nx nor ny gets the mesh its regime asks for on the domain instead of 129 x 65."""
-    ny: Annotated[int, Field(ge=1, le=4097)] = 65
+    ny: Annotated[Integer, Field(ge=1, le=4097)] = 65
     """Nodes along y; 1 for a line contact (or cells_per_b)."""
     x_min: LowerBound = -2.5
     """Inlet end of the domain in Hertz semi-axes a (a number) or as a length (e.g. "-1.2 mm")."""
@@ -437,16 +437,16 @@ class SolverSpec(CaseModel):
     contact type) and the ``boundary_friction`` coefficient of dry nodes.
     """
 
-    levels: Annotated[int, Field(ge=1, le=6)] = 1
+    levels: Annotated[Integer, Field(ge=1, le=6)] = 1
     """Grids in the multilevel sequence (node counts 2^(levels-1) m + 1); without a [grid]
     table and without levels, chosen with the mesh."""
-    tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
+    tolerance: Annotated[Number, Field(gt=0, lt=1)] = 1e-5
     """Relative convergence tolerance."""
-    max_sweeps: Annotated[int, Field(ge=1, le=200_000)] | None = None
+    max_sweeps: Annotated[Integer, Field(ge=1, le=200_000)] | None = None
     """Sweep limit per grid (default 5000 for a point contact, 40000 for a line contact)."""
     method: Literal["line", "point"] | None = None
     """Relaxation: "line" or "point" (default by contact type)."""
-    boundary_friction: Annotated[float, Field(ge=0, le=10)] = 0.1
+    boundary_friction: Annotated[Number, Field(ge=0, le=10)] = 0.1
     """Friction coefficient of dry (contact) nodes."""
 
     def sweep_limit(self, line: bool) -> int:
@@ -469,7 +469,7 @@ class ReferenceSpec(CaseModel):
     """Published minimum film thickness."""
     max_pressure: Quantity("pressure", gt=0) | None = None
     """Published maximum pressure."""
-    tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.05
+    tolerance: Annotated[Number, Field(gt=0, lt=1)] = 0.05
     """Relative tolerance of the comparison."""
 
 

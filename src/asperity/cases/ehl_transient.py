@@ -44,7 +44,7 @@ from ..surfaces.features import STRAIGHT_FEATURES
 from ..surfaces.recipe import SurfaceBuild, build_surface_record
 from ..surfaces.topography import Topography
 from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
-from .fields import CaseModel, Quantity
+from .fields import CaseModel, Integer, Number, Quantity
 from .roughness import FormKeys, SurfaceKeys, WavinessSpec, surface_recipe
 
 __all__ = ["MAX_FEATURE_SLOPE", "EHLTransientCase", "MovingSurfaceSpec", "TimeSpec",
@@ -90,9 +90,9 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
                   "feature"] = "smooth"
     """Roughness the surface carries: "smooth", "builtin", "ground", "gaussian", "self-affine",
     "file" or "feature" (a single dent, bump, ridge or groove)."""
-    scale: Annotated[float, Field(ge=0, le=100)] = 1.0
+    scale: Annotated[Number, Field(ge=0, le=100)] = 1.0
     """Factor on the heights (the seed's sqrt(2) x C)."""
-    lowpass: Annotated[float, Field(ge=0, le=100)] = 0.0
+    lowpass: Annotated[Number, Field(ge=0, le=100)] = 0.0
     """Remove wavelengths shorter than this many mesh spacings (ISO Gaussian filter; 0: off)."""
     waviness: WavinessSpec | None = None
     """A sinusoidal waviness along y (transverse) or x."""
@@ -250,15 +250,15 @@ class TimeSpec(CaseModel):
     film change it makes, have crossed the domain.
     """
 
-    counting_steps: Annotated[int, Field(ge=1, le=100_000)] | None = None
+    counting_steps: Annotated[Integer, Field(ge=1, le=100_000)] | None = None
     """Time steps over which contacts and films are counted (default 200, or with a feature
     the steps of its passage through the domain)."""
-    warmup_steps: Annotated[int, Field(ge=0, le=100_000)] | None = None
+    warmup_steps: Annotated[Integer, Field(ge=0, le=100_000)] | None = None
     """Steps before counting (default: until the slower rough surface has crossed the domain;
     a feature does not count as rough here)."""
     dt: Quantity("time", gt=0) | None = None
     """Time step (default the seed's dx / (2 u_max))."""
-    snapshots: Annotated[int, Field(ge=1, le=50)] = 4
+    snapshots: Annotated[Integer, Field(ge=1, le=50)] = 4
     """Centre-line snapshots spread over the counting period (with a single feature, over its
     passage through the Hertz zone)."""
 
@@ -272,31 +272,31 @@ class TransientSolverSpec(CaseModel):
     (``contact_film``; default the tolerance times the central film) and the checkpoint
     interval."""
 
-    tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-4
+    tolerance: Annotated[Number, Field(gt=0, lt=1)] = 1e-4
     """Relative convergence tolerance per time step."""
-    max_sweeps: Annotated[int, Field(ge=1, le=100_000)] = 400
+    max_sweeps: Annotated[Integer, Field(ge=1, le=100_000)] = 400
     """Sweep limit per time step."""
-    refresh: Annotated[int, Field(ge=1, le=1000)] | None = None
+    refresh: Annotated[Integer, Field(ge=1, le=1000)] | None = None
     """Sweeps between refreshes of the far-field deflection at the start of a timestep (every
     sweep once the step's residual is below 0.3); default 3, 1 for the row solve of a line
     contact."""
-    acceleration: Annotated[int, Field(ge=0, le=20)] | None = None
+    acceleration: Annotated[Integer, Field(ge=0, le=20)] | None = None
     """Memory of the Anderson acceleration of the refresh cycles (0: off; default 3 with line
     relaxation)."""
     method: Literal["line", "point"] | None = None
     """Relaxation: "line" or "point" (default by contact type)."""
-    theta: Annotated[float, Field(ge=0.5, le=1.0)] = 0.5
+    theta: Annotated[Number, Field(ge=0.5, le=1.0)] = 0.5
     """Weight of the time scheme (0.5 Crank-Nicolson, 1 implicit Euler)."""
-    damping: Annotated[float, Field(gt=0, le=1.0)] = 0.7
+    damping: Annotated[Number, Field(gt=0, le=1.0)] = 0.7
     """Oscillation damping of the nodal update."""
-    load_gain: Annotated[float, Field(gt=0, le=10.0)] | None = None
+    load_gain: Annotated[Number, Field(gt=0, le=10.0)] | None = None
     """Separation shift per sweep per relative load error (default 0.15 min(1, b/a) for a point
     contact, 0.03 for a line contact); halved for a step that does not converge with a refresh
     at every sweep and the density's pressure derivative."""
     contact_film: Quantity("length", ge=0) | None = None
     """Film below which a node counts as in contact (default the tolerance times the central film).
     """
-    checkpoint_every: Annotated[int, Field(ge=1, le=100_000)] = 50
+    checkpoint_every: Annotated[Integer, Field(ge=1, le=100_000)] = 50
     """Steps between checkpoints (a stopped run resumes with --resume)."""
 
 
@@ -320,7 +320,7 @@ class EHLTransientCase(EHLCaseBase):
     """Time stepping and counting."""
     solver: TransientSolverSpec = TransientSolverSpec()
     """Solver options per time step."""
-    paper_contact_time_percent: Annotated[float, Field(ge=0, le=100)] | None = None
+    paper_contact_time_percent: Annotated[Number, Field(ge=0, le=100)] | None = None
     """Published percentage of time with contact, compared in the report."""
 
     def feature_spacing(self) -> tuple[float | None, float | None]:

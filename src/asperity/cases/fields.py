@@ -1,13 +1,16 @@
 """Building blocks of case files: quantities with units, strict models, error formatting.
 
 A quantity field accepts a plain number (SI) or a string with a unit (``"2160 lbf"``); it is
-converted once by :func:`asperity.units.to_si`. Models forbid unknown keys, so a misspelt key is
-reported instead of silently ignored.
+converted once by :func:`asperity.units.to_si`. A count (:data:`Integer`) or a plain number
+(:data:`Number`) takes a TOML number only: pydantic would read ``"128"`` as 128 and ``true`` as 1.
+Models forbid unknown keys, so a misspelt key is reported instead of silently ignored, with
+the key of its table that reads like it.
 """
 
 from __future__ import annotations
 
 import difflib
+import typing
 from typing import Annotated
 
 from pydantic import (
@@ -28,6 +31,8 @@ __all__ = [
     "CaseHeader",
     "CaseModel",
     "Quantity",
+    "Integer",
+    "Number",
     "Length",
     "PositiveLength",
     "Force",
@@ -87,6 +92,33 @@ def Quantity(dimension: str, **constraints):  # noqa: N802 - reads as a type in 
     return Annotated[float, BeforeValidator(_converter(dimension)),
                      Field(json_schema_extra={"dimension": dimension}, **constraints)]
 
+
+def _whole_number(value):
+    """A count as TOML writes it: an integer, or a float without a fraction (``128.0``, ``1e4``
+    are the same count); a string (``"128"``) or a bool is refused."""
+    if isinstance(value, float) and value.is_integer():
+        return int(value)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError("expected a whole number such as 128")
+    return value
+
+
+def _plain_number(value):
+    """A pure number as TOML writes it (an integer or a float); a string or a bool is
+    refused."""
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise ValueError("expected a number such as 0.5")
+    return value
+
+
+#: An integer field (mesh sizes, counts, seeds, steps, levels): a TOML integer, or a float
+#: without a fraction; ``"128"`` and ``true`` are refused. Constrain it with
+#: ``Annotated[Integer, Field(ge=..., le=...)]``.
+Integer = Annotated[int, BeforeValidator(_whole_number)]
+
+#: A pure-number field without a unit (a ratio, a tolerance, a coefficient): a TOML integer or
+#: float; ``"0.5"`` and ``true`` are refused.
+Number = Annotated[float, BeforeValidator(_plain_number)]
 
 Length = Quantity("length")
 PositiveLength = Quantity("length", gt=0)
@@ -174,10 +206,71 @@ def _misspelling(missing: dict, errors: list[dict]) -> dict | None:
     return unknown[close[0]] if close else None
 
 
-def first_error(exc: ValidationError, prefix: str = "") -> InputError:
-    """Turn pydantic's first validation error into one :class:`InputError` line; an
-    :class:`InputError` raised by a validator (one that checks a key against the rest of the
-    case, such as a domain bound against the Hertz semi-axes) keeps the key it names."""
+def _tables(annotation) -> list[type[BaseModel]]:
+    """The models a field's annotation holds (a table, a list of tables, a union of them)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return [annotation]
+    return [m for arg in typing.get_args(annotation) for m in _tables(arg)]
+
+
+def _table_keys(model: type[BaseModel], loc) -> list[str]:
+    """The keys of the table at ``loc`` (a pydantic error location below ``model``): list
+    items are skipped, a part that names no key (a union member's tag) keeps the tables."""
+    tables = [model]
+    for part in loc:
+        fields = {info.alias or name: info for table in tables
+                  for name, info in table.model_fields.items()}
+        if isinstance(part, str) and part in fields:
+            tables = _tables(fields[part].annotation)
+    return list(dict.fromkeys(info.alias or name for table in tables
+                              for name, info in table.model_fields.items()))
+
+
+def _given_keys(data, loc) -> set[str]:
+    """The keys the user wrote in the table at ``loc`` of the case's ``data``."""
+    for part in loc:
+        try:
+            data = data[part]
+        except (KeyError, IndexError, TypeError):
+            return set()
+    return set(data) if isinstance(data, dict) else set()
+
+
+def _unknown_key(err: dict, model: type[BaseModel] | None, data) -> str:
+    """The problem of an unknown key: the key of its table that reads like it, if any, and
+    is not written already (``rxx`` beside ``rx`` is no misspelt ``rx``)."""
+    *parent, wrong = err["loc"]
+    keys = _table_keys(model, parent) if model is not None else []
+    keys = [k for k in keys if k not in _given_keys(data, parent)]
+    close = difflib.get_close_matches(str(wrong), keys, n=1, cutoff=0.7)
+    return f"unknown key; did you mean '{close[0]}'?" if close else _PROBLEMS[err["type"]]
+
+
+def first_error(exc: ValidationError, prefix: str = "", model: type[BaseModel] | None = None,
+                data: dict | None = None) -> InputError:
+    """Turn pydantic's first validation error into one :class:`InputError` line.
+
+    An :class:`InputError` raised by a validator (one that checks a key against the rest of the
+    case, such as a domain bound against the Hertz semi-axes) keeps the key it names. Given the
+    validated ``model`` and its input ``data``, an unknown key is answered with the key of its
+    table that reads like it and was not written (``loading.lod``: did you mean 'load'?).
+
+    Parameters
+    ----------
+    exc : pydantic.ValidationError
+        The error of validating a case (or a table of one).
+    prefix : str
+        Dotted path put before the key the error names.
+    model : type of pydantic.BaseModel, optional
+        The model validated, whose tables' keys an unknown key is matched against.
+    data : dict, optional
+        The input validated, whose keys are not offered for an unknown one.
+
+    Returns
+    -------
+    InputError
+        One line naming the key.
+    """
     errors = exc.errors(include_url=False)
     err = errors[0]
     misspelt = _misspelling(err, errors)
@@ -199,6 +292,8 @@ def first_error(exc: ValidationError, prefix: str = "") -> InputError:
         else:
             loc += ("." if loc else "") + _key(part)
     field = ".".join(p for p in (prefix, loc) if p) or "case"
+    if err["type"] == "extra_forbidden":
+        return InputError(field, "", problem=_unknown_key(err, model, data))
     if err["type"] in _PROBLEMS:
         return InputError(field, "", problem=_PROBLEMS[err["type"]])
     if err["type"] in _LENGTHS:

@@ -56,7 +56,7 @@ from ..units import is_bare, registry, to_si
 from .bodies import MaterialSpec
 from .ehl import LubricantSpec
 from .ehl_transient import MovingSurfaceSpec, TimeSpec, TransientSolverSpec
-from .fields import CaseHeader, CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 
 __all__ = ["GearCase", "GearSpec", "HandoffSpec", "OperationSpec"]
 
@@ -126,7 +126,7 @@ _Tip = GearLength(0.0, TIP_DIAMETER_MAX, inclusive_low=False)
 class GearSpec(CaseModel):
     """``[gear]``: the involute pair (ISO 21771); lists are ``[pinion, wheel]``."""
 
-    teeth: tuple[Annotated[int, Field(ge=5, le=1000)], Annotated[int, Field(ge=5, le=1000)]]
+    teeth: tuple[Annotated[Integer, Field(ge=5, le=1000)], Annotated[Integer, Field(ge=5, le=1000)]]
     """Numbers of teeth [pinion, wheel]."""
     normal_module: GearLength(*MODULE_RANGE)
     """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres; a diametral
@@ -135,7 +135,7 @@ class GearSpec(CaseModel):
     """Normal pressure angle (e.g. "20 deg")."""
     helix_angle: Angle = 0.0
     """Helix angle at the reference circle (0: spur gears)."""
-    profile_shift: tuple[float, float] = (0.0, 0.0)
+    profile_shift: tuple[Number, Number] = (0.0, 0.0)
     """Profile shift coefficients [pinion, wheel]."""
     face_width: GearLength(0.0, FACE_WIDTH_MAX, inclusive_low=False)
     """Face width, up to 2 m ("30 mm"; a bare number is metres)."""
@@ -209,10 +209,13 @@ _BARE_SPEED = (f"expected a rotational speed with its unit: {_SPEED_EXAMPLES} (a
 
 def _celsius(value):
     """A temperature in deg C: a plain number is deg C already; a string is read with its unit
-    by pint's offset-aware conversion ("353.15 K" and "176 degF" are 80 deg C)."""
+    by pint's offset-aware conversion ("353.15 K" and "176 degF" are 80 deg C); a bool is no
+    temperature (pydantic would read true as 1 deg C)."""
+    expected = "expected a temperature such as 80 or \"80 degC\""
+    if isinstance(value, bool):
+        raise ValueError(expected)
     if not isinstance(value, str) or is_bare(value):
         return value
-    expected = "expected a temperature such as 80 or \"80 degC\""
     match = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)\s*", value)
     if match is None:
         raise ValueError(expected)
@@ -333,11 +336,11 @@ class RoughnessSpec(CaseModel):
 class FrictionSpec(CaseModel):
     """``[friction]``: boundary friction coefficient and the lambda range of mixed friction."""
 
-    boundary: Annotated[float, Field(ge=0, le=1)] = 0.1
+    boundary: Annotated[Number, Field(ge=0, le=1)] = 0.1
     """Boundary friction coefficient."""
-    boundary_lambda: Annotated[float, Field(ge=0)] = 1.0
+    boundary_lambda: Annotated[Number, Field(ge=0)] = 1.0
     """Lambda below which the asperities carry all the load."""
-    full_film_lambda: Annotated[float, Field(gt=0)] = 3.0
+    full_film_lambda: Annotated[Number, Field(gt=0)] = 3.0
     """Lambda above which the film carries all the load."""
 
     @model_validator(mode="after")
@@ -348,7 +351,7 @@ class FrictionSpec(CaseModel):
 
 
 #: A positive value of pinion and wheel.
-_Pair = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]]
+_Pair = tuple[Annotated[Number, Field(gt=0)], Annotated[Number, Field(gt=0)]]
 
 
 #: Young's moduli read as steel's where ``[thermal]`` is left at its steel defaults, Pa
@@ -395,23 +398,23 @@ class ThermalSpec(CaseModel):
 class GearEHLSpec(CaseModel):
     """``[ehl]``: ``points`` along A-E and the steady mesh (:class:`asperity.gears.EHLMesh`)."""
 
-    points: Annotated[int, Field(ge=5, le=400)] = 25
+    points: Annotated[Integer, Field(ge=5, le=400)] = 25
     """Points along the path of contact A-E."""
-    nx: Annotated[int, Field(ge=17, le=4097)] = 129
+    nx: Annotated[Integer, Field(ge=17, le=4097)] = 129
     """Nodes along x of each steady EHL solve."""
-    ny: Annotated[int, Field(ge=9, le=1025)] = 33
+    ny: Annotated[Integer, Field(ge=9, le=1025)] = 33
     """Nodes along y of each steady EHL solve."""
-    levels: Annotated[int, Field(ge=1, le=5)] = 2
+    levels: Annotated[Integer, Field(ge=1, le=5)] = 2
     """Grids in the multilevel sequence."""
-    x_min: Annotated[float, Field(lt=-1.0, ge=-20.0)] = -2.5
+    x_min: Annotated[Number, Field(lt=-1.0, ge=-20.0)] = -2.5
     """Inlet end of the domain in Hertz semi-axes a."""
-    x_max: Annotated[float, Field(gt=1.0, le=20.0)] = 1.5
+    x_max: Annotated[Number, Field(gt=1.0, le=20.0)] = 1.5
     """Outlet end of the domain in Hertz semi-axes a."""
-    tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-5
+    tolerance: Annotated[Number, Field(gt=0, lt=1)] = 1e-5
     """Relative convergence tolerance of each steady solve."""
-    max_sweeps: Annotated[int, Field(ge=100, le=200_000)] = 20_000
+    max_sweeps: Annotated[Integer, Field(ge=100, le=200_000)] = 20_000
     """Sweep limit of each steady solve."""
-    damping: Annotated[float, Field(gt=0, le=1)] = 0.3
+    damping: Annotated[Number, Field(gt=0, le=1)] = 0.3
     """Relaxation damping of the steady solves."""
     adapt: bool = True
     """Move the inlet of a line contact upstream to Hamrock & Dowson's fully flooded distance
@@ -441,16 +444,16 @@ class HandoffSpec(CaseModel):
     at: str = "min-lambda"
     """Point of the transient hand-off: "pitch", "min-lambda", "max-flash" or a pinion roll angle
     ("24 deg")."""
-    nx: Annotated[int, Field(ge=9, le=8193)] = 129
+    nx: Annotated[Integer, Field(ge=9, le=8193)] = 129
     """Nodes along x of the transient case (default 129, dx = a/32: at the FZG example's
     start of contact the steady line-contact start does not converge on finer meshes); raised
     to 32 m + 1 nodes where the spacing would exceed the surfaces' autocorrelation length / 3.5
     (docs/gears.md)."""
-    ny: Annotated[int, Field(ge=1, le=4097)] = 65
+    ny: Annotated[Integer, Field(ge=1, le=4097)] = 65
     """Nodes along y of the transient case."""
-    x_min: Annotated[float, Field(lt=-1.0, ge=-100.0)] = -2.5
+    x_min: Annotated[Number, Field(lt=-1.0, ge=-100.0)] = -2.5
     """Inlet end of the transient domain in Hertz semi-axes a."""
-    x_max: Annotated[float, Field(gt=1.0, le=100.0)] = 1.5
+    x_max: Annotated[Number, Field(gt=1.0, le=100.0)] = 1.5
     """Outlet end of the transient domain in Hertz semi-axes a."""
     time: TimeSpec = TimeSpec()
     """Time stepping of the transient case."""

@@ -21,7 +21,7 @@ from pydantic_core import InitErrorDetails, PydanticCustomError
 from ..errors import InputError
 from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface, build_surface_record
 from ..surfaces.topography import Profile
-from .fields import CaseModel, Quantity, existing_file
+from .fields import CaseModel, Integer, Number, Quantity, existing_file
 
 __all__ = ["DEFAULT_FORM_DEGREE", "FormKeys", "GridRoughness", "KIND_KEYS", "MeasuredFile",
            "RoughnessSpec", "SurfaceKeys", "WavinessSpec", "length_unit", "measured_file",
@@ -107,7 +107,7 @@ class FormKeys(CaseModel):
     ``[roughness]`` and ``[surface1]``/``[surface2]`` (a surface analysis has its own,
     ``[evaluation] form_degree``)."""
 
-    form_degree: Annotated[int, Field(ge=0, le=9)] | None = None
+    form_degree: Annotated[Integer, Field(ge=0, le=9)] | None = None
     """Degree of the least-squares form removed from a measured file before use (default 1: its
     mean line or plane, the offset and tilt of the scan; 0: the mean only; 2: also a
     curvature)."""
@@ -138,13 +138,13 @@ class SurfaceKeys(MeasuredFile):
     acf: Literal["gaussian", "exponential"] | None = None
     """Autocorrelation function of a gaussian surface ("gaussian", the default, or
     "exponential")."""
-    hurst: Annotated[float, Field(gt=0, lt=1)] | None = None
+    hurst: Annotated[Number, Field(gt=0, lt=1)] | None = None
     """Hurst exponent H of a self-affine surface (0 < H < 1)."""
     rolloff_wavelength: Quantity("length", gt=0) | None = None
     """Wavelength above which the self-affine spectrum is flat."""
     short_cutoff: Quantity("length", gt=0) | None = None
     """Shortest wavelength of the self-affine spectrum."""
-    run_in: Annotated[float, Field(ge=0, lt=1)] | None = None
+    run_in: Annotated[Number, Field(ge=0, lt=1)] | None = None
     """Degree of running-in of a ground profile, 0 fresh (the default) to < 1 strongly run-in
     (peaks truncated)."""
     profile: Literal["A", "B", "C"] | None = None
@@ -155,7 +155,7 @@ class SurfaceKeys(MeasuredFile):
     spacing: Quantity("length", gt=0) | None = None
     """Sampling interval of a file without coordinates (surface analysis: also of a generated
     surface)."""
-    seed: Annotated[int, Field(ge=0)] | None = None
+    seed: Annotated[Integer, Field(ge=0)] | None = None
     """Seed of the random generator (default 0; the same seed gives the same surface)."""
 
     _path = field_validator("path")(measured_file)
@@ -221,7 +221,7 @@ class RoughnessSpec(FormKeys, SurfaceKeys):
     kind: Literal["gaussian", "self-affine", "ground", "builtin", "file"]
     """Which surface: "gaussian", "self-affine", "ground", "builtin" or "file" (each takes its own
     keys)."""
-    scale: Annotated[float, Field(ge=0, le=1e3)] = 1.0
+    scale: Annotated[Number, Field(ge=0, le=1e3)] = 1.0
     """Factor on the heights."""
     waviness: WavinessSpec | None = None
     """A sinusoidal waviness added to the roughness."""

@@ -19,7 +19,7 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..surfaces.machining import feed_limit, feed_within_limit
-from .fields import CaseHeader, CaseModel, OneOrList, Quantity
+from .fields import CaseHeader, CaseModel, Integer, Number, OneOrList, Quantity
 from .roughness import MeasuredFile, SurfaceKeys
 
 __all__ = ["EvaluationSpec", "SurfaceCase", "SurfaceSpec", "MAX_POINTS", "MAX_STEPS"]
@@ -122,7 +122,7 @@ class SurfaceSpec(SurfaceKeys):
     """Cutting speed (tool-vibration model)."""
     workpiece_diameter: Quantity("length", gt=0, le=10) | None = None
     """Workpiece diameter (tool-vibration model)."""
-    damping_ratio: Annotated[float, Field(gt=0, lt=1)] | None = None
+    damping_ratio: Annotated[Number, Field(gt=0, lt=1)] | None = None
     """Damping ratio of the tool (tool-vibration model; default 0.05)."""
     mass: Quantity("mass", ge=1e-6, le=1e6) | None = None
     """Effective mass of the tool (tool-vibration model)."""
@@ -283,7 +283,7 @@ class EvaluationSpec(CaseModel):
     window: Quantity("length", gt=0) | None = None
     """Window length of the roughness along a turned workpiece (Seireg Fig. 4.2; default about a
     twentieth of the length)."""
-    form_degree: Annotated[int, Field(ge=0, le=9)] | None = None
+    form_degree: Annotated[Integer, Field(ge=0, le=9)] | None = None
     """Degree of the least-squares polynomial removed as form (default 1, a line or plane; 2 for
     a cylinder or ball)."""
 

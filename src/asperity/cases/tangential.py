@@ -44,7 +44,7 @@ from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from ..contact.hertz import radius_ratio
 from .bodies import MaterialSpec
-from .fields import CaseHeader, CaseModel, Quantity
+from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 from .roughness import RoughnessSpec
 
 __all__ = [
@@ -148,7 +148,7 @@ class PressureSpec(CaseModel):
     """Radius of relative curvature along x (or the mean radius sqrt(Rx Ry) with aspect_ratio)."""
     ry: PositiveLength | None = None
     """Radius of relative curvature along y (default rx: a sphere)."""
-    aspect_ratio: Annotated[float, Field(gt=0, le=20)] | None = None
+    aspect_ratio: Annotated[Number, Field(gt=0, le=20)] | None = None
     """Aspect ratio a/b of the contact ellipse (with rx the mean radius)."""
     regions: list[RegionSpec] | None = None
     """Regions of uniform pressure (source = "uniform")."""
@@ -277,9 +277,9 @@ class TangentialGridSpec(CaseModel):
     centred on the origin unless ``x_start``/``y_start``) override it.
     """
 
-    nx: Annotated[int, Field(ge=4, le=1024)] = 64
+    nx: Annotated[Integer, Field(ge=4, le=1024)] = 64
     """Cells along x."""
-    ny: Annotated[int, Field(ge=4, le=1024)] = 64
+    ny: Annotated[Integer, Field(ge=4, le=1024)] = 64
     """Cells along y."""
     x_extent: PositiveLength | None = None
     """Full length of the domain along x (default from the contact's bounding box)."""
@@ -309,12 +309,12 @@ class LoadPathSpec(CaseModel):
     fretting cycle; its dissipated energy is reported). ``scale`` sets the peak as a multiple of
     the applied load. The path stops at gross slip."""
 
-    steps: Annotated[int, Field(ge=1, le=100)] = 10
+    steps: Annotated[Integer, Field(ge=1, le=100)] = 10
     """Equal load increments from zero."""
     history: Literal["load", "unload", "cycle"] = "load"
     """"load", "unload" (back to zero) or "cycle" (to the reversed load and back: a fretting cycle).
     """
-    scale: Annotated[float, Field(gt=0, le=100)] = 1.0
+    scale: Annotated[Number, Field(gt=0, le=100)] = 1.0
     """The path's peak is ``scale`` times the applied load (> 1: continue towards gross slip)."""
 
 
@@ -334,7 +334,7 @@ class TangentialReference(CaseModel):
     """Published moment at gross slip."""
     gross_slip_force: Quantity("force", gt=0) | None = None
     """Published force at gross slip."""
-    tolerance: Annotated[float, Field(gt=0, lt=1)] | None = None
+    tolerance: Annotated[Number, Field(gt=0, lt=1)] | None = None
     """Relative tolerance of the comparison (absent: the rows are shown, not checked)."""
     note: str = ""
     """Remark shown with the reference rows."""

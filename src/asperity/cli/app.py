@@ -8,7 +8,9 @@ did not converge, and the key to change). Every warning of a run (``Outcome.warn
 domain too small, a mesh too coarse, an inlet too short, ...) is one line ``warning: ...`` on
 stderr; ``run --strict`` makes them exit code 3. Ctrl-C or SIGTERM during a run prints one line
 saying where it stopped, where the partial results are and how to continue, and exits with
-128 + the signal number.
+128 + the signal number. A command line that click cannot parse (an unknown option, a missing
+argument, an unknown command) is an input error too: one line ``error: --bogus: no such
+option``, exit code 2, and a second line naming the command's ``--help``.
 """
 
 from __future__ import annotations
@@ -28,8 +30,6 @@ from rich.table import Table
 from ..errors import InputError
 from ..memory import retain_freed_memory
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
-                  help="Mechanics of rough, loaded, lubricated contacts.")
 console = Console()
 err_console = Console(stderr=True)
 
@@ -47,6 +47,77 @@ def fail(message: str, code: int = EXIT_BAD_INPUT):
     """Print one error line on stderr and exit."""
     err_console.print(f"error: {message}", markup=False, highlight=False, soft_wrap=True)
     raise typer.Exit(code)
+
+
+#: Click's exceptions, from the module typer's own ``BadParameter`` lives in: click itself with
+#: an older typer, the copy of it that typer >= 0.24 ships (whose classes are not click's).
+_CLICK_ERRORS = sys.modules[typer.BadParameter.__module__]
+#: ``asperity`` alone prints the help (click >= 8.2 raises it as a usage error).
+_NO_ARGS_IS_HELP = getattr(_CLICK_ERRORS, "NoArgsIsHelpError", ())
+
+
+def usage_field(exc) -> str:
+    """The option, argument or command a click usage error is about, as the user typed it
+    (``--bogus``, ``case``); ``command`` where click names none."""
+    name = getattr(exc, "option_name", None)
+    param = getattr(exc, "param", None)
+    if not name and param is not None:
+        name = max(param.opts, key=len) if param.param_type_name == "option" else param.name
+    return name or "command"
+
+
+def usage_problem(exc, field: str) -> str:
+    """Click's message without the option it names (the line names it first)."""
+    if isinstance(exc, _CLICK_ERRORS.MissingParameter):
+        return "missing (a value is required)"
+    if isinstance(exc, _CLICK_ERRORS.NoSuchOption):
+        text = "no such option" + exc.format_message().removeprefix(f"No such option: {field}")
+    elif isinstance(exc, _CLICK_ERRORS.BadParameter):
+        text = exc.message
+    else:  # "Option '--out' requires an argument.", "No such command 'frob'."
+        text = exc.format_message().removeprefix(f"Option '{field}' ")
+    text = " ".join(text.split()).removesuffix(".")
+    return text[:1].lower() + text[1:]
+
+
+class OneLineUsageErrors(typer.core.TyperGroup):
+    """The command group of ``asperity``: a usage error anywhere below it (an unknown option,
+    a missing argument, an unknown command) is one ``error: <option>: ...`` line, exit code 2,
+    and a line pointing to the command's ``--help``, instead of click's boxed panel."""
+
+    def make_context(self, info_name, args, parent=None, **extra):
+        """Parse the group's own options; a usage error becomes one line."""
+        try:
+            return super().make_context(info_name, args, parent=parent, **extra)
+        except _NO_ARGS_IS_HELP:
+            raise
+        except _CLICK_ERRORS.UsageError as exc:
+            usage_failure(exc)
+
+    def invoke(self, ctx):
+        """Run the subcommand; a usage error in parsing its command line becomes one line."""
+        try:
+            return super().invoke(ctx)
+        except _NO_ARGS_IS_HELP:
+            raise
+        except _CLICK_ERRORS.UsageError as exc:
+            usage_failure(exc)
+
+
+def usage_failure(exc):
+    """Print a click usage error as the one ``error:`` line of bad input, the command's
+    ``--help`` on a second line, and exit with code 2."""
+    field = usage_field(exc)
+    err_console.print(f"error: {field}: {usage_problem(exc, field)}", markup=False,
+                      highlight=False, soft_wrap=True)
+    if exc.ctx is not None:
+        err_console.print(f"(see '{exc.ctx.command_path} --help')", markup=False,
+                          highlight=False, soft_wrap=True)
+    raise typer.Exit(EXIT_BAD_INPUT)
+
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
+                  cls=OneLineUsageErrors, help="Mechanics of rough, loaded, lubricated contacts.")
 
 
 def guarded(fn):

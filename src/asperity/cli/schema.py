@@ -22,7 +22,11 @@ Every key of an asperity case file, by analysis, generated from the case models
 (`asperity schema --markdown > docs/cases.md`; `asperity schema ANALYSIS` prints one analysis).
 
 A **quantity** is a number in the SI unit shown or a string with any unit of the same
-dimension (`"2160 lbf"`, `"0.6 in"`, `"30e6 psi"`, `"25 um"`). A default `-` means the key is
+dimension (`"2160 lbf"`, `"0.6 in"`, `"30e6 psi"`, `"25 um"`). An **integer** (a mesh size,
+a count, a seed) is a TOML integer (`nx = 128`; `128.0`, a float without a fraction, is the same
+count), not a quoted one (`"128"`); `true`/`false` is neither an integer nor a **number**
+(`poisson_ratio = 0.3`). A key a table does not have is refused, with the table's key that
+reads like it (`loading.lod: unknown key; did you mean 'load'?`). A default `-` means the key is
 optional and has no value unless given (the analysis chooses, or the table is absent).
 Keys under `name[].` belong to each entry of an array of tables (`[[name]]`).
 """
