@@ -251,7 +251,7 @@ def test_a_number_key_refuses_a_bool(model, name, value):
 
 @pytest.mark.parametrize("value, message", [
     ('"128"', "grid.nx: expected a whole number such as 128, got '128'"),
-    ("true", "grid.nx: expected a whole number such as 128, got True"),
+    ("true", "grid.nx: expected a whole number such as 128, got true"),
     ("32.5", "grid.nx: expected a whole number such as 128, got 32.5"),
 ])
 def test_a_quoted_or_true_mesh_size_is_refused_naming_the_key(value, message):

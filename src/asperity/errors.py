@@ -39,7 +39,8 @@ class InputError(ValueError):
 
 
 def _short(value: object, limit: int = 60) -> str:
-    text = repr(value)
+    """The value as the case file writes it (``true``, not Python's ``True``), cut short."""
+    text = str(value).lower() if isinstance(value, bool) else repr(value)
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
