@@ -15,6 +15,7 @@ import numpy as np
 import xarray as xr
 
 from ..ehl.problem import FILM_ERROR
+from ..gears.formula_range import dowson_higginson_range_note
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness
@@ -189,13 +190,19 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "ehl_wall_time_s": seconds,
         "converged": bool(result.converged.all()),
     }
+    formula_note = "Newtonian isothermal formula; the solver uses the case's lubricant laws"
+    minimum_note = formula_note
+    if result.line:
+        pitch = contact_problem(pair, kin, i_c, float(result.load[i_c]), *case.bodies(),
+                                case.lubricant.lubricant())
+        minimum_note = dowson_higginson_range_note(pitch.G) or formula_note
     comparisons = [
         Comparison("central film at the pitch point", float(result.central_film[i_c]),
                    float(result.formula_central[i_c]), result.formula_names[0], "m", None,
-                   "Newtonian isothermal formula; the solver uses the case's lubricant laws"),
+                   formula_note),
         Comparison("minimum film at the pitch point", float(result.minimum_film[i_c]),
                    float(result.formula_minimum[i_c]), result.formula_names[1], "m", None,
-                   "Newtonian isothermal formula; the solver uses the case's lubricant laws"),
+                   minimum_note),
     ]
     notes = [
         "Load sharing: ISO/TR 13989-1 linear form (1/3 - 2/3 - 1 for unrelieved spur gears). "
