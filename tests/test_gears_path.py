@@ -871,3 +871,21 @@ def test_the_mesh_note_describes_the_mesh_of_the_run(torque, warned):
     lines = [w for w in done.warnings if w.startswith("ehl.nx:")]
     assert bool(lines) is warned is (quoted > 0.15)
     assert ("under it, so no warning" in note) is not warned
+
+
+@pytest.mark.parametrize(("extra", "field", "words"), [
+    ('shaft_angle = "90 deg"', "gear.shaft_angle", "only parallel-axis external pairs"),
+    ('cone_angle = "30 deg"', "gear.cone_angle", "bevel, hypoid, worm and crossed-axis"),
+    ('helix_angle = ["20 deg", "25 deg"]', "gear.helix_angle", "expected one helix angle"),
+])
+def test_a_bevel_or_crossed_axis_pair_is_refused_in_words(extra, field, words):
+    """A bevel pair's shaft or cone angle, or a crossed-axis helical pair's two helix
+    angles, in [gear]: refused in one line naming the key and saying only parallel axes are
+    modelled (it said "unknown key (check the spelling)" and "expected a number or a string
+    like '1.0 rad'")."""
+    text = example_text("gear-fzg-c").replace('face_width = "14 mm"',
+                                              f'face_width = "14 mm"\n{extra}')
+    with pytest.raises(InputError) as info:
+        load_case(text)
+    message = str(info.value)
+    assert message.startswith(f"{field}: ") and words in message and "\n" not in message
