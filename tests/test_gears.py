@@ -187,6 +187,24 @@ def test_invalid_gears_refused(kwargs, word):
     assert "\n" not in str(info.value)
 
 
+@pytest.mark.parametrize(("teeth", "beta_deg"), [((8, 24), 0.0), ((12, 40), 15.0)])
+def test_undercut_is_refused_with_the_standards_limit(teeth, beta_deg):
+    """A z 8 pinion without shift (20 deg): refused as undercut, and the line now gives the
+    basic rack's limit for an unshifted gear, z_min = 2 cos beta / sin^2(alpha_t) (by hand
+    2 / sin^2 20 deg = 17.10; helical 15 deg: alpha_t = atan(tan 20 deg / cos 15 deg),
+    z_min 15.54), beside x_min = 1 - z sin^2(alpha_t) / (2 cos beta)."""
+    beta = beta_deg * DEG
+    alpha_t = math.atan(math.tan(20 * DEG) / math.cos(beta))
+    z_min = 2 * math.cos(beta) / math.sin(alpha_t) ** 2
+    x_min = 1 - teeth[0] * math.sin(alpha_t) ** 2 / (2 * math.cos(beta))
+    with pytest.raises(InputError, match="undercut") as info:
+        GearPair(teeth, 4.5e-3, 20 * DEG, beta, (0.0, 0.0), 14e-3)
+    text = str(info.value)
+    assert f"x_min = {x_min:.4f}" in text
+    assert f"z >= 2 cos beta / sin^2(alpha_t) = {z_min:.4g} teeth" in text
+    assert z_min == pytest.approx({0.0: 17.097, 15.0: 15.538}[beta_deg], abs=0.01)
+
+
 # --- flash temperature --------------------------------------------------------------------
 
 

@@ -9,7 +9,7 @@ import pytest
 from asperity.cases import load_case
 from asperity.ehl import Lubricant
 from asperity.errors import InputError
-from asperity.gears import GearPair, Thermal, solve_path
+from asperity.gears import GearPair, Thermal, dowson_higginson_range_note, solve_path
 from asperity.gears.path import EHLMesh
 from asperity.materials import STEEL, Material
 from asperity.plotting.gear import film_figure
@@ -220,3 +220,88 @@ def test_a_bulk_temperature_that_is_no_temperature_is_refused_naming_the_key(tex
     with pytest.raises(InputError) as exc:
         load_case(BRONZE_CASE.replace("bulk_temperature = 60", f"bulk_temperature = {text}"))
     assert exc.value.field == "operation.bulk_temperature" and "80 degC" in str(exc.value)
+
+
+PA66_CASE = """
+analysis = "gear"
+[gear]
+teeth = [18, 45]
+normal_module = "1.5 mm"
+face_width = "12 mm"
+[operation]
+torque = "3 N m"
+speed = "1500 rpm"
+bulk_temperature = 40
+[body1]
+youngs_modulus = "206 GPa"
+[body2]
+youngs_modulus = "3 GPa"
+poisson_ratio = 0.4
+name = "PA66"
+[lubricant]
+eta0 = "0.1 Pa s"
+alpha = "15 1/GPa"
+tau0 = "5 MPa"
+[surface1]
+kind = "ground"
+ra = "0.4 um"
+[surface2]
+kind = "ground"
+ra = "0.8 um"
+seed = 1
+[thermal]
+conductivity = [45, 0.25]
+density = [7850, 1140]
+specific_heat = [460, 1700]
+[ehl]
+points = 5
+"""
+
+
+def test_dowson_higginson_is_outside_its_range_for_a_polymer_wheel():
+    """A steel pinion on a PA66 wheel (z 18/45, m 1.5, b 12 mm, 3 N m at 1500 rpm, PA66
+    E 3 GPa, nu 0.4, oil 0.1 Pa s, 15 1/GPa): G = alpha E' = 105 by hand, against the
+    G = 2500 and 5000 of the solutions Dowson & Higginson fitted (1977). The report's row
+    compared the solver's pitch minimum film (414.3 nm) with the formula (301.9 nm, +37 %)
+    as if the formula applied. Reference: the pitch point by hand (rho_i = r_bi tan 20 deg,
+    w' = T / (r_b1 b), single contact) and Dowson-Higginson by hand, against the converged
+    solver with the formula's own oil model (Newtonian, Barus, incompressible): 415.1 nm on
+    129 nodes and 416.2 nm on 257, 37.5 % above the formula (more than 25 %), while the
+    central film lies within 2 % of Moes. The row now says the formula is outside its range."""
+    omega = 1500 * 2 * math.pi / 60
+    rb1, rb2 = 13.5e-3 * math.cos(20 * DEG), 33.75e-3 * math.cos(20 * DEG)
+    rho1, rho2 = rb1 * math.tan(20 * DEG), rb2 * math.tan(20 * DEG)
+    radius, w, u = rho1 * rho2 / (rho1 + rho2), 3.0 / rb1 / 12e-3, omega * rho1
+    e_star = 1 / ((1 - 0.3**2) / 206e9 + (1 - 0.4**2) / 3e9)
+    g = 15e-9 * 2 * e_star
+    assert g == pytest.approx(105.48, abs=0.01)
+    h_dh = _dowson_higginson(w, radius, u, 0.1, 15e-9, e_star)
+    pair = GearPair((18, 45), 1.5e-3, 20 * DEG, 0.0, (0.0, 0.0), 12e-3)
+    own_model = Lubricant(viscosity=0.1, pressure_viscosity=15e-9, viscosity_model="barus",
+                          compressible=False)
+    res = solve_path(pair, np.array([pair.points["C"]]), pinion_speed=omega, torque=3.0,
+                     body1=STEEL, body2=Material(3e9, 0.4), lubricant=own_model,
+                     roughness=0.9e-6)
+    assert res.converged[0] and res.load[0] == pytest.approx(w, rel=1e-9)
+    assert res.minimum_film[0] / h_dh > 1.25  # measured 1.375
+    assert res.central_film[0] == pytest.approx(res.formula_central[0], rel=0.05)
+    case = load_case(PA66_CASE)
+    from asperity.runners.gear import solve
+
+    done = outcome(case, *solve(case))
+    row = {c.quantity: c for c in done.comparisons}["minimum film at the pitch point"]
+    assert row.source == "Dowson-Higginson"
+    assert row.note.startswith("outside its range")
+    assert "G = alpha E' = 105 is far below" in row.note
+    central = {c.quantity: c for c in done.comparisons}["central film at the pitch point"]
+    assert not central.note.startswith("outside")
+
+
+@pytest.mark.parametrize(("g", "outside"), [(105.5, True), (1200.0, True), (1300.0, False),
+                                            (3212.0, False), (3846.0, False), (9000.0, False),
+                                            (11000.0, True)])
+def test_the_range_of_dowson_higginson_in_g(g, outside):
+    """Steel/bronze with a 20 1/GPa oil (E' = 2 E* = 160.6 GPa: G 3212) and the FZG example's
+    steel/steel with 17 1/GPa (E' 226.4 GPa: G 3846) keep the formula; the line lies a factor
+    2 beyond the fitted G = 2500 and 5000 (1250 and 10 000)."""
+    assert bool(dowson_higginson_range_note(g)) is outside

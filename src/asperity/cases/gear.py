@@ -123,6 +123,11 @@ _Modification = GearLength(0.0, MODIFICATION_MAX)
 _Tip = GearLength(0.0, TIP_DIAMETER_MAX, inclusive_low=False)
 
 
+#: ``[gear]`` keys of bevel, hypoid and crossed-axis pairs, refused as out of scope.
+NON_PARALLEL_KEYS = frozenset({"shaft_angle", "axis_angle", "crossing_angle", "cone_angle",
+                               "pitch_angle", "pitch_cone_angle", "offset", "hypoid_offset"})
+
+
 class GearSpec(CaseModel):
     """``[gear]``: the involute pair (ISO 21771); lists are ``[pinion, wheel]``."""
 
@@ -147,6 +152,34 @@ class GearSpec(CaseModel):
     """Tip relief [pinion, wheel], 0 to 1 mm ("10 um")."""
     crowning: tuple[_Modification, _Modification] = (0.0, 0.0)
     """Crowning heights [pinion, wheel], 0 to 1 mm (nonzero: an elliptical contact)."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _parallel_axes(cls, data):
+        """Refuse the keys of a bevel or crossed-axis pair in words (they were "unknown key
+        (check the spelling)"): only parallel-axis external pairs are modelled."""
+        if isinstance(data, dict):
+            for key in data:
+                if key in NON_PARALLEL_KEYS:
+                    raise InputError(f"gear.{key}", "", problem=(
+                        "only parallel-axis external pairs (spur and helical, ISO 21771) are "
+                        "modelled; bevel, hypoid, worm and crossed-axis helical gears are not "
+                        "(their contact and sliding differ from a cylindrical pair's): give "
+                        "the pair's teeth, module and helix angle on parallel shafts"))
+        return data
+
+    @field_validator("helix_angle", mode="before")
+    @classmethod
+    def _one_helix_angle(cls, value):
+        """Refuse two helix angles: a parallel-axis pair has one, of opposite hand on the two
+        gears; two angles that do not cancel are crossed axes (shaft angle beta1 + beta2)."""
+        if isinstance(value, list | tuple):
+            raise ValueError(
+                "expected one helix angle, the reference-circle angle of both gears (on "
+                "parallel shafts the wheel's is the same of opposite hand); two angles of a "
+                "crossed-axis helical pair (shaft angle beta1 + beta2) are not modelled, "
+                f"got {list(value)}")
+        return value
 
     @field_validator("teeth", mode="before")
     @classmethod

@@ -220,10 +220,13 @@ class GearPair:
         tip_thickness = []
         for i, (z, x, name) in enumerate(((z1, x1, "pinion"), (z2, x2, "wheel"))):
             x_min = 1.0 - z * math.sin(alpha_t) ** 2 / (2.0 * cos_b)
+            z_min = 2.0 * cos_b / math.sin(alpha_t) ** 2  # x_min = 0
             if x < x_min - 1e-9:
                 raise InputError("profile_shift", (
                     f"no undercut: the {name} shift x = {x:.4f} is below x_min = {x_min:.4f} = "
-                    f"1 - z sin^2(alpha_t) / (2 cos beta) for z = {z}; raise the profile shift"))
+                    f"1 - z sin^2(alpha_t) / (2 cos beta) for z = {z} (without shift a gear "
+                    f"needs z >= 2 cos beta / sin^2(alpha_t) = {z_min:.4g}"
+                    " teeth); raise the profile shift"))
             s_ref = mt * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
             alpha_a = math.acos(db[i] / da[i])
             s_tip = da[i] * (s_ref / d[i] + involute(alpha_t) - involute(alpha_a))

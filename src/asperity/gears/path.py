@@ -170,7 +170,9 @@ class GearPathResult:
     formulas; ``specific_film`` lambda; ``ehl_friction``, ``asperity_share``, ``friction``;
     ``flash_temperature`` (K) and ``contact_temperature`` (deg C); ``converged`` and
     ``sweeps`` per solve (a solve whose minimum film is not positive counts as not converged),
-    ``nodes`` the node count along x of each solve (0 where unloaded; :func:`position_mesh`).
+    ``nodes`` the node count along x of each solve (0 where unloaded; :func:`position_mesh`),
+    ``mesh_error`` the estimated relative error of its central film on that mesh
+    (:func:`film_mesh_error`; 0 where unloaded).
     With a Newtonian lubricant (no Eyring stress) ``ehl_friction`` is NaN, and so are
     ``friction`` and the temperatures wherever the film carries part of the load.
     """
@@ -199,6 +201,7 @@ class GearPathResult:
     converged: np.ndarray
     sweeps: np.ndarray
     nodes: np.ndarray
+    mesh_error: np.ndarray
     line: bool
     warnings: list = field(default_factory=list)
 
@@ -478,5 +481,5 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         composite_roughness=float(roughness), specific_film=lam, ehl_friction=out["mu"],
         asperity_share=f_asp, friction=mu, flash_temperature=flash,
         contact_temperature=thermal.bulk_temperature + flash, peclet=pe, converged=converged,
-        sweeps=sweeps, nodes=nodes, line=not pair.crowned, warnings=notes,
+        sweeps=sweeps, nodes=nodes, mesh_error=mesh_error, line=not pair.crowned, warnings=notes,
     )
