@@ -792,7 +792,9 @@ def solve_steady(
         value is used throughout.
     load_gain : float, optional
         Separation shift per sweep per unit relative load error (dimensionless film units);
-        default 0.05 (point contact), 0.01 (line contact) on grids coarser than the default
+        default the problem's own, ``problem.load_gain()``: ``0.05 H_c`` on every grid for a
+        rigid point contact (:meth:`PointContact.load_gain`), else None, and then
+        0.05 (point contact), 0.01 (line contact) on grids coarser than the default
         mesh. With the default, a line contact's grids from the default mesh on (when
         sequenced from a converged coarser grid) use no gain: before each far-field refresh
         the state is moved along the :class:`LoadTangent` of the next coarser grid (its
@@ -823,6 +825,8 @@ def solve_steady(
     SteadyResult
     """
     line, method = check_contact_and_method(problem, method)
+    if load_gain is None:
+        load_gain = problem.load_gain()
     scale_gain = load_gain is None
     if load_gain is None:
         load_gain = LINE_LOAD_GAIN if line else POINT_LOAD_GAIN

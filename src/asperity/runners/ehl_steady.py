@@ -44,7 +44,7 @@ def run(case, progress=None) -> Outcome:
                            tol=case.solver.tolerance,
                            max_iter=case.solver.sweep_limit(line),
                            boundary_friction=case.solver.boundary_friction,
-                           load_gain=problem.load_gain(), callback=callback)
+                           callback=callback)
     lub = problem.lubricant
     hz = problem.hertz
     ds = xr.Dataset(
