@@ -363,7 +363,8 @@ def test_hamrock_dowsons_ehl_fit_is_not_set_beside_a_rigid_contact_as_if_it_appl
     at 5 N, 1 m/s in a 0.5 Pa s oil of 20 1/GPa is rigid-piezoviscous: Moes M =
     W (2U)^-3/4 = 2.28 from E' = 230.8 GPa (computed here), alpha times the rigid film's
     pressure 1.1; no Brewe-Hamrock-Taylor row, and the fit's rows say that they are outside
-    its regime. The gear case's rows (M > 10) say nothing of it."""
+    its regime. Nor is it set beside a soft contact that has the soft-EHL rows. The gear
+    case's rows (M > 10) say nothing of it."""
     from types import SimpleNamespace
 
     from asperity.cases import load_case
@@ -398,6 +399,19 @@ def test_hamrock_dowsons_ehl_fit_is_not_set_beside_a_rigid_contact_as_if_it_appl
     assert len(rows) == 2
     for row in rows:
         assert f"outside the fit's regime: Moes M = {moes_m:.3g} < 10" in row.note
+    # a PDMS ball (6.35 mm, 1 MPa, 0.5) on glass, 0.5 N, 0.02 m/s, silicone oil (0.1 Pa s,
+    # 15 1/GPa): p_h = (6 w E*^2 / (pi^3 R^2))^(1/3) = 162 kPa, alpha p_h = 0.0024, so the
+    # soft-EHL rows are given, and the piezoviscous fit (72 nm beside their 2.5 um) is not
+    pdms = '"1 MPa"\npoisson_ratio = 0.5'
+    soft_text = (glass_text.replace('"70 GPa"\npoisson_ratio = 0.22', pdms, 1)
+                 .replace('"10 mm"', '"6.35 mm"').replace('"0.1 m/s"', '"0.02 m/s"')
+                 .replace('"1.4 Pa s"', '"0.1 Pa s"').replace('"5.9 1/GPa"', '"15 1/GPa"'))
+    e_star = 1 / (0.75 / 1e6 + (1 - 0.22**2) / 70e9)
+    p_h = (6 * 0.5 * e_star**2 / (np.pi**3 * 6.35e-3**2)) ** (1 / 3)
+    assert 15e-9 * p_h == pytest.approx(0.0024, abs=1e-4)
+    soft = film_formulas(load_case(soft_text).problem())
+    assert "hamrock_dowson_soft_central_film_m" in soft
+    assert "hamrock_dowson_central_film_m" not in soft
     gear = PointContact(RX, RY, LOAD, SPEED, SPEED, Material(210e9, 0.3), Material(210e9, 0.3),
                         Lubricant(ETA0, ALPHA, viscosity_model="barus", compressible=False))
     assert gear.M > 10

@@ -373,16 +373,17 @@ def film_formulas(problem) -> dict[str, float]:
     contact is isoviscous and ``M < ELASTIC_M``. Point contact: Nijenbanning, Venner & Moes
     (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with alpha >
     0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers 1 <= k <= 8;
-    left out where Brewe-Hamrock-Taylor's rigid-isoviscous row is given, and their rows note
-    the regime below ``ELASTIC_M``: :data:`RIGID_FIT_NOTE`), Chittenden et al.'s (1985) where
-    ``ry < rx`` (k < 1, entrainment along the major axis: a traction drive's contact, where
-    Hamrock-Dowson was shown before). Where the viscosity hardly rises over the contact
-    (``alpha p_h <= ISOVISCOUS``: a soft or a water-lubricated contact), the contact deforms
-    (``M >= ELASTIC_M``) and ``ry >= rx``, also Hamrock & Dowson's (1978) isoviscous-elastic
-    films (soft EHL); a PDMS ball on glass in water-glycerol (M = 960, L = 0) had only
-    Nijenbanning's film beside it. Below ``ELASTIC_M`` a contact is set beside Brewe, Hamrock &
-    Taylor's (1979) rigid-isoviscous minimum film instead where alpha times its own pressure
-    scale (:func:`asperity.ehl.formulas.rigid_mean_pressure`) is at most ``ISOVISCOUS``.
+    left out where Brewe-Hamrock-Taylor's rigid-isoviscous or the soft-EHL rows are given, and
+    their rows note the regime below ``ELASTIC_M``: :data:`RIGID_FIT_NOTE`), Chittenden et
+    al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the major axis: a traction drive's
+    contact, where Hamrock-Dowson was shown before). Where the viscosity hardly rises over the
+    contact (``alpha p_h <= ISOVISCOUS``: a soft or a water-lubricated contact), the contact
+    deforms (``M >= ELASTIC_M``) and ``ry >= rx``, also Hamrock & Dowson's (1978)
+    isoviscous-elastic films (soft EHL); a PDMS ball on glass in water-glycerol (M = 960, L =
+    0) had only Nijenbanning's film beside it. Below ``ELASTIC_M`` a contact is set beside
+    Brewe, Hamrock & Taylor's (1979) rigid-isoviscous minimum film instead where alpha times
+    its own pressure scale (:func:`asperity.ehl.formulas.rigid_mean_pressure`) is at most
+    ``ISOVISCOUS``.
 
     Returns
     -------
@@ -429,9 +430,11 @@ def film_formulas(problem) -> dict[str, float]:
                 problem.load, problem.rx, rigid) <= ISOVISCOUS:
             values["brewe_hamrock_taylor_minimum_film_m"] = rigid
     if (lub.pressure_viscosity > 0 and problem.ry >= problem.rx
-            and "brewe_hamrock_taylor_minimum_film_m" not in values):
-        # rigid-isoviscous: the piezoviscous-elastic fit gave the glass ball in glycerol
-        # 440 nm against its solution's 8.2 um
+            and "brewe_hamrock_taylor_minimum_film_m" not in values
+            and "hamrock_dowson_soft_central_film_m" not in values):
+        # rigid- or elastic-isoviscous: the piezoviscous-elastic fit gave the glass ball in
+        # glycerol 440 nm against its solution's 8.2 um, a PDMS ball in a silicone oil of
+        # 15 1/GPa (alpha p_h = 0.002) 72 nm against the soft fit's 2.5 um
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
                       hamrock_dowson_minimum_film_m=hd.minimum)
