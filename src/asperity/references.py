@@ -429,16 +429,16 @@ def film_formulas(problem) -> dict[str, float]:
         if lub.pressure_viscosity * formulas.rigid_mean_pressure(
                 problem.load, problem.rx, rigid) <= ISOVISCOUS:
             values["brewe_hamrock_taylor_minimum_film_m"] = rigid
-    if (lub.pressure_viscosity > 0 and problem.ry >= problem.rx
-            and "brewe_hamrock_taylor_minimum_film_m" not in values
-            and "hamrock_dowson_soft_central_film_m" not in values):
-        # rigid- or elastic-isoviscous: the piezoviscous-elastic fit gave the glass ball in
-        # glycerol 440 nm against its solution's 8.2 um, a PDMS ball in a silicone oil of
-        # 15 1/GPa (alpha p_h = 0.002) 72 nm against the soft fit's 2.5 um
+    # rigid- or elastic-isoviscous: the piezoviscous-elastic fits are left out (Hamrock-Dowson
+    # gave the glass ball in glycerol 440 nm against its solution's 8.2 um, a PDMS ball in a
+    # silicone oil of 15 1/GPa, alpha p_h = 0.002, 72 nm against the soft fit's 2.5 um)
+    isoviscous_rows = {"brewe_hamrock_taylor_minimum_film_m",
+                       "hamrock_dowson_soft_central_film_m"} & values.keys()
+    if lub.pressure_viscosity > 0 and problem.ry >= problem.rx and not isoviscous_rows:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
                       hamrock_dowson_minimum_film_m=hd.minimum)
-    elif lub.pressure_viscosity > 0:  # entrainment along the major axis (k < 1): outside
+    elif lub.pressure_viscosity > 0 and problem.ry < problem.rx:  # k < 1: outside
         # Hamrock-Dowson's fit (1 <= k <= 8), inside Chittenden's (ry/rx from about 1/50)
         ch = formulas.chittenden_point(problem.load, problem.rx, problem.ry, *args)
         values.update(chittenden_central_film_m=ch.central,
