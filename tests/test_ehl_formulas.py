@@ -353,3 +353,66 @@ def test_brewe_hamrock_taylor_against_a_rigid_ball_solved_here():
     assert (c8, c16) == pytest.approx((0.2768, 0.3115), abs=2e-3)
     solved = (12 * (2 * c16 - c8) * (2 * 12.7e-3) ** 1.5 / 4.0) ** 2
     assert solved == pytest.approx(film, rel=0.02)
+
+
+def test_hamrock_dowsons_ehl_fit_is_not_set_beside_a_rigid_contact_as_if_it_applied():
+    """Hamrock & Dowson (1977) fitted piezoviscous-elastic solutions. The glass ball in
+    glycerol (R = 10 mm, 0.5 N, 0.1 m/s, 1.4 Pa s, 5.9 1/GPa: M = 0.79, rigid-isoviscous) was
+    shown its 440.5 nm central film beside a solution of 8.2 um; where Brewe-Hamrock-Taylor's
+    rigid-isoviscous row is given the fit is left out. A steel ball (R = 10 mm, 210 GPa, 0.3)
+    at 5 N, 1 m/s in a 0.5 Pa s oil of 20 1/GPa is rigid-piezoviscous: Moes M =
+    W (2U)^-3/4 = 2.28 from E' = 230.8 GPa (computed here), alpha times the rigid film's
+    pressure 1.1; no Brewe-Hamrock-Taylor row, and the fit's rows say that they are outside
+    its regime. Nor is it set beside a soft contact that has the soft-EHL rows. The gear
+    case's rows (M > 10) say nothing of it."""
+    from types import SimpleNamespace
+
+    from asperity.cases import load_case
+    from asperity.ehl import Lubricant, PointContact
+    from asperity.materials import Material
+    from asperity.references import ehl_steady_comparisons, film_formulas
+
+    glass_text = "\n".join([
+        'analysis = "ehl-steady"', 'title = "glass ball in glycerol"',
+        '[body1]', 'youngs_modulus = "70 GPa"', "poisson_ratio = 0.22",
+        '[body2]', 'youngs_modulus = "70 GPa"', "poisson_ratio = 0.22",
+        '[contact]', 'type = "point"', 'rx = "10 mm"', 'ry = "10 mm"', 'load = "0.5 N"',
+        '[speeds]', 'u = "0.1 m/s"',
+        '[lubricant]', 'eta0 = "1.4 Pa s"', 'alpha = "5.9 1/GPa"', 'viscosity_model = "barus"',
+        'density_model = "incompressible"', ""])
+    glass = film_formulas(load_case(glass_text).problem())
+    assert "brewe_hamrock_taylor_minimum_film_m" in glass
+    assert not any(key.startswith(("hamrock_dowson", "chittenden")) for key in glass)
+
+    steel_text = (glass_text.replace('"70 GPa"', '"210 GPa"').replace("0.22", "0.3")
+                  .replace('"0.5 N"', '"5 N"').replace('"0.1 m/s"', '"1 m/s"')
+                  .replace('"1.4 Pa s"', '"0.5 Pa s"').replace('"5.9 1/GPa"', '"20 1/GPa"'))
+    steel = load_case(steel_text).problem()
+    e = 2 / (2 * (1 - 0.3**2) / 210e9)
+    moes_m = 5 / (e * 0.01**2) * (2 * 0.5 * 1.0 / (e * 0.01)) ** -0.75
+    assert moes_m == pytest.approx(2.28, abs=0.005)
+    films = film_formulas(steel)
+    assert "brewe_hamrock_taylor_minimum_film_m" not in films
+    assert {"hamrock_dowson_central_film_m", "hamrock_dowson_minimum_film_m"} <= set(films)
+    result = SimpleNamespace(central_film=2e-6, minimum_film=1.5e-6, max_pressure=1e8)
+    rows = [r for r in ehl_steady_comparisons(steel, result) if "Hamrock-Dowson" in r.source]
+    assert len(rows) == 2
+    for row in rows:
+        assert f"outside the fit's regime: Moes M = {moes_m:.3g} < 10" in row.note
+    # a PDMS ball (6.35 mm, 1 MPa, 0.5) on glass, 0.5 N, 0.02 m/s, silicone oil (0.1 Pa s,
+    # 15 1/GPa): p_h = (6 w E*^2 / (pi^3 R^2))^(1/3) = 162 kPa, alpha p_h = 0.0024, so the
+    # soft-EHL rows are given, and the piezoviscous fit (72 nm beside their 2.5 um) is not
+    pdms = '"1 MPa"\npoisson_ratio = 0.5'
+    soft_text = (glass_text.replace('"70 GPa"\npoisson_ratio = 0.22', pdms, 1)
+                 .replace('"10 mm"', '"6.35 mm"').replace('"0.1 m/s"', '"0.02 m/s"')
+                 .replace('"1.4 Pa s"', '"0.1 Pa s"').replace('"5.9 1/GPa"', '"15 1/GPa"'))
+    e_star = 1 / (0.75 / 1e6 + (1 - 0.22**2) / 70e9)
+    p_h = (6 * 0.5 * e_star**2 / (np.pi**3 * 6.35e-3**2)) ** (1 / 3)
+    assert 15e-9 * p_h == pytest.approx(0.0024, abs=1e-4)
+    soft = film_formulas(load_case(soft_text).problem())
+    assert "hamrock_dowson_soft_central_film_m" in soft
+    assert not {"hamrock_dowson_central_film_m", "chittenden_central_film_m"} & soft.keys()
+    gear = PointContact(RX, RY, LOAD, SPEED, SPEED, Material(210e9, 0.3), Material(210e9, 0.3),
+                        Lubricant(ETA0, ALPHA, viscosity_model="barus", compressible=False))
+    assert gear.M > 10
+    assert not [r for r in ehl_steady_comparisons(gear, result) if "regime" in r.note]

@@ -285,3 +285,23 @@ def test_without_the_refresh_fallback_the_low_sliding_eyring_roller_does_not_con
     monkeypatch.setattr(solver, "solve_line_newton", lambda state, target, **options: False)
     prob = load_case(ROLLER_LOW_SLIDING + 'tau0 = "10 MPa"\n').problem()
     assert not solve_steady(prob).converged
+
+
+def test_an_unconverged_line_contact_says_what_its_sweep_count_counts():
+    """A line contact's relaxation that ends unconverged is solved by Newton and checked by a
+    second relaxation, both counted in the sweeps: the seed's line contact at
+    ``max_sweeps = 3`` (one grid, a tolerance of 1e-15 that no check reaches) reported "did
+    not converge in 6 sweeps" beside "solver.max_sweeps (now 3)". The note now says the 6 are
+    at most 3 of relaxation and then up to 3 checking Newton's solution."""
+    from asperity.runners import run_case
+
+    text = example_text("holmes-smooth-line")
+    for old, new in (("tolerance = 1e-5", "tolerance = 1e-15"), ("levels = 2 ", "levels = 1 "),
+                     ("max_sweeps = 40000", "max_sweeps = 3")):
+        assert old in text
+        text = text.replace(old, new)
+    out = run_case(load_case(text))
+    assert not out.converged
+    (note,) = [n for n in out.notes if "did not converge" in n]
+    assert ("did not converge in 6 sweeps on the finest grid (3 at most of relaxation, then up "
+            "to 3 checking Newton's solution; residual") in note

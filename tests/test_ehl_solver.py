@@ -98,6 +98,16 @@ def test_not_converged_is_reported():
     assert r.sweeps == 5
 
 
+@pytest.mark.parametrize("limit", [3, 5, 13])
+def test_the_sweep_limit_is_the_count_reported(limit):
+    """``max_iter`` 3 or 5 ran a whole refresh cycle of 10 sweeps and reported 10 (13: 20);
+    the limit is now the number of sweeps run and reported, the residual taken at its end."""
+    r = solve_steady(gear_point(), nx=33, ny=17, levels=1, max_iter=limit)
+    assert not r.converged
+    assert r.sweeps == r.total_sweeps == limit
+    assert r.history[-1][0] == limit
+
+
 def test_separated_iterate_is_reported_not_converged(monkeypatch):
     """An iteration that lost all its pressure (surfaces separated, as a ball bearing's did
     before the density term) ends as a result that says it did not converge, with no

@@ -370,19 +370,21 @@ def film_formulas(problem) -> dict[str, float]:
     """The Newtonian film-thickness formulas that apply to an EHL problem, m.
 
     Line contact: Moes (1992) central film, and Dowson-Higginson (1977) minimum film when the
-    pressure-viscosity coefficient is positive; Martin's (1916) rigid-isoviscous film where
-    the contact is isoviscous and ``M < ELASTIC_M``. Point contact: Nijenbanning, Venner & Moes
-    (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with
-    alpha > 0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers
-    1 <= k <= 8), Chittenden et al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the
-    major axis: a traction drive's contact, where Hamrock-Dowson was shown before). Where the
-    viscosity hardly rises over the contact (``alpha p_h <= ISOVISCOUS``: a soft or a
-    water-lubricated contact), the contact deforms (``M >= ELASTIC_M``) and ``ry >= rx``,
-    also Hamrock & Dowson's (1978) isoviscous-elastic films (soft EHL); a PDMS ball on glass
-    in water-glycerol (M = 960, L = 0) had only Nijenbanning's film beside it. Below
-    ``ELASTIC_M`` a contact is set beside Brewe, Hamrock & Taylor's (1979) rigid-isoviscous
-    minimum film instead where alpha times its own pressure scale
-    (:func:`asperity.ehl.formulas.rigid_mean_pressure`) is at most ``ISOVISCOUS``.
+    pressure-viscosity coefficient is positive; Martin's (1916) rigid-isoviscous film where the
+    contact is isoviscous and ``M < ELASTIC_M``. Point contact: Nijenbanning, Venner & Moes
+    (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with alpha >
+    0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers 1 <= k <= 8;
+    left out where Brewe-Hamrock-Taylor's rigid-isoviscous or the soft-EHL rows are given, and
+    their rows note the regime below ``ELASTIC_M``: :data:`RIGID_FIT_NOTE`), Chittenden et
+    al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the major axis: a traction drive's
+    contact, where Hamrock-Dowson was shown before). Where the viscosity hardly rises over the
+    contact (``alpha p_h <= ISOVISCOUS``: a soft or a water-lubricated contact), the contact
+    deforms (``M >= ELASTIC_M``) and ``ry >= rx``, also Hamrock & Dowson's (1978)
+    isoviscous-elastic films (soft EHL); a PDMS ball on glass in water-glycerol (M = 960, L =
+    0) had only Nijenbanning's film beside it. Below ``ELASTIC_M`` a contact is set beside
+    Brewe, Hamrock & Taylor's (1979) rigid-isoviscous minimum film instead where alpha times
+    its own pressure scale (:func:`asperity.ehl.formulas.rigid_mean_pressure`) is at most
+    ``ISOVISCOUS``.
 
     Returns
     -------
@@ -428,11 +430,16 @@ def film_formulas(problem) -> dict[str, float]:
         if lub.pressure_viscosity * formulas.rigid_mean_pressure(
                 problem.load, problem.rx, rigid) <= ISOVISCOUS:
             values["brewe_hamrock_taylor_minimum_film_m"] = rigid
-    if lub.pressure_viscosity > 0 and problem.ry >= problem.rx:
+    # rigid- or elastic-isoviscous: the piezoviscous-elastic fits are left out (Hamrock-Dowson
+    # gave the glass ball in glycerol 440 nm against its solution's 8.2 um, a PDMS ball in a
+    # silicone oil of 15 1/GPa, alpha p_h = 0.002, 72 nm against the soft fit's 2.5 um)
+    isoviscous_rows = {"brewe_hamrock_taylor_minimum_film_m",
+                       "hamrock_dowson_soft_central_film_m"} & values.keys()
+    if lub.pressure_viscosity > 0 and problem.ry >= problem.rx and not isoviscous_rows:
         hd = formulas.hamrock_dowson_point(problem.load, problem.rx, problem.ry, *args)
         values.update(hamrock_dowson_central_film_m=hd.central,
                       hamrock_dowson_minimum_film_m=hd.minimum)
-    elif lub.pressure_viscosity > 0:  # entrainment along the major axis (k < 1): outside
+    elif lub.pressure_viscosity > 0 and problem.ry < problem.rx:  # k < 1: outside
         # Hamrock-Dowson's fit (1 <= k <= 8), inside Chittenden's (ry/rx from about 1/50)
         ch = formulas.chittenden_point(problem.load, problem.rx, problem.ry, *args)
         values.update(chittenden_central_film_m=ch.central,
@@ -469,6 +476,16 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
 # The central-film fits (Moes, Nijenbanning) are checked at 5 % when the lubricant is their own
 # model; Dowson-Higginson and Hamrock-Dowson are regressions over other solutions: shown only.
 _CHECKED_FITS = {"moes_central_film_m", "nijenbanning_central_film_m"}
+#: Fits to piezoviscous-elastic solutions, outside their regime in a contact that hardly
+#: deforms (Moes M < ``ELASTIC_M``).
+_ELASTIC_FITS = {"hamrock_dowson_central_film_m", "hamrock_dowson_minimum_film_m"}
+#: The note of an :data:`_ELASTIC_FITS` row below ``ELASTIC_M`` (Hamrock & Dowson 1977 fitted
+#: solutions of deforming, piezoviscous contacts; a rigid-piezoviscous ball at M = 2.3,
+#: L = 21 gets 1.56 um from it against Nijenbanning's 2.11 um, which covers the rigid limits).
+RIGID_FIT_NOTE = (
+    "; outside the fit's regime: Moes M = {M:.3g} < {limit:g}, the contact hardly deforms, "
+    "and the fit was made to piezoviscous-elastic solutions (Nijenbanning's row covers the "
+    "rigid regimes)")
 
 
 def film_formula_comparisons(problem, central_film: float, minimum_film: float,
@@ -507,6 +524,8 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
         row_note = own_note if own_model else other_note
         if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
             row_note += _LOW_L_NOTES.get(key, "")
+        if key in _ELASTIC_FITS and problem.M < ELASTIC_M:
+            row_note += RIGID_FIT_NOTE.format(M=problem.M, limit=ELASTIC_M)
         rows.append(Comparison(label + quantity, films[attribute], film, cite(source, anchor),
                                "m", 0.05 if check else None, row_note + note))
     return rows

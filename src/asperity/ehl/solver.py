@@ -611,8 +611,12 @@ def _film_scale(state) -> float:
 
 def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_offset=0,
            tangent=None, load_factor=1.0, stall_refresh=None, give_up=False):
-    """Relax one grid to convergence; return (converged, residual, sweeps, history).
+    """Relax one grid to convergence in at most ``max_sweeps`` sweeps; return (converged,
+    residual, sweeps, history).
 
+    The residual is tested at every far-field refresh, ``refresh`` sweeps apart; the cycle
+    that reaches ``max_sweeps`` ends there (a limit of 3 or 5 used to run a whole cycle and
+    report 10 sweeps).
     The load target is ``load_factor`` times the problem's. Without ``tangent`` the
     separation is shifted by ``gain`` times the relative load error after every sweep; with
     a :class:`LoadTangent` the state is moved along it to remove the load error before every
@@ -648,7 +652,7 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
         if tangent is not None and sweeps:
             tangent.correct(state, load_err)
         state.refresh()
-        for _ in range(refresh):
+        for _ in range(min(refresh, max_sweeps - sweeps)):  # the limit counts sweeps
             dp, dh = state.sweep(method)
             sweeps += 1
             load_err = (state.load() - target) / target
@@ -779,8 +783,11 @@ def solve_steady(
         and the mean edge film) and the relative load error are
         all below ``tol`` at a far-field refresh.
     max_iter : int
-        Sweep limit per grid; a solve whose finest grid reaches it returns
-        ``converged=False`` (the old spelling ``max_sweeps`` is accepted with a
+        Sweep limit per grid (the sweeps run, also within a refresh cycle); a solve whose
+        finest grid reaches it returns ``converged=False``. A line contact's grid solved by
+        Newton after its relaxation (see ``method``) checks that solution by a second
+        relaxation of at most ``min(max_iter, NEWTON_CHECK_SWEEPS)`` sweeps, counted in its
+        ``sweeps`` too: up to twice the limit (the old spelling ``max_sweeps`` is accepted with a
         DeprecationWarning). A point contact's coarser grids stop at
         ``min(max_iter, COARSE_SWEEPS)``, converged or not: they only give the next grid
         its start (:data:`COARSE_SWEEPS`).
@@ -792,7 +799,9 @@ def solve_steady(
         value is used throughout.
     load_gain : float, optional
         Separation shift per sweep per unit relative load error (dimensionless film units);
-        default 0.05 (point contact), 0.01 (line contact) on grids coarser than the default
+        default the problem's own, ``problem.load_gain()``: ``0.05 H_c`` on every grid for a
+        rigid point contact (:meth:`PointContact.load_gain`), else None, and then
+        0.05 (point contact), 0.01 (line contact) on grids coarser than the default
         mesh. With the default, a line contact's grids from the default mesh on (when
         sequenced from a converged coarser grid) use no gain: before each far-field refresh
         the state is moved along the :class:`LoadTangent` of the next coarser grid (its
@@ -823,6 +832,8 @@ def solve_steady(
     SteadyResult
     """
     line, method = check_contact_and_method(problem, method)
+    if load_gain is None:
+        load_gain = problem.load_gain()
     scale_gain = load_gain is None
     if load_gain is None:
         load_gain = LINE_LOAD_GAIN if line else POINT_LOAD_GAIN

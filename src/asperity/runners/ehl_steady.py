@@ -18,7 +18,7 @@ from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
 from ..ehl.sides import inlet_probe, side_probe
-from ..ehl.solver import Y_LINES_BELOW
+from ..ehl.solver import NEWTON_CHECK_SWEEPS, Y_LINES_BELOW
 from ..references import ISOVISCOUS, ehl_steady_comparisons, film_formulas, lubricant_laws
 from ..results import Outcome, variable
 
@@ -44,7 +44,7 @@ def run(case, progress=None) -> Outcome:
                            tol=case.solver.tolerance,
                            max_iter=case.solver.sweep_limit(line),
                            boundary_friction=case.solver.boundary_friction,
-                           load_gain=problem.load_gain(), callback=callback)
+                           callback=callback)
     lub = problem.lubricant
     hz = problem.hertz
     ds = xr.Dataset(
@@ -92,8 +92,13 @@ def run(case, progress=None) -> Outcome:
         notes.append(f"The film formulas are Newtonian, isothermal fits; the solution uses "
                      f"{lubricant_laws(lub)}, so they are shown for orientation only.")
     if not res.converged:
+        limit = case.solver.sweep_limit(line)
+        counted = ("" if res.sweeps <= limit else  # a line contact's Newton solution checked
+                   f"{limit} at most of relaxation, then up to {min(limit, NEWTON_CHECK_SWEEPS)} "
+                   "checking Newton's solution; ")
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
-                     f"(residual {res.residual:.2e}); the numbers above are not trustworthy."
+                     f"({counted}residual {res.residual:.2e}); the numbers above are not "
+                     "trustworthy."
                      + (isoviscous_line_advice(problem, res) or stall_advice(case, res)))
     if not line and (res.y_lines or not res.converged):
         notes += _cell_advice(res)
