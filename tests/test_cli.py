@@ -107,58 +107,47 @@ BAD_EDITS = [
 ]
 
 
+def _edited_example(name, path, edits):
+    """A built-in example with each ``(old, new)`` text edit made (every ``old`` must be in
+    it), written to ``path``."""
+    text = runner.invoke(app, ["example", name]).output
+    for old, new in edits:
+        assert old in text
+        text = text.replace(old, new)
+    path.write_text(text)
+    return path
+
+
+def _run_quietly(case, out, timeout):
+    """``asperity run CASE --out OUT --quiet`` in a fresh process, as a user types it."""
+    return subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
+                           str(out), "--quiet"], capture_output=True, text=True,
+                          timeout=timeout)
+
+
 @pytest.mark.parametrize("old, new, field", BAD_EDITS)
 def test_bad_case_file_exits_2_with_one_line(tmp_path, old, new, field):
     text = runner.invoke(app, ["example", "gear-dry-hertz"]).output
     assert old in text
     case = tmp_path / "bad.toml"
     case.write_text(text.replace(old, new))
-    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
-                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
-                          timeout=120)
+    proc = _run_quietly(case, tmp_path / "o", timeout=120)
     assert proc.returncode == 2, proc.stderr
     lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and lines[0].startswith(f"error: {field}"), proc.stderr
     assert "Traceback" not in proc.stderr + proc.stdout
 
 
-POINT_CONTACT = """
-title = "point contact"
-analysis = "ehl-steady"
-reduced_modulus = "227 GPa"
-[contact]
-type = "point"
-rx = "19.1 mm"
-ry = "151 mm"
-load = "962 N"
-[speeds]
-u = "25 m/s"
-xi = 0.25
-[lubricant]
-eta0 = "0.005 Pa s"
-alpha = "11.1 1/GPa"
-[grid]
-nx = 81
-ny = 65
-x_min = -2.5
-x_max = 1.5
-y_min = -2.0
-y_max = 2.0
-[solver]
-levels = 1
-max_sweeps = 3
-"""
 
 
 def test_unconverged_run_exits_3_saying_why_and_what_to_change(tmp_path):
-    """A steady point contact given 3 sweeps does not converge: exit code 3 and one error line
-    with the solver's own reason and the key to raise (it had said only "the solver did not
-    converge; see report.html")."""
-    case = tmp_path / "point.toml"
-    case.write_text(POINT_CONTACT)
-    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
-                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
-                          timeout=300)
+    """The seed's smooth point contact given 3 sweeps does not converge: exit code 3 and one
+    error line with the solver's own reason and the key to raise (it had said only "the solver
+    did not converge; see report.html")."""
+    case = _edited_example("holmes-smooth-point", tmp_path / "point.toml", (
+        ("nx = 257", "nx = 81"), ("ny = 129", "ny = 65"),
+        ("levels = 3 ", "levels = 1\nmax_sweeps = 3 ")))
+    proc = _run_quietly(case, tmp_path / "o", timeout=300)
     assert proc.returncode == 3, proc.stderr
     errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("error:")]
     assert len(errors) == 1 and "Traceback" not in proc.stderr, proc.stderr
@@ -174,15 +163,9 @@ def test_missing_case_file_and_unknown_example():
 
 def test_starved_inlet_is_one_warning_line(tmp_path):
     """An EHL domain starting inside the pressure build-up runs, with one ``warning:`` line."""
-    text = runner.invoke(app, ["example", "holmes-smooth-point"]).output
-    for old, new in (("x_min = -2.5", "x_min = -1.1"), ("nx = 257", "nx = 105")):
-        assert old in text
-        text = text.replace(old, new)
-    case = tmp_path / "short.toml"
-    case.write_text(text)
-    proc = subprocess.run([sys.executable, "-m", "asperity.cli", "run", str(case), "--out",
-                           str(tmp_path / "o"), "--quiet"], capture_output=True, text=True,
-                          timeout=300)
+    case = _edited_example("holmes-smooth-point", tmp_path / "short.toml",
+                           (("x_min = -2.5", "x_min = -1.1"), ("nx = 257", "nx = 105")))
+    proc = _run_quietly(case, tmp_path / "o", timeout=300)
     assert proc.returncode == 0, proc.stderr
     lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and lines[0].startswith(
