@@ -249,6 +249,10 @@ def test_a_rigid_contact_gets_a_default_domain_and_mesh_on_its_inlet_length():
     share = float(line.split("has (1 - 1.6/S)^2 of its film: ")[1].split(" %")[0]) / 100
     unbounded = scale * 0.351**2  # C = 0.351 by the same solve extrapolated in S (1/S)
     assert share == pytest.approx(film / unbounded, abs=0.03)
+    # the default domain is at the 100 semi-axes a case takes: the line no longer advises
+    # setting the bounds it already has ("or x_min, y_min, y_max at -100, -100, 100")
+    assert x[0] == pytest.approx(-100 * prob.a, rel=1e-9)
+    assert "which this domain reaches" in line and "for that share" not in line
     assert not [w for w in out.warnings if w.startswith("mesh")]
     # the row the line points to: alpha p_h = 0.65 hid it, the film's pressure is 0.7 MPa
     assert out.summary["brewe_hamrock_taylor_minimum_film_m"] == pytest.approx(unbounded,

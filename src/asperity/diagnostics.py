@@ -818,10 +818,15 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
                 else (1.0 - RIGID_REACH / widest) ** 2)
         bounds = "x_min" if line else "x_min, y_min, y_max"
         at = f"-{max_bound:g}" if line else f"-{max_bound:g}, -{max_bound:g}, {max_bound:g}"
-        advice = (f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case "
-                  f"takes, where the film would be {_pct(kept)} of it: take the "
-                  f"rigid-isoviscous film of the comparison rows (or {bounds} at {at} and "
-                  f"x_max >= {x_max:.3g}, on a coarse mesh, for that share)")
+        if reach >= widest * (1.0 - 1e-6) and outlet >= RIGID_OUTLET:  # already there
+            advice = (f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case "
+                      "takes, which this domain reaches: take the rigid-isoviscous film of "
+                      "the comparison rows, an unbounded domain's")
+        else:
+            advice = (f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case "
+                      f"takes, where the film would be {_pct(kept)} of it: take the "
+                      f"rigid-isoviscous film of the comparison rows (or {bounds} at {at} and "
+                      f"x_max >= {x_max:.3g}, on a coarse mesh, for that share)")
     return [*lines, DomainAdvice(f"{text}; {advice}", **advised)]
 
 
