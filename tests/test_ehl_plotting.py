@@ -56,3 +56,21 @@ def test_film_histogram_names_its_overflow_bin_only_when_it_holds_films():
     finally:
         plt.close(empty)
         plt.close(full)
+
+
+def test_a_nearly_rigid_contacts_pressure_keeps_its_own_scale():
+    """A glass ball in glycerol: its EHL pressure peaks at 0.71 MPa against the dry Hertz
+    109 MPa; drawn on Hertz's scale it was a flat line at zero. The axis now follows the EHL
+    pressure and the Hertz curve is marked off scale; a deforming contact keeps both."""
+    a = 46.7e-6
+    x = np.linspace(-100 * a, 10 * a, 401)
+    hertz = 109e6 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    rigid = 0.71e6 * np.exp(-(((x + 4 * a) / (6 * a)) ** 2))
+    film = 8e-6 + x**2 / (2 * 10e-3)
+    fig = centre_line_profiles(x, rigid, film, a, hertz)
+    ax_p = fig.axes[0]
+    assert ax_p.get_ylim()[1] == pytest.approx(1.15 * rigid.max() / 1e3)  # kPa
+    assert any("off scale" in t.get_text() for t in ax_p.get_legend().get_texts())
+    fig = centre_line_profiles(x, 0.9 * hertz, film, a, hertz)
+    assert not any("off scale" in t.get_text() for t in fig.axes[0].get_legend().get_texts())
+    assert fig.axes[0].get_ylim()[1] > 100.0  # MPa: Hertz's peak drawn whole
