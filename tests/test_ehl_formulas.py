@@ -416,3 +416,38 @@ def test_hamrock_dowsons_ehl_fit_is_not_set_beside_a_rigid_contact_as_if_it_appl
                         Lubricant(ETA0, ALPHA, viscosity_model="barus", compressible=False))
     assert gear.M > 10
     assert not [r for r in ehl_steady_comparisons(gear, result) if "regime" in r.note]
+
+
+def test_a_polymer_roller_is_told_dowson_higginson_is_outside_its_range():
+    """A steady line contact of a PA66 roller on steel in a 15 1/GPa oil: G = alpha E' =
+    15e-9 x 2 / ((1 - 0.4^2)/3e9 + (1 - 0.3^2)/210e9) = 105, against the fit's 2500-5000.
+    Only the gear runner said so; the steady and transient rows compared as if it applied.
+    A steel roller (G = 15e-9 x 231 GPa = 3460) keeps the plain row."""
+    from asperity.cases import load_case
+    from asperity.references import film_formula_comparisons
+
+    def row(modulus):
+        case = load_case(f'''analysis = "ehl-steady"
+[contact]
+type = "line"
+radius = "10 mm"
+load_per_length = "20 kN/m"
+[body1]
+youngs_modulus = "{modulus}"
+poisson_ratio = {0.4 if modulus == "3 GPa" else 0.3}
+[body2]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[speeds]
+u = "1 m/s"
+[lubricant]
+eta0 = "0.1 Pa s"
+alpha = "15 1/GPa"
+''')
+        rows = film_formula_comparisons(case.problem(), 1e-6, 1e-6)
+        (dh,) = [r for r in rows if "Dowson" in r.source]
+        return dh
+
+    e_prime = 2.0 / ((1 - 0.4**2) / 3e9 + (1 - 0.3**2) / 210e9)
+    assert f"G = alpha E' = {15e-9 * e_prime:.3g}" in row("3 GPa").note
+    assert "outside its range" not in row("210 GPa").note

@@ -8,8 +8,9 @@ import pytest
 
 from asperity.cases import load_case
 from asperity.ehl import Lubricant
+from asperity.ehl.formula_range import dowson_higginson_range_note
 from asperity.errors import InputError
-from asperity.gears import GearPair, Thermal, dowson_higginson_range_note, solve_path
+from asperity.gears import GearPair, Thermal, solve_path
 from asperity.gears.path import EHLMesh
 from asperity.materials import STEEL, Material
 from asperity.plotting.gear import film_figure

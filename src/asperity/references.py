@@ -25,6 +25,7 @@ import numpy as np
 from .contact import reference as ref
 from .contact.stick_zone import stick_zone
 from .ehl import formulas
+from .ehl.formula_range import dowson_higginson_range_note
 from .ehl.problem import LineContact
 from .results import Comparison
 
@@ -526,6 +527,10 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
             row_note += _LOW_L_NOTES.get(key, "")
         if key in _ELASTIC_FITS and problem.M < ELASTIC_M:
             row_note += RIGID_FIT_NOTE.format(M=problem.M, limit=ELASTIC_M)
+        if key == "dowson_higginson_minimum_film_m":
+            outside = dowson_higginson_range_note(lub.pressure_viscosity
+                                                  * problem.reduced_modulus)
+            row_note += f"; {outside}" if outside else ""
         rows.append(Comparison(label + quantity, films[attribute], film, cite(source, anchor),
                                "m", 0.05 if check else None, row_note + note))
     return rows

@@ -2,7 +2,6 @@
 contact, Blok's flash temperature, and the steady EHL film, lambda and friction at every
 position (:func:`solve_path`)."""
 
-from .formula_range import DOWSON_HIGGINSON_G, dowson_higginson_range_note
 from .geometry import MIN_TIP_THICKNESS, GearPair, inverse_involute, involute
 from .handoff import (
     LINE_MAX_SWEEPS,
@@ -34,11 +33,11 @@ from .thermal import (
 )
 
 __all__ = [
-    "BOUNDARY_LUBRICATION_LAMBDA", "DOWSON_HIGGINSON_G", "FLASH_CONSTANTS", "LINE_MAX_SWEEPS",
+    "BOUNDARY_LUBRICATION_LAMBDA", "FLASH_CONSTANTS", "LINE_MAX_SWEEPS",
     "MIN_TIP_THICKNESS",
     "NODES_PER_CORRELATION", "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPair", "GearPathResult",
     "Kinematics", "NominalContactStress", "Thermal",
-    "asperity_share", "composite_roughness", "contact_problem", "dowson_higginson_range_note",
+    "asperity_share", "composite_roughness", "contact_problem",
     "flash_temperature",
     "flooded_grid", "hertz_along_path", "involute", "inverse_involute", "kinematics",
     "load_per_length", "load_sharing", "mixed_friction", "nominal_contact_stress",

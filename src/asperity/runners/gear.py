@@ -14,8 +14,8 @@ import time
 import numpy as np
 import xarray as xr
 
+from ..ehl.formula_range import dowson_higginson_range_note
 from ..ehl.problem import FILM_ERROR
-from ..gears.formula_range import dowson_higginson_range_note
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
 from ..gears.mixed import composite_roughness

@@ -1,5 +1,6 @@
-"""Whether the minimum-film formula of a gear contact applies: the materials parameter of
-the contact against that of the solutions the formula was fitted to.
+"""Whether Dowson & Higginson's minimum-film formula applies to a line contact (a gear
+flank, a roller): the materials parameter of the contact against that of the solutions the
+formula was fitted to.
 
 Dowson & Higginson fitted their line-contact minimum film, ``H_min = 2.65 U^0.70 G^0.54
 W'^-0.13``, to numerical EHL solutions for two materials parameters, G = alpha E' = 2500
