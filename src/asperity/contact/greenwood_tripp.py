@@ -29,6 +29,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.fft
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk, gamma, pbdv
 
@@ -71,9 +72,9 @@ def summit_parameters(heights, dx, dy) -> SummitParameters | None:
     z = np.asarray(heights, dtype=float)
     z = z - z.mean()
     nx, ny = z.shape
-    qx = 2.0 * np.pi * np.fft.fftfreq(nx, dx)[:, None]
-    qy = 2.0 * np.pi * np.fft.fftfreq(ny, dy)[None, :]
-    power = np.abs(np.fft.fft2(z) / z.size) ** 2
+    qx = 2.0 * np.pi * scipy.fft.fftfreq(nx, dx)[:, None]
+    qy = 2.0 * np.pi * scipy.fft.fftfreq(ny, dy)[None, :]
+    power = np.abs(scipy.fft.fft2(z, workers=-1) / z.size) ** 2
     q2 = qx**2 + qy**2
     m0 = float(power.sum())
     m2 = 0.5 * float((q2 * power).sum())
