@@ -195,6 +195,10 @@ def test_unconverged_run_on_square_cells_says_which_ny_to_use():
     assert not out.converged
     advice = [n for n in out.notes if "grid.ny <=" in n]
     assert len(advice) == 1 and "y-line sweeps" in advice[0]
+    # the advice is the non-convergence note's own, which the command line's error line
+    # prints (it said "check the inlet and the mesh" while the cells were the cause)
+    assert advice[0].startswith("The solver did not converge")
+    assert "Raise solver.max_sweeps" not in advice[0]
     ny = int(re.search(r"grid.ny <= (\d+)", advice[0]).group(1))
     x, y = out.dataset["x"].values, out.dataset["y"].values
     dx, width = x[1] - x[0], y[-1] - y[0]
