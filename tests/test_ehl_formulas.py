@@ -451,3 +451,55 @@ alpha = "15 1/GPa"
     e_prime = 2.0 / ((1 - 0.4**2) / 3e9 + (1 - 0.3**2) / 210e9)
     assert f"G = alpha E' = {15e-9 * e_prime:.3g}" in row("3 GPa").note
     assert "outside its range" not in row("210 GPa").note
+
+
+def test_a_ball_bearings_race_contact_is_told_hamrock_dowson_extrapolates_in_k():
+    """The inner-race contact of a 6208 deep-groove ball bearing (ball 7.94 mm, race 40 mm,
+    groove radius 0.52 of the ball: Rx = 3.3 mm, Ry = 102.7 mm) has b/a = 9.08 (Johnson's
+    elliptic-integral Hertz relations; Hamrock & Dowson's own approximation 1.03 (Ry/Rx)^0.64
+    gives 9.27), above the k = 1-8 of the 34 solutions their point films were fitted to
+    (J. Lubr. Technol. 99 (1977) 264). Both rows were shown with no word that they
+    extrapolate; a 4:1 ellipse (Ry = 9 Rx, k about 4.3) keeps the plain rows."""
+    from asperity.cases import load_case
+    from asperity.references import film_formula_comparisons
+
+    def rows(ry):
+        case = load_case(f'''analysis = "ehl-steady"
+[contact]
+type = "point"
+rx = "3.3 mm"
+ry = "{ry}"
+load = "500 N"
+[body1]
+youngs_modulus = "208 GPa"
+poisson_ratio = 0.3
+[body2]
+youngs_modulus = "208 GPa"
+poisson_ratio = 0.3
+[speeds]
+u = "10 m/s"
+[lubricant]
+eta0 = "0.03 Pa s"
+alpha = "20 1/GPa"
+''')
+        problem = case.problem()
+        found = [r for r in film_formula_comparisons(problem, 1e-6, 1e-6)
+                 if r.source.startswith("Hamrock-Dowson")]
+        return problem.b / problem.a, found
+
+    k, bearing = rows("102.7 mm")
+    assert k == pytest.approx(9.08, abs=0.01)
+    assert len(bearing) == 2
+    assert all("ellipticity parameter k = b/a = 9.08 lies above the k = 1-8" in r.note
+               for r in bearing)
+    k, ellipse = rows("29.7 mm")
+    assert 1 < k < 8
+    assert len(ellipse) == 2 and not any("outside its range" in r.note for r in ellipse)
+
+
+@pytest.mark.parametrize(("k", "outside"), [(0.9, True), (1.0, False), (4.0, False),
+                                            (8.0, False), (8.1, True), (22.0, True)])
+def test_the_range_of_hamrock_dowson_in_k(k, outside):
+    from asperity.ehl.formula_range import hamrock_dowson_range_note
+
+    assert bool(hamrock_dowson_range_note(k)) is outside

@@ -25,7 +25,7 @@ import numpy as np
 from .contact import reference as ref
 from .contact.stick_zone import stick_zone
 from .ehl import formulas
-from .ehl.formula_range import dowson_higginson_range_note
+from .ehl.formula_range import dowson_higginson_range_note, hamrock_dowson_range_note
 from .ehl.problem import LineContact
 from .results import Comparison
 
@@ -374,7 +374,8 @@ def film_formulas(problem) -> dict[str, float]:
     pressure-viscosity coefficient is positive; Martin's (1916) rigid-isoviscous film where the
     contact is isoviscous and ``M < ELASTIC_M``. Point contact: Nijenbanning, Venner & Moes
     (1994) central film when ``ry >= rx`` (entrainment along the minor axis), and with alpha >
-    0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers 1 <= k <= 8;
+    0 the Hamrock-Dowson (1977) central and minimum films there (their fit covers 1 <= k <= 8,
+    and their rows say so beyond;
     left out where Brewe-Hamrock-Taylor's rigid-isoviscous or the soft-EHL rows are given, and
     their rows note the regime below ``ELASTIC_M``: :data:`RIGID_FIT_NOTE`), Chittenden et
     al.'s (1985) where ``ry < rx`` (k < 1, entrainment along the major axis: a traction drive's
@@ -530,6 +531,9 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
         if key == "dowson_higginson_minimum_film_m":
             outside = dowson_higginson_range_note(lub.pressure_viscosity
                                                   * problem.reduced_modulus)
+            row_note += f"; {outside}" if outside else ""
+        if key in _ELASTIC_FITS:
+            outside = hamrock_dowson_range_note(problem.b / problem.a)
             row_note += f"; {outside}" if outside else ""
         rows.append(Comparison(label + quantity, films[attribute], film, cite(source, anchor),
                                "m", 0.05 if check else None, row_note + note))

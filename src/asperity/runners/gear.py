@@ -14,7 +14,7 @@ import time
 import numpy as np
 import xarray as xr
 
-from ..ehl.formula_range import dowson_higginson_range_note
+from ..ehl.formula_range import dowson_higginson_range_note, hamrock_dowson_range_note
 from ..ehl.problem import FILM_ERROR
 from ..gears.handoff import point_index, toml_text, transient_case
 from ..gears.loading import normal_force
@@ -191,15 +191,18 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "converged": bool(result.converged.all()),
     }
     formula_note = "Newtonian isothermal formula; the solver uses the case's lubricant laws"
-    minimum_note = formula_note
+    central_note = minimum_note = formula_note
+    pitch = contact_problem(pair, kin, i_c, float(result.load[i_c]), *case.bodies(),
+                            case.lubricant.lubricant())
     if result.line:
-        pitch = contact_problem(pair, kin, i_c, float(result.load[i_c]), *case.bodies(),
-                                case.lubricant.lubricant())
         minimum_note = dowson_higginson_range_note(pitch.G) or formula_note
+    else:  # crowned flanks: Hamrock-Dowson's point films, fitted for 1 <= k <= 8
+        outside = hamrock_dowson_range_note(pitch.b / pitch.a)
+        central_note = minimum_note = f"{formula_note}; {outside}" if outside else formula_note
     comparisons = [
         Comparison("central film at the pitch point", float(result.central_film[i_c]),
                    float(result.formula_central[i_c]), result.formula_names[0], "m", None,
-                   formula_note),
+                   central_note),
         Comparison("minimum film at the pitch point", float(result.minimum_film[i_c]),
                    float(result.formula_minimum[i_c]), result.formula_names[1], "m", None,
                    minimum_note),
