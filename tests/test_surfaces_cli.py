@@ -155,3 +155,16 @@ def test_stats_of_a_sine_give_its_closed_form_parameters(runner, tmp_path):
     assert r["Rt_m"] == pytest.approx(2 * amp * np.cos(np.pi / 40), rel=1e-3)
     assert r["RSm_m"] == pytest.approx(lam, abs=h)
     assert r["Rdq"] == pytest.approx(2 * np.pi * amp / lam / np.sqrt(2), rel=2e-3)
+
+
+def test_each_table_title_is_one_line_above_its_table(runner, tmp_path):
+    """A texture table's title (filters, evaluation length) was the table's own title, which
+    rich wraps to the width of the three narrow columns: "Primary profile P (ISO 4287; " over
+    three lines. It is now a line of its own."""
+    out = tmp_path / "c.txt"
+    runner.invoke(app, ["surface", "generate", "builtin", "--name", "C", "--length", "2 mm",
+                        "--spacing", "0.5 um", "--out", str(out)])
+    res = runner.invoke(app, ["surface", "stats", str(out)], terminal_width=120)
+    assert res.exit_code == 0, res.output
+    titles = [line for line in res.stdout.splitlines() if line.startswith("Primary profile P")]
+    assert len(titles) == 1 and titles[0].rstrip().endswith("mm)"), res.stdout

@@ -16,8 +16,9 @@ from typing import Annotated
 
 import numpy as np
 import typer
-from rich.console import Console
+from rich.console import Console, Group
 from rich.table import Table
+from rich.text import Text
 
 from ..errors import InputError
 from ..units import to_si
@@ -152,12 +153,14 @@ def _warnings(reading, texture) -> list[str]:
     return [*reading.warnings, *reading.slope_warnings(*texture.rms_slope), *texture.warnings]
 
 
-def _texture_tables(file: Path, reading, texture) -> list[Table]:
+def _texture_tables(file: Path, reading, texture) -> list[Group]:
+    """One table per texture group under its title as a line of its own (a table's title
+    wraps to the table's width: 'Primary profile P (ISO 4287; ' over three lines)."""
     from ..surfaces.texture import PERCENT, unit_of
 
     tables = []
     for key, values in texture.groups.items():
-        table = Table(title=texture.titles[key], title_justify="left")
+        table = Table()
         table.add_column("parameter")
         table.add_column("value", justify="right")
         table.add_column("unit")
@@ -165,7 +168,7 @@ def _texture_tables(file: Path, reading, texture) -> list[Table]:
             shown, factor = ("%", 100.0) if name in PERCENT else _DISPLAY[unit_of(name)]
             table.add_row(name, f"{value * factor:.4g}" if math.isfinite(value) else "n/a",
                           shown if math.isfinite(value) else "")
-        tables.append(table)
+        tables.append(Group(Text(texture.titles[key], style="italic"), table))
     return tables
 
 
