@@ -479,6 +479,11 @@ _FILM_ROWS = {  # summary key -> (quantity, result attribute, source, anchor)
 # The central-film fits (Moes, Nijenbanning) are checked at 5 % when the lubricant is their own
 # model; Dowson-Higginson and Hamrock-Dowson are regressions over other solutions: shown only.
 _CHECKED_FITS = {"moes_central_film_m", "nijenbanning_central_film_m"}
+#: Tolerance of a checked fit's row where ``alpha p_h <= ISOVISCOUS`` when its measured
+#: accuracy there is worse than 5 %: Nijenbanning's fit lies 6.8 % (M = 102) and 7.5 %
+#: (M = 964) above an independent point-contact solution at L = 0, which the solver matches
+#: within 0.1 % (tests/point_ehl_reference.py): at 5 % a right solution read "differs".
+LOW_L_TOLERANCE = {"nijenbanning_central_film_m": 0.10}
 #: Fits to piezoviscous-elastic solutions, outside their regime in a contact that hardly
 #: deforms (Moes M < ``ELASTIC_M``).
 _ELASTIC_FITS = {"hamrock_dowson_central_film_m", "hamrock_dowson_minimum_film_m"}
@@ -503,7 +508,8 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
     central_film, minimum_film : float
         The solution's film at the contact's centre and its least film over the domain, m.
     checked : bool
-        Check the central-film fits of Moes and Nijenbanning at 5 % when the lubricant is
+        Check the central-film fits of Moes and Nijenbanning at 5 % (Nijenbanning's at 10 %
+        where ``alpha p_h <= ISOVISCOUS``: :data:`LOW_L_TOLERANCE`) when the lubricant is
         Newtonian, Barus and incompressible, the fits' own model (every other row, and every
         row when False, is shown with a note and not checked).
     label : str
@@ -525,8 +531,10 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
         quantity, attribute, source, anchor = _FILM_ROWS[key]
         check = checked and own_model and key in _CHECKED_FITS
         row_note = own_note if own_model else other_note
+        tolerance = 0.05
         if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
             row_note += _LOW_L_NOTES.get(key, "")
+            tolerance = LOW_L_TOLERANCE.get(key, tolerance)
         if key in _ELASTIC_FITS and problem.M < ELASTIC_M:
             row_note += RIGID_FIT_NOTE.format(M=problem.M, limit=ELASTIC_M)
         if key == "dowson_higginson_minimum_film_m":
@@ -537,7 +545,7 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
             outside = hamrock_dowson_range_note(problem.b / problem.a)
             row_note += f"; {outside}" if outside else ""
         rows.append(Comparison(label + quantity, films[attribute], film, cite(source, anchor),
-                               "m", 0.05 if check else None, row_note + note))
+                               "m", tolerance if check else None, row_note + note))
     return rows
 
 
