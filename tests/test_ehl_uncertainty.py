@@ -135,6 +135,8 @@ def test_warning_only_above_the_limit_naming_the_steps_that_would_do():
     assert not np.isfinite(few.standard_error) and few.blocks == 5
     lines = counting_period_warning({"the contact-time fraction": (few, "%")}, 5)
     assert len(lines) == 1 and "too few" in lines[0] and "time.counting_steps" in lines[0]
+    # ... unless nothing was counted at all (a smooth contact's short run)
+    assert counting_period_warning({"x": (batch_means(np.zeros(5)), "%")}, 5) == []
 
 
 def test_steps_for_error_falls_as_one_over_the_root_of_the_steps():

@@ -26,11 +26,12 @@ same length gives other values. Two standard estimators give their spread from t
   The mean of the resampled maxima less the observed one estimates the maximum's bias: the
   largest rate of a short period lies above the long-run one.
 
-Measured on the default example (holmes-rough-CC, 3200 counting steps cut into sixteen
-200-step windows; docs/ehl-transient.md, "Statistics"): the real spread of the windows'
-contact-time fraction 0.061, the batch-means estimate on one window 0.053 (root mean square
-over the windows); the Hertz-zone mean rate 7.0 against 8.2 per ms; the largest rate 60
-against 85 per ms (bootstrap), its bias +108 per ms estimated against +76 measured.
+Measured on the default example (holmes-rough-CC with 3200 and 1600 counting steps, cut into
+24 windows of 200 steps; docs/ehl-transient.md, "Standard errors of the statistics"): the
+real spread between the windows of the contact-time fraction 0.056, the batch-means
+estimate on one window 0.055 (root mean square over the windows); of the Hertz-zone mean
+rate 6.9 against 8.6 per ms; of the largest rate 56 against 88 per ms (the bootstrap
+overstates it by half), its bias +108 per ms estimated against +76 measured.
 """
 
 from __future__ import annotations
@@ -273,7 +274,8 @@ def counting_period_warning(estimates: dict, counting_steps: int,
                             limit: float = RELATIVE_ERROR_LIMIT) -> list[str]:
     """One line when the counting period is too short for a statistic: fewer than
     :data:`MIN_BLOCKS` counting steps (no estimate), a standard error above ``limit`` times
-    the value, or block means still correlated at :data:`MIN_BLOCKS` blocks.
+    the value, or block means still correlated at :data:`MIN_BLOCKS` blocks; none when no
+    contact was counted (every statistic zero).
 
     Parameters
     ----------
@@ -290,16 +292,16 @@ def counting_period_warning(estimates: dict, counting_steps: int,
     list of str
         At most one line, naming ``time.counting_steps`` and the steps that would do.
     """
-    if not estimates:
-        return []
+    if not estimates or not any(e.value > 0 for e, _ in estimates.values()):
+        return []  # no contact counted: nothing to be uncertain about
     if all(not np.isfinite(e.standard_error) and e.blocks < MIN_BLOCKS
            for e, _ in estimates.values()):
         return [f"time.counting_steps: {counting_steps} counting steps are too few to tell "
                 "how far the statistics would move over another period (their standard error "
-                f"needs at least {MIN_BLOCKS} blocks of steps, each longer than the time "
-                "contacts stay correlated: the default example's 200 steps make 16 blocks of "
-                "12 steps, 5 times its contact flag's correlation time); count at least "
-                f"{DEFAULT_STEPS} steps"]
+                f"needs at least {MIN_BLOCKS} blocks of steps (limit), each longer than the "
+                "time contacts stay correlated: the default example's 200 steps make 16 "
+                "blocks of 12 steps, 5 times its contact flag's correlation time); count at "
+                f"least {DEFAULT_STEPS} steps"]
     parts, need = [], 0
     for words, (e, unit) in estimates.items():
         rel = e.relative_error
