@@ -33,6 +33,7 @@ __all__ = [
     "summary_rows",
     "unit_label",
     "units_from_cf",
+    "with_standard_error",
 ]
 
 def format_duration(seconds: float) -> str:
@@ -424,19 +425,27 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
             continue  # shown with its value
         label, unit = describe_key(key)
         text = format_summary_value(key, value, scale=scale.get(unit, 0.0), imperial=imperial)
-        error = scalars.get(key + STANDARD_ERROR)
-        if error is not None and not isinstance(value, bool):
-            error_text = format_summary_value(key + STANDARD_ERROR, error, imperial=imperial,
-                                              digits=2)
-            number, _, shown_unit = text.partition(" ")
-            if shown_unit and error_text.endswith(" " + shown_unit):  # "85.5 ± 3.6 %"
-                text = f"{number} ± {error_text}"
-            else:
-                text = f"{text} ± {error_text}"
+        if not isinstance(value, bool):
+            text = with_standard_error(key, text, scalars.get(key + STANDARD_ERROR),
+                                       imperial=imperial)
         if (label, text) not in shown:
             shown.add((label, text))
             rows.append(SummaryRow(key, label, unit_label(unit), text))
     return rows
+
+
+def with_standard_error(key: str, text: str, error, *, imperial: bool = False) -> str:
+    """``text``, the formatted value of summary key ``key``, with its standard error
+    ``error`` (in the key's SI unit) beside it: ``"65.5 ± 7.2 %"`` (the unit once when both
+    are shown in it), ``"4.3 GPa ± 30 MPa"``; ``text`` alone when ``error`` is None or not
+    finite."""
+    if error is None or not math.isfinite(error):
+        return text
+    error_text = format_summary_value(key + STANDARD_ERROR, error, imperial=imperial, digits=2)
+    number, _, shown_unit = text.partition(" ")
+    if shown_unit and error_text.endswith(" " + shown_unit):
+        return f"{number} ± {error_text}"
+    return f"{text} ± {error_text}"
 
 
 def format_summary_value(key: str, value, *, scale: float = 0.0, imperial: bool = False,

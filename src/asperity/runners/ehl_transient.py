@@ -248,7 +248,10 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         comparisons.append(Comparison(
             "time with contact at >= 1 node", summary["contact_time_percent"],
             case.paper_contact_time_percent, "Holmes et al. (2005) Table 2", "%",
-            note="synthetic stand-in profiles and a reduced mesh: a trend, not a check"))
+            note="synthetic stand-in profiles and a reduced mesh: a trend, not a check"
+            + (f"; ours ± {summary['contact_time_percent_standard_error']:.2g} % (standard "
+               "error of this counting period)"
+               if np.isfinite(summary["contact_time_percent_standard_error"]) else "")))
     if np.isfinite(res.steady_film).all():  # the smooth steady start is a steady EHL solution
         comparisons += film_formula_comparisons(
             problem, res.steady_central_film, float(res.steady_film.min()), checked=False,
