@@ -516,3 +516,59 @@ correlation_length = "30 um"
     fig = draw()
     assert "(1/ms)" in fig.axes[0].get_ylabel() and "per ms" in caption
     plt.close(fig)
+
+
+def test_statistics_carry_standard_errors_end_to_end(tmp_path):
+    """The wavy gear contact counted over 64 steps with films under 300 nm as contact: each
+    statistic of summary.json has its standard error, result.nc keeps the per-step series and
+    block maps they come from (consistent with the contact counts and the Q map), the report
+    shows value ± error, and 64 steps are too few (errors of about 26 % of the values): one
+    warning names time.counting_steps and the steps that bring the error under 10 %."""
+    from asperity.ehl.uncertainty import RELATIVE_ERROR_LIMIT, batch_means
+    from asperity.runners import run_case
+
+    text = (CASE.replace("counting_steps = 30\nwarmup_steps = 10", "counting_steps = 64")
+            .replace('amplitude = "0.05 um"', 'amplitude = "0.15 um"')
+            .replace('wavelength = "0.2 mm"', 'wavelength = "0.3 mm"')
+            .replace("[solver]\n", '[solver]\ncontact_film = "300 nm"\n'))
+    outcome = run_case(load_case(text))
+    outcome.write(tmp_path)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    fraction = summary["contact_time_fraction"]
+    assert 0.2 < fraction < 0.8  # contact at some steps, not all
+    for key in ("contact_time_fraction", "contact_time_percent", "max_contact_count_rate_per_ms",
+                "mean_hertz_contact_count_rate_per_ms"):
+        error = summary[f"{key}_standard_error"]
+        assert 0.1 * summary[key] < error < 0.6 * summary[key], key
+    assert summary["contact_time_percent_standard_error"] == pytest.approx(
+        100 * summary["contact_time_fraction_standard_error"])
+    with xr.open_dataset(tmp_path / "result.nc") as ds:
+        nodes = ds["contact_nodes"].values
+        assert ds["contact_nodes"].dims == ("counting_step",) and nodes.size == 64
+        assert ds["counting_step"].values[-1] == ds.attrs["warmup_steps"] + 64
+        assert np.mean(nodes > 0) == pytest.approx(fraction)
+        blocks = ds["block_contact_count"]
+        assert blocks.dims == ("block", "x", "y") and blocks.shape[0] == 16
+        np.testing.assert_array_equal(blocks.sum("block").values, ds["contact_count"].values)
+        assert int(ds["block_steps"].sum()) == 64
+        # the Hertz-zone series against the Q map averaged over the Hertz ellipse
+        problem = load_case(text).problem()
+        x, y = np.meshgrid(ds["x"].values / problem.a, ds["y"].values / problem.b,
+                           indexing="ij")
+        q = ds["contact_count_rate"].values
+        assert summary["mean_hertz_contact_count_rate_per_ms"] == pytest.approx(
+            q[x**2 + y**2 <= 1.0].mean())
+        assert ds["hertz_contact_nodes"].values.sum() <= nodes.sum()
+        # the error is that of the stored series (a user can redo it from result.nc)
+        assert summary["contact_time_fraction_standard_error"] == pytest.approx(
+            batch_means(nodes > 0).standard_error)
+    lines = [w for w in outcome.warnings if w.startswith("time.counting_steps:")]
+    assert len(lines) == 1
+    assert f"limit: a standard error of {RELATIVE_ERROR_LIMIT:.0%}" in lines[0]
+    need = int(lines[0].split("count at least ")[1].split()[0])
+    rel = max(summary[f"{k}_standard_error"] / summary[k] for k in (
+        "contact_time_fraction", "max_contact_count_rate_per_ms",
+        "mean_hertz_contact_count_rate_per_ms"))
+    assert need == pytest.approx(64 * (rel / RELATIVE_ERROR_LIMIT) ** 2, rel=0.1)
+    html = (tmp_path / "report.html").read_text()
+    assert f"{100 * fraction:.4g} ± " in html

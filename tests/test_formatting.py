@@ -189,3 +189,23 @@ def test_a_value_that_rounds_up_to_the_next_unit_is_written_in_it(value, unit, t
     """A gross-slip excess force of 0.9999999999 N was written "1000 mN": the unit is chosen
     from the value as it is printed, to 4 digits."""
     assert format_quantity(value, unit) == text
+
+
+def test_a_standard_error_is_shown_beside_its_value():
+    """``K_standard_error`` takes the unit of ``K`` and joins its row as ``value ± error``
+    (a fraction in percent, the unit written once when both share it); without ``K`` it has
+    a row of its own, and a NaN error (none estimated) leaves the value alone."""
+    rows = summary_rows({"contact_time_fraction": 0.655,
+                         "contact_time_fraction_standard_error": 0.0717,
+                         "max_contact_count_rate_per_ms": 267.5,
+                         "max_contact_count_rate_per_ms_standard_error": 71.05,
+                         "max_pressure_pa": 3.66e9,
+                         "max_pressure_pa_standard_error": float("nan"),
+                         "approach_m_standard_error": 2e-9})
+    assert [(r.label, r.text) for r in rows] == [
+        ("contact time", "65.5 ± 7.2 %"),
+        ("maximum contact count rate", "267.5 ± 71 1/ms"),
+        ("maximum pressure", "3.66 GPa"),
+        ("approach, standard error", "2 nm")]
+    assert describe_key("contact_time_fraction_standard_error") == (
+        "contact time, standard error", "%")

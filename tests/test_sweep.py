@@ -347,11 +347,16 @@ def test_study_shows_a_quantity_stored_as_fraction_and_percent_once(tmp_path):
         folder.mkdir(parents=True)
         (folder / "status.json").write_text(json.dumps({"state": "done", "summary": {
             "contact_time_fraction": fraction, "contact_time_percent": 100 * fraction,
-            "max_pressure_pa": 2e9 + n}}))
+            "contact_time_percent_standard_error": 4.2 + n, "max_pressure_pa": 2e9 + n}}))
     ds = combine(study, out)
     assert ds["contact_time_fraction"].attrs["long_name"] == \
         ds["contact_time_percent"].attrs["long_name"]
+    # a standard error (session 39) is no column of its own: it stands beside its value
     assert study_variables(ds) == ["contact_time_percent", "max_pressure_pa"]
+    from asperity.report import render_study_report
+
+    html = render_study_report(ds)
+    assert "35.1 ± 4.2 %" in html and "98.8 ± 5.2 %" in html
 
 
 def test_each_case_is_titled_by_its_own_axis_values(tmp_path):

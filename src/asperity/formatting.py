@@ -19,6 +19,7 @@ from .units import registry
 
 __all__ = [
     "NOISE",
+    "STANDARD_ERROR",
     "SummaryRow",
     "cf_units",
     "display_unit",
@@ -32,6 +33,7 @@ __all__ = [
     "summary_rows",
     "unit_label",
     "units_from_cf",
+    "with_standard_error",
 ]
 
 def format_duration(seconds: float) -> str:
@@ -122,6 +124,7 @@ _LABELS = {
     "residual": "residual (relative)",
     "steps_converged_fraction": "steps converged",
     "contact_time_fraction": "contact time",
+    "mean_hertz_contact_count_rate": "mean contact count rate over the Hertz contact",
     "friction_coefficient": "friction coefficient",
     "slide_roll_ratio": "slide/roll ratio",
     # the transient's fixed-point check (ehl.stepper.check_fixed_point): its last step relaxed
@@ -317,6 +320,11 @@ def format_axis_value(value, cf_unit: str) -> str:
     return format_quantity(value, units_from_cf(cf_unit))
 
 
+#: Ending of a summary key that holds the standard error of the key before it
+#: (``contact_time_fraction_standard_error``): shown in the other's unit, beside its value.
+STANDARD_ERROR = "_standard_error"
+
+
 def describe_key(key: str) -> tuple[str, str]:
     """Words and SI unit of a summary key: ``"max_pressure_pa"`` -> ``("maximum pressure",
     "Pa")``; a key ending in ``fraction`` is shown in percent.
@@ -332,8 +340,13 @@ def describe_key(key: str) -> tuple[str, str]:
     Returns
     -------
     (str, str)
-        The label and the unit (``""`` when dimensionless).
+        The label and the unit (``""`` when dimensionless); a key ending in
+        ``_standard_error`` (:data:`STANDARD_ERROR`) has the unit of the key before it, and
+        its label with ", standard error".
     """
+    if key.endswith(STANDARD_ERROR) and len(key) > len(STANDARD_ERROR):
+        label, unit = describe_key(key[: -len(STANDARD_ERROR)])
+        return f"{label}, standard error", unit
     stem, unit = key, ""
     for suffix, si in _SUFFIXES:
         if key.endswith(suffix) and len(key) > len(suffix):
@@ -378,7 +391,9 @@ class SummaryRow:
 def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
     """The scalars of a summary as labelled, formatted rows (lists and tables are skipped).
 
-    Values of keys ending in ``fraction`` are shown in percent. A value whose magnitude is at
+    Values of keys ending in ``fraction`` are shown in percent. A key with a standard error
+    beside it (the same key ending in ``_standard_error``, :data:`STANDARD_ERROR`) is shown as
+    ``value ± standard error`` in one row. A value whose magnitude is at
     most :data:`NOISE` times the largest of the summary's values in the same unit is round-off
     and shown as zero (``3.3e-13 N`` beside a load of 48 kN). A second key that reads the same
     (label and value: ``contact_time_fraction`` beside ``contact_time_percent``) is shown once.
@@ -405,15 +420,36 @@ def summary_rows(summary: dict, *, imperial: bool = False) -> list[SummaryRow]:
     for key, value in summary.items():
         if isinstance(value, dict | list | tuple) or value is None:
             continue
+        base = key.removesuffix(STANDARD_ERROR)
+        if base != key and base in summary:
+            continue  # shown with its value
         label, unit = describe_key(key)
         text = format_summary_value(key, value, scale=scale.get(unit, 0.0), imperial=imperial)
+        if not isinstance(value, bool):
+            text = with_standard_error(key, text, scalars.get(key + STANDARD_ERROR),
+                                       imperial=imperial)
         if (label, text) not in shown:
             shown.add((label, text))
             rows.append(SummaryRow(key, label, unit_label(unit), text))
     return rows
 
 
-def format_summary_value(key: str, value, *, scale: float = 0.0, imperial: bool = False) -> str:
+def with_standard_error(key: str, text: str, error, *, imperial: bool = False) -> str:
+    """``text``, the formatted value of summary key ``key``, with its standard error
+    ``error`` (in the key's SI unit) beside it: ``"65.5 ± 7.2 %"`` (the unit once when both
+    are shown in it), ``"4.3 GPa ± 30 MPa"``; ``text`` alone when ``error`` is None or not
+    finite."""
+    if error is None or not math.isfinite(error):
+        return text
+    error_text = format_summary_value(key + STANDARD_ERROR, error, imperial=imperial, digits=2)
+    number, _, shown_unit = text.partition(" ")
+    if shown_unit and error_text.endswith(" " + shown_unit):
+        return f"{number} ± {error_text}"
+    return f"{text} ± {error_text}"
+
+
+def format_summary_value(key: str, value, *, scale: float = 0.0, imperial: bool = False,
+                         digits: int = 4) -> str:
     """One value of a summary key as shown in a report (a run's key results, a study's cases).
 
     A value with a unit whose magnitude is at most :data:`NOISE` times ``scale`` is round-off
@@ -429,6 +465,8 @@ def format_summary_value(key: str, value, *, scale: float = 0.0, imperial: bool 
         The largest magnitude it is compared with (of the same unit, or of the same key).
     imperial : bool
         Put the imperial value beside SI.
+    digits : int
+        Significant digits.
 
     Returns
     -------
@@ -440,9 +478,9 @@ def format_summary_value(key: str, value, *, scale: float = 0.0, imperial: bool 
     if not isinstance(value, bool):
         if unit and math.isfinite(value) and abs(value) <= NOISE * scale:
             value = 0.0  # round-off of a quantity that is zero
-        if unit == "%" and key.endswith("fraction"):
+        if unit == "%" and key.removesuffix(STANDARD_ERROR).endswith("fraction"):
             value = 100.0 * value
-    return format_quantity(value, unit, imperial=imperial)
+    return format_quantity(value, unit, imperial=imperial, digits=digits)
 
 
 def given_in_imperial(data) -> bool:

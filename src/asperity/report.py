@@ -17,6 +17,7 @@ import re
 from pathlib import Path
 
 from .formatting import (
+    STANDARD_ERROR,
     SummaryRow,
     describe_key,
     format_axis_value,
@@ -24,6 +25,7 @@ from .formatting import (
     format_quantity,
     format_summary_value,
     summary_rows,
+    with_standard_error,
 )
 from .results import Outcome, atomic_path
 
@@ -320,6 +322,8 @@ def study_variables(ds, limit: int = 9) -> list[str]:
     for name, var in ds.data_vars.items():
         if name in _SOLVER_KEYS or not np.issubdtype(var.dtype, np.number):
             continue
+        if name.endswith(STANDARD_ERROR) and name.removesuffix(STANDARD_ERROR) in ds:
+            continue  # shown beside its value (_cases_table)
         values = var.values.astype(float)
         finite = values[np.isfinite(values)]
         if finite.size and np.ptp(finite) > 1e-12 * max(np.max(np.abs(finite)), 1e-300) and \
@@ -370,7 +374,11 @@ def _cases_table(ds, variables) -> str:
             if ds[v].attrs.get("flag_meanings") == "no yes" and value in (0.0, 1.0):
                 cells.append("yes" if value else "no")
                 continue
-            cells.append(format_summary_value(v, value, scale=scale[v]))  # as in a run's report
+            text = format_summary_value(v, value, scale=scale[v])  # as in a run's report
+            if v + STANDARD_ERROR in ds:
+                text = with_standard_error(
+                    v, text, float(ds[v + STANDARD_ERROR].isel(sel).values))
+            cells.append(text)
         state = str(ds["state"].isel(sel).values)
         error = str(ds["error"].isel(sel).values)
         if state == "done" and _not_converged(ds, sel):

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from .problem import LineContact
+from .uncertainty import block_edges
 
 __all__ = ["COUNT_RATE_UNITS", "ContactStatistics", "StepHistory", "count_rate", "flow_vectors",
            "hertz_mask"]
@@ -93,6 +94,11 @@ class ContactStatistics:
         in the last bin.
     region : ndarray of bool
         Nodes whose film enters the histogram (normally the Hertz contact).
+    counting_steps : int
+        Steps the counting period will have: the length of the per-step series and of the
+        :data:`~asperity.ehl.uncertainty.BLOCKS` blocks (:func:`~asperity.ehl.uncertainty.
+        block_edges`) whose count maps are kept for the standard errors
+        (:mod:`asperity.ehl.uncertainty`).
 
     Attributes
     ----------
@@ -108,9 +114,18 @@ class ContactStatistics:
         The film (m) of the accumulated timestep with the least film at any node (the first
         such step), NaN before the first: where the reported minimum film sits and how the
         mesh resolves it.
+    contact_nodes, region_contact_nodes : ndarray of int64
+        Per counting step: nodes in contact, over all nodes and over ``region``; -1 for steps
+        not accumulated (or, after :meth:`restore` from a checkpoint written before they were
+        kept, not known).
+    block_counts : ndarray of int32, shape (blocks, nx, ny)
+        Contact count per node in each block of consecutive counting steps (incomplete where
+        the series are -1).
+    block_steps : ndarray of int64
+        Steps accumulated in each block.
     """
 
-    def __init__(self, shape, film_edges, region):
+    def __init__(self, shape, film_edges, region, counting_steps: int = 1):
         self.film_edges = np.asarray(film_edges, dtype=float)
         self.region = np.asarray(region, dtype=bool)
         self.count = np.zeros(shape, dtype=np.int64)
@@ -119,9 +134,20 @@ class ContactStatistics:
         self.film_counts = np.zeros(self.film_edges.size - 1, dtype=np.int64)
         self.least_film = np.full(shape, np.nan)
         self._least = np.inf  # least_film's least value
+        self.edges = block_edges(counting_steps)
+        self.contact_nodes = np.full(counting_steps, -1, dtype=np.int64)
+        self.region_contact_nodes = np.full(counting_steps, -1, dtype=np.int64)
+        self.block_counts = np.zeros((self.edges.size - 1, *shape), dtype=np.int32)
+        self.block_steps = np.zeros(self.edges.size - 1, dtype=np.int64)
 
     def add(self, film, contact):
         """Accumulate one timestep: film (m) and the contact mask (True where ``h = 0``)."""
+        if self.steps < self.contact_nodes.size:
+            block = int(np.searchsorted(self.edges, self.steps, side="right")) - 1
+            self.contact_nodes[self.steps] = np.count_nonzero(contact)
+            self.region_contact_nodes[self.steps] = np.count_nonzero(contact & self.region)
+            self.block_counts[block] += contact
+            self.block_steps[block] += 1
         self.count += contact
         self.steps += 1
         self.steps_with_contact += bool(contact.any())
@@ -145,11 +171,16 @@ class ContactStatistics:
         """The accumulator as plain arrays (for a checkpoint)."""
         return {"stat_count": self.count, "stat_steps": np.int64(self.steps),
                 "stat_steps_with_contact": np.int64(self.steps_with_contact),
-                "stat_film_counts": self.film_counts, "stat_least_film": self.least_film}
+                "stat_film_counts": self.film_counts, "stat_least_film": self.least_film,
+                "stat_contact_nodes": self.contact_nodes,
+                "stat_region_contact_nodes": self.region_contact_nodes,
+                "stat_block_counts": self.block_counts, "stat_block_steps": self.block_steps}
 
     def restore(self, arrays):
         """Set the accumulator from :meth:`arrays` output (a checkpoint written before the
-        least film was kept leaves it NaN until a later step sets it)."""
+        least film was kept leaves it NaN until a later step sets it; one written before the
+        per-step series and block maps were kept leaves the steps it had counted at -1,
+        unknown, so that no standard error is given)."""
         self.count = np.array(arrays["stat_count"], dtype=np.int64)
         self.steps = int(arrays["stat_steps"])
         self.steps_with_contact = int(arrays["stat_steps_with_contact"])
@@ -157,6 +188,13 @@ class ContactStatistics:
         if "stat_least_film" in arrays:
             self.least_film = np.array(arrays["stat_least_film"], dtype=float)
             self._least = np.nanmin(self.least_film, initial=np.inf)
+        if "stat_block_counts" in arrays:
+            self.contact_nodes[...] = arrays["stat_contact_nodes"]
+            self.region_contact_nodes[...] = arrays["stat_region_contact_nodes"]
+            self.block_counts[...] = arrays["stat_block_counts"]
+            self.block_steps[...] = arrays["stat_block_steps"]
+        else:  # the series stay -1, unknown, for the steps counted before
+            self.block_steps[...] = np.diff(np.minimum(self.edges, self.steps))
 
 
 class StepHistory:

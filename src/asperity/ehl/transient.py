@@ -60,6 +60,13 @@ from .statistics import (
     hertz_mask,
 )
 from .stepper import StepOptions, TimeStepper
+from .uncertainty import (
+    StandardError,
+    batch_means,
+    block_bootstrap_max,
+    block_edges,
+    counting_period_warning,
+)
 
 __all__ = ["FEATURE_CELLS_ACROSS", "FEATURE_CELLS_ALONG", "FIXED_POINT_LIMIT", "GIVE_UP_STEPS",
            "HISTOGRAM_RQ", "ROUGHNESS_CELLS", "TransientResult", "default_warmup_steps",
@@ -193,6 +200,16 @@ class TransientResult(SolverResult):
         Q per ms of counting time (seed Figs. 4-8).
     contact_time_fraction : float
         Fraction of counting timesteps with contact at one or more nodes (seed Table 2).
+    contact_nodes, hertz_contact_nodes : ndarray of int
+        Per counting step (index ``step - warmup_steps - 1``): nodes in contact, over the
+        domain and inside the Hertz contact; -1 for steps not counted (or not known: a run
+        resumed from a checkpoint written before they were kept).
+    hertz_nodes : int
+        Nodes inside the Hertz contact (:func:`hertz_mask`).
+    block_contact_count, block_steps : ndarray of int
+        The counting period cut into :data:`~asperity.ehl.uncertainty.BLOCKS` blocks of
+        consecutive steps: per block the contact count per node, shape ``(blocks, nx, ny)``,
+        and its steps (the standard errors of :meth:`standard_errors`).
     max_pressure, min_film : ndarray
         Per step (index ``step - 1``): largest p (Pa) and smallest h (m) over the domain.
     film_edges, film_counts : ndarray
@@ -267,6 +284,11 @@ class TransientResult(SolverResult):
     contact_count: np.ndarray
     contact_count_rate: np.ndarray
     contact_time_fraction: float
+    contact_nodes: np.ndarray
+    hertz_contact_nodes: np.ndarray
+    hertz_nodes: int
+    block_contact_count: np.ndarray
+    block_steps: np.ndarray
     max_pressure: np.ndarray
     min_film: np.ndarray
     film_edges: np.ndarray
@@ -308,6 +330,13 @@ class TransientResult(SolverResult):
         "contact_count_rate": (COUNT_RATE_UNITS, "contact count rate Q: counting steps with "
                                "contact at the node per millisecond of counting time"),
         "contact_count": ("1", "number of counting steps with contact at the node"),
+        "contact_nodes": ("1", "nodes in contact at the counting step (-1: not counted)",
+                          ("counting_step",)),
+        "hertz_contact_nodes": ("1", "nodes in contact inside the Hertz contact at the counting "
+                                "step (-1: not counted)", ("counting_step",)),
+        "block_contact_count": ("1", "contact count per node in each block of consecutive "
+                                "counting steps", ("block", "x", "y")),
+        "block_steps": ("1", "counting steps in the block", ("block",)),
         "pressure": ("Pa", "pressure at the last step"),
         "film": ("m", "film thickness at the last step"),
         "steady_film": ("m", "film thickness of the smooth steady start"),
@@ -338,11 +367,15 @@ class TransientResult(SolverResult):
     }
 
     def coordinates(self) -> dict:
-        """x (entrainment) and y (transverse), the step number, the snapshot steps and the
-        film-histogram bin centres."""
+        """x (entrainment) and y (transverse), the step number, the counting steps, the
+        counting period's blocks, the snapshot steps and the film-histogram bin centres."""
         return {"x": (self.x, "m", "x, entrainment direction"),
                 "y": (self.y, "m", "y, transverse direction"),
                 "step": (np.arange(1, self.steps + 1), "1", "time step"),
+                "counting_step": (np.arange(self.warmup_steps + 1, self.steps + 1), "1",
+                                  "time step of the counting period"),
+                "block": (np.arange(1, self.block_steps.size + 1), "1",
+                          "block of consecutive counting steps"),
                 "snapshot": (self.snapshot_steps, "1", "step of the snapshot"),
                 "film_bin": (0.5 * (self.film_edges[1:] + self.film_edges[:-1]), "m",
                              "film thickness bin centre")}
@@ -371,9 +404,46 @@ class TransientResult(SolverResult):
 
     @property
     def warnings(self) -> tuple[str, ...]:
-        """No convergence, and a last step far from its fixed point
-        (:meth:`fixed_point_warning`)."""
-        return (*SolverResult.warnings.fget(self), *self.fixed_point_warning())
+        """No convergence, a last step far from its fixed point (:meth:`fixed_point_warning`),
+        and a counting period too short for its statistics (:meth:`counting_warning`)."""
+        return (*SolverResult.warnings.fget(self), *self.fixed_point_warning(),
+                *self.counting_warning())
+
+    def standard_errors(self) -> dict[str, StandardError]:
+        """The counting-period statistics with their standard errors
+        (:mod:`asperity.ehl.uncertainty`): ``contact_time_fraction`` and
+        ``hertz_contact_count_rate`` (the mean of Q over the Hertz contact, per ms) by batch
+        means of their per-step series, ``max_contact_count_rate`` (the largest Q, per ms) by
+        the block bootstrap of the blocks' count maps. Empty when no step was counted or the
+        per-step series are not known for every counted step (a run resumed from a
+        checkpoint written before they were kept)."""
+        counted = max(0, min(self.steps_done, self.steps) - self.warmup_steps)
+        nodes = self.contact_nodes[:counted]
+        if not counted or np.any(nodes < 0):
+            return {}
+        per_ms = 1.0 / (self.dt * 1e3)
+        blocks = self.block_steps == np.diff(block_edges(self.counting_steps))  # complete ones
+        estimates = {"contact_time_fraction": batch_means(nodes > 0)}
+        if self.hertz_nodes:
+            hertz = self.hertz_contact_nodes[:counted] * (per_ms / self.hertz_nodes)
+            estimates["hertz_contact_count_rate"] = batch_means(hertz)
+        estimates["max_contact_count_rate"] = block_bootstrap_max(
+            self.block_contact_count[blocks], self.block_steps[blocks], scale=per_ms)
+        return estimates
+
+    def counting_warning(self) -> list[str]:
+        """A line when the counting period is too short for the contact-time fraction, the
+        largest count rate or the Hertz zone's mean rate (their standard error above
+        :data:`~asperity.ehl.uncertainty.RELATIVE_ERROR_LIMIT` of the value, or too few
+        steps to tell; :func:`~asperity.ehl.uncertainty.counting_period_warning`)."""
+        estimates = self.standard_errors()
+        words = {"contact_time_fraction": ("the contact-time fraction", "%"),
+                 "max_contact_count_rate": ("the largest contact count rate", "per ms"),
+                 "hertz_contact_count_rate": ("the mean count rate over the Hertz contact",
+                                              "per ms")}
+        counted = max(0, min(self.steps_done, self.steps) - self.warmup_steps)
+        return counting_period_warning({words[k][0]: (e, words[k][1])
+                                        for k, e in estimates.items()}, counted)
 
     def fixed_point_warning(self) -> list[str]:
         """A line when the last step, relaxed on, moved p or h by more than
@@ -402,14 +472,19 @@ class TransientResult(SolverResult):
                 "tolerance, not in proportion at every step"]
 
     def summary(self) -> dict:
-        """Scalars for ``summary.json``: contact-time fraction, extremes of the counting period,
-        and how far the last step is from its fixed point (p as a fraction of the Hertz
-        pressure, h of the central film)."""
+        """Scalars for ``summary.json``: contact-time fraction and its standard error
+        (:meth:`standard_errors`), extremes of the counting period, and how far the last step
+        is from its fixed point (p as a fraction of the Hertz pressure, h of the central
+        film)."""
         counted = slice(self.warmup_steps, self.steps_done)
         maxp = self.max_pressure[counted]
         minh = self.min_film[counted]
+        errors = self.standard_errors()
+        fraction = errors.get("contact_time_fraction")
         return {
             "contact_time_fraction": float(self.contact_time_fraction),
+            "contact_time_fraction_standard_error": float(fraction.standard_error)
+            if fraction else float("nan"),
             "max_pressure_pa": float(maxp.max()) if maxp.size else float("nan"),
             "minimum_film_thickness_m": float(minh.min()) if minh.size else float("nan"),
             "counting_time_s": float(self.counting_time),
@@ -611,7 +686,8 @@ def solve_transient(
 
     stepper = TimeStepper(problem, x, y, opts, dt, film_ref / problem.film_scale)
     state = stepper.state
-    stats = ContactStatistics((nx, ny), film_edges, hertz_mask(problem, x, y))
+    hertz = hertz_mask(problem, x, y)
+    stats = ContactStatistics((nx, ny), film_edges, hertz, counting_steps)
     history = StepHistory(total, snaps, nx)
     key = fingerprint(repr(problem), x, y, dt, warmup_steps, counting_steps, opts.theta,
                       opts.method, opts.near, opts.tol, opts.max_sweeps, opts.refresh,
@@ -706,6 +782,9 @@ def solve_transient(
         steps=total, steps_done=steps_done, pressure=p, film=h, surface1=z1, surface2=z2,
         contact_count=stats.count, contact_count_rate=stats.count_rate(dt),
         contact_time_fraction=stats.contact_time_fraction(),
+        contact_nodes=stats.contact_nodes, hertz_contact_nodes=stats.region_contact_nodes,
+        hertz_nodes=int(np.count_nonzero(hertz)), block_contact_count=stats.block_counts,
+        block_steps=stats.block_steps,
         film_edges=film_edges, film_counts=stats.film_counts, least_film=stats.least_film,
         flow_x=qx, flow_y=qy,
         snapshot_steps=snaps, iterations=int(record["sweeps"].sum()),
