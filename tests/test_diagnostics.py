@@ -281,7 +281,7 @@ def test_ehl_minimum_film_mesh_keeps_to_the_nodes_that_converge():
     assert "refine until" not in lines[0] and "does not converge" in lines[0]
     y, h = lobe(129, 0.32)  # on the cap: 10.6 %
     lines = dg.ehl_minimum_film_mesh(h, x, y, a, b, cell_aspect=8.0, max_ny=129)
-    assert "the estimate is the error bar" in lines[0] and "use ny" not in lines[0]
+    assert "take the estimate as the error bar" in lines[0] and "use ny" not in lines[0]
     narrow = np.linspace(-2.5 * a, 1.5 * a, 513)  # dx = 2 dy / 8 at the cap: nx raised
     y, h = lobe(65, 2.4)
     lines = dg.ehl_minimum_film_mesh(h[::2], narrow, y, a, b, cell_aspect=8.0, max_ny=129)

@@ -248,7 +248,7 @@ def test_a_soft_contacts_minimum_film_advice_names_a_mesh_that_converges():
     nx >= 1225, where the relaxation cycles (residual 0.03 after 5,000 sweeps). Now it names
     the finest mesh across y that converges, ny = 129 at this nx (dy = 8 dx), and the error
     left there; followed (as a user would: grid.nx, grid.ny), it converges (3,926 sweeps,
-    about 4 min) with no cell advice, and its minimum film lies within 15 % of Hamrock &
+    2-4 min) with no cell advice, and its minimum film lies within 15 % of Hamrock &
     Dowson's soft minimum film (1724 nm, a fit, so a loose bound; the dy^2 extrapolation of
     b/16 and b/32 is 1879 nm) while the default mesh's is more than 30 % under it."""
     default = run_case(load_case(PDMS_BALL))
@@ -268,7 +268,7 @@ def test_a_soft_contacts_minimum_film_advice_names_a_mesh_that_converges():
     assert h_min == pytest.approx(hd, rel=0.15)
     assert 1.0 - h_min / 1879e-9 < left  # the error the default mesh's line said was left
     line = [w for w in out.warnings if w.startswith("mesh: the minimum film")][0]
-    assert "the estimate is the error bar" in line
+    assert "take the estimate as the error bar" in line
 
 
 def test_run_rescued_by_y_line_sweeps_says_so():

@@ -1114,8 +1114,8 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
                      + (f"use {advice}, on which the minimum film is still "
                         f"{'up to ' + _pct(left) if left < 1.0 else 'over 100 %'} low by this "
                         "estimate"
-                        if advice else "this mesh is the finest that converges, so the "
-                        "estimate is the error bar of the minimum film"))
+                        if advice else f"with {y.size} nodes across, take the estimate "
+                        "as the error bar of the minimum film"))
         parts.append(part)
         capped_any = capped_any or capped
     if not parts:
