@@ -254,6 +254,40 @@ def test_ehl_minimum_film_mesh():
     assert len(lines) == 1 and "along x" in lines[0] and "y =" not in lines[0]
 
 
+def test_ehl_minimum_film_mesh_keeps_to_the_nodes_that_converge():
+    """With ``max_ny`` (a soft point contact's relaxation converges on at most 129 nodes
+    across, on cells dy >= 8 dx) a minimum film that needs more nodes across is told the
+    capped mesh and the error the dy^2 scaling leaves on it, not a mesh that does not
+    converge; on a mesh already at the cap, that the estimate is its error bar."""
+    a = b = 1e-3
+    x = np.linspace(-2.5 * a, 1.5 * a, 1025)
+
+    def lobe(ny, rise):  # a valley across y at y = 0.9 b, its neighbours `rise` thicker
+        y = np.linspace(-2 * b, 2 * b, ny)
+        j = int(np.argmin(abs(y - 0.9 * b)))
+        h = np.full((x.size, y.size), 3e-6)
+        h[:, j - 1:j + 2] = np.outer(1e-6 * (1 + 1e-4 * (np.arange(x.size) - 700) ** 2),
+                                     [1 + rise, 1, 1 + rise])
+        return y, h
+
+    y, h = lobe(65, 2.4)  # estimate 0.33 * 2.4 = 79 %: ny >= 409 uncapped
+    plain = dg.ehl_minimum_film_mesh(h, x, y, a, b)
+    assert "use ny >= 409 with nx >= 1225 (dy >= 3 dx)" in plain[0]
+    lines = dg.ehl_minimum_film_mesh(h, x, y, a, b, cell_aspect=8.0, max_ny=129)
+    _every_line_names_a_limit(lines)
+    assert len(lines) == 1 and "needs ny >= 409" in lines[0]
+    assert "use ny = 129," in lines[0] and "nx >=" not in lines[0]  # 1025 keeps dy = 8 dx
+    assert _percent(lines[0], "still up to") == pytest.approx(0.33 * 2.4 / 4, rel=1e-3)
+    assert "refine until" not in lines[0] and "does not converge" in lines[0]
+    y, h = lobe(129, 0.32)  # on the cap: 10.6 %
+    lines = dg.ehl_minimum_film_mesh(h, x, y, a, b, cell_aspect=8.0, max_ny=129)
+    assert "take the estimate as the error bar" in lines[0] and "use ny" not in lines[0]
+    narrow = np.linspace(-2.5 * a, 1.5 * a, 513)  # dx = 2 dy / 8 at the cap: nx raised
+    y, h = lobe(65, 2.4)
+    lines = dg.ehl_minimum_film_mesh(h[::2], narrow, y, a, b, cell_aspect=8.0, max_ny=129)
+    assert "use ny = 129 with nx >= 1025 (dy >= 8 dx)" in lines[0]
+
+
 def test_ehl_side_film():
     """The side probe's film changes are reported above their limits, with the wider sides
     as the advice; within the limits, or when a probe solve did not converge, nothing."""

@@ -1020,7 +1020,9 @@ def ehl_film_mesh(x, a: float, film: float, domain=None) -> list[str]:
             f"{_pct(MESH_TARGET)}"]
 
 
-def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None) -> list[str]:
+def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
+                          cell_aspect: float = MIN_CELL_ASPECT,
+                          max_ny: int | None = None) -> list[str]:
     """A minimum film the mesh does not resolve: its discretisation error estimated from the
     film's relative second difference at its node, in each direction.
 
@@ -1049,6 +1051,15 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None) ->
         Domain (m) on which the advised node counts are counted, where it reaches beyond the
         nodes: the one the run's other lines advise (:func:`advised_domain`), so that the
         spacing asked for holds on it.
+    cell_aspect : float
+        Least ``dy / dx`` of the cells advised across y: ``nx`` is raised with ``ny`` to
+        keep it (the x-line relaxation needs cells long across y; default
+        ``MIN_CELL_ASPECT``, 3).
+    max_ny : int, optional
+        Most nodes across y on which the relaxation converges for this contact
+        (:data:`asperity.ehl.solver.SOFT_MAX_NY` for an isoviscous soft point contact). Where
+        more are needed the line names this many, with the error left on it by the ``dY^2``
+        scaling, instead of a mesh that does not converge.
 
     Returns
     -------
@@ -1065,6 +1076,7 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None) ->
     i, j = np.unravel_index(np.argmin(film), film.shape)
     h = film[i, j]
     parts = []
+    capped_any = False
     for (key, semi, name, line, k), (span, where) in zip(
             (("y", b, "b", film[i, :], j), ("x", a, "a", film[:, j], i)), spans, strict=True):
         n = line.size
@@ -1076,25 +1088,43 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None) ->
             continue
         step = _spacing(y if key == "y" else x) / math.sqrt(min(error, 1.0) / MESH_TARGET)
         need = 8 * math.ceil(round(span / step / 8, 6)) + 1
-        advice = f"n{key} >= {need}{where}"
-        if key == "y" and x.size > 1:  # the x-line relaxation needs long cells across
-            dy = span / (need - 1)
+        capped = key == "y" and max_ny is not None and need > max_ny
+        rows = min(need, max_ny) if capped else need
+        advice = (f"n{key} >= {need}{where}" if not capped else
+                  f"ny = {max_ny}{where}" if y.size < max_ny else "")
+        if key == "y" and x.size > 1 and advice:  # the x-line relaxation needs long cells
+            dy = span / (rows - 1)
             x_span, x_where = spans[1]
-            nx = 8 * math.ceil(round(x_span / (dy / MIN_CELL_ASPECT) / 8, 6)) + 1
-            advice += (f" with nx >= {nx}{x_where} (dy >= {MIN_CELL_ASPECT:g} dx)"
+            nx = 8 * math.ceil(round(x_span / (dy / cell_aspect) / 8, 6)) + 1
+            advice += (f" with nx >= {nx}{x_where} (dy >= {cell_aspect:g} dx)"
                        if nx > x.size else "")
         spacing = semi / _spacing(y if key == "y" else x)
-        parts.append(f"{'across y' if key == 'y' else 'along x'} (d{key} = {name}/"
-                     f"{spacing:.3g}, the film at the nodes beside it "
-                     f"{'thicker by ' + _pct(thicker) if h > 0.0 else 'above zero'}): "
-                     f"estimated error {'up to ' + _pct(error) if error < 1.0 else 'over 100 %'}"
-                     f"; use {advice} for about {_pct(MESH_TARGET)}")
+        estimate = f"{'up to ' + _pct(error) if error < 1.0 else 'over 100 %'}"
+        part = (f"{'across y' if key == 'y' else 'along x'} (d{key} = {name}/{spacing:.3g}, "
+                f"the film at the nodes beside it "
+                f"{'thicker by ' + _pct(thicker) if h > 0.0 else 'above zero'}): "
+                f"estimated error {estimate}")
+        if not capped:
+            part += f"; use {advice} for about {_pct(MESH_TARGET)}"
+        else:  # the finest mesh across y that converges, and the error it leaves
+            left = min(error, 1.0) * (span / (max_ny - 1) / _spacing(y)) ** 2
+            part += (f"; about {_pct(MESH_TARGET)} needs ny >= {need}{where}, but the "
+                     f"relaxation of this contact converges on at most {max_ny} nodes across "
+                     f"and on cells dy >= {cell_aspect:g} dx; "
+                     + (f"use {advice}, on which the minimum film is still "
+                        f"{'up to ' + _pct(left) if left < 1.0 else 'over 100 %'} low by this "
+                        "estimate"
+                        if advice else f"with {y.size} nodes across, take the estimate "
+                        "as the error bar of the minimum film"))
+        parts.append(part)
+        capped_any = capped_any or capped
     if not parts:
         return []
     at = f"x = {x[i] / a:.3g} a" + (f", y = {y[j] / b:.3g} b" if film.shape[1] > 1 else "")
     return [f"mesh: the minimum film ({h * 1e9:.4g} nm at {at}) is not resolved "
-            + " and ".join(parts) + f" (limit {_pct(MIN_FILM_MESH_ERROR)}); refine until the "
-            "minimum film stops changing"]
+            + " and ".join(parts) + f" (limit {_pct(MIN_FILM_MESH_ERROR)}); "
+            + ("refine until the minimum film stops changing" if not capped_any else
+               "a finer mesh across y does not converge with the solver's relaxation")]
 
 
 def smooth_start_contact(steady_film, x, y, a: float, b: float | None,

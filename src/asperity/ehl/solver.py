@@ -143,6 +143,22 @@ COARSE_SWEEPS = 1000
 #: sweeps) and cycled with them.
 Y_LINES_BELOW = 3.0
 
+#: Cells (``dY >= SOFT_CELL_ASPECT dX``) and nodes across y (at most ``SOFT_MAX_NY``) on which
+#: the relaxation of an isoviscous elastic point contact (``alpha p_h <= 0.1``, Moes
+#: ``M >= 10``: soft EHL) converged with the defaults. A PDMS ball at M = 434 on -2.5a..1.5a,
+#: +-2b: 1025 x 65 (dY = 16 dX) and 1025 x 129 (8 dX) converged (952 and 3,926 sweeps),
+#: 385 x 129 and 1225 x 409 (3 dX) did not (residual 9e-3 and 0.03); a glycerol-lubricated
+#: one at M = 964 converged on 1025 x 129 and not on 1025 x 257. Measured on 385 x 129 from a
+#: converged 193 x 65 start: with ``H0`` held fixed the relaxation diverged with a far-field
+#: refresh every 10 sweeps and converged with one every sweep; then the load loop's shift of
+#: ``POINT_LOAD_GAIN`` per sweep cycled (period about 500 sweeps, central film 2.6-3.5 um)
+#: and 0.003 converged in 2,000 sweeps. On 769 x 257 (b/64, 3 dX) a wave ran along the centre
+#: line from inlet to outlet with those settings too, with or without y-line sweeps (central
+#: film 2.2-3.8 um). So the runners' mesh advice keeps to these cells and nodes
+#: (docs/ehl-robustness.md, "A PDMS ball's minimum film across y").
+SOFT_CELL_ASPECT = 8.0
+SOFT_MAX_NY = 129
+
 
 class _XFastest:
     """A nodal field of :class:`EHLState`, stored x-fastest (Fortran order) whatever is assigned.

@@ -18,12 +18,18 @@ from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
 from ..ehl.sides import inlet_probe, side_probe
-from ..ehl.solver import NEWTON_CHECK_SWEEPS, Y_LINES_BELOW
-from ..references import ISOVISCOUS, ehl_steady_comparisons, film_formulas, lubricant_laws
+from ..ehl.solver import NEWTON_CHECK_SWEEPS, SOFT_CELL_ASPECT, SOFT_MAX_NY, Y_LINES_BELOW
+from ..references import (
+    ELASTIC_M,
+    ISOVISCOUS,
+    ehl_steady_comparisons,
+    film_formulas,
+    lubricant_laws,
+)
 from ..results import Outcome, variable
 
 __all__ = ["STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
-           "isoviscous_line_advice", "run", "stall_advice"]
+           "isoviscous_line_advice", "relaxed_cells", "run", "stall_advice"]
 
 #: A steady solve that stopped before its sweep limit with a residual below this many times
 #: its tolerance stalled near a solution (:func:`stall_advice`).
@@ -98,14 +104,14 @@ def run(case, progress=None) -> Outcome:
                    "checking Newton's solution; ")
         # cells too short across y are the cause the error line names, when they are one (an
         # MTM ball on the advised domain with dy = 2.3 dx: "check the inlet and the mesh")
-        cells = [] if line else _cell_advice(res)
+        cells = [] if line else _cell_advice(problem, res)
         notes.append(f"The solver did not converge in {res.sweeps} sweeps on the finest grid "
                      f"({counted}residual {res.residual:.2e}); the numbers above are not "
                      "trustworthy."
                      + (f" {cells[0]}" if cells else
                         isoviscous_line_advice(problem, res) or stall_advice(case, res)))
     elif not line and res.y_lines:
-        notes += _cell_advice(res)
+        notes += _cell_advice(problem, res)
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
         "chittenden_central_film_m", summary.get("moes_central_film_m")))
     # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
@@ -180,26 +186,55 @@ def stall_advice(case, res) -> str:
             "help.")
 
 
-def _cell_advice(res) -> list[str]:
-    """What to change for a point contact on cells shorter across y than ``Y_LINES_BELOW``
-    times their length (:data:`asperity.ehl.solver.Y_LINES_BELOW`) that did not converge, or
-    converged only in the solver's second try with y-line sweeps."""
+def relaxed_cells(problem) -> tuple[float, int | None]:
+    """The cells (least ``dy / dx``) and the most nodes across y on which the steady
+    relaxation of a point contact converges: ``Y_LINES_BELOW`` (3) and no limit, but
+    ``SOFT_CELL_ASPECT`` (8) and ``SOFT_MAX_NY`` (129) for an isoviscous elastic contact
+    (``alpha p_h <= ISOVISCOUS``, Moes ``M >= ELASTIC_M``: soft EHL), whose load loop cycled
+    on a PDMS ball with cells 3 dx across and on 409 nodes across
+    (:data:`asperity.ehl.solver.SOFT_MAX_NY`)."""
+    soft = (not isinstance(problem, LineContact) and problem.M >= ELASTIC_M
+            and problem.lubricant.pressure_viscosity * problem.p_hertz <= ISOVISCOUS)
+    return (SOFT_CELL_ASPECT, SOFT_MAX_NY) if soft else (Y_LINES_BELOW, None)
+
+
+def _cell_advice(problem, res) -> list[str]:
+    """What to change for a point contact that did not converge, or converged only in the
+    solver's second try with y-line sweeps, on cells shorter across y than
+    :func:`relaxed_cells` allows (``Y_LINES_BELOW`` times their length,
+    :data:`asperity.ehl.solver.Y_LINES_BELOW`; for soft EHL ``SOFT_CELL_ASPECT``) or, for
+    soft EHL, on more than ``SOFT_MAX_NY`` nodes across."""
     dx, dy = res.x[1] - res.x[0], res.y[1] - res.y[0]
-    if dy >= Y_LINES_BELOW * dx:
+    aspect, max_ny = relaxed_cells(problem)
+    too_many = max_ny is not None and res.y.size > max_ny and not res.converged
+    if dy >= aspect * dx * (1.0 - 1e-9) and not too_many:
         return []
-    ny = 1 + int((res.y[-1] - res.y[0]) / (Y_LINES_BELOW * dx))
+    ny = 1 + int((res.y[-1] - res.y[0]) / (aspect * dx) * (1.0 + 1e-9))
+    if max_ny is not None:
+        ny = min(ny, max_ny)
     if res.converged:
         outcome = (f"the x-line relaxation did not converge and the solution is that of a "
                    f"second solve with a y-line sweep after every x-line sweep ({res.sweeps} "
                    "sweeps on the finest grid)")
     else:
-        outcome = "neither the x-line relaxation nor the y-line sweeps tried after it converged"
-    return [f"The cells are {dy / dx:.2g} dx across (dy = {dy * 1e6:.3g} um, dx = "
-            f"{dx * 1e6:.3g} um): on such cells the rows couple at least as strongly as the "
-            f"nodes along them, and {outcome}. The relaxation converges best, and fastest, on "
-            f"cells with dy >= {Y_LINES_BELOW:g} dx: grid.ny <= {ny} with this nx (for more "
-            "nodes across, raise nx with ny), or leave out grid.nx and grid.ny so that the "
-            "mesh follows the contact."]
+        outcome = ("the relaxation did not converge" if dy >= Y_LINES_BELOW * dx else
+                   "neither the x-line relaxation nor the y-line sweeps tried after it "
+                   "converged")
+    cells = (f"The cells are {dy / dx:.2g} dx across (dy = {dy * 1e6:.3g} um, dx = "
+             f"{dx * 1e6:.3g} um)")
+    if max_ny is None:
+        return [f"{cells}: on such cells the rows couple at least as strongly as the nodes "
+                f"along them, and {outcome}. The relaxation converges best, and fastest, on "
+                f"cells with dy >= {aspect:g} dx: grid.ny <= {ny} with this nx (for more "
+                "nodes across, raise nx with ny), or leave out grid.nx and grid.ny so that "
+                "the mesh follows the contact."]
+    alpha_ph = problem.lubricant.pressure_viscosity * problem.p_hertz
+    return [f"{cells} on {res.y.size} nodes across, and {outcome}. For an isoviscous elastic "
+            f"contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) the load answers a "
+            "shift of the separation only over hundreds of sweeps, and the load loop cycles "
+            f"on cells shorter than {aspect:g} dx across and on more than {max_ny} nodes "
+            f"across: use grid.ny <= {ny} with this nx, or leave out grid.nx and grid.ny "
+            "(the default mesh converges)."]
 
 
 def chosen_mesh(case, problem, x, y) -> dict:
@@ -290,7 +325,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
                                               domain=advised)
         lines += film_mesh
     if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
-        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b, domain=advised)
+        aspect, max_ny = relaxed_cells(problem)
+        lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b, domain=advised,
+                                                   cell_aspect=aspect, max_ny=max_ny)
     if getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
