@@ -608,6 +608,40 @@ def test_log_range_is_drawn_on_a_log_axis_and_study_nc_says_what_made_it(tmp_pat
     assert load_study("holmes-mesh-CC").base == "holmes-rough-CC-paper"   # an example
 
 
+def test_a_power_law_on_a_log_range_is_drawn_on_log_log_axes(tmp_path):
+    """A ball bearing's film against a log range of speed (1-20 m/s: 129 nm to 1.09 um, as
+    h ~ u^0.71) was drawn on a linear y axis, where a power law looks like an exponential
+    rise; it is now a straight line on log-log axes, whose slope is the exponent. A result
+    spanning less than a factor LOG_Y_SPAN (Moes L, 13.6-28.9) and a negative one (the
+    separation) keep a linear y axis, as does any result on a linear x axis."""
+    from asperity.plotting.study import LOG_Y_SPAN, plot_study
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                             'range = {start = 1, stop = 20, num = 4, scale = "log", unit = "N"}\n')
+    out = tmp_path / "out"
+    speeds = np.geomspace(1, 20, 4)
+    for n, u in enumerate(speeds):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "converged": True,
+             "summary": {"central_film_thickness_m": 129e-9 * u**0.71,
+                         "moes_L": 13.6 * u**0.25, "separation_m": -7.1e-6 + 3.6e-8 * u}}))
+    assert 20**0.25 < LOG_Y_SPAN < 20**0.71
+    keys = ["central_film_thickness_m", "moes_L", "separation_m"]
+    film, moes_l, separation = plot_study(combine(study, out), keys).axes[:3]
+    assert film.get_yscale() == "log"
+    (line,) = film.get_lines()
+    x, y = line.get_data()
+    slope = np.polyfit(np.log(x), np.log(y), 1)[0]
+    assert slope == pytest.approx(0.71, abs=1e-9)
+    assert moes_l.get_yscale() == separation.get_yscale() == "linear"
+    linear = combine(_study(tmp_path, '[[axis]]\nkey = "loading.load"\nrange = {start = 1, '
+                                      'stop = 20, num = 4, unit = "N"}\n'), out)
+    assert plot_study(linear, keys).axes[0].get_yscale() == "linear"
+
+
 @pytest.mark.parametrize("workers", [0, -2])
 def test_a_cluster_of_no_workers_is_one_line_naming_the_option(tmp_path, workers):
     """``asperity sweep --workers 0`` ended in "internal: ZeroDivisionError" and exit code 1;

@@ -5,7 +5,10 @@ plain numbers at the swept values (at most ``LOG_TICKS`` of them; else at 1, 2 a
 powers of ten), never matplotlib's default minor labels, which for a range within about a decade
 (5-80 N) are ``2×10¹ 3×10¹ 4×10¹ 6×10¹`` written over each other. A result that
 changes by less than ``FLAT_SPAN`` of its size over the study is drawn on a range of
-``FLAT_RANGE`` about its mean, so that round-off does not look like a trend."""
+``FLAT_RANGE`` about its mean, so that round-off does not look like a trend. On a log x axis
+a positive result spanning more than a factor ``LOG_Y_SPAN`` is drawn on a log y axis too,
+so that a power law (an EHL film against speed, ``h ~ u^0.67``) is a straight line whose
+slope reads as its exponent; on a linear y axis it looked like an exponential rise."""
 
 from __future__ import annotations
 
@@ -23,10 +26,14 @@ from ..formatting import (
 )
 from .style import plt
 
-__all__ = ["FLAT_RANGE", "FLAT_SPAN", "LOG_TICKS", "plot_study"]
+__all__ = ["FLAT_RANGE", "FLAT_SPAN", "LOG_TICKS", "LOG_Y_SPAN", "plot_study"]
 
 #: A log x axis with at most this many swept values has a tick at each of them.
 LOG_TICKS = 8
+
+#: On a log x axis, a panel whose positive values span more than this factor gets a log y
+#: axis (a film over a decade of speed: 129 nm to 1.09 um, a factor 8.5).
+LOG_Y_SPAN = 3.0
 
 #: A panel's values spanning less than this fraction of their largest magnitude are "flat".
 FLAT_SPAN = 1e-3
@@ -55,6 +62,19 @@ def _log_ticks(ax, x: np.ndarray) -> None:
     ax.xaxis.set_major_locator(locator)
     ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _pos: format_number(v)))
     ax.xaxis.set_minor_formatter(NullFormatter())
+
+
+def _log_y(ax, values: np.ndarray) -> None:
+    """A log y axis with plain-number ticks at 1, 2 and 5 times the powers of ten (and at the
+    ends of the data within a decade, where those would be one or none), when ``values`` are
+    all positive and span more than :data:`LOG_Y_SPAN`."""
+    finite = values[np.isfinite(values)]
+    if finite.size < 2 or np.any(finite <= 0) or finite.max() / finite.min() <= LOG_Y_SPAN:
+        return
+    ax.set_yscale("log")
+    ax.yaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _pos: format_number(v)))
+    ax.yaxis.set_minor_formatter(NullFormatter())
 
 
 def _axis_values(ds, name):
@@ -132,6 +152,8 @@ def plot_study(ds, variables, columns: int = 3):
                                 or (len(x) > 2 and x.max() / x.min() > 50)):
             ax.set_xscale("log")
             _log_ticks(ax, x)
+            if drawn:
+                _log_y(ax, np.concatenate(drawn))
         else:  # the whole axis on every panel, also where some cases have no value
             pad = 0.05 * (np.ptp(x) or 1.0)
             ax.set_xlim(x.min() - pad, x.max() + pad)
