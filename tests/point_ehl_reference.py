@@ -1,8 +1,9 @@
 """An independent steady point-contact EHL solution (pure rolling, Newtonian, incompressible).
 
 Nothing here comes from :mod:`asperity.ehl`: it is a reference the steady solver is set
-beside (tests/test_ehl_point_reference.py, docs/ehl-robustness.md, "An independent point
-contact at L = 0 (session 39)").
+beside (tests/test_ehl_point_reference.py, tests/test_ehl_ellipse_reference.py,
+docs/ehl-robustness.md, "An independent point contact at L = 0 (session 39)" and, for
+k < 1, "Ellipses entrained along the major axis").
 
 Equations, in Hertzian units (``X = x/a``, ``Y = y/a``, ``P = p/p_h``, ``H = h Rx/a^2``):
 
@@ -31,7 +32,11 @@ wedge flux ``H`` on a face from Leonard's upwind-biased quadratic (QUICK, ``kapp
 the nodal sum times ``dX dY``. All equations are solved at once by Newton's method on the
 semismooth system with its dense Jacobian (LAPACK LU), a backtracking line search on the
 squared residual, from Hertz's pressure on the coarsest mesh and from the interpolated
-coarser solution on each finer one.
+coarser solution on each finer one. A heavily loaded or piezoviscous contact, whose Hertz
+start touches (``H = 0`` in the side lobes, where Newton stalls), is reached on the coarsest
+mesh along a continuation: ``lam`` lowered from a thicker film, and ``alpha p_h`` raised in
+steps from 0 (``solve_sequence``). The Hertz semi-axes and pressure of an ellipse are this
+module's own too (``hertz_ellipse``).
 
 References
 ----------

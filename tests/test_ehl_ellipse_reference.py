@@ -93,15 +93,15 @@ def test_at_k_one_half_the_solver_and_the_reference_agree_and_lie_43_percent_abo
 
 @pytest.mark.slow
 def test_at_k_one_quarter_the_solver_converges_to_the_reference_78_percent_above_chittenden():
-    """k = 0.25 on -2.5 a..1.5 a, +-0.5 a (+-2 b), cells dY = dX/2. The reference on a/32 and
-    a/40 (central films 0.04744, 0.04886; about 4 min) extrapolates to 0.05138; with a/48
-    added (0.04965, the differences falling 1.79 times against second order's 1.84) the pair
-    a/40-a/48 gives 0.05145, so the reference's own error is about 0.15 %. The solver on
-    513 x 41 and 1025 x 81 (a/128 x b/10, a/256 x b/20: 0.04992, 0.05114, differences from
-    a/64 x b/5 falling 4.4 times) extrapolates to 0.05154. Tested: within 0.6 % of each
-    other (the reference's error and the solver's own extrapolation's, measured 0.3 %), and
-    1.78 times Chittenden's transcribed formula (0.02887) within 2 %. The solver's default
-    mesh (513 x 81 on +-a, 0.04992) lies 3.1 % under the converged film."""
+    """k = 0.25 on -2.5 a..1.5 a, +-0.5 a (+-2 b), cells dY = dX/2. The reference on a/32
+    and a/40 (central films 0.04744, 0.04886; 4-6 min on 2 shared cores) extrapolates to
+    0.05138; with a/48 added (0.04965, the differences falling 1.79 times against second
+    order's 1.84) the pair a/40-a/48 gives 0.05145, so the reference's own error is about
+    0.15 %. The solver on 513 x 41 and 1025 x 81 (a/128 x b/10, a/256 x b/20: 0.04992,
+    0.05114, differences from a/64 x b/5 falling 4.4 times) extrapolates to 0.05154. Tested:
+    within 0.6 % of each other (the reference's error and the solver's own extrapolation's,
+    measured 0.3 %), and 1.78 times Chittenden's transcribed formula (0.02887) within 2 %.
+    The solver's default mesh (513 x 81 on the default +-a, 0.05005) lies 2.8 % under."""
     problem = _problem(0.25)
     domain = (-2.5, 1.5, 0.5)
     hc = [s.central for s in _reference(problem, [1 / 32, 1 / 40], 0.5, domain, film=0.05,
