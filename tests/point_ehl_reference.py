@@ -1,8 +1,9 @@
 """An independent steady point-contact EHL solution (pure rolling, Newtonian, incompressible).
 
 Nothing here comes from :mod:`asperity.ehl`: it is a reference the steady solver is set
-beside (tests/test_ehl_point_reference.py, docs/ehl-robustness.md, "An independent point
-contact at L = 0 (session 39)").
+beside (tests/test_ehl_point_reference.py, tests/test_ehl_ellipse_reference.py,
+docs/ehl-robustness.md, "An independent point contact at L = 0 (session 39)" and, for
+k < 1, "Ellipses entrained along the major axis").
 
 Equations, in Hertzian units (``X = x/a``, ``Y = y/a``, ``P = p/p_h``, ``H = h Rx/a^2``):
 
@@ -31,7 +32,11 @@ wedge flux ``H`` on a face from Leonard's upwind-biased quadratic (QUICK, ``kapp
 the nodal sum times ``dX dY``. All equations are solved at once by Newton's method on the
 semismooth system with its dense Jacobian (LAPACK LU), a backtracking line search on the
 squared residual, from Hertz's pressure on the coarsest mesh and from the interpolated
-coarser solution on each finer one.
+coarser solution on each finer one. A heavily loaded or piezoviscous contact, whose Hertz
+start touches (``H = 0`` in the side lobes, where Newton stalls), is reached on the coarsest
+mesh along a continuation: ``lam`` lowered from a thicker film, and ``alpha p_h`` raised in
+steps from 0 (``solve_sequence``). The Hertz semi-axes and pressure of an ellipse are this
+module's own too (``hertz_ellipse``).
 
 References
 ----------
@@ -48,6 +53,46 @@ import numpy as np
 import scipy.linalg
 import scipy.sparse as sp
 from scipy.interpolate import RegularGridInterpolator
+from scipy.optimize import brentq
+from scipy.special import ellipe, ellipk
+
+
+def hertz_ellipse(*, rx, ry, load, reduced_modulus):
+    """Hertz's elliptical contact with the semi-axis ``a`` along x (Johnson 1985, eq. 3.39).
+
+    With ``k = b/a`` and ``e^2 = 1 - k^2`` (``a`` the major semi-axis, ``rx >= ry``; for
+    ``rx < ry`` the roles swap and ``k > 1``), ``rx/ry = (E(e)/k^2 - K(e)) / (K(e) - E(e))``
+    fixes ``k``, and ``1/(2 rx) = 3 W (K - E) / (pi E* e^2 a^3)`` with ``E* = E'/2`` fixes
+    ``a``; ``p_h = 3 W / (2 pi a b)``.
+
+    Parameters
+    ----------
+    rx, ry : float
+        Reduced radii along and across the rolling direction x (m).
+    load : float
+        Normal load (N).
+    reduced_modulus : float
+        ``E' = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)`` (Pa).
+
+    Returns
+    -------
+    tuple
+        ``(k, a, p_h)``: ``b/a``, the semi-axis along x (m), the peak pressure (Pa).
+    """
+    major, minor = max(rx, ry), min(rx, ry)
+
+    def ratio(k):
+        e2 = 1.0 - k * k
+        return (ellipe(e2) / k**2 - ellipk(e2)) / (ellipk(e2) - ellipe(e2))
+
+    k = 1.0 if major == minor else brentq(lambda k: ratio(k) - major / minor, 1e-3,
+                                          1.0 - 1e-12, xtol=1e-15)
+    e2 = 1.0 - k * k
+    factor = 0.25 if k == 1.0 else (ellipk(e2) - ellipe(e2)) / (np.pi * e2)
+    major_axis = (6.0 * load * major * factor / reduced_modulus) ** (1.0 / 3.0)
+    a = major_axis if rx >= ry else k * major_axis
+    k = k if rx >= ry else 1.0 / k
+    return k, a, 3.0 * load / (2.0 * np.pi * a * a * k)
 
 
 def love_panel(x, y, half_x, half_y):
@@ -305,7 +350,8 @@ class PointReference:
                              time.perf_counter() - started)
 
 
-def solve_sequence(*, spacings, aspect=1.0, film, lam, lam_start=None, **kwargs):
+def solve_sequence(*, spacings, aspect=1.0, film, lam, lam_start=None, alpha_p=0.0,
+                   path=(), **kwargs):
     """Reference solutions on meshes of the given ``dX`` (``dY = aspect dX``), each started
     from the previous one, the first from Hertz with least film ``film``.
 
@@ -313,24 +359,39 @@ def solve_sequence(*, spacings, aspect=1.0, film, lam, lam_start=None, **kwargs)
     a factor of at most 3 (a heavily loaded contact, whose Hertz start on a coarse mesh
     touches, reached from a thicker film).
 
+    ``path``: pairs ``(lam, alpha_p)`` solved in turn on the first mesh before the case's
+    own ``(lam, alpha_p)``, each started from the one before (after the ``lam_start``
+    march, which runs isoviscous when ``path`` is given): a piezoviscous contact reached
+    from an isoviscous one (``alpha p_h`` raised in steps from 0) and a thick film.
+
     Returns
     -------
     list of PointSolution
+        One per mesh; a stage of the path that does not converge ends the list there (its
+        unconverged solution last).
     """
     out = []
     for dx in spacings:
-        ref = PointReference(dx=dx, dy=aspect * dx, lam=lam, **kwargs)
+        ref = PointReference(dx=dx, dy=aspect * dx, lam=lam, alpha_p=alpha_p, **kwargs)
         if out:
             out.append(ref.solve(*ref.interpolate(out[-1])))
+            if not out[-1].converged:
+                return out
             continue
         start = ref.hertz_start(film)
+        first_alpha = path[0][1] if path else alpha_p
         steps = int(np.ceil(np.log(lam_start / lam) / np.log(3.0))) if lam_start else 0
-        for value in lam * ((lam_start or lam) / lam) ** (np.arange(steps, 0, -1) / max(steps, 1)):
-            ref.lam = value
+        marched = lam * ((lam_start or lam) / lam) ** (np.arange(steps, 0, -1) / max(steps, 1))
+        for stage in [(value, first_alpha) for value in marched] + list(path):
+            ref.lam, ref.alpha_p = stage
             sol = ref.solve(*start)
+            if not sol.converged:
+                return [sol]
             start = (sol.P.ravel()[ref.nodes], sol.H0)
-        ref.lam = lam
+        ref.lam, ref.alpha_p = lam, alpha_p
         out.append(ref.solve(*start))
+        if not out[-1].converged:
+            return out
     return out
 
 

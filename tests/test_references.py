@@ -256,3 +256,22 @@ def test_every_cited_anchor_is_a_section_of_docs_references():
 
     assert all("docs/references.md#" in c.source for c in CHECKS), [
         c.name for c in CHECKS if "docs/references.md#" not in c.source]
+
+
+def test_chittendens_central_row_says_what_the_independent_ellipse_reference_found():
+    """A contact long along the rolling direction (k = 0.42) is set beside Chittenden's
+    films; the central row's note carries the measured 1.43 and 1.78 of the converged film
+    over the formula (tests/test_ehl_ellipse_reference.py), the minimum row does not (the
+    reference's minimum film is not mesh-converged)."""
+    from asperity.ehl import Lubricant, PointContact
+    from asperity.materials import Material
+    from asperity.references import film_formula_comparisons
+
+    steel = Material(210e9, 0.3)
+    oil = Lubricant(0.02, 28e-9, viscosity_model="barus", compressible=False)
+    toroid = PointContact(0.030, 0.008, 863.14, 10.0, 10.0, steel, steel, oil)
+    rows = {r.quantity: r for r in film_formula_comparisons(toroid, 6e-7, 3e-7)
+            if r.source.startswith("Chittenden")}
+    assert "1.43 (k = 0.5) and 1.78 (k = 0.25)" in rows["central film"].note
+    assert "independent" not in rows["minimum film"].note
+    assert rows["central film"].tolerance is None

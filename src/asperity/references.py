@@ -359,6 +359,16 @@ _LOW_L_NOTES = {
         "M = 100-1000 is the fit's, not the solver's"),
 }
 
+#: What an independent solution says of a fit in every regime it is shown in, measured in
+#: session 39 (docs/ehl-robustness.md, "Ellipses entrained along the major axis").
+_FIT_NOTES = {
+    "chittenden_central_film_m": (
+        "; at Moes M = 100, L = 10 an independent point-contact solution (dense Love panels, "
+        "Newton; mesh-converged to 0.2 %), which the solver matches within 0.3 %, gives 1.43 "
+        "(k = 0.5) and 1.78 (k = 0.25) times this transcription's central film: a film that "
+        "far above it is the formula's difference, not the solver's"),
+}
+
 
 def lubricant_laws(lubricant) -> str:
     """The lubricant's laws in words, e.g. ``"Roelands, incompressible, Newtonian"``."""
@@ -535,6 +545,7 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
         if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
             row_note += _LOW_L_NOTES.get(key, "")
             tolerance = LOW_L_TOLERANCE.get(key, tolerance)
+        row_note += _FIT_NOTES.get(key, "")
         if key in _ELASTIC_FITS and problem.M < ELASTIC_M:
             row_note += RIGID_FIT_NOTE.format(M=problem.M, limit=ELASTIC_M)
         if key == "dowson_higginson_minimum_film_m":
