@@ -241,6 +241,40 @@ def test_unconverged_soft_contact_is_told_the_cells_its_relaxation_converges_on(
     assert any("grid.ny <= 129 " in n for n in out.notes)
 
 
+def test_a_soft_contact_that_fails_with_the_defaults_is_relaxed_again_by_its_fallback():
+    """The PDMS ball is soft (``PointContact.soft``: alpha p_h = 0.0024, M = 434) and a
+    steel ball in a mineral oil is not. An unconverged soft solve with the default refresh
+    and load gain is relaxed again (``_soft_retry``: its sweeps count in ``total_sweeps``,
+    from a coarser grid); with a refresh or a gain given it is not."""
+    from asperity.ehl import solve_steady
+
+    problem = load_case(PDMS_BALL).problem()
+    assert problem.soft
+    steel = _example("holmes-smooth-point")
+    assert not load_case(steel).problem().soft
+    failed = solve_steady(problem, nx=97, ny=33, max_iter=10)
+    assert not failed.converged and failed.total_sweeps > failed.sweeps
+    given = solve_steady(problem, nx=97, ny=33, max_iter=10, refresh=10)
+    assert not given.soft_retry and given.total_sweeps == given.sweeps == 10
+
+
+@pytest.mark.slow
+def test_a_soft_contact_converges_on_cells_three_dx_across_by_its_fallback():
+    """The PDMS ball on 385 x 129 (dy = 3 dx, 3 grids) cycled with the defaults (residual
+    9e-3 after 5,000 sweeps); the fallback (a refresh every sweep, gain 0.4 H_c) converges
+    (3,503 sweeps, 9,793 in all, about 80 s). Its minimum film lies within 1 % of that of
+    the 1025 x 129 mesh (1657 nm, dy = 8 dx, which converges with the defaults: the same
+    dy, a finer dx) and within 5 % of Hamrock & Dowson's soft minimum film (1724 nm), and
+    the report says that the fallback's solution is the one given."""
+    out = run_case(load_case({**PDMS_BALL, "grid": {"nx": 385, "ny": 129},
+                              "solver": {"levels": 3}}))
+    assert out.converged
+    assert out.summary["minimum_film_thickness_m"] == pytest.approx(1657e-9, rel=0.01)
+    assert out.summary["minimum_film_thickness_m"] == pytest.approx(1724e-9, rel=0.05)
+    assert any("fallback for a soft contact" in n for n in out.notes)
+    assert not any("grid.ny <=" in n for n in out.notes)
+
+
 @pytest.mark.slow
 def test_a_soft_contacts_minimum_film_advice_names_a_mesh_that_converges():
     """The PDMS ball on its default mesh (1025 x 65, dy = b/16) converges with its side-lobe

@@ -20,7 +20,6 @@ from ..ehl.problem import LineContact
 from ..ehl.sides import inlet_probe, side_probe
 from ..ehl.solver import NEWTON_CHECK_SWEEPS, SOFT_CELL_ASPECT, SOFT_MAX_NY, Y_LINES_BELOW
 from ..references import (
-    ELASTIC_M,
     ISOVISCOUS,
     ehl_steady_comparisons,
     film_formulas,
@@ -112,6 +111,11 @@ def run(case, progress=None) -> Outcome:
                         isoviscous_line_advice(problem, res) or stall_advice(case, res)))
     elif not line and res.y_lines:
         notes += _cell_advice(problem, res)
+    if res.converged and res.soft_retry:
+        notes.append("The default relaxation did not converge on this mesh; the solution is "
+                     "that of the solver's fallback for a soft contact, relaxed again from the "
+                     "coarser grid with a far-field refresh every sweep and a smaller load "
+                     f"gain ({res.sweeps} sweeps on the finest grid).")
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
         "chittenden_central_film_m", summary.get("moes_central_film_m")))
     # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
@@ -193,8 +197,7 @@ def relaxed_cells(problem) -> tuple[float, int | None]:
     (``alpha p_h <= ISOVISCOUS``, Moes ``M >= ELASTIC_M``: soft EHL), whose load loop cycled
     on a PDMS ball with cells 3 dx across and on 409 nodes across
     (:data:`asperity.ehl.solver.SOFT_MAX_NY`)."""
-    soft = (not isinstance(problem, LineContact) and problem.M >= ELASTIC_M
-            and problem.lubricant.pressure_viscosity * problem.p_hertz <= ISOVISCOUS)
+    soft = not isinstance(problem, LineContact) and problem.soft
     return (SOFT_CELL_ASPECT, SOFT_MAX_NY) if soft else (Y_LINES_BELOW, None)
 
 
