@@ -144,19 +144,22 @@ COARSE_SWEEPS = 1000
 Y_LINES_BELOW = 3.0
 
 #: Cells (``dY >= SOFT_CELL_ASPECT dX``) and nodes across y (at most ``SOFT_MAX_NY``) on which
-#: the relaxation of an isoviscous elastic point contact (``alpha p_h <= 0.1``, Moes
-#: ``M >= 10``: soft EHL) converged with the defaults. A PDMS ball at M = 434 on -2.5a..1.5a,
-#: +-2b: 1025 x 65 (dY = 16 dX) and 1025 x 129 (8 dX) converged (952 and 3,926 sweeps),
-#: 385 x 129 and 1225 x 409 (3 dX) did not (residual 9e-3 and 0.03); a glycerol-lubricated
-#: one at M = 964 converged on 1025 x 129 and not on 1025 x 257. Measured on 385 x 129 from a
-#: converged 193 x 65 start: with ``H0`` held fixed the relaxation diverged with a far-field
-#: refresh every 10 sweeps and converged with one every sweep; then the load loop's shift of
-#: ``POINT_LOAD_GAIN`` per sweep cycled (period about 500 sweeps, central film 2.6-3.5 um)
-#: and 0.003 converged in 2,000 sweeps. On 769 x 257 (b/64, 3 dX) a wave ran along the centre
-#: line from inlet to outlet with those settings too, with or without y-line sweeps (central
-#: film 2.2-3.8 um). So the runners' mesh advice keeps to these cells and nodes
-#: (docs/ehl-robustness.md, "A PDMS ball's minimum film across y").
-SOFT_CELL_ASPECT = 8.0
+#: the steady solve of an isoviscous elastic point contact (:attr:`PointContact.soft`: a PDMS
+#: ball on glass) converges, with its fallback (:data:`SOFT_RETRY_REFRESH`). With the
+#: defaults alone a PDMS ball at M = 434 on -2.5a..1.5a, +-2b converged on 1025 x 65
+#: (dY = 16 dX, 952 sweeps) and 1025 x 129 (8 dX, 3,926), not on 385 x 129 (3 dX, residual
+#: 9e-3), so the limit was 8 dX until session 39's fallback: 385 x 129 now converges in 3,503
+#: sweeps of the fallback (9,793 in all, 77 s; minimum film 1651.7 nm against 1657 nm on
+#: 1025 x 129), and so does the glycerol-lubricated ball at M = 964 on 385 x 129 given as
+#: one grid (3,508, 9,938 in all, 107 s; 344.7 against 345.6 nm). Not on more nodes across:
+#: the PDMS ball on 769 x 257 (b/64, 3 dX) with a refresh every sweep and the fallback's
+#: gain on every grid ended at residual 0.025 after 5,000 sweeps (176 s; with 0.0017 and
+#: 0.003 too, 0.021), a wave running along the centre line from inlet to outlet every
+#: 100-150 sweeps, with or without y-line sweeps; the glycerol ball on 1025 x 257 did not
+#: converge with the defaults (residual 0.024) nor with the fallback's settings on its four
+#: grids (0.039 after 5,000 sweeps, 328 s). So the runners' mesh advice keeps to these cells
+#: and nodes (docs/ehl-robustness.md, "A PDMS ball's minimum film across y").
+SOFT_CELL_ASPECT = 3.0
 SOFT_MAX_NY = 129
 
 #: Far-field refresh interval and load gain of the last fallback of a soft point contact
@@ -167,7 +170,17 @@ SOFT_MAX_NY = 129
 #: ``SOFT_GAIN_PER_FILM H_c`` (``H_c`` Nijenbanning's central film in Hertzian units, scaled
 #: like the default gain on grids finer than the default mesh). ``2/15 H_c`` is the shift
 #: Newton's step would take on the isoviscous-elastic film's ``h ~ w^(-2/15)``
-#: (Nijenbanning's asymptote ``H_EI = 2.42 M^(-2/15)``). MEASURED_PLACEHOLDER
+#: (Nijenbanning's asymptote ``H_EI = 2.42 M^(-2/15)``), which makes the gain follow the
+#: film. The factor 3 on it is measured, not derived: within the relaxation the load answers
+#: a shift only weakly (on 385 x 129 a shift dH0 moved the relative load by 2.8 dH0 after one
+#: sweep and by at most 23 dH0, 20 sweeps on, against the film law's 540 dH0), so the gain
+#: that converges fastest is a few Newton steps per sweep. Measured on the PDMS ball
+#: (M = 434, ``H_c`` = 0.0139 estimated, Newton's step 0.00185) on 385 x 129 with a refresh
+#: every sweep on all three grids: gains 0.0017, 0.003, 0.0045, 0.006, 0.008 converged in
+#: 4,018, 2,490, 1,641, 406, 975 finest-grid sweeps, 0.01 cycled (docs/ehl-robustness.md,
+#: session 39); 0.4 ``H_c`` is 3 Newton steps, 0.0056 (the glycerol ball at M = 964: 0.0030).
+#: Only as a fallback: with a refresh every sweep the default mesh took 1,930 sweeps instead
+#: of 952.
 SOFT_RETRY_REFRESH = 1
 SOFT_GAIN_PER_FILM = 0.4
 

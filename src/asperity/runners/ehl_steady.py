@@ -193,9 +193,9 @@ def stall_advice(case, res) -> str:
 def relaxed_cells(problem) -> tuple[float, int | None]:
     """The cells (least ``dy / dx``) and the most nodes across y on which the steady
     relaxation of a point contact converges: ``Y_LINES_BELOW`` (3) and no limit, but
-    ``SOFT_CELL_ASPECT`` (8) and ``SOFT_MAX_NY`` (129) for an isoviscous elastic contact
-    (``alpha p_h <= ISOVISCOUS``, Moes ``M >= ELASTIC_M``: soft EHL), whose load loop cycled
-    on a PDMS ball with cells 3 dx across and on 409 nodes across
+    ``SOFT_CELL_ASPECT`` (3, with the solver's fallback for soft contacts) and
+    ``SOFT_MAX_NY`` (129) for an isoviscous elastic contact (:attr:`PointContact.soft`),
+    which did not converge on 257 nodes across at M = 434 and 964, nor on 409
     (:data:`asperity.ehl.solver.SOFT_MAX_NY`)."""
     soft = not isinstance(problem, LineContact) and problem.soft
     return (SOFT_CELL_ASPECT, SOFT_MAX_NY) if soft else (Y_LINES_BELOW, None)
@@ -205,8 +205,9 @@ def _cell_advice(problem, res) -> list[str]:
     """What to change for a point contact that did not converge, or converged only in the
     solver's second try with y-line sweeps, on cells shorter across y than
     :func:`relaxed_cells` allows (``Y_LINES_BELOW`` times their length,
-    :data:`asperity.ehl.solver.Y_LINES_BELOW`; for soft EHL ``SOFT_CELL_ASPECT``) or, for
-    soft EHL, on more than ``SOFT_MAX_NY`` nodes across."""
+    :data:`asperity.ehl.solver.Y_LINES_BELOW`; for soft EHL ``SOFT_CELL_ASPECT``, the
+    same since the solver's soft fallback) or, for soft EHL, on more than ``SOFT_MAX_NY``
+    nodes across."""
     dx, dy = res.x[1] - res.x[0], res.y[1] - res.y[0]
     aspect, max_ny = relaxed_cells(problem)
     too_many = max_ny is not None and res.y.size > max_ny and not res.converged
@@ -233,9 +234,9 @@ def _cell_advice(problem, res) -> list[str]:
                 "the mesh follows the contact."]
     alpha_ph = problem.lubricant.pressure_viscosity * problem.p_hertz
     return [f"{cells} on {res.y.size} nodes across, and {outcome}. For an isoviscous elastic "
-            f"contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) the load answers a "
-            "shift of the separation only over hundreds of sweeps, and the load loop cycles "
-            f"on cells shorter than {aspect:g} dx across and on more than {max_ny} nodes "
+            f"contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) the relaxation, "
+            "with its fallback of a far-field refresh every sweep and a smaller load gain, "
+            f"converges on cells at least {aspect:g} dx across and on at most {max_ny} nodes "
             f"across: use grid.ny <= {ny} with this nx, or leave out grid.nx and grid.ny "
             "(the default mesh converges)."]
 
