@@ -26,7 +26,7 @@ from .contact import reference as ref
 from .contact.stick_zone import stick_zone
 from .ehl import formulas
 from .ehl.formula_range import dowson_higginson_range_note, hamrock_dowson_range_note
-from .ehl.problem import LineContact
+from .ehl.problem import ELASTIC_M, ISOVISCOUS, LineContact
 from .results import Comparison
 
 __all__ = ["DOCS", "cite", "ehl_steady_comparisons", "film_formula_comparisons",
@@ -37,15 +37,8 @@ DOCS = "docs/references.md"
 """The page that states every formula and published number a comparison uses."""
 
 
-#: Largest ``alpha p_h`` (the Barus exponent at the Hertz pressure) at which a point contact
-#: is also set beside Hamrock & Dowson's isoviscous-elastic (soft EHL) films: the viscosity
-#: rises by at most 10.5 % there.
-ISOVISCOUS = 0.1
-#: Smallest Moes M at which Hamrock & Dowson's isoviscous-elastic films are shown: below it the
-#: rigid-isoviscous limit takes over (Nijenbanning's asymptotes of a circle, H_RI = 41.3 M^-2
-#: and H_EI = 2.42 M^-2/15, cross at M = 4.6). A steel ball at M = 0.8 was shown 1.26 um
-#: against Nijenbanning's 21 um.
-ELASTIC_M = 10.0
+# ISOVISCOUS and ELASTIC_M (the soft-EHL regime) are defined with the contact that uses
+# them in its solve (asperity.ehl.problem, PointContact.soft) and imported above.
 
 
 def cite(text: str, anchor: str) -> str:

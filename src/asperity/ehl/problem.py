@@ -89,6 +89,17 @@ RIGID_DEFAULT_LENGTH = 4.0
 #: keeps the EHL defaults and their refusal.
 RIGID_ISOVISCOUS = 0.1
 
+#: Largest ``alpha p_h`` (the Barus exponent at the Hertz pressure) at which a point contact
+#: is also set beside Hamrock & Dowson's isoviscous-elastic (soft EHL) films
+#: (:mod:`asperity.references`) and counts as soft (:attr:`PointContact.soft`): the viscosity
+#: rises by at most 10.5 % there.
+ISOVISCOUS = 0.1
+#: Smallest Moes M at which Hamrock & Dowson's isoviscous-elastic films are shown: below it
+#: the rigid-isoviscous limit takes over (Nijenbanning's asymptotes of a circle, H_RI = 41.3 M^-2
+#: and H_EI = 2.42 M^-2/15, cross at M = 4.6). A steel ball at M = 0.8 was shown 1.26 um
+#: against Nijenbanning's 21 um.
+ELASTIC_M = 10.0
+
 #: Inlet and sides of a rigid contact's default domain, in ``l`` (at most :data:`MAX_BOUND`
 #: semi-axes): its film is about ``(1 - 1.6/S)^2`` of the unbounded one there (0.81 at 16 l).
 RIGID_REACH_DEFAULT = 16.0
@@ -335,6 +346,15 @@ class PointContact(_Contact):
         pressure = formulas.rigid_mean_pressure(self.load, self.rx, film)
         return (self.rigid_length() >= RIGID_DEFAULT_LENGTH * self.a
                 and self.lubricant.pressure_viscosity * pressure <= RIGID_ISOVISCOUS)
+
+    @property
+    def soft(self) -> bool:
+        """Whether the contact is isoviscous and elastic (soft EHL: ``alpha p_h <=``
+        :data:`ISOVISCOUS`, Moes ``M >=`` :data:`ELASTIC_M`; a PDMS ball on glass), whose
+        steady relaxation needs its own fallback (:data:`asperity.ehl.solver.SOFT_RETRY_REFRESH`)
+        and mesh advice (:func:`asperity.runners.ehl_steady.relaxed_cells`)."""
+        return (self.M >= ELASTIC_M
+                and self.lubricant.pressure_viscosity * self.p_hertz <= ISOVISCOUS)
 
     def load_gain(self) -> float | None:
         """Load gain for :func:`asperity.ehl.solve_steady` (None: the solver's default).

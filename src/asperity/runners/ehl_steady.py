@@ -20,7 +20,6 @@ from ..ehl.problem import LineContact
 from ..ehl.sides import inlet_probe, side_probe
 from ..ehl.solver import NEWTON_CHECK_SWEEPS, SOFT_CELL_ASPECT, SOFT_MAX_NY, Y_LINES_BELOW
 from ..references import (
-    ELASTIC_M,
     ISOVISCOUS,
     ehl_steady_comparisons,
     film_formulas,
@@ -112,6 +111,11 @@ def run(case, progress=None) -> Outcome:
                         isoviscous_line_advice(problem, res) or stall_advice(case, res)))
     elif not line and res.y_lines:
         notes += _cell_advice(problem, res)
+    if res.converged and res.soft_retry:
+        notes.append("The default relaxation did not converge on this mesh; the solution is "
+                     "that of the solver's fallback for a soft contact, relaxed again from the "
+                     "coarser grid with a far-field refresh every sweep and a smaller load "
+                     f"gain ({res.sweeps} sweeps on the finest grid).")
     estimate = summary.get("hamrock_dowson_central_film_m", summary.get(
         "chittenden_central_film_m", summary.get("moes_central_film_m")))
     # an unconverged film (e.g. 0.29 mm for a bearing whose iteration had blown up) would set
@@ -189,12 +193,11 @@ def stall_advice(case, res) -> str:
 def relaxed_cells(problem) -> tuple[float, int | None]:
     """The cells (least ``dy / dx``) and the most nodes across y on which the steady
     relaxation of a point contact converges: ``Y_LINES_BELOW`` (3) and no limit, but
-    ``SOFT_CELL_ASPECT`` (8) and ``SOFT_MAX_NY`` (129) for an isoviscous elastic contact
-    (``alpha p_h <= ISOVISCOUS``, Moes ``M >= ELASTIC_M``: soft EHL), whose load loop cycled
-    on a PDMS ball with cells 3 dx across and on 409 nodes across
+    ``SOFT_CELL_ASPECT`` (3, with the solver's fallback for soft contacts) and
+    ``SOFT_MAX_NY`` (129) for an isoviscous elastic contact (:attr:`PointContact.soft`),
+    which did not converge on 257 nodes across at M = 434 and 964, nor on 409
     (:data:`asperity.ehl.solver.SOFT_MAX_NY`)."""
-    soft = (not isinstance(problem, LineContact) and problem.M >= ELASTIC_M
-            and problem.lubricant.pressure_viscosity * problem.p_hertz <= ISOVISCOUS)
+    soft = not isinstance(problem, LineContact) and problem.soft
     return (SOFT_CELL_ASPECT, SOFT_MAX_NY) if soft else (Y_LINES_BELOW, None)
 
 
@@ -202,8 +205,9 @@ def _cell_advice(problem, res) -> list[str]:
     """What to change for a point contact that did not converge, or converged only in the
     solver's second try with y-line sweeps, on cells shorter across y than
     :func:`relaxed_cells` allows (``Y_LINES_BELOW`` times their length,
-    :data:`asperity.ehl.solver.Y_LINES_BELOW`; for soft EHL ``SOFT_CELL_ASPECT``) or, for
-    soft EHL, on more than ``SOFT_MAX_NY`` nodes across."""
+    :data:`asperity.ehl.solver.Y_LINES_BELOW`; for soft EHL ``SOFT_CELL_ASPECT``, the
+    same since the solver's soft fallback) or, for soft EHL, on more than ``SOFT_MAX_NY``
+    nodes across."""
     dx, dy = res.x[1] - res.x[0], res.y[1] - res.y[0]
     aspect, max_ny = relaxed_cells(problem)
     too_many = max_ny is not None and res.y.size > max_ny and not res.converged
@@ -230,9 +234,9 @@ def _cell_advice(problem, res) -> list[str]:
                 "the mesh follows the contact."]
     alpha_ph = problem.lubricant.pressure_viscosity * problem.p_hertz
     return [f"{cells} on {res.y.size} nodes across, and {outcome}. For an isoviscous elastic "
-            f"contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) the load answers a "
-            "shift of the separation only over hundreds of sweeps, and the load loop cycles "
-            f"on cells shorter than {aspect:g} dx across and on more than {max_ny} nodes "
+            f"contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) the relaxation, "
+            "with its fallback of a far-field refresh every sweep and a smaller load gain, "
+            f"converges on cells at least {aspect:g} dx across and on at most {max_ny} nodes "
             f"across: use grid.ny <= {ny} with this nx, or leave out grid.nx and grid.ny "
             "(the default mesh converges)."]
 
