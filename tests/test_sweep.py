@@ -581,6 +581,15 @@ def test_unconverged_case_carries_its_reason_and_failed_cases_are_named(tmp_path
     assert "did not converge in 7 iterations (residual 3.1e-04)" in html
 
 
+def _done_cases(out, summaries):
+    """Mark cases 0000, 0001, ... of a study's output folder done with these summaries."""
+    for n, summary in enumerate(summaries):
+        folder = out / "cases" / f"{n:04d}"
+        folder.mkdir(parents=True)
+        (folder / "status.json").write_text(json.dumps(
+            {"state": "done", "converged": True, "summary": summary}))
+
+
 def test_log_range_is_drawn_on_a_log_axis_and_study_nc_says_what_made_it(tmp_path):
     """A range with scale = "log" is a log x axis in the study figure (it was linear below a
     ratio of 50); study.nc carries the Conventions, the asperity version and the base case
@@ -592,11 +601,7 @@ def test_log_range_is_drawn_on_a_log_axis_and_study_nc_says_what_made_it(tmp_pat
     study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
                              'range = {start = 1, stop = 20, num = 4, scale = "log", unit = "N"}\n')
     out = tmp_path / "out"
-    for n, load in enumerate(np.geomspace(1, 20, 4)):
-        folder = out / "cases" / f"{n:04d}"
-        folder.mkdir(parents=True)
-        (folder / "status.json").write_text(json.dumps(
-            {"state": "done", "converged": True, "summary": {"max_pressure_pa": 1e9 * load}}))
+    _done_cases(out, [{"max_pressure_pa": 1e9 * load} for load in np.geomspace(1, 20, 4)])
     ds = combine(study, out)
     assert plot_study(ds, ["max_pressure_pa"]).axes[0].get_xscale() == "log"
     linear = combine(_study(tmp_path, '[[axis]]\nkey = "loading.load"\nrange = {start = 1, '
@@ -620,14 +625,8 @@ def test_a_power_law_on_a_log_range_is_drawn_on_log_log_axes(tmp_path):
     study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
                              'range = {start = 1, stop = 20, num = 4, scale = "log", unit = "N"}\n')
     out = tmp_path / "out"
-    speeds = np.geomspace(1, 20, 4)
-    for n, u in enumerate(speeds):
-        folder = out / "cases" / f"{n:04d}"
-        folder.mkdir(parents=True)
-        (folder / "status.json").write_text(json.dumps(
-            {"state": "done", "converged": True,
-             "summary": {"central_film_thickness_m": 129e-9 * u**0.71,
-                         "moes_L": 13.6 * u**0.25, "separation_m": -7.1e-6 + 3.6e-8 * u}}))
+    _done_cases(out, [{"central_film_thickness_m": 129e-9 * u**0.71, "moes_L": 13.6 * u**0.25,
+                       "separation_m": -7.1e-6 + 3.6e-8 * u} for u in np.geomspace(1, 20, 4)])
     assert 20**0.25 < LOG_Y_SPAN < 20**0.71
     keys = ["central_film_thickness_m", "moes_L", "separation_m"]
     film, moes_l, separation = plot_study(combine(study, out), keys).axes[:3]
@@ -670,12 +669,7 @@ def test_log_axis_tick_labels_do_not_overlap(tmp_path):
     study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
                              'range = {start = 5, stop = 80, num = 4, scale = "log", unit = "N"}\n')
     out = tmp_path / "out"
-    loads = np.geomspace(5, 80, 4)
-    for n, load in enumerate(loads):
-        folder = out / "cases" / f"{n:04d}"
-        folder.mkdir(parents=True)
-        (folder / "status.json").write_text(json.dumps(
-            {"state": "done", "converged": True, "summary": {"max_pressure_pa": 1e8 * load}}))
+    _done_cases(out, [{"max_pressure_pa": 1e8 * load} for load in np.geomspace(5, 80, 4)])
     fig = plot_study(combine(study, out), ["max_pressure_pa", "max_pressure_pa"])
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
