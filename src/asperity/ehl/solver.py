@@ -908,13 +908,7 @@ def solve_steady(
     near = check_int("near", near, 0)
     if line:
         ny = 1
-    grids = [(nx, ny)]
-    for _ in range(levels - 1):
-        cx, cy = grids[-1]
-        if (cx - 1) % 2 or (not line and (cy - 1) % 2):
-            raise InputError("nx, ny", f"node counts 2^k m + 1 for {levels} levels", (nx, ny))
-        grids.append(((cx - 1) // 2 + 1, cy if line else (cy - 1) // 2 + 1))
-    grids.reverse()
+    grids = _grid_sequence(nx, ny, levels, line)
     if initial_film is None:
         h_start = problem.film_estimate() / problem.film_scale
     else:
@@ -1013,9 +1007,8 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             new.interpolate_from(state)
         state, coarse = new, state
         gain = load_gain
-        if scale_gain and gx > default_nx and tangent is None:
-            exponent = LINE_GAIN_EXPONENT if line else POINT_GAIN_EXPONENT
-            gain *= ((default_nx - 1) / (gx - 1)) ** exponent
+        if scale_gain and tangent is None:
+            gain = _scaled_gain(gain, gx, default_nx, line)
         cycle = refresh
         if finest is not None and level + 1 == len(grids):
             cycle, gain = finest
@@ -1061,17 +1054,36 @@ def _soft_retry(problem, grids, domain, run, settings) -> _Sequenced:
     "A PDMS ball's minimum film across y").
     """
     nx, ny = grids[-1]
-    gain = SOFT_GAIN_PER_FILM * problem.film_estimate() / problem.film_scale
-    default_nx = settings["default_nx"]
-    if nx > default_nx:
-        gain *= ((default_nx - 1) / (nx - 1)) ** POINT_GAIN_EXPONENT
+    gain = _scaled_gain(SOFT_GAIN_PER_FILM * problem.film_estimate() / problem.film_scale,
+                        nx, settings["default_nx"], line=False)
     finest = (SOFT_RETRY_REFRESH, gain)
     if run.coarse is not None:
         return _sequence(problem, grids[-1:], domain, tangents_from=None, start=run.coarse,
                          finest=finest, **settings)
-    levels = sequencing_levels(nx, ny, min_nx=17)
-    sequence = [(1 + (nx - 1) // 2**k, 1 + (ny - 1) // 2**k) for k in range(levels - 1, -1, -1)]
+    sequence = _grid_sequence(nx, ny, sequencing_levels(nx, ny, min_nx=17), line=False)
     return _sequence(problem, sequence, domain, tangents_from=None, finest=finest, **settings)
+
+
+def _grid_sequence(nx: int, ny: int, levels: int, line: bool) -> list[tuple[int, int]]:
+    """Node counts of ``levels`` grids, coarse to fine, each coarsened by 2 in x (and in y
+    for a point contact) from ``(nx, ny)``: ``(n - 1)/2 + 1``."""
+    grids = [(nx, ny)]
+    for _ in range(levels - 1):
+        cx, cy = grids[-1]
+        if (cx - 1) % 2 or (not line and (cy - 1) % 2):
+            raise InputError("nx, ny", f"node counts 2^k m + 1 for {levels} levels", (nx, ny))
+        grids.append(((cx - 1) // 2 + 1, cy if line else (cy - 1) // 2 + 1))
+    return grids[::-1]
+
+
+def _scaled_gain(gain: float, nx: int, default_nx: int, line: bool) -> float:
+    """A load gain on a grid of ``nx`` nodes finer than the default mesh's ``default_nx``:
+    ``gain (dX / dX_default)^e`` (:data:`LINE_GAIN_EXPONENT`, :data:`POINT_GAIN_EXPONENT`);
+    unchanged on the default mesh and coarser."""
+    if nx <= default_nx:
+        return gain
+    exponent = LINE_GAIN_EXPONENT if line else POINT_GAIN_EXPONENT
+    return gain * ((default_nx - 1) / (nx - 1)) ** exponent
 
 
 def _relax_line_or_newton(state, method, line, polish=False, **relax):

@@ -143,16 +143,16 @@ def lag1_limit(blocks: int) -> float:
     return -1.0 / blocks + 2.0 / math.sqrt(blocks)
 
 
+def _pair_sums(values):
+    """Neighbouring blocks (rows) summed in pairs; an odd last block stays alone."""
+    n = values.shape[0] // 2 * 2
+    return np.concatenate([values[:n:2] + values[1:n:2], values[n:]])
+
+
 def _merged(means, sizes):
     """Neighbouring blocks merged in pairs (an odd last block stays alone)."""
-    sums = means * sizes
-    n = means.size // 2 * 2
-    merged_sizes = sizes[:n:2] + sizes[1:n:2]
-    merged = (sums[:n:2] + sums[1:n:2]) / merged_sizes
-    if means.size % 2:
-        merged = np.append(merged, means[-1])
-        merged_sizes = np.append(merged_sizes, sizes[-1])
-    return merged, merged_sizes
+    merged_sizes = _pair_sums(sizes)
+    return _pair_sums(means * sizes) / merged_sizes, merged_sizes
 
 
 def _block_level(means, sizes, min_blocks):
@@ -246,11 +246,7 @@ def block_bootstrap_max(block_counts, block_steps, *, scale: float = 1.0,
     counts = counts[:, nodes]
     means, _, r1, correlated = _block_level(counts[:, 0] / sizes, sizes, min_blocks)
     while counts.shape[0] > means.size:  # the maps merged as the series at the top node was
-        n = counts.shape[0] // 2 * 2
-        pairs = counts[:n:2] + counts[1:n:2]
-        counts = np.vstack([pairs, counts[n:]])
-        pair_sizes = sizes[:n:2] + sizes[1:n:2]
-        sizes = np.concatenate([pair_sizes, sizes[n:]])
+        counts, sizes = _pair_sums(counts), _pair_sums(sizes)
     rng = np.random.default_rng(seed)
     picks = rng.integers(0, counts.shape[0], size=(resamples, counts.shape[0]))
     weights = np.zeros((resamples, counts.shape[0]))
