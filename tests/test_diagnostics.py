@@ -582,3 +582,23 @@ def test_a_contact_as_small_as_the_files_points_is_not_told_to_refine_past_them(
     assert "finer grid than the file's points (1 um apart) only interpolates" in measured[0]
     coarse_file = dg.contact_resolution(spot, x, y, file_spacing=(0.25e-6, 0.25e-6))
     assert "use nx >= 512" in coarse_file[0]  # the file holds finer points: refine
+
+
+def test_a_starved_inlet_is_advised_as_far_as_the_flooded_inlet_distance():
+    """An MTM ball (3/4 in steel on glass, 20 N, 0.5 m/s, a = 134.6 um, Rx = 9.525 mm) on a
+    user's -1.5 a inlet was told "use x_min <= -2.5 a" by the boundary-pressure line; on
+    -2.5 a the inlet-length line then said m* = 2.8 a. Hamrock & Dowson's
+    m* = 1 + 3.06 ((Rx/a)^2 hc/Rx)^0.58 with the flooded film hc = 738 nm (Nijenbanning's) is
+    worked by hand below; the first line now asks for both at once."""
+    a, rx, hc = 134.6e-6, 9.525e-3, 738e-9
+    by_hand = 1.0 + 3.06 * ((rx / a) ** 2 * hc / rx) ** 0.58
+    m_star = dg.flooded_inlet_distance_of(-1.5 * a, a, rx, hc, solved=False)
+    assert m_star == pytest.approx(by_hand, rel=1e-12)
+    assert 2.5 < m_star < 3.0
+    x = np.linspace(-1.5 * a, 1.2 * a, 109)
+    pressure = np.where(np.abs(x) < a, 1.0, 0.05)[:, None] * np.ones((1, 5))
+    (plain,) = dg.ehl_inlet(pressure, x, a, 1.0)
+    (flooded,) = dg.ehl_inlet(pressure, x, a, 1.0, m_star)
+    assert plain.endswith("use x_min <= -2.5 a")
+    assert flooded.endswith("use x_min <= -3 a")
+    assert dg.advised_domain(x, np.zeros(5), [flooded])[0][0] == pytest.approx(-3 * a)

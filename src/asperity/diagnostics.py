@@ -60,6 +60,7 @@ __all__ = [
     "ehl_rigid_domain",
     "ehl_inlet_film",
     "ehl_inlet_length",
+    "flooded_inlet_distance_of",
     "ehl_film_collapse",
     "ehl_film_mesh",
     "ehl_mesh",
@@ -556,7 +557,8 @@ def above_hardness(pressure, materials: Iterable) -> list[str]:
     return lines
 
 
-def ehl_inlet(pressure, x, a: float, p_hertz: float) -> list[str]:
+def ehl_inlet(pressure, x, a: float, p_hertz: float,
+              flooded_distance: float | None = None) -> list[str]:
     """Pressure not back to ambient near the inlet boundary: a starved, too thin film.
 
     Parameters
@@ -569,6 +571,11 @@ def ehl_inlet(pressure, x, a: float, p_hertz: float) -> list[str]:
         Hertz semi-axis along x, m.
     p_hertz : float
         Hertz pressure, Pa.
+    flooded_distance : float, optional
+        A point contact's fully flooded inlet distance ``m*`` in semi-axes
+        (:func:`flooded_inlet_distance_of`): the advised inlet reaches it too, so that the
+        inlet-length line does not ask again (an MTM ball told -2.5 a was then told that
+        m* = 2.8 a).
 
     Returns
     -------
@@ -583,6 +590,8 @@ def ehl_inlet(pressure, x, a: float, p_hertz: float) -> list[str]:
         return []
     x_min = x[0] / a
     use = min(-2.5, math.floor(2 * (x_min - 1.0)) / 2)
+    if flooded_distance is not None and math.isfinite(flooded_distance):
+        use = min(use, -math.ceil(2.0 * flooded_distance) / 2.0)
     return [DomainAdvice(
         f"inlet: x_min = {x_min:.3g} a leaves pressure {_pct(level)} of p_h within "
         f"{BOUNDARY_BAND:g} a of the inlet boundary (limit {_pct(BOUNDARY_PRESSURE)}); the "
@@ -628,11 +637,9 @@ def ehl_inlet_length(x_min: float, a: float, rx: float, central_film: float, *,
         At most one line, when the fit's film loss exceeds :data:`STARVED_FILM_LOSS`.
     """
     m = -x_min / a
-    if not (central_film > 0 and m > 1):
+    film = _flooded_central_film(x_min, a, rx, central_film, solved)
+    if film is None:
         return []
-    film = (rx / a) ** 2 * central_film / rx
-    if solved:
-        film = flooded_film(film, m)
     m_star = flooded_inlet_distance(film)
     loss = 1.0 - starved_film_ratio(film, m)
     if loss <= STARVED_FILM_LOSS:
@@ -653,6 +660,27 @@ def ehl_inlet_length(x_min: float, a: float, rx: float, central_film: float, *,
                  + (" (the fit is short of the solver's loss here)"
                     if -probe.central_film_change > loss else ""))
     return [DomainAdvice(line + f"; use x_min <= -{use:g} a", x_min=-use * a)]
+
+
+def flooded_inlet_distance_of(x_min: float, a: float, rx: float, central_film: float,
+                              solved: bool = True) -> float:
+    """Hamrock & Dowson's fully flooded inlet distance ``m*`` (semi-axes) of a point contact
+    whose inlet is at ``x_min`` and central film ``central_film`` (m; with ``solved`` the
+    solve's own on this inlet, whose flooded film is found by inverting the starvation fit,
+    as :func:`ehl_inlet_length` does); NaN where no film or an inlet inside the contact
+    leaves it unknown."""
+    film = _flooded_central_film(x_min, a, rx, central_film, solved)
+    return float("nan") if film is None else flooded_inlet_distance(film)
+
+
+def _flooded_central_film(x_min, a, rx, central_film, solved):
+    """The fully flooded central film in Hamrock & Dowson's units ``(Rx/a)^2 hc/Rx`` (with
+    ``solved``, inverted from the starved film of an inlet at ``x_min``), or None."""
+    m = -x_min / a
+    if not (central_film > 0 and m > 1):
+        return None
+    film = (rx / a) ** 2 * central_film / rx
+    return flooded_film(film, m) if solved else film
 
 
 def ehl_inlet_film(probe, a: float) -> list[str]:

@@ -287,7 +287,9 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     """
     hz = problem.hertz
     b = None if isinstance(problem, LineContact) else hz.b
-    lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max)
+    flooded = (None if b is None else diagnostics.flooded_inlet_distance_of(
+        x[0], hz.a, problem.rx, central_film, solved=film_solved))
+    lines = diagnostics.ehl_inlet(pressure, x, hz.a, hz.p_max, flooded)
     # a nearly rigid contact's pressure varies over sqrt(2 Rx hc), not the Hertz zone: its
     # mesh is judged by ehl_rigid_domain (a lightly loaded ball was told nx >= 1082 x 2001)
     rigid = float(np.max(pressure)) < diagnostics.RIGID_PRESSURE * hz.p_max
