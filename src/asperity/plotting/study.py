@@ -57,24 +57,29 @@ def _log_ticks(ax, x: np.ndarray) -> None:
     """Plain-number ticks on a log x axis: at the swept values ``x`` when there are at most
     :data:`LOG_TICKS`, else at 1, 2 and 5 times the powers of ten; no minor tick labels."""
     values = np.unique(x)
-    locator = (FixedLocator(values) if values.size <= LOG_TICKS
-               else LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
-    ax.xaxis.set_major_locator(locator)
-    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _pos: format_number(v)))
-    ax.xaxis.set_minor_formatter(NullFormatter())
+    _plain_log_labels(ax.xaxis, FixedLocator(values) if values.size <= LOG_TICKS
+                      else LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+
+
+def _plain_log_labels(axis, locator) -> None:
+    """Major ticks of a log ``axis`` at ``locator``, labelled as plain numbers; no minor
+    tick labels."""
+    axis.set_major_locator(locator)
+    axis.set_major_formatter(FuncFormatter(lambda v, _pos: format_number(v)))
+    axis.set_minor_formatter(NullFormatter())
 
 
 def _log_y(ax, values: np.ndarray) -> None:
-    """A log y axis with plain-number ticks at 1, 2 and 5 times the powers of ten (and at the
-    ends of the data within a decade, where those would be one or none), when ``values`` are
-    all positive and span more than :data:`LOG_Y_SPAN`."""
+    """A log y axis with plain-number ticks at 1, 2 and 5 times the powers of ten (also 3
+    within a decade), when ``values`` are all positive and span more than
+    :data:`LOG_Y_SPAN`."""
     finite = values[np.isfinite(values)]
     if finite.size < 2 or np.any(finite <= 0) or finite.max() / finite.min() <= LOG_Y_SPAN:
         return
     ax.set_yscale("log")
-    ax.yaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
-    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _pos: format_number(v)))
-    ax.yaxis.set_minor_formatter(NullFormatter())
+    # within a decade 1, 2, 5 can leave one label (110-350: 200 only); 3 joins them there
+    subs = (1.0, 2.0, 5.0) if finite.max() / finite.min() >= 10.0 else (1.0, 2.0, 3.0, 5.0)
+    _plain_log_labels(ax.yaxis, LogLocator(base=10.0, subs=subs))
 
 
 def _axis_values(ds, name):
