@@ -64,6 +64,19 @@ def _solver(problem, domain, nx, ny, levels):
     return res.central_film / problem.film_scale, res.minimum_film / problem.film_scale
 
 
+def _extrapolated(k, domain, spacings, aspect, *, film, stages, solver_meshes):
+    """The problem of ellipticity ``k``, the reference's central films on its two meshes
+    ``spacings`` (``dY = aspect dX``), and the reference and the solver (``solver_meshes``:
+    two ``(nx, ny, levels)``, the second halving the first's spacings) each extrapolated
+    from its own two meshes (Richardson, second order)."""
+    problem = _problem(k)
+    hc = [s.central for s in _reference(problem, spacings, aspect, domain, film=film,
+                                        stages=stages)]
+    reference = richardson(hc[0], hc[1], spacings[0] / spacings[1])
+    coarse, fine = (_solver(problem, domain, *mesh)[0] for mesh in solver_meshes)
+    return problem, hc, reference, richardson(coarse, fine, 2.0)
+
+
 def _chittenden(problem):
     lub = problem.lubricant
     return chittenden_point(problem.load, problem.rx, problem.ry, problem.mean_speed,
@@ -79,14 +92,10 @@ def test_at_k_one_half_the_solver_and_the_reference_agree_and_lie_43_percent_abo
     265 x 41 (a/32 x a/10, a/64 x a/20: 0.08628, 0.09194) extrapolates to 0.09383. Tested:
     the two extrapolations within 1 %, and 1.43 times Chittenden's transcribed formula
     (0.06578) within 2 %: the 40 % of docs/ehl-robustness.md is not the solver's."""
-    problem = _problem(0.5)
-    domain = (-2.625, 1.5, 1.0)
-    hc = [s.central for s in _reference(problem, [1 / 16, 1 / 24], 1.0, domain, film=0.1,
-                                               stages=3)]
+    problem, hc, reference, solver = _extrapolated(
+        0.5, (-2.625, 1.5, 1.0), [1 / 16, 1 / 24], 1.0, film=0.1, stages=3,
+        solver_meshes=((133, 21, 2), (265, 41, 3)))
     assert hc == pytest.approx([0.08287, 0.08881], rel=2e-3)
-    reference = richardson(hc[0], hc[1], 1.5)
-    solver = richardson(_solver(problem, domain, 133, 21, 2)[0],
-                        _solver(problem, domain, 265, 41, 3)[0], 2.0)
     assert solver == pytest.approx(reference, rel=0.01)
     assert reference / _chittenden(problem) == pytest.approx(1.425, rel=0.02)
 
@@ -102,13 +111,9 @@ def test_at_k_one_quarter_the_solver_converges_to_the_reference_78_percent_above
     within 0.6 % of each other (the reference's error and the solver's own extrapolation's,
     measured 0.3 %), and 1.78 times Chittenden's transcribed formula (0.02887) within 2 %.
     The solver's default mesh (513 x 81 on the default +-a, 0.05005) lies 2.8 % under."""
-    problem = _problem(0.25)
-    domain = (-2.5, 1.5, 0.5)
-    hc = [s.central for s in _reference(problem, [1 / 32, 1 / 40], 0.5, domain, film=0.05,
-                                               stages=8)]
+    problem, hc, reference, solver = _extrapolated(
+        0.25, (-2.5, 1.5, 0.5), [1 / 32, 1 / 40], 0.5, film=0.05, stages=8,
+        solver_meshes=((513, 41, 3), (1025, 81, 4)))
     assert hc == pytest.approx([0.04744, 0.04886], rel=2e-3)
-    reference = richardson(hc[0], hc[1], 1.25)
-    solver = richardson(_solver(problem, domain, 513, 41, 3)[0],
-                        _solver(problem, domain, 1025, 81, 4)[0], 2.0)
     assert solver == pytest.approx(reference, rel=0.006)
     assert reference / _chittenden(problem) == pytest.approx(1.78, rel=0.02)
