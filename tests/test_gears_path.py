@@ -323,6 +323,7 @@ def test_newtonian_gear_friction_is_left_out():
     assert 0.0 < eyring.summary["mean_friction_coefficient"] < 0.1
     assert np.isfinite(eyring.dataset.flash_temperature).all()
     assert not any(w.startswith("lubricant.tau0:") for w in eyring.warnings)
+    assert not any(n.startswith("Newtonian lubricant") for n in newtonian.notes + eyring.notes)
     assert "Eyring" in eyring.dataset.ehl_friction.attrs["long_name"]
 
 
@@ -330,8 +331,10 @@ def test_newtonian_boundary_points_keep_the_boundary_friction():
     """With the case's Ra 0.3 um every point is in boundary lubrication (lambda < 1), where
     the film carries nothing: the friction is the boundary 0.1 and the flash temperature
     Blok's with mu = 0.1, Newtonian or not (NaN * 0 does not leak in); the EHL traction
-    is still left out and said so, and the figure says so in its legend instead of drawing
-    a "traction" of 1e4 on a log axis."""
+    is still left out and said so in a note, not a warning (no result depends on it: a
+    user's ATF transmission gear at lambda 0.49-0.56 got a warning box about "the 0 of 25
+    loaded points"), and the figure says so in its legend instead of drawing a "traction" of
+    1e4 on a log axis."""
     from asperity.runners import run_case
 
     newtonian = run_case(load_case(GEAR_CASE.replace('tau0 = "5 MPa"\n', "")))
@@ -346,8 +349,9 @@ def test_newtonian_boundary_points_keep_the_boundary_friction():
     blok = 1.11153 * q * np.sqrt(2 * ds.hertz_a) / (b * np.sqrt(abs(ds.u1))
                                                     + b * np.sqrt(abs(ds.u2)))
     assert ds.flash_temperature.values == pytest.approx(blok.values, rel=1e-4, abs=1e-9)
-    lines = [w for w in newtonian.warnings if w.startswith("lubricant.tau0:")]
-    assert len(lines) == 1 and "at the 0 of 5 loaded" in lines[0]
+    assert not [w for w in newtonian.warnings if "tau0" in w]
+    lines = [n for n in newtonian.notes if n.startswith("Newtonian lubricant")]
+    assert len(lines) == 1 and "no result here depends on it" in lines[0]
     draw, _caption = newtonian.figures["path_friction_temperature"]
     ax = draw().axes[0]
     assert ax.get_yscale() == "linear"
@@ -906,3 +910,14 @@ def test_a_crowned_pairs_hamrock_dowson_rows_say_they_extrapolate_in_k():
     assert len(rows) == 2
     for row in rows:
         assert "k = b/a = 22.7 lies above the k = 1-8" in row.note
+
+
+def test_boundary_point_count_is_labelled_with_its_lambda():
+    """The summary's count of boundary-lubrication points is named by the lambda it counts
+    below, which is not the friction rule's boundary_lambda = 1: a user with lambda 0.49 all
+    along the path read "boundary lubrication points 0" beside the boundary friction."""
+    from asperity.formatting import describe_key
+    from asperity.gears.path import BOUNDARY_LUBRICATION_LAMBDA
+
+    label, unit = describe_key("boundary_lubrication_points")
+    assert f"lambda < {BOUNDARY_LUBRICATION_LAMBDA:g})" in label and unit == ""

@@ -127,6 +127,9 @@ _LABELS = {
     "mean_hertz_contact_count_rate": "mean contact count rate over the Hertz contact",
     "friction_coefficient": "friction coefficient",
     "slide_roll_ratio": "slide/roll ratio",
+    # the gear path's count below gears.path.BOUNDARY_LUBRICATION_LAMBDA, not below the
+    # friction rule's boundary_lambda = 1 (a user read "0 boundary points" at lambda 0.49)
+    "boundary_lubrication_points": "points in boundary lubrication (lambda < 0.1)",
     # the transient's fixed-point check (ehl.stepper.check_fixed_point): its last step relaxed
     # on to a hundredth of the tolerance, how far the fields moved
     "fixed_point_distance_pressure_fraction": "last step's pressure change, relaxed further",

@@ -447,8 +447,10 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
                      f"{_angles(kin, bad)} deg); refine [ehl] nx/levels or raise max_sweeps")
     notes += _mesh_notes(kin, mesh_error, film_units, mesh)
     notes += _boundary_notes(kin, lam, loaded & np.isfinite(lam), out["hm"], boundary_friction)
-    if lubricant.newtonian and loaded.any():
-        left_out = loaded & (f_asp < 1.0)
+    left_out = loaded & (f_asp < 1.0)
+    if lubricant.newtonian and left_out.any():
+        # where the asperities carry all the load (every point in boundary lubrication) no
+        # result uses the EHL traction: the runner says so in a note, not a warning
         raw = np.abs(newtonian_mu[loaded & np.isfinite(newtonian_mu)])
         size = f" (here a coefficient up to {raw.max():.3g})" if raw.size else ""
         notes.append(
