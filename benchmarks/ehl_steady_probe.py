@@ -96,6 +96,11 @@ def reduced_modulus(e1, nu1, e2, nu2):
     return 2.0 / ((1 - nu1**2) / e1 + (1 - nu2**2) / e2)
 
 
+def modulus_text(value):
+    """A Young's modulus as a user writes it: "210 GPa", "5.826 MPa"."""
+    return f"{value / 1e9:.4g} GPa" if value >= 1e9 else f"{value / 1e6:.4g} MPa"
+
+
 def hard_speeds(rng, e_prime, rx, U):
     """Speed and viscosity (u m/s, eta0 Pa s) with ``eta0 u = U E' Rx``: u log-uniform in
     0.02-30 m/s, eta0 kept in 0.002-2 Pa s; None when no draw of 20 gives both."""
@@ -164,8 +169,8 @@ def draw_case(rng, index, kind):
     case = {
         "analysis": "ehl-steady",
         "title": f"probe {index:02d}: {pair} {'line' if line else f'point k={k:.3g}'}",
-        "body1": {"name": n1, "youngs_modulus": f"{e1:.4g} Pa", "poisson_ratio": nu1},
-        "body2": {"name": n2, "youngs_modulus": f"{e2:.4g} Pa", "poisson_ratio": nu2},
+        "body1": {"name": n1, "youngs_modulus": modulus_text(e1), "poisson_ratio": nu1},
+        "body2": {"name": n2, "youngs_modulus": modulus_text(e2), "poisson_ratio": nu2},
         "contact": {"type": "line" if line else "point", **load},
         "speeds": {"u": f"{u:.4g} m/s", "xi": round(xi, 3)},
         "lubricant": {"eta0": f"{eta0:.4g} Pa s", "alpha": f"{alpha * 1e9:.4g} 1/GPa",
