@@ -275,3 +275,22 @@ def test_chittendens_central_row_says_what_the_independent_ellipse_reference_fou
     assert "1.43 (k = 0.5) and 1.78 (k = 0.25)" in rows["central film"].note
     assert "independent" not in rows["minimum film"].note
     assert rows["central film"].tolerance is None
+
+
+def test_an_isoviscous_ellipse_along_its_major_axis_is_not_set_beside_chittenden():
+    """Chittenden's (1985) films, like Hamrock-Dowson's, are piezoviscous-elastic fits: a
+    rubber ellipse (k = 0.23, M = 5.8) in a silicone oil of 16.6 1/GPa at p_h = 269 kPa
+    (alpha p_h = 0.0045) converged to 353.8 nm against their 28.6 nm, shown with no word
+    (docs/ehl-robustness.md, session 40 probe, row 26). The same ellipse in steel keeps them."""
+    from asperity.ehl import Lubricant, PointContact
+    from asperity.materials import Material
+    from asperity.references import film_formulas
+
+    rubber, steel = Material(5.826e6, 0.49), Material(2.1e11, 0.3)
+    oil = Lubricant(0.1459, 16.57e-9, eyring_stress=3.61e6)
+    soft = PointContact(7.881e-3, 0.80471e-3, 0.0073845, 6.659e-3, 5.593e-3, rubber, steel,
+                        oil)
+    assert soft.lubricant.pressure_viscosity * soft.p_hertz < 0.005
+    assert not any(key.startswith("chittenden") for key in film_formulas(soft))
+    hard = PointContact(7.881e-3, 0.80471e-3, 50.0, 6.659e-3, 5.593e-3, steel, steel, oil)
+    assert "chittenden_central_film_m" in film_formulas(hard)
