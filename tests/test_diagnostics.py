@@ -602,3 +602,35 @@ def test_a_starved_inlet_is_advised_as_far_as_the_flooded_inlet_distance():
     assert plain.endswith("use x_min <= -2.5 a")
     assert flooded.endswith("use x_min <= -3 a")
     assert dg.advised_domain(x, np.zeros(5), [flooded])[0][0] == pytest.approx(-3 * a)
+
+
+def test_steps_above_hardness_names_the_step_and_the_counting_share():
+    """Largest pressures 1, 2, 8, 3, 9 GPa over five steps, two of warm-up: the hardness of
+    7 GPa is exceeded at step 5 (9 GPa) and in 2 of the 3 counting steps; 10 GPa is not."""
+    from asperity.diagnostics import steps_above_hardness
+    from asperity.materials import Material
+
+    p = np.array([1.0, 2.0, 8.0, 3.0, 9.0]) * 1e9
+    steel = Material(210e9, 0.3, "steel", 7e9)
+    (line,) = steps_above_hardness(p, 2, [("body1", steel), ("body2", steel)])
+    assert "9 GPa (step 5)" in line and "body1 and body2 (steel)" in line
+    assert "66.7 % of the counting steps" in line and "7 GPa" in line
+    assert steps_above_hardness(p, 2, [("body1", Material(210e9, 0.3, "hard", 10e9))]) == []
+    assert steps_above_hardness(np.full(3, np.nan), 0, [("body1", steel)]) == []
+
+
+def test_asperity_plasticity_note_for_metals_without_a_hardness():
+    """13 GPa on a gear flank's asperities (E* = 113 GPa: 0.115 E*, past the strain limit
+    0.05) with no hardness given gets the note; with a hardness (judged instead), below the
+    limit, or on an elastomer it does not."""
+    from asperity.diagnostics import asperity_plasticity_note
+    from asperity.materials import Material
+
+    steel, e_star = Material(206e9, 0.3), 206e9 / (2 * (1 - 0.09))
+    (note,) = asperity_plasticity_note(13e9, e_star, [("body1", steel), ("body2", steel)])
+    assert "0.115 E*" in note and "body1.hardness" in note
+    hard = Material(206e9, 0.3, "steel", 7e9)
+    assert asperity_plasticity_note(13e9, e_star, [("body1", hard), ("body2", hard)]) == []
+    assert asperity_plasticity_note(4e9, e_star, [("body1", steel), ("body2", steel)]) == []
+    rubber = Material(5e6, 0.49)
+    assert asperity_plasticity_note(1e6, 5e6, [("body1", rubber), ("body2", steel)]) == []

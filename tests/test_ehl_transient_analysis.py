@@ -572,3 +572,27 @@ def test_statistics_carry_standard_errors_end_to_end(tmp_path):
     assert need == pytest.approx(64 * (rel / RELATIVE_ERROR_LIMIT) ** 2, rel=0.1)
     html = (tmp_path / "report.html").read_text()
     assert f"{100 * fraction:.4g} ± " in html
+
+
+def test_every_steps_largest_pressure_is_judged_against_the_hardness():
+    """A transient run's asperity contacts are elastic: its pressures were checked against a
+    given hardness on the last step's field only (the steady runner's check), so a contact
+    that exceeded it at earlier steps said nothing. Now every step's largest pressure is
+    judged, naming the step and the share of counting steps; a body without a hardness gets
+    no line (here the smooth roller's 1 GPa lies far below the 0.05 E* of the note)."""
+    from asperity.runners import run_case
+
+    bodies = ('[body1]\nyoungs_modulus = "206 GPa"\npoisson_ratio = 0.3\nhardness = "0.8 GPa"\n'
+              '[body2]\nyoungs_modulus = "206 GPa"\npoisson_ratio = 0.3\n')
+    text = LINE_CASE.replace('reduced_modulus = "227 GPa"\n', "") + bodies
+    out = run_case(load_case(text))
+    largest = float(out.dataset.max_pressure.max())
+    assert largest > 0.8e9
+    lines = [w for w in out.warnings if w.startswith("pressure:")]
+    assert len(lines) == 1 and "body1" in lines[0] and "body2" not in lines[0]
+    step = int(np.argmax(out.dataset.max_pressure.values)) + 1
+    assert f"{largest / 1e9:.4g} GPa (step {step})" in lines[0]
+    assert "100 % of the counting steps" in lines[0]
+    assert not [n for n in out.notes if "plasticity was not checked" in n]
+    soft = run_case(load_case(text.replace('hardness = "0.8 GPa"\n', "")))
+    assert not [w for w in soft.warnings if w.startswith("pressure:")]

@@ -48,6 +48,7 @@ __all__ = [
     "DECIMATED_FILE_FACTOR",
     "SEAM_JUMP_RATIO",
     "above_hardness",
+    "asperity_plasticity_note",
     "hardness_given",
     "coarse_roughness_file",
     "decimated_roughness_file",
@@ -74,6 +75,7 @@ __all__ = [
     "side_pressure",
     "smooth_start_contact",
     "stopped_run",
+    "steps_above_hardness",
     "lowpass_removed",
     "newtonian_traction",
     "periodic_contact",
@@ -555,6 +557,83 @@ def above_hardness(pressure, materials: Iterable) -> list[str]:
                      "not physical there (the body yields): lower the load, or treat the "
                      "result as an elastic bound")
     return lines
+
+
+def steps_above_hardness(max_pressure, warmup_steps: int, materials: Iterable) -> list[str]:
+    """Steps of a transient run whose largest pressure exceeds the hardness of a body.
+
+    A transient mixed-EHL run's asperity contacts are elastic; the last step's pressure field
+    (:func:`above_hardness`) tells nothing of the steps before it.
+
+    Parameters
+    ----------
+    max_pressure : ndarray
+        Largest pressure of each step done, Pa (NaN for a step that diverged).
+    warmup_steps : int
+        Steps before counting.
+    materials : iterable of (label, Material)
+        The bodies; those without ``hardness`` are skipped.
+
+    Returns
+    -------
+    list of str
+        One line per hardness exceeded (bodies of the same material and hardness share it).
+    """
+    p = np.asarray(max_pressure, dtype=float)
+    if not np.isfinite(p).any():
+        return []
+    step = int(np.nanargmax(p))
+    p_max = float(p[step])
+    counted = p[warmup_steps:]
+    exceeded: dict = {}
+    for label, material in materials:
+        hardness = getattr(material, "hardness", None)
+        if hardness is not None and p_max > hardness:
+            exceeded.setdefault((hardness, material.name), []).append(label)
+    lines = []
+    for (hardness, name), labels in exceeded.items():
+        share = np.count_nonzero(counted > hardness) / max(counted.size, 1)
+        lines.append(f"pressure: the largest pressure of the run, {p_max / 1e9:.4g} GPa (step "
+                     f"{step + 1}), exceeds the hardness of {' and '.join(labels)} ({name}), "
+                     f"as the largest pressure does in {_pct(share)} of the counting steps "
+                     f"(limit: the hardness, {hardness / 1e9:.4g} GPa); the asperity contacts "
+                     "are elastic, so the body yields there and the contact pressures are "
+                     "elastic bounds: lower the load or the roughness, or read them so")
+    return lines
+
+
+def asperity_plasticity_note(p_max: float, e_star: float, bodies) -> list[str]:
+    """A note for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
+    with no hardness given: its asperities would yield, which nothing checked.
+
+    A note, not a warning: the elastic answer is what such a case asks for, and nearly every
+    elastic rough contact's asperities are that loaded (about E* Sdq / 2). A user's rough
+    flat reported asperity pressures of 10-29 GPa (0.09-0.25 E*) between steel bodies without
+    a word, and a gear flank's transient mixed-EHL run 13 GPa (0.12 E*). An elastomer (E below
+    ``ELASTOMER_MODULUS``) does not yield and gets none.
+
+    Parameters
+    ----------
+    p_max : float
+        Largest contact pressure, Pa.
+    e_star : float
+        Contact modulus, Pa.
+    bodies : iterable of (label, Material)
+        The bodies.
+
+    Returns
+    -------
+    list of str
+        At most one note.
+    """
+    bodies = list(bodies)
+    _, rubber = _soft_bodies(bodies)
+    if rubber or hardness_given(bodies) or not p_max > HERTZ_STRAIN_LIMIT * e_star:
+        return []
+    return [f"The largest pressure, {p_max / 1e9:.4g} GPa, is {p_max / e_star:.3g} E* (E* = "
+            f"{e_star / 1e9:.4g} GPa): asperities yield at such pressures and plasticity was "
+            "not checked (no hardness given); give body1.hardness and body2.hardness to see "
+            "where, or read the pressures and the real contact area as elastic bounds."]
 
 
 def ehl_inlet(pressure, x, a: float, p_hertz: float,

@@ -264,7 +264,7 @@ def chosen_mesh(case, problem, x, y) -> dict:
 
 
 def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
-                 film_solved=True) -> list[str]:
+                 film_solved=True, check_hardness=True) -> list[str]:
     """Trust checks of an EHL solution: inlet, sides, mesh (cells per semi-axis, then the
     discretisation error of the central film and, given the ``smooth_film`` of a steady
     solution, of its minimum film), hardness, and the contact's size against its radius
@@ -283,7 +283,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     domain lines advise (:func:`asperity.diagnostics.advised_domain`), so that following
     all of them gives the spacing each asks for.
     ``film_solved``: ``central_film`` is the solution's on this inlet (else a film formula's
-    flooded estimate, for an unconverged solve).
+    flooded estimate, for an unconverged solve). ``check_hardness`` False leaves the hardness
+    to the caller (a transient run judges every step's largest pressure, not one field).
     """
     hz = problem.hertz
     b = None if isinstance(problem, LineContact) else hz.b
@@ -334,7 +335,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
         aspect, max_ny = relaxed_cells(problem)
         lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b, domain=advised,
                                                    cell_aspect=aspect, max_ny=max_ny)
-    if getattr(case, "body1", None) is not None:
+    if check_hardness and getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
     lines += _contact_size(problem)

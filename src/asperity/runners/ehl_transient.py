@@ -306,7 +306,10 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     # an unconverged steady start's film would set the inlet and mesh advice: the formula's
     film = res.steady_central_film if res.steady_converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film,
-                         film_solved=res.steady_converged)
+                         film_solved=res.steady_converged, check_hardness=False)
+    plastic_notes, plastic_warnings = _plasticity(case, problem, res)
+    notes += plastic_notes
+    trust += plastic_warnings
     b = None if line else problem.b
     touching = []
     if np.isfinite(res.steady_film).all():  # contacts without roughness, counted all the same
@@ -339,6 +342,20 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
                    converged=res.converged, notes=notes,
                    warnings=[*file_warnings, *trust],  # the file's doubts explain the rest
                    chosen=chosen_mesh(case, problem, x, y))
+
+
+def _plasticity(case, problem, res) -> tuple[list[str], list[str]]:
+    """(notes, warnings): every step's largest pressure against the bodies' hardness
+    (:func:`diagnostics.steps_above_hardness`, warnings) and, with no hardness given, past the
+    strain limit (:func:`diagnostics.asperity_plasticity_note`, a note); the asperity contacts
+    are elastic. A case given by its reduced modulus has no bodies to judge."""
+    done = res.max_pressure[:res.steps_done]
+    if case.body1 is None or not np.isfinite(done).any():
+        return [], []
+    bodies = [("body1", case.body1.material()), ("body2", case.body2.material())]
+    return (diagnostics.asperity_plasticity_note(float(np.nanmax(done)),
+                                                 problem.reduced_modulus / 2.0, bodies),
+            diagnostics.steps_above_hardness(done, res.warmup_steps, bodies))
 
 
 def _expected_duration(node_steps: int) -> str:

@@ -269,22 +269,14 @@ def _plasticity(case, res, body1, body2) -> list[str]:
 
 def _unchecked_plasticity(case, res, body1, body2) -> list[str]:
     """A smooth Hertz contact's note past first yield (:func:`diagnostics.hertz_plasticity_note`)
-    or one for a rough contact whose largest pressure exceeds ``HERTZ_STRAIN_LIMIT`` E*
-    with no hardness given: its asperities would yield, which nothing checked (a user's rough
-    flat reported asperity pressures of 10-29 GPa, 0.09-0.25 E*, between steel bodies without
-    a word). A note, not a warning: the elastic answer is what such a case asks for, and
-    nearly every elastic rough contact's asperities are that loaded (about E* Sdq / 2)."""
+    or, for a rough contact, :func:`diagnostics.asperity_plasticity_note`."""
     e_star = contact_modulus(body1, body2)
     rx, ry = case.geometry.radii()
     if case.roughness is None and np.isfinite(rx) and res.load > 0.0:
         h = hertz_point(res.load, rx, ry, body1, body2)
         return diagnostics.hertz_plasticity_note(h.p_max, e_star,
                                                  [("body1", body1), ("body2", body2)])
-    p_max = float(res.pressure.max())
-    given = diagnostics.hardness_given([("body1", body1), ("body2", body2)])
-    if case.roughness is None or given or not p_max > diagnostics.HERTZ_STRAIN_LIMIT * e_star:
+    if case.roughness is None:
         return []
-    return [f"The largest pressure, {p_max / 1e9:.4g} GPa, is {p_max / e_star:.3g} E* (E* = "
-            f"{e_star / 1e9:.4g} GPa): asperities yield at such pressures and plasticity was "
-            "not checked (no hardness given); give body1.hardness and body2.hardness to see "
-            "where, or read the pressures and the real contact area as elastic bounds."]
+    return diagnostics.asperity_plasticity_note(float(res.pressure.max()), e_star,
+                                                [("body1", body1), ("body2", body2)])
