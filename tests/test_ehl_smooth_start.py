@@ -76,7 +76,7 @@ def test_a_start_without_contact_keeps_its_rows_and_is_the_runs_own():
 def test_a_default_mesh_whose_smooth_start_touches_gets_more_rows(tmp_path):
     """The traction drive through the runner on its default mesh, smooth, 3 steps: the rows
     are doubled from 57 to 113, the report says so, and no step counts contact (before:
-    contact at every step, at 146 nodes of the side lobes). About 2 min."""
+    contact at every step, at 146 nodes of the side lobes). About 25 s."""
     from asperity.runners import run_case
 
     case = load_case({**TRACTION, "time": {"warmup_steps": 0, "counting_steps": 3}})
