@@ -626,10 +626,10 @@ def test_report_says_when_the_steady_start_did_not_converge(tmp_path, monkeypatc
     runs ended theirs unconverged): the run goes on, every step converges, the run counts as
     not converged, and the report says why (it said "0 of N steps did not reach the
     tolerance"); the inlet and mesh advice use the formula's film, not the unconverged one."""
-    import asperity.ehl.transient as transient
+    import asperity.ehl.smooth_start as smooth_start  # the run's steady start (session 40)
 
-    real = transient.solve_steady
-    monkeypatch.setattr(transient, "solve_steady",
+    real = smooth_start.solve_steady
+    monkeypatch.setattr(smooth_start, "solve_steady",
                         lambda *args, **kw: real(*args, **{**kw, "max_iter": 5}))
     case = _bump(surface2={"kind": "smooth"}, speeds={"xi": 0.0}, grid={"nx": 65, "ny": 33},
                  time={"warmup_steps": 20, "counting_steps": 5})

@@ -20,6 +20,7 @@ import numpy as np
 
 from .ehl.formulas import flooded_film, flooded_inlet_distance, starved_film_ratio
 from .ehl.problem import FILM_ERROR, MESH_TARGET, MIN_CELL_ASPECT
+from .ehl.smooth_start import touching_mask
 from .formatting import format_quantity
 from .surfaces.parameters import rms_gradient
 from .surfaces.topography import Topography
@@ -1262,13 +1263,7 @@ def smooth_start_contact(steady_film, x, y, a: float, b: float | None,
     list of str
         At most one line.
     """
-    film = np.asarray(steady_film, dtype=float)
-    if film.ndim == 1:
-        film = film[:, None]
-    touching = film <= contact_film
-    touching[[0, -1], :] = False                     # the statistics skip the boundary nodes
-    if film.shape[1] > 2:
-        touching[:, [0, -1]] = False
+    touching = touching_mask(steady_film, contact_film)  # interior nodes, as the statistics
     if not touching.any():
         return []
     i, j = np.nonzero(touching)

@@ -51,7 +51,7 @@ from .checkpoint import Checkpointer, fingerprint
 from .kernels import CAVITATED, CONTACT
 from .nodal import centre_line
 from .problem import LineContact
-from .solver import sequencing_levels, solve_steady
+from .smooth_start import smooth_start
 from .statistics import (
     COUNT_RATE_UNITS,
     ContactStatistics,
@@ -719,9 +719,8 @@ def solve_transient(
                                     float(history.record["relaxation"][start - 1]))
     else:
         if steady is None:
-            steady = solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,
-                                  levels=sequencing_levels(nx, ny, min_nx=17), near=opts.near,
-                                  tol=min(opts.tol, 1e-5), max_iter=20000)
+            steady = smooth_start(problem, nx, ny, domain, method=method, near=opts.near,
+                                  tol=opts.tol)
         if steady.pressure.shape != (nx, ny) or not np.allclose(steady.x, x):
             raise InputError("steady", f"a steady solution on the same {nx} x {ny} grid")
         state.P = steady.pressure / problem.p_hertz

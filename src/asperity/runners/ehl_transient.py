@@ -21,8 +21,10 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
+from ..cases.ehl import MAX_NODES
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
+from ..ehl.smooth_start import start_rows
 from ..ehl.statistics import COUNT_RATE_UNITS, count_rate
 from ..ehl.stepper import BLOWN_UP_FLOOR, StepOptions, TimeStepper
 from ..ehl.transient import TransientResult, default_warmup_steps
@@ -152,6 +154,25 @@ def _fallback_notes(case, problem, res) -> list[str]:
         "settings."]
 
 
+def _start_notes(start, problem, nx: int, domain) -> list[str]:
+    """A note where the rows of the default mesh were doubled because the smooth steady start
+    touched on them (:func:`asperity.ehl.smooth_start.start_rows`), and where a finer start
+    was refused for not converging."""
+    if start is None or len(start.tried) < 2:
+        return []
+
+    def rows(n):
+        _, y = problem.grid(nx, n, domain)
+        return f"{nx} x {n} (dy = b/{problem.b / (y[1] - y[0]):.3g})"
+
+    where = "; ".join(f"{count} nodes on {rows(n)}" for n, count, _ in start.tried if count)
+    last, _, converged = start.tried[-1]
+    refused = "" if converged else f"; on {rows(last)} it did not converge"
+    return [f"The smooth steady start had no film at nodes in its side lobes ({where}), which "
+            "the contact statistics would count as contacts at every step, so the rows across "
+            f"y of the default mesh were doubled{refused}: the run uses {rows(start.ny)}."]
+
+
 def _partial_dataset(checkpoint: Path, x, y, dt) -> xr.Dataset | None:
     """Statistics so far, from the checkpoint file (for the streamed result.nc)."""
     try:
@@ -182,6 +203,14 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     problem = case.problem()
     line = isinstance(problem, LineContact)
     nx, ny, domain = case.mesh(problem)
+    start = None
+    if not line and not case.grid.nodes_given:  # the rows on which the smooth start has a film
+        if progress is not None:
+            progress(0, 1, f"steady start on {nx} x {ny} nodes")
+        start = start_rows(problem, nx, ny, domain, contact_film=case.solver.contact_film,
+                           method=case.solver.method, tol=case.solver.tolerance,
+                           max_nodes=MAX_NODES)
+        ny = start.ny
     x, y = problem.grid(nx, ny, domain)
     dt = case.timestep(problem, x)
     warmup, counting = case.steps(problem, x, dt)
@@ -220,7 +249,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
             acceleration=case.solver.acceleration, damping=case.solver.damping,
             load_gain=case.solver.load_gain,
             contact_film=case.solver.contact_film,
-            snapshot_steps=snaps, checkpoint=checkpoint,
+            steady=None if start is None else start.steady, snapshot_steps=snaps,
+            checkpoint=checkpoint,
             checkpoint_every=case.solver.checkpoint_every, resume=resume, callback=callback)
     # each statistic beside its standard error (TransientResult.standard_errors)
     errors = res.standard_errors()
@@ -269,7 +299,8 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         notes.append(f"{bad} of {res.steps_done} steps did not reach the tolerance "
                      f"{case.solver.tolerance:g} within {case.solver.max_sweeps} sweeps; the "
                      "statistics include them.")
-    notes += [*file_notes, *_fallback_notes(case, problem, res)]
+    notes += [*_start_notes(start, problem, nx, domain), *file_notes,
+              *_fallback_notes(case, problem, res)]
     from ..plotting import ehl_transient as plots
 
     # a run that stopped early has no snapshot at the steps it did not reach: the centre line
