@@ -606,7 +606,8 @@ def test_a_starved_inlet_is_advised_as_far_as_the_flooded_inlet_distance():
 
 def test_steps_above_hardness_names_the_step_and_the_counting_share():
     """Largest pressures 1, 2, 8, 3, 9 GPa over five steps, two of warm-up: the hardness of
-    7 GPa is exceeded at step 5 (9 GPa) and in 2 of the 3 counting steps; 10 GPa is not."""
+    7 GPa is exceeded at step 5 (9 GPa) and in 2 of the 3 counting steps; 10 GPa is not, nor
+    is 1.5 GPa by warm-up steps alone."""
     from asperity.diagnostics import steps_above_hardness
     from asperity.materials import Material
 
@@ -617,6 +618,8 @@ def test_steps_above_hardness_names_the_step_and_the_counting_share():
     assert "66.7 % of the counting steps" in line and "7 GPa" in line
     assert steps_above_hardness(p, 2, [("body1", Material(210e9, 0.3, "hard", 10e9))]) == []
     assert steps_above_hardness(np.full(3, np.nan), 0, [("body1", steel)]) == []
+    soft = Material(210e9, 0.3, "soft", 1.5e9)
+    assert steps_above_hardness([1e9, 2e9, 1.2e9], 2, [("body1", soft)]) == []
 
 
 def test_asperity_plasticity_note_for_metals_without_a_hardness():

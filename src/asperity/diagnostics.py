@@ -561,10 +561,11 @@ def above_hardness(pressure, materials: Iterable) -> list[str]:
 
 
 def steps_above_hardness(max_pressure, warmup_steps: int, materials: Iterable) -> list[str]:
-    """Steps of a transient run whose largest pressure exceeds the hardness of a body.
+    """Counting steps of a transient run whose largest pressure exceeds the hardness of a body.
 
     A transient mixed-EHL run's asperity contacts are elastic; the last step's pressure field
-    (:func:`above_hardness`) tells nothing of the steps before it.
+    (:func:`above_hardness`) tells nothing of the steps before it. The counting steps are
+    judged, as the run's reported maximum pressure is taken over them.
 
     Parameters
     ----------
@@ -580,12 +581,11 @@ def steps_above_hardness(max_pressure, warmup_steps: int, materials: Iterable) -
     list of str
         One line per hardness exceeded (bodies of the same material and hardness share it).
     """
-    p = np.asarray(max_pressure, dtype=float)
-    if not np.isfinite(p).any():
+    counted = np.asarray(max_pressure, dtype=float)[warmup_steps:]
+    if not np.isfinite(counted).any():
         return []
-    step = int(np.nanargmax(p))
-    p_max = float(p[step])
-    counted = p[warmup_steps:]
+    step = int(np.nanargmax(counted))
+    p_max = float(counted[step])
     exceeded: dict = {}
     for label, material in materials:
         hardness = getattr(material, "hardness", None)
@@ -593,13 +593,14 @@ def steps_above_hardness(max_pressure, warmup_steps: int, materials: Iterable) -
             exceeded.setdefault((hardness, material.name), []).append(label)
     lines = []
     for (hardness, name), labels in exceeded.items():
-        share = np.count_nonzero(counted > hardness) / max(counted.size, 1)
-        lines.append(f"pressure: the largest pressure of the run, {p_max / 1e9:.4g} GPa (step "
-                     f"{step + 1}), exceeds the hardness of {' and '.join(labels)} ({name}), "
-                     f"as the largest pressure does in {_pct(share)} of the counting steps "
-                     f"(limit: the hardness, {hardness / 1e9:.4g} GPa); the asperity contacts "
-                     "are elastic, so the body yields there and the contact pressures are "
-                     "elastic bounds: lower the load or the roughness, or read them so")
+        share = np.count_nonzero(counted > hardness) / counted.size
+        lines.append(f"pressure: the largest pressure of the counting steps, {p_max / 1e9:.4g} "
+                     f"GPa (step {warmup_steps + step + 1}), exceeds the hardness of "
+                     f"{' and '.join(labels)} ({name}), as the largest pressure does in "
+                     f"{_pct(share)} of the counting steps (limit: the hardness, "
+                     f"{hardness / 1e9:.4g} GPa); the asperity contacts are elastic, so the "
+                     "body yields there and the contact pressures are elastic bounds: lower "
+                     "the load or the roughness, or read them so")
     return lines
 
 

@@ -376,15 +376,16 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
 
 
 def _plasticity(case, problem, res) -> tuple[list[str], list[str]]:
-    """(notes, warnings): every step's largest pressure against the bodies' hardness
+    """(notes, warnings): every counting step's largest pressure against the bodies' hardness
     (:func:`diagnostics.steps_above_hardness`, warnings) and, with no hardness given, past the
     strain limit (:func:`diagnostics.asperity_plasticity_note`, a note); the asperity contacts
     are elastic. A case given by its reduced modulus has no bodies to judge."""
     done = res.max_pressure[:res.steps_done]
-    if case.body1 is None or not np.isfinite(done).any():
+    counted = done[res.warmup_steps:]  # the steps of the reported maximum pressure
+    if case.body1 is None or not np.isfinite(counted).any():
         return [], []
     bodies = [("body1", case.body1.material()), ("body2", case.body2.material())]
-    return (diagnostics.asperity_plasticity_note(float(np.nanmax(done)),
+    return (diagnostics.asperity_plasticity_note(float(np.nanmax(counted)),
                                                  problem.reduced_modulus / 2.0, bodies),
             diagnostics.steps_above_hardness(done, res.warmup_steps, bodies))
 
