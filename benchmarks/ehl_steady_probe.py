@@ -44,6 +44,7 @@ import numpy as np
 
 from asperity.cases import load_case
 from asperity.contact.hertz import radius_ratio
+from asperity.materials import Material, contact_modulus
 
 #: name -> (E1 Pa, nu1, name1, E2 Pa, nu2, name2, draw weight, highest plausible p_h Pa)
 PAIRS = {
@@ -91,11 +92,6 @@ def log_uniform(rng, low, high):
     return float(math.exp(rng.uniform(math.log(low), math.log(high))))
 
 
-def reduced_modulus(e1, nu1, e2, nu2):
-    """E' = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2), Pa."""
-    return 2.0 / ((1 - nu1**2) / e1 + (1 - nu2**2) / e2)
-
-
 def modulus_text(value):
     """A Young's modulus as a user writes it: "210 GPa", "5.826 MPa"."""
     return f"{value / 1e9:.4g} GPa" if value >= 1e9 else f"{value / 1e6:.4g} MPa"
@@ -128,7 +124,7 @@ def draw_case(rng, index, kind):
     if soft:
         e1 = log_uniform(rng, 1e6, 5e6) if pair.startswith("PDMS") else \
             log_uniform(rng, 4e6, 20e6)
-    e_prime = reduced_modulus(e1, nu1, e2, nu2)
+    e_prime = 2.0 * contact_modulus(Material(e1, nu1), Material(e2, nu2))  # E' = 2 E*
     line = kind == "line" or (soft and rng.uniform() < 0.25)
     k = 1.0 if line else log_uniform(rng, *K_RANGE)
     ry_over_rx = 1.0 / radius_ratio(1.0 / k)
