@@ -174,7 +174,9 @@ class GearPathResult:
     ``mesh_error`` the estimated relative error of its central film on that mesh
     (:func:`film_mesh_error`; 0 where unloaded).
     With a Newtonian lubricant (no Eyring stress) ``ehl_friction`` is NaN, and so are
-    ``friction`` and the temperatures wherever the film carries part of the load.
+    ``friction`` and the temperatures wherever the film carries part of the load: a
+    ``lubricant.tau0`` line among ``warnings``, or among ``notes`` where no loaded point's
+    friction uses the EHL traction.
     """
 
     pair: GearPair
@@ -204,6 +206,7 @@ class GearPathResult:
     mesh_error: np.ndarray
     line: bool
     warnings: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
 
     def critical(self) -> dict:
         """Index of the minimum lambda, maximum flash temperature and maximum Hertz pressure
@@ -448,9 +451,16 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     notes += _mesh_notes(kin, mesh_error, film_units, mesh)
     notes += _boundary_notes(kin, lam, loaded & np.isfinite(lam), out["hm"], boundary_friction)
     left_out = loaded & (f_asp < 1.0)
-    if lubricant.newtonian and left_out.any():
-        # where the asperities carry all the load (every point in boundary lubrication) no
-        # result uses the EHL traction: the runner says so in a note, not a warning
+    remarks = []
+    if lubricant.newtonian and loaded.any() and not left_out.any():
+        # the asperities carry all the load at every point: no result uses the EHL traction
+        remarks.append(
+            "Newtonian lubricant (no lubricant.tau0): the EHL traction is left out (NaN in "
+            "result.nc), and no result here depends on it: at every loaded point lambda is "
+            f"below [friction] boundary_lambda = {boundary_lambda:g}, where the asperities "
+            "carry all the load and the friction is the boundary coefficient. A film that "
+            "carries load needs lubricant.tau0 for its friction and temperatures.")
+    elif lubricant.newtonian and left_out.any():
         raw = np.abs(newtonian_mu[loaded & np.isfinite(newtonian_mu)])
         size = f" (here a coefficient up to {raw.max():.3g})" if raw.size else ""
         notes.append(
@@ -484,4 +494,5 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         asperity_share=f_asp, friction=mu, flash_temperature=flash,
         contact_temperature=thermal.bulk_temperature + flash, peclet=pe, converged=converged,
         sweeps=sweeps, nodes=nodes, mesh_error=mesh_error, line=not pair.crowned, warnings=notes,
+        notes=remarks,
     )

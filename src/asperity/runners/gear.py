@@ -228,14 +228,8 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
            f"where the film needs it: {_span(result.nodes[result.nodes > 0])} nodes)"
            if case.ehl.adapt else "")
         + _mesh_accuracy(case.ehl, result),
+        *result.notes,  # solve_path's: a Newtonian traction no result uses
     ]
-    if newtonian and not np.any((result.load > 0) & (result.asperity_share < 1.0)):
-        notes.append(
-            "Newtonian lubricant (no lubricant.tau0): the EHL traction is left out (NaN in "
-            "result.nc), and no result here depends on it: at every loaded point lambda is "
-            f"below [friction] boundary_lambda = {case.friction.boundary_lambda:g}, where the "
-            "asperities carry all the load and the friction is the boundary coefficient. A "
-            "film that carries load needs lubricant.tau0 for its friction and temperatures.")
     title = case.title
     from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
 
