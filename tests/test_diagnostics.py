@@ -620,6 +620,11 @@ def test_steps_above_hardness_names_the_step_and_the_counting_share():
     assert steps_above_hardness(np.full(3, np.nan), 0, [("body1", steel)]) == []
     soft = Material(210e9, 0.3, "soft", 1.5e9)
     assert steps_above_hardness([1e9, 2e9, 1.2e9], 2, [("body1", soft)]) == []
+    # the last step below the hardness, an earlier counting step above it: the run's field
+    # check (above_hardness on the last step) passed such a run
+    (late,) = steps_above_hardness([1e9, 2e9, 8e9, 3e9, 2e9], 2, [("body1", steel)])
+    assert "8 GPa (step 3)" in late and "33.3 % of the counting steps" in late
+    assert dg.above_hardness(np.array([[2e9, 0.0]]), [("body1", steel)]) == []
 
 
 def test_asperity_plasticity_note_for_metals_without_a_hardness():
