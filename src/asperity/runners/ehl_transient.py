@@ -342,16 +342,18 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     notes += plastic_notes
     trust += plastic_warnings
     b = None if line else problem.b
-    touching = []
+    start_mesh = []
     if np.isfinite(res.steady_film).all():  # contacts without roughness, counted all the same
-        touching = diagnostics.smooth_start_contact(res.steady_film, res.x, res.y, problem.a,
-                                                    b, res.contact_film)
-        trust += touching
-        if touching:  # most often the side lobes, too narrow for the mesh: how to refine
-            trust += diagnostics.ehl_minimum_film_mesh(res.steady_film, res.x, res.y,
+        trust += diagnostics.smooth_start_contact(res.steady_film, res.x, res.y, problem.a,
+                                                  b, res.contact_film)
+        # the steady start's minimum film, a row of the comparison table (a ball on a disc:
+        # 4.1 nm against Hamrock-Dowson's 35.9 on b/20, shown without a word); where the start
+        # touches, most often the side lobes, too narrow for the mesh: how to refine
+        start_mesh = diagnostics.ehl_minimum_film_mesh(res.steady_film, res.x, res.y,
                                                        problem.a, b)
+        trust += start_mesh
     least = res.least_film
-    if not touching and np.isfinite(least).all() and least.min() > res.contact_film:
+    if not start_mesh and np.isfinite(least).all() and least.min() > res.contact_film:
         # the reported minimum film without contact, at its step: a feature that crosses the
         # side lobes of a point contact is as thin as the mesh across y lets the lobes be
         trust += diagnostics.ehl_minimum_film_mesh(least, res.x, res.y, problem.a, b)
