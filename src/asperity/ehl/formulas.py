@@ -57,6 +57,7 @@ __all__ = [
     "moes_line_film",
     "nijenbanning_point",
     "nijenbanning_film",
+    "nijenbanning_parts",
 ]
 
 
@@ -474,8 +475,8 @@ def moes_line(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus)
     )
 
 
-def nijenbanning_film(M, L, D):
-    """Nijenbanning, Venner & Moes (1994) central film H = hc / (rx sqrt(2U)), elliptic contact.
+def nijenbanning_parts(M, L, D):
+    """The isoviscous and piezoviscous parts of Nijenbanning, Venner & Moes' (1994) fit.
 
     With the curvature ratio D = rx/ry (0 < D <= 1) and c(D) = 1 + 0.006 ln D + 0.63 D^(4/7)::
 
@@ -484,7 +485,46 @@ def nijenbanning_film(M, L, D):
         H_RP = 1.29 (1 + 0.691 D)^(-2/3) L^(2/3)
         H_EP = 1.48 c^(-7/20) D^(-1/24) M^(-1/12) L^(3/4)
         s = 1.5 (1 + exp(-1.2 H_EI / H_RI)),  H_00 = 1.8 D^-1
-        H = { [H_RI^(3/2) + (H_EI^-4 + H_00^-4)^(-3/8)]^(2s/3) + (H_RP^-8 + H_EP^-8)^(-s/8) }^(1/s)
+        iso = [H_RI^(3/2) + (H_EI^-4 + H_00^-4)^(-3/8)]^(2/3)
+        piezo = (H_RP^-8 + H_EP^-8)^(-1/8)
+
+    and the fit is ``H = (iso^s + piezo^s)^(1/s)`` (:func:`nijenbanning_film`). Where the two
+    parts are of a size the sum exceeds either; the rigid-isoviscous term grows as 1/D, so a
+    wide ellipse (D small) at low M has them so (docs/ehl-robustness.md, "Nijenbanning's fit
+    where its two parts meet").
+
+    Parameters
+    ----------
+    M, L : array_like
+        Moes point-contact groups (:func:`moes_groups`).
+    D : array_like
+        rx / ry, in (0, 1].
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(h_ri, iso, piezo, s)``: the rigid-isoviscous asymptote ``H_RI``, the two parts
+        and the exponent.
+    """
+    M = np.asarray(M, dtype=float)
+    L = np.asarray(L, dtype=float)
+    D = np.asarray(D, dtype=float)
+    c = 1.0 + 0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)
+    h_ri = 145.0 * (1.0 + 0.796 * D ** (14.0 / 15.0)) ** (-15.0 / 7.0) / D * M**-2.0
+    h_ei = 3.18 * c ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
+    h_rp = 1.29 * (1.0 + 0.691 * D) ** (-2.0 / 3.0) * L ** (2.0 / 3.0)
+    h_ep = 1.48 * c ** (-7.0 / 20.0) * D ** (-1.0 / 24.0) * M ** (-1.0 / 12.0) * L**0.75
+    s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
+    iso = _power_mean(h_ri, _power_mean(h_ei, 1.8 / D, -4.0), 1.5)
+    piezo = _power_mean(h_rp, h_ep, -8.0)
+    return h_ri, iso, piezo, s
+
+
+def nijenbanning_film(M, L, D):
+    """Nijenbanning, Venner & Moes (1994) central film H = hc / (rx sqrt(2U)), elliptic contact.
+
+    ``H = { [H_RI^(3/2) + (H_EI^-4 + H_00^-4)^(-3/8)]^(2s/3) + (H_RP^-8 + H_EP^-8)^(-s/8) }^(1/s)``
+    with the asymptotes and ``s`` of :func:`nijenbanning_parts`.
 
     The isoviscous bracket is raised to ``2s/3``, in the same pattern as Moes' line formula,
     so that H -> H_RI as M -> 0 at L = 0. The transcription in REFERENCE.md (inner powers
@@ -503,17 +543,7 @@ def nijenbanning_film(M, L, D):
     ndarray
         H.
     """
-    M = np.asarray(M, dtype=float)
-    L = np.asarray(L, dtype=float)
-    D = np.asarray(D, dtype=float)
-    c = 1.0 + 0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)
-    h_ri = 145.0 * (1.0 + 0.796 * D ** (14.0 / 15.0)) ** (-15.0 / 7.0) / D * M**-2.0
-    h_ei = 3.18 * c ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
-    h_rp = 1.29 * (1.0 + 0.691 * D) ** (-2.0 / 3.0) * L ** (2.0 / 3.0)
-    h_ep = 1.48 * c ** (-7.0 / 20.0) * D ** (-1.0 / 24.0) * M ** (-1.0 / 12.0) * L**0.75
-    s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
-    iso = _power_mean(h_ri, _power_mean(h_ei, 1.8 / D, -4.0), 1.5)
-    piezo = _power_mean(h_rp, h_ep, -8.0)
+    _, iso, piezo, s = nijenbanning_parts(M, L, D)
     return (iso**s + piezo**s) ** (1.0 / s)
 
 
@@ -526,7 +556,8 @@ def nijenbanning_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):
     Returns
     -------
     FilmThickness
-        ``central`` in m, with M, L, D and H.
+        ``central`` in m, with M, L, D, H, the rigid-isoviscous asymptote ``H_RI`` and the
+        fit's two parts ``H_iso``, ``H_piezo`` (:func:`nijenbanning_parts`).
     """
     rx = check_positive("rx", rx)
     ry = check_positive("ry", ry)
@@ -535,9 +566,11 @@ def nijenbanning_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):
     g = moes_groups(load, rx, mean_speed, eta0, alpha, reduced_modulus)
     d = rx / ry
     h = float(nijenbanning_film(g.M, g.L, d))
+    h_ri, iso, piezo, _ = nijenbanning_parts(g.M, g.L, d)
     return FilmThickness(
         central=h * g.film_scale,
         minimum=None,
         formula="Nijenbanning",
-        dimensionless={"M": g.M, "L": g.L, "D": d, "H": h},
+        dimensionless={"M": g.M, "L": g.L, "D": d, "H": h, "H_RI": float(h_ri),
+                       "H_iso": float(iso), "H_piezo": float(piezo)},
     )
