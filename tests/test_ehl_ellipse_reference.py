@@ -80,11 +80,11 @@ def _extrapolated(k, domain, spacings, aspect, *, film, stages, solver_meshes, M
     return problem, hc, reference, richardson(coarse, fine, 2.0)
 
 
-def _chittenden(problem):
+def _fit(formula, problem):
+    """A film formula's central film of ``problem`` in Hertzian units."""
     lub = problem.lubricant
-    return chittenden_point(problem.load, problem.rx, problem.ry, problem.mean_speed,
-                            lub.viscosity, lub.pressure_viscosity,
-                            problem.reduced_modulus).central / problem.film_scale
+    return formula(problem.load, problem.rx, problem.ry, problem.mean_speed, lub.viscosity,
+                   lub.pressure_viscosity, problem.reduced_modulus).central / problem.film_scale
 
 
 def test_at_k_one_half_the_solver_and_the_reference_agree_and_lie_43_percent_above_chittenden():
@@ -100,7 +100,7 @@ def test_at_k_one_half_the_solver_and_the_reference_agree_and_lie_43_percent_abo
         solver_meshes=((133, 21, 2), (265, 41, 3)))
     assert hc == pytest.approx([0.08287, 0.08881], rel=2e-3)
     assert solver == pytest.approx(reference, rel=0.01)
-    assert reference / _chittenden(problem) == pytest.approx(1.425, rel=0.02)
+    assert reference / _fit(chittenden_point, problem) == pytest.approx(1.425, rel=0.02)
 
 
 @pytest.mark.slow
@@ -119,14 +119,7 @@ def test_at_k_one_quarter_the_solver_converges_to_the_reference_78_percent_above
         solver_meshes=((513, 41, 3), (1025, 81, 4)))
     assert hc == pytest.approx([0.04744, 0.04886], rel=2e-3)
     assert solver == pytest.approx(reference, rel=0.006)
-    assert reference / _chittenden(problem) == pytest.approx(1.78, rel=0.02)
-
-
-def _nijenbanning(problem):
-    lub = problem.lubricant
-    return nijenbanning_point(problem.load, problem.rx, problem.ry, problem.mean_speed,
-                              lub.viscosity, lub.pressure_viscosity,
-                              problem.reduced_modulus).central / problem.film_scale
+    assert reference / _fit(chittenden_point, problem) == pytest.approx(1.78, rel=0.02)
 
 
 def test_a_wide_ellipse_at_low_m_lies_11_percent_under_nijenbanning_with_the_reference():
@@ -146,7 +139,7 @@ def test_a_wide_ellipse_at_low_m_lies_11_percent_under_nijenbanning_with_the_ref
     assert nijenbanning_rigid_share(problem) > NIJENBANNING_RIGID_SHARE
     assert hc == pytest.approx([1.6872, 1.7037], rel=2e-3)
     assert solver == pytest.approx(reference, rel=0.01)
-    assert reference / _nijenbanning(problem) == pytest.approx(0.893, rel=0.02)
+    assert reference / _fit(nijenbanning_point, problem) == pytest.approx(0.893, rel=0.02)
 
 
 @pytest.mark.slow
@@ -181,4 +174,4 @@ def test_the_probes_steel_glass_ellipse_lies_35_percent_under_nijenbanning_with_
     assert nijenbanning_rigid_share(problem) == pytest.approx(0.97, abs=0.01)
     assert reference == pytest.approx(1.9330, rel=1e-3)
     assert solver == pytest.approx(reference, rel=0.005)
-    assert reference / _nijenbanning(problem) == pytest.approx(0.644, rel=0.02)
+    assert reference / _fit(nijenbanning_point, problem) == pytest.approx(0.644, rel=0.02)

@@ -533,10 +533,8 @@ def nijenbanning_film(M, L, D):
 
     Parameters
     ----------
-    M, L : array_like
-        Moes point-contact groups (:func:`moes_groups`).
-    D : array_like
-        rx / ry, in (0, 1].
+    M, L, D : array_like
+        As :func:`nijenbanning_parts`: the Moes groups and rx / ry.
 
     Returns
     -------
