@@ -306,22 +306,22 @@ def test_nijenbannings_row_is_not_checked_where_its_rigid_isoviscous_term_meets_
     from asperity.ehl import Lubricant, PointContact
     from asperity.materials import Material
     from asperity.references import (
-        NIJENBANNING_RIGID_SHARE,
+        RIGID_SHARE,
         film_formula_comparisons,
-        nijenbanning_rigid_share,
+        fit_rigid_share,
     )
 
     steel, glass = Material(210e9, 0.3), Material(75e9, 0.22)
     oil = Lubricant(0.05187, 23.66e-9, viscosity_model="barus", compressible=False)
     wide = PointContact(4.095e-3, 41.129e-3, 2.784, 2.700, 1.826, steel, glass, oil)
-    assert nijenbanning_rigid_share(wide) == pytest.approx(0.97, abs=0.01)
+    assert fit_rigid_share(wide) == pytest.approx(0.97, abs=0.01)
     (row,) = [r for r in film_formula_comparisons(wide, 548.4e-9, 525e-9)
               if r.source.startswith("Nijenbanning")]
     assert row.reference == pytest.approx(850.9e-9, rel=1e-3)
     assert row.tolerance is None
     assert "0.89, 0.77 and 0.64 times the fit" in row.note
     circle = PointContact(4.095e-3, 4.095e-3, 2.784, 2.700, 1.826, steel, glass, oil)
-    assert nijenbanning_rigid_share(circle) < NIJENBANNING_RIGID_SHARE
+    assert fit_rigid_share(circle) < RIGID_SHARE
     (row,) = [r for r in film_formula_comparisons(circle, 1e-7, 1e-7)
               if r.source.startswith("Nijenbanning")]
     assert row.tolerance == 0.05

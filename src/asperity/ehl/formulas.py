@@ -55,6 +55,7 @@ __all__ = [
     "dowson_higginson_line",
     "moes_line",
     "moes_line_film",
+    "moes_line_parts",
     "nijenbanning_point",
     "nijenbanning_film",
     "nijenbanning_parts",
@@ -421,17 +422,44 @@ def _power_mean(a, b, q):
         return (a**q + b**q) ** (1.0 / q)
 
 
-def moes_line_film(M, L):
-    """Moes' central film H = hc / (R sqrt(2U)) of a line contact, from M and L.
+def moes_line_parts(M, L):
+    """The isoviscous and piezoviscous parts of Moes' (1992) line-contact fit.
 
     Asymptotes (rigid-isoviscous, elastic-isoviscous, rigid-piezoviscous,
     elastic-piezoviscous)::
 
         H_RI = 3 M^-1,  H_EI = 2.621 M^-1/5,  H_RP = 1.287 L^2/3,  H_EP = 1.311 M^-1/8 L^3/4
 
-    blended as ``s = (7 + 8 exp(-2 H_EI / H_RI)) / 5`` and
-    ``H = [(H_RI^7/3 + H_EI^7/3)^(3s/7) + (H_RP^-7/2 + H_EP^-7/2)^(-2s/7)]^(1/s)``
-    (Moes 1992, as quoted by Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000).
+    ``iso = (H_RI^7/3 + H_EI^7/3)^(3/7)``, ``piezo = (H_RP^-7/2 + H_EP^-7/2)^(-2/7)`` and the
+    exponent ``s = (7 + 8 exp(-2 H_EI / H_RI)) / 5`` of ``H = (iso^s + piezo^s)^(1/s)``
+    (:func:`moes_line_film`; Moes 1992, as quoted by Venner & Lubrecht, *Multilevel Methods
+    in Lubrication*, 2000).
+
+    Parameters
+    ----------
+    M, L : array_like
+        Moes groups (M > 0, L >= 0).
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(h_ri, iso, piezo, s)``.
+    """
+    M = np.asarray(M, dtype=float)
+    L = np.asarray(L, dtype=float)
+    h_ri = 3.0 / M
+    h_ei = 2.621 * M**-0.2
+    h_rp = 1.287 * L ** (2.0 / 3.0)
+    h_ep = 1.311 * M**-0.125 * L**0.75
+    s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
+    return h_ri, _power_mean(h_ri, h_ei, 7.0 / 3.0), _power_mean(h_rp, h_ep, -3.5), s
+
+
+def moes_line_film(M, L):
+    """Moes' central film H = hc / (R sqrt(2U)) of a line contact, from M and L.
+
+    ``H = [(H_RI^7/3 + H_EI^7/3)^(3s/7) + (H_RP^-7/2 + H_EP^-7/2)^(-2s/7)]^(1/s)`` with the
+    asymptotes and ``s`` of :func:`moes_line_parts`.
 
     Parameters
     ----------
@@ -443,15 +471,7 @@ def moes_line_film(M, L):
     ndarray
         H.
     """
-    M = np.asarray(M, dtype=float)
-    L = np.asarray(L, dtype=float)
-    h_ri = 3.0 / M
-    h_ei = 2.621 * M**-0.2
-    h_rp = 1.287 * L ** (2.0 / 3.0)
-    h_ep = 1.311 * M**-0.125 * L**0.75
-    s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
-    iso = _power_mean(h_ri, h_ei, 7.0 / 3.0)
-    piezo = _power_mean(h_rp, h_ep, -3.5)
+    _, iso, piezo, s = moes_line_parts(M, L)
     return (iso**s + piezo**s) ** (1.0 / s)
 
 
@@ -463,15 +483,18 @@ def moes_line(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus)
     Returns
     -------
     FilmThickness
-        ``central`` in m, with M, L and H.
+        ``central`` in m, with M, L, H, the rigid-isoviscous asymptote ``H_RI`` and the fit's
+        two parts ``H_iso``, ``H_piezo`` (:func:`moes_line_parts`).
     """
     g = moes_groups(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus, line=True)
     h = float(moes_line_film(g.M, g.L))
+    h_ri, iso, piezo, _ = moes_line_parts(g.M, g.L)
     return FilmThickness(
         central=h * g.film_scale,
         minimum=None,
         formula="Moes",
-        dimensionless={"M": g.M, "L": g.L, "H": h},
+        dimensionless={"M": g.M, "L": g.L, "H": h, "H_RI": float(h_ri), "H_iso": float(iso),
+                       "H_piezo": float(piezo)},
     )
 
 
