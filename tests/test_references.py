@@ -331,9 +331,10 @@ def test_nijenbannings_row_at_l_zero_is_not_checked_where_its_two_isoviscous_ter
     """At L = 0 the fit is its isoviscous part ``(H_RI^(3/2) + H_EI00^(3/2))^(2/3)``; its
     rigid-isoviscous term grows as ry/rx. The random probe's rubber ellipse on steel (row 17,
     k = 3.39, M = 18.3, alpha = 0), where ``H_RI`` is 0.95 of ``H_EI00``, converged to 0.753
-    of the fit, which an independent point-contact solution confirms within 0.01 %
-    (tests/test_ehl_ellipse_reference.py): at the 10 % of L = 0 the right film read
-    "differs"; it is shown with the measured ratios and not checked. The PDMS ellipse of
+    of the fit on its default domain, which an independent point-contact solution confirms
+    within 0.01 % (tests/test_ehl_ellipse_reference.py), and to 0.85 of it on a domain
+    converged in its inlet and sides: at the 10 % of L = 0 the right film read "differs"; it
+    is shown with the measured ratios and not checked. The PDMS ellipse of
     row 18 (k = 4.94, M = 61.3, share 0.19; Newtonian, incompressible here) keeps the 10 %
     check, which its film, 1.073 times the fit, passes; the corpus' PDMS ball (M = 102,
     share 0.003) keeps it too. The shares by hand from the fit's terms:
@@ -385,7 +386,7 @@ def test_nijenbannings_row_at_l_zero_is_not_checked_where_its_two_isoviscous_ter
     row = nijenbanning(pdms, 1.073)
     assert row.tolerance == LOW_L_TOLERANCE["nijenbanning_central_film_m"]
     assert row.passed
-    assert "1.073 (k = 4.9, M = 61) times the fit" in row.note
+    assert "1.073 (k = 4.9, M = 61; 1.11 on a domain converged" in row.note
     ball = load_case((Path(__file__).parent / "corpus" / "warn-ehl-point-soft-large-contact.toml"
                       ).read_text()).problem()
     assert nijenbanning_rigid_share(ball) < 0.01 < NIJENBANNING_RIGID_SHARE
