@@ -296,7 +296,10 @@ class PointReference:
         """Start from a coarser solution (bilinear in P, the same H0)."""
         f = RegularGridInterpolator((coarse.X, coarse.Y), coarse.P)
         gx, gy = np.meshgrid(self.X, self.Y, indexing="ij")
-        P = f(np.stack([gx.ravel(), gy.ravel()], axis=1))[self.nodes]
+        # the same bounds up to rounding (0.15 * 50 > 0.25 * 30): clipped onto the coarse grid
+        points = np.stack([np.clip(gx.ravel(), coarse.X[0], coarse.X[-1]),
+                           np.clip(gy.ravel(), coarse.Y[0], coarse.Y[-1])], axis=1)
+        P = f(points)[self.nodes]
         return P, coarse.H0
 
     def solve(self, P, H0, *, tol=1e-10, max_iter=60) -> PointSolution:

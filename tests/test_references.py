@@ -325,3 +325,69 @@ def test_nijenbannings_row_is_not_checked_where_its_rigid_isoviscous_term_meets_
     (row,) = [r for r in film_formula_comparisons(circle, 1e-7, 1e-7)
               if r.source.startswith("Nijenbanning")]
     assert row.tolerance == 0.05
+
+
+def test_nijenbannings_row_at_l_zero_is_not_checked_where_its_two_isoviscous_terms_meet():
+    """At L = 0 the fit is its isoviscous part ``(H_RI^(3/2) + H_EI00^(3/2))^(2/3)``; its
+    rigid-isoviscous term grows as ry/rx. The random probe's rubber ellipse on steel (row 17,
+    k = 3.39, M = 18.3, alpha = 0), where ``H_RI`` is 0.95 of ``H_EI00``, converged to 0.753
+    of the fit on its default domain, which an independent point-contact solution confirms
+    within 0.01 % (tests/test_ehl_ellipse_reference.py), and to 0.85 of it on a domain
+    converged in its inlet and sides: at the 10 % of L = 0 the right film read "differs"; it
+    is shown with the measured ratios and not checked. The PDMS ellipse of
+    row 18 (k = 4.94, M = 61.3, share 0.19; Newtonian, incompressible here) keeps the 10 %
+    check, which its film, 1.073 times the fit, passes; the corpus' PDMS ball (M = 102,
+    share 0.003) keeps it too. The shares by hand from the fit's terms:
+    ``H_RI = 145 (1 + 0.796 D^(14/15))^(-15/7) / (D M^2)``, ``H_EI = 3.18 c^(-14/25)
+    D^(-1/15) M^(-2/15)``, ``H_00 = 1.8/D``."""
+    from asperity.references import (
+        LOW_L_TOLERANCE,
+        RIGID_SHARE,
+        film_formula_comparisons,
+        fit_rigid_share,
+    )
+
+    def share_by_hand(problem):
+        d, m = problem.rx / problem.ry, problem.M
+        c = 1.0 + 0.006 * math.log(d) + 0.63 * d ** (4 / 7)
+        h_ri = 145.0 * (1.0 + 0.796 * d ** (14 / 15)) ** (-15 / 7) / (d * m * m)
+        h_ei = 3.18 * c ** (-14 / 25) * d ** (-1 / 15) * m ** (-2 / 15)
+        return h_ri / (h_ei**-4 + (d / 1.8) ** 4) ** -0.25
+
+    def nijenbanning(problem, ratio):
+        fit = film_formulas(problem)["nijenbanning_central_film_m"]
+        (row,) = [r for r in film_formula_comparisons(problem, ratio * fit, 0.8 * ratio * fit)
+                  if r.source.startswith("Nijenbanning")]
+        return row
+
+    oil = {"viscosity_model": "barus", "density_model": "incompressible"}
+    rubber = load_case({
+        "analysis": "ehl-steady",
+        "body1": {"youngs_modulus": "4.372 MPa", "poisson_ratio": 0.49},
+        "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+        "contact": {"type": "point", "rx": "8.403 mm", "ry": "53.796 mm", "load": "0.43222 N"},
+        "speeds": {"u": "0.5161 m/s", "xi": 0.955},
+        "lubricant": {"eta0": "0.08395 Pa s", "alpha": "0 1/GPa", **oil}}).problem()
+    assert rubber.M == pytest.approx(18.26, rel=1e-3)
+    assert fit_rigid_share(rubber) == pytest.approx(share_by_hand(rubber), rel=1e-12)
+    assert fit_rigid_share(rubber) == pytest.approx(0.955, abs=0.005)
+    row = nijenbanning(rubber, 0.753)
+    assert row.tolerance is None
+    assert "0.75 and 0.60 times the fit at shares 0.95 and 1.64" in row.note
+    pdms = load_case({
+        "analysis": "ehl-steady",
+        "body1": {"youngs_modulus": "1.9 MPa", "poisson_ratio": 0.49},
+        "body2": {"youngs_modulus": "70 GPa", "poisson_ratio": 0.22},
+        "contact": {"type": "point", "rx": "2.832 mm", "ry": "32.878 mm", "load": "0.079932 N"},
+        "speeds": {"u": "0.01784 m/s", "xi": 0.556},
+        "lubricant": {"eta0": "0.4118 Pa s", "alpha": "0 1/GPa", **oil}}).problem()
+    assert fit_rigid_share(pdms) == pytest.approx(share_by_hand(pdms), rel=1e-12)
+    assert fit_rigid_share(pdms) == pytest.approx(0.19, abs=0.005)
+    row = nijenbanning(pdms, 1.073)
+    assert row.tolerance == LOW_L_TOLERANCE["nijenbanning_central_film_m"]
+    assert row.passed
+    assert "1.073 (k = 4.9, M = 61; 1.11 on a domain converged" in row.note
+    ball = load_case((Path(__file__).parent / "corpus" / "warn-ehl-point-soft-large-contact.toml"
+                      ).read_text()).problem()
+    assert fit_rigid_share(ball) < 0.01 < RIGID_SHARE
+    assert nijenbanning(ball, 1 / 1.068).tolerance == 0.10

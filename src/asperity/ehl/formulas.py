@@ -532,15 +532,30 @@ def nijenbanning_parts(M, L, D):
     M = np.asarray(M, dtype=float)
     L = np.asarray(L, dtype=float)
     D = np.asarray(D, dtype=float)
-    c = 1.0 + 0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)
+    c = _nijenbanning_c(D)
     h_ri = 145.0 * (1.0 + 0.796 * D ** (14.0 / 15.0)) ** (-15.0 / 7.0) / D * M**-2.0
     h_ei = 3.18 * c ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
     h_rp = 1.29 * (1.0 + 0.691 * D) ** (-2.0 / 3.0) * L ** (2.0 / 3.0)
     h_ep = 1.48 * c ** (-7.0 / 20.0) * D ** (-1.0 / 24.0) * M ** (-1.0 / 12.0) * L**0.75
     s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
-    iso = _power_mean(h_ri, _power_mean(h_ei, 1.8 / D, -4.0), 1.5)
+    iso = _power_mean(h_ri, _nijenbanning_elastic_isoviscous(M, D), 1.5)
     piezo = _power_mean(h_rp, h_ep, -8.0)
     return h_ri, iso, piezo, s
+
+
+def _nijenbanning_c(D):
+    """``c(D) = 1 + 0.006 ln D + 0.63 D^(4/7)`` of :func:`nijenbanning_parts`."""
+    return 1.0 + 0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)
+
+
+def _nijenbanning_elastic_isoviscous(M, D):
+    """``(H_EI^-4 + H_00^-4)^(-1/4)``: the term of :func:`nijenbanning_parts`' isoviscous part
+    that its rigid-isoviscous asymptote ``H_RI`` is added to (``iso = (H_RI^(3/2) +
+    this^(3/2))^(2/3)``)."""
+    M = np.asarray(M, dtype=float)
+    D = np.asarray(D, dtype=float)
+    h_ei = 3.18 * _nijenbanning_c(D) ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
+    return _power_mean(h_ei, 1.8 / D, -4.0)
 
 
 def nijenbanning_film(M, L, D):
@@ -577,8 +592,9 @@ def nijenbanning_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):
     Returns
     -------
     FilmThickness
-        ``central`` in m, with M, L, D, H, the rigid-isoviscous asymptote ``H_RI`` and the
-        fit's two parts ``H_iso``, ``H_piezo`` (:func:`nijenbanning_parts`).
+        ``central`` in m, with M, L, D, H, the rigid-isoviscous asymptote ``H_RI``, the
+        elastic-isoviscous term ``H_EI00`` it is added to, and the fit's two parts ``H_iso``,
+        ``H_piezo`` (:func:`nijenbanning_parts`).
     """
     rx = check_positive("rx", rx)
     ry = check_positive("ry", ry)
@@ -593,5 +609,6 @@ def nijenbanning_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):
         minimum=None,
         formula="Nijenbanning",
         dimensionless={"M": g.M, "L": g.L, "D": d, "H": h, "H_RI": float(h_ri),
+                       "H_EI00": float(_nijenbanning_elastic_isoviscous(g.M, d)),
                        "H_iso": float(iso), "H_piezo": float(piezo)},
     )
