@@ -1020,6 +1020,46 @@ def ehl_side_film(probe, b: float) -> list[str]:
             y_min=float(f"{w0 / b:.2g}") * b, y_max=float(f"{w1 / b:.2g}") * b)]
 
 
+def ehl_domain_film(probe, a: float, b: float) -> list[str]:
+    """Film moved by the inlet and the sides together: the steady solves of a domain probe
+    differ by more than ``SIDE_FILM_CHANGE`` in the minimum film or ``SIDE_CENTRAL_CHANGE`` in
+    the central film (the side probe's limits).
+
+    Parameters
+    ----------
+    probe : asperity.ehl.sides.DomainProbe
+        The steady film on the case's domain and on one with the inlet and sides moved out.
+    a, b : float
+        Hertz semi-axes along x and y, m.
+
+    Returns
+    -------
+    list of str
+        At most one line; none when either solve did not converge or closed the film.
+    """
+    if not probe.converged or min(*probe.minimum_film, *probe.central_film) <= 0.0:
+        return []
+    dmin, dcen = probe.minimum_film_change, probe.central_film_change
+    if abs(dmin) <= SIDE_FILM_CHANGE and abs(dcen) <= SIDE_CENTRAL_CHANGE:
+        return []
+    (y0, y1), (w0, w1) = probe.y_bounds, probe.wide_y_bounds
+    x_min = float(f"{probe.long_x_min / a:.3g}") * a
+    return [DomainAdvice(
+            f"domain: the inlet at x = {probe.x_min / a:.3g} a and the sides at y = "
+            f"{y0 / b:.3g} b and {y1 / b:.3g} b together change the film: with the inlet at "
+            f"{probe.long_x_min / a:.3g} a and the sides at {w0 / b:.3g} b and {w1 / b:.3g} b "
+            f"the central film is {_pct(abs(dcen) / (1.0 + dcen))} "
+            f"{'higher' if dcen < 0 else 'lower'} and the minimum film "
+            f"{_pct(abs(dmin) / (1.0 + dmin))} {'higher' if dmin < 0 else 'lower'} (steady "
+            f"smooth solutions on {probe.nodes[0]} x {probe.nodes[1]} nodes; limits "
+            f"{_pct(SIDE_CENTRAL_CHANGE)} and {_pct(SIDE_FILM_CHANGE)}): the pressure of this "
+            "thick film reaches far beyond the contact; take x_min, y_min and y_max out "
+            f"together until the film settles (at least x_min <= {probe.long_x_min / a:.3g} a, "
+            f"y_min <= {w0 / b:.2g} b, y_max >= {w1 / b:.2g} b), or read the film as a "
+            "lower bound", x_min=x_min, y_min=float(f"{w0 / b:.2g}") * b,
+            y_max=float(f"{w1 / b:.2g}") * b)]
+
+
 def newtonian_traction(mu: float, newtonian: bool) -> list[str]:
     """A Newtonian film's friction coefficient above ``NEWTONIAN_TRACTION_LIMIT``.
 

@@ -15,6 +15,12 @@ bearing's contact (M = 18,100) lost 5.4 % of its central film with the inlet at 
 -2.5 a, where the fit predicts none (docs/ehl-robustness.md). :func:`inlet_probe` measures it
 the same way, with the inlet moved upstream; a line contact, which has no such fit here, only
 that way (a cam contact lost 6.8 % of its central film with the inlet at -1.5 a).
+
+A thick film whose fit adds a rigid-isoviscous film of its size (a wide ellipse at low M, a
+soft ellipse at L = 0) carries part of its load by a pressure that reaches far beyond the
+contact: its film rises when the inlet and the sides move out together, by more than either
+alone shows (docs/ehl-robustness.md, "Soft ellipses at L = 0"). :func:`domain_probe` measures
+that, with the inlet distance and the sides' half-widths scaled together.
 """
 
 from __future__ import annotations
@@ -27,7 +33,8 @@ import numpy as np
 
 from .solver import sequencing_levels, solve_steady
 
-__all__ = ["MIN_NODES", "InletProbe", "SideProbe", "inlet_probe", "side_probe"]
+__all__ = ["MIN_NODES", "DomainProbe", "InletProbe", "SideProbe", "domain_probe", "inlet_probe",
+           "side_probe"]
 
 #: Fewest nodes of a probe solve along x or y (the solver's own minimum).
 MIN_NODES = 9
@@ -90,6 +97,35 @@ class InletProbe(_FilmChanges):
 
     x_min: float
     long_x_min: float
+    minimum_film: tuple[float, float]
+    central_film: tuple[float, float]
+    converged: bool
+    nodes: tuple[int, int]
+
+
+@dataclass(frozen=True)
+class DomainProbe(_FilmChanges):
+    """The steady film on the given domain and on one with the inlet and the sides moved out
+    together.
+
+    Attributes
+    ----------
+    x_min, long_x_min : float
+        Inlet boundaries of the two solves, m.
+    y_bounds, wide_y_bounds : (float, float)
+        Side boundaries of the two solves, m.
+    minimum_film, central_film : (float, float)
+        Minimum and central film of the two solves, m.
+    converged : bool
+        Whether both solves converged.
+    nodes : (int, int)
+        Nodes (nx, ny) of the solve on the given domain.
+    """
+
+    x_min: float
+    long_x_min: float
+    y_bounds: tuple[float, float]
+    wide_y_bounds: tuple[float, float]
     minimum_film: tuple[float, float]
     central_film: tuple[float, float]
     converged: bool
@@ -193,3 +229,41 @@ def inlet_probe(problem, x, y, x_min: float) -> InletProbe:
                       (short_res.minimum_film, long_res.minimum_film),
                       (short_res.central_film, long_res.central_film),
                       bool(short_res.converged and long_res.converged), (nx, ny))
+
+
+def domain_probe(problem, x, y, factor: float = 2.0) -> DomainProbe:
+    """Solve the smooth steady point contact on the domain of ``x``, ``y`` and on one whose
+    inlet distance ``-x[0]`` and side half-widths are ``factor`` times as large.
+
+    Both solves use the nodes of :func:`side_probe` (twice the mesh spacing, or the default
+    mesh of the domain where that is coarser), grid-sequenced, with the solver's defaults
+    otherwise; the large domain adds whole cells of the coarsest grid upstream and on each
+    side, at the same spacing.
+
+    Parameters
+    ----------
+    problem : PointContact
+        The contact (SI).
+    x, y : ndarray
+        Nodes of the solution whose domain is probed, m.
+    factor : float
+        Scale of the inlet distance and of the side half-widths (> 1).
+
+    Returns
+    -------
+    DomainProbe
+    """
+    (x_bounds, y_bounds), (nx, ny), levels = _probe_nodes(problem, x, y)
+    dx = (x_bounds[1] - x_bounds[0]) / (nx - 1)
+    dy = (y_bounds[1] - y_bounds[0]) / (ny - 1)
+    up = _extension((factor - 1.0) * max(-x_bounds[0], 0.0), dx, levels)
+    low = _extension((factor - 1.0) * max(-y_bounds[0], 0.0), dy, levels)
+    high = _extension((factor - 1.0) * max(y_bounds[1], 0.0), dy, levels)
+    large = ((x_bounds[0] - up * dx, x_bounds[1]),
+             (y_bounds[0] - low * dy, y_bounds[1] + high * dy))
+    given, other = _solve_pair(problem, levels, (nx, ny, (x_bounds, y_bounds)),
+                               (nx + up, ny + low + high, large))
+    return DomainProbe(x_bounds[0], large[0][0], y_bounds, large[1],
+                       (given.minimum_film, other.minimum_film),
+                       (given.central_film, other.central_film),
+                       bool(given.converged and other.converged), (nx, ny))

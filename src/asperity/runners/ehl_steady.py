@@ -17,12 +17,14 @@ from ..cases.ehl import MAX_BOUND
 from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
-from ..ehl.sides import inlet_probe, side_probe
+from ..ehl.sides import domain_probe, inlet_probe, side_probe
 from ..ehl.solver import NEWTON_CHECK_SWEEPS, SOFT_CELL_ASPECT, SOFT_MAX_NY, Y_LINES_BELOW
 from ..references import (
     ISOVISCOUS,
+    RIGID_SHARE,
     ehl_steady_comparisons,
     film_formulas,
+    fit_rigid_share,
     lubricant_laws,
 )
 from ..results import Outcome, variable
@@ -316,6 +318,11 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)
+    if (b is not None and not mesh and not rigid and problem.ry >= problem.rx
+            and fit_rigid_share(problem) > RIGID_SHARE):
+        # a thick film whose fit adds a rigid-isoviscous film of its size: the inlet and the
+        # sides cut off more together than either alone (a soft ellipse: 30 % against 4 %)
+        lines += diagnostics.ehl_domain_film(domain_probe(problem, x, y), hz.a, b)
     # the node counts advised below are counted on the domain advised above: a ball whose
     # sides at +-1.2 b were to go to +-2 b was told ny >= 81, b/33 on its 2.4 b, b/20 on 4 b
     advised = diagnostics.advised_domain(x, y, lines)
