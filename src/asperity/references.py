@@ -530,7 +530,8 @@ RIGID_SHARE_NOTES = {
         "piezoviscous part (above {limit:g}), where the fit adds the two; an independent "
         "point-contact solution (dense Love panels, Newton), which the solver matches within "
         "0.5 %, lies 0.89, 0.77 and 0.64 times the fit at shares 0.45, 0.60 and 0.97 "
-        "(k = 2-4.5, M = 8-20, L = 13.1)"),
+        "(k = 2-4.5, M = 8-20, L = 13.1) on the default domain; the last one's film rises to "
+        "0.73 of the fit with the inlet and the sides 8 times as far out (and still rises)"),
     ("nijenbanning_central_film_m", True): (
         "; not a check here: the fit's rigid-isoviscous term is {share:.2g} of the "
         "elastic-isoviscous term it is added to (above {limit:g}); an independent "
