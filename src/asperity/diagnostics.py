@@ -986,6 +986,18 @@ def side_pressure(pressure, y, b: float) -> float:
     return float(np.max(np.asarray(pressure, dtype=float)[:, near]))
 
 
+def _probe_changes(probe) -> tuple[float, float] | None:
+    """The minimum and central film changes of a side or domain probe, or None where either
+    solve did not converge or closed the film, or neither change exceeds its limit
+    (``SIDE_FILM_CHANGE``, ``SIDE_CENTRAL_CHANGE``)."""
+    if not probe.converged or min(*probe.minimum_film, *probe.central_film) <= 0.0:
+        return None
+    dmin, dcen = probe.minimum_film_change, probe.central_film_change
+    if abs(dmin) <= SIDE_FILM_CHANGE and abs(dcen) <= SIDE_CENTRAL_CHANGE:
+        return None
+    return dmin, dcen
+
+
 def ehl_side_film(probe, b: float) -> list[str]:
     """Film moved by the side boundaries: the steady solves of a side probe differ by more than
     ``SIDE_FILM_CHANGE`` in the minimum film or ``SIDE_CENTRAL_CHANGE`` in the central film.
@@ -1003,11 +1015,10 @@ def ehl_side_film(probe, b: float) -> list[str]:
         At most one line; none when either solve of the probe did not converge or closed the
         film (the side pressure check still applies).
     """
-    if not probe.converged or min(*probe.minimum_film, *probe.central_film) <= 0.0:
+    changes = _probe_changes(probe)
+    if changes is None:
         return []
-    dmin, dcen = probe.minimum_film_change, probe.central_film_change
-    if abs(dmin) <= SIDE_FILM_CHANGE and abs(dcen) <= SIDE_CENTRAL_CHANGE:
-        return []
+    dmin, dcen = changes
     (y0, y1), (w0, w1) = probe.y_bounds, probe.wide_y_bounds
     return [DomainAdvice(
             f"sides: the side boundaries at y = {y0 / b:.3g} b and {y1 / b:.3g} b change the "
@@ -1037,11 +1048,10 @@ def ehl_domain_film(probe, a: float, b: float) -> list[str]:
     list of str
         At most one line; none when either solve did not converge or closed the film.
     """
-    if not probe.converged or min(*probe.minimum_film, *probe.central_film) <= 0.0:
+    changes = _probe_changes(probe)
+    if changes is None:
         return []
-    dmin, dcen = probe.minimum_film_change, probe.central_film_change
-    if abs(dmin) <= SIDE_FILM_CHANGE and abs(dcen) <= SIDE_CENTRAL_CHANGE:
-        return []
+    dmin, dcen = changes
     (y0, y1), (w0, w1) = probe.y_bounds, probe.wide_y_bounds
     x_min = float(f"{probe.long_x_min / a:.3g}") * a
     return [DomainAdvice(

@@ -464,7 +464,7 @@ def moes_line_film(M, L):
     Parameters
     ----------
     M, L : array_like
-        Moes groups (M > 0, L >= 0).
+        As :func:`moes_line_parts`.
 
     Returns
     -------
