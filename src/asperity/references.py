@@ -611,17 +611,17 @@ def film_formula_comparisons(problem, central_film: float, minimum_film: float,
     own_note = "Newtonian, Barus, incompressible: the formula's own model"
     other_note = _NEWTONIAN_NOTE.format(laws=lubricant_laws(lub))
     films = {"central_film": central_film, "minimum_film": minimum_film}
+    isoviscous = lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
     rows = []
     for key, film in film_formulas(problem).items():
         quantity, attribute, source, anchor = _FILM_ROWS[key]
         check = checked and own_model and key in _CHECKED_FITS
         row_note = own_note if own_model else other_note
         tolerance = 0.05
-        if lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS:
+        if isoviscous:
             row_note += _LOW_L_NOTES.get(key, "")
             tolerance = LOW_L_TOLERANCE.get(key, tolerance)
         row_note += _FIT_NOTES.get(key, "")
-        isoviscous = lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
         share = fit_rigid_share(problem) if (key, isoviscous) in RIGID_SHARE_NOTES else 0.0
         if share > RIGID_SHARE:
             row_note += RIGID_SHARE_NOTES[key, isoviscous].format(share=share,
