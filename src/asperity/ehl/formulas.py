@@ -526,36 +526,23 @@ def nijenbanning_parts(M, L, D):
     Returns
     -------
     tuple of ndarray
-        ``(h_ri, iso, piezo, s)``: the rigid-isoviscous asymptote ``H_RI``, the two parts
-        and the exponent.
+        ``(h_ri, h_ei00, iso, piezo, s)``: the rigid-isoviscous asymptote ``H_RI``, the
+        elastic-isoviscous term ``H_EI00 = (H_EI^-4 + H_00^-4)^(-1/4)`` it is added to in
+        ``iso = (H_RI^(3/2) + H_EI00^(3/2))^(2/3)``, the two parts and the exponent.
     """
     M = np.asarray(M, dtype=float)
     L = np.asarray(L, dtype=float)
     D = np.asarray(D, dtype=float)
-    c = _nijenbanning_c(D)
+    c = 1.0 + 0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)
     h_ri = 145.0 * (1.0 + 0.796 * D ** (14.0 / 15.0)) ** (-15.0 / 7.0) / D * M**-2.0
     h_ei = 3.18 * c ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
     h_rp = 1.29 * (1.0 + 0.691 * D) ** (-2.0 / 3.0) * L ** (2.0 / 3.0)
     h_ep = 1.48 * c ** (-7.0 / 20.0) * D ** (-1.0 / 24.0) * M ** (-1.0 / 12.0) * L**0.75
     s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
-    iso = _power_mean(h_ri, _nijenbanning_elastic_isoviscous(M, D), 1.5)
+    h_ei00 = _power_mean(h_ei, 1.8 / D, -4.0)
+    iso = _power_mean(h_ri, h_ei00, 1.5)
     piezo = _power_mean(h_rp, h_ep, -8.0)
-    return h_ri, iso, piezo, s
-
-
-def _nijenbanning_c(D):
-    """``c(D) = 1 + 0.006 ln D + 0.63 D^(4/7)`` of :func:`nijenbanning_parts`."""
-    return 1.0 + 0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)
-
-
-def _nijenbanning_elastic_isoviscous(M, D):
-    """``(H_EI^-4 + H_00^-4)^(-1/4)``: the term of :func:`nijenbanning_parts`' isoviscous part
-    that its rigid-isoviscous asymptote ``H_RI`` is added to (``iso = (H_RI^(3/2) +
-    this^(3/2))^(2/3)``)."""
-    M = np.asarray(M, dtype=float)
-    D = np.asarray(D, dtype=float)
-    h_ei = 3.18 * _nijenbanning_c(D) ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
-    return _power_mean(h_ei, 1.8 / D, -4.0)
+    return h_ri, h_ei00, iso, piezo, s
 
 
 def nijenbanning_film(M, L, D):
@@ -579,7 +566,7 @@ def nijenbanning_film(M, L, D):
     ndarray
         H.
     """
-    _, iso, piezo, s = nijenbanning_parts(M, L, D)
+    _, _, iso, piezo, s = nijenbanning_parts(M, L, D)
     return (iso**s + piezo**s) ** (1.0 / s)
 
 
@@ -603,12 +590,12 @@ def nijenbanning_point(load, rx, ry, mean_speed, eta0, alpha, reduced_modulus):
     g = moes_groups(load, rx, mean_speed, eta0, alpha, reduced_modulus)
     d = rx / ry
     h = float(nijenbanning_film(g.M, g.L, d))
-    h_ri, iso, piezo, _ = nijenbanning_parts(g.M, g.L, d)
+    h_ri, h_ei00, iso, piezo, _ = nijenbanning_parts(g.M, g.L, d)
     return FilmThickness(
         central=h * g.film_scale,
         minimum=None,
         formula="Nijenbanning",
         dimensionless={"M": g.M, "L": g.L, "D": d, "H": h, "H_RI": float(h_ri),
-                       "H_EI00": float(_nijenbanning_elastic_isoviscous(g.M, d)),
+                       "H_EI00": float(h_ei00),
                        "H_iso": float(iso), "H_piezo": float(piezo)},
     )
