@@ -8,6 +8,7 @@ import pytest
 
 from asperity.cases import load_case, parse_toml
 from asperity.ehl import LineContact, PointContact
+from asperity.ehl.solver import FINE_CELL_ASPECT
 from asperity.errors import InputError
 from asperity.examples import example_text
 from asperity.runners import run_case
@@ -185,7 +186,8 @@ def test_not_converged_is_reported():
 
 def test_unconverged_run_on_square_cells_says_which_ny_to_use():
     """A point contact that does not converge on cells shorter across y than 3 dx (here dy =
-    dx / 2) gets a note naming the largest grid.ny with dy >= 3 dx at its nx, after the
+    dx / 2) gets a note naming the largest grid.ny with dy >= 4 dx at its nx
+    (``FINE_CELL_ASPECT``: on 3 dx a thin film's rows swung on fine meshes), after the
     solver has tried the y-line sweeps too; on the default cells it gets no such note."""
     import re
 
@@ -202,7 +204,7 @@ def test_unconverged_run_on_square_cells_says_which_ny_to_use():
     ny = int(re.search(r"grid.ny <= (\d+)", advice[0]).group(1))
     x, y = out.dataset["x"].values, out.dataset["y"].values
     dx, width = x[1] - x[0], y[-1] - y[0]
-    assert width / (ny - 1) >= 3 * dx > width / ny  # the largest such ny
+    assert width / (ny - 1) >= FINE_CELL_ASPECT * dx > width / ny  # the largest such ny
     data = _example("holmes-smooth-point", grid={"nx": 33, "ny": 17},
                     solver={"levels": 1, "max_sweeps": 10})
     assert not any("grid.ny <=" in n for n in run_case(load_case(data)).notes)
@@ -256,7 +258,7 @@ def test_a_soft_contact_that_fails_with_the_defaults_is_relaxed_again_by_its_fal
     assert not load_case(steel).problem().soft
     failed = solve_steady(problem, nx=97, ny=33, max_iter=10)
     assert not failed.converged and failed.total_sweeps > failed.sweeps
-    given = solve_steady(problem, nx=97, ny=33, max_iter=10, refresh=10)
+    given = solve_steady(problem, nx=97, ny=33, max_iter=10, refresh=10, levels=1)
     assert not given.soft_retry and given.total_sweeps == given.sweeps == 10
 
 
@@ -320,7 +322,7 @@ def test_run_rescued_by_y_line_sweeps_says_so():
             "lubricant": {"eta0": "0.005 Pa s", "alpha": "11.1 1/GPa"},
             "grid": {"nx": 129, "ny": 129, "x_min": -2.5, "x_max": 1.5, "y_min": -2.0,
                      "y_max": 2.0},
-            "solver": {"max_sweeps": 3000}}
+            "solver": {"max_sweeps": 3000, "levels": 1}}
     out = run_case(load_case(data))
     assert out.converged
     advice = [n for n in out.notes if "grid.ny <=" in n]

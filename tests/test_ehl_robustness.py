@@ -249,19 +249,23 @@ def test_default_settings_converge_and_match_the_film_formulas(name, factory, mo
     assert 0 < res.minimum_film < res.central_film
 
 
-def test_high_viscosity_ball_on_square_cells_converges_slowly():
+def test_high_viscosity_ball_on_nearly_square_cells_converges():
     """The issue's failure: the slow viscous ball with an Eyring oil at xi = 0.5 on the former
     default mesh (129 x 65 on -2.5a..1.5a, cells nearly square) diverged (residual 0.5 after
     5000 sweeps, docs/ehl-robustness.md). With the density's Newton term in the row solve it
-    converges there, but slowly: measured 1290 sweeps against 460 on the default mesh
-    (dY >= 3 dX), which stays the default."""
+    converged there on one grid, slowly (1290 sweeps; 360 since session 42, with the grid
+    sequence a given mesh now takes and its load tangent), to the film of the default mesh
+    (dY >= 3 dX, measured 520 sweeps), which stays the default."""
     prob = _ball(15.0, STEEL, 5e6, 0.5)
-    old = solve_steady(prob, nx=129, ny=65, max_iter=5000,
-                       domain=((-2.5 * prob.a, 1.5 * prob.a), (-2 * prob.b, 2 * prob.b)))
+    domain = ((-2.5 * prob.a, 1.5 * prob.a), (-2 * prob.b, 2 * prob.b))
+    one_grid = solve_steady(prob, nx=129, ny=65, max_iter=5000, domain=domain, levels=1)
+    sequenced = solve_steady(prob, nx=129, ny=65, max_iter=5000, domain=domain)
     new = solve_steady(prob)
-    assert old.converged and new.converged
-    assert old.sweeps > 2 * new.sweeps and new.sweeps < 1000
-    assert old.central_film == pytest.approx(new.central_film, rel=0.03)
+    assert one_grid.converged and sequenced.converged and new.converged
+    assert one_grid.sweeps > 2 * new.sweeps and new.sweeps < 1000
+    assert len(sequenced.levels) == 3 and sequenced.sweeps < 1000
+    assert sequenced.central_film == pytest.approx(one_grid.central_film, rel=2e-4)
+    assert one_grid.central_film == pytest.approx(new.central_film, rel=0.03)
     # dY >= 3 dX, at b/10 on the default domain (+-2.4 b since the sides follow the inlet)
     assert (new.y[1] - new.y[0]) >= 3 * (new.x[1] - new.x[0])
     assert new.y[1] - new.y[0] == pytest.approx(prob.b / 10)
@@ -365,28 +369,6 @@ def test_default_sides_follow_a_long_inlet():
     assert abs(res.minimum_film / wide.minimum_film - 1) < 0.01
     gear = _gear()
     assert gear.default_domain()[1][1] == pytest.approx(2 * gear.b)
-
-
-@pytest.mark.slow
-def test_point_contact_on_a_mesh_three_times_finer_than_the_default_converges():
-    """The circular contact of the seed's aspect-ratio study (a/b = 1, M = 174, L = 6.9) on the
-    seed's 801 x 201 mesh, three times finer along x than its default 257 x 41: with the load
-    gain 0.05 of the coarser grids its finest grid cycled at residual 0.1-0.7 for 20000 sweeps
-    and its film drifted to 986 nm; with the gain scaled by dX / dX_default (0.016) it
-    converges (6271 sweeps, 163 s) to the film of 401 x 101 (408.2 nm), where 0.05 converged
-    (docs/ehl-robustness.md)."""
-    from asperity.cases import load_case
-    from asperity.sweep import load_study
-
-    case = load_case(dict((cid, c) for cid, c, _ in
-                          load_study("holmes-aspect-ratio-paper").cases)["0001"])
-    prob = case.problem()
-    nx, ny, domain = case.mesh(prob)
-    assert (nx, ny) == (801, 201) and prob.default_nodes(domain) == (257, 41)
-    half = solve_steady(prob, nx=401, ny=101, domain=domain, levels=3, near=2)
-    fine = solve_steady(prob, nx=nx, ny=ny, domain=domain, levels=4, near=2, max_iter=20000)
-    assert half.converged and fine.converged
-    assert fine.central_film == pytest.approx(half.central_film, rel=0.01)
 
 
 @pytest.mark.slow  # 45 s; the fallback itself runs in the fast suite through the runner

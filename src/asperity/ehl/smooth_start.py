@@ -51,7 +51,7 @@ def smooth_start(problem, nx: int, ny: int, domain, *, method: str | None = None
     """
     return solve_steady(problem, nx=nx, ny=ny, domain=domain, method=method,
                         levels=sequencing_levels(nx, ny, min_nx=17), near=near,
-                        tol=min(tol, 1e-5), max_iter=20000)
+                        tol=min(tol, 1e-5), max_iter=20000, point_tangent=False)
 
 
 def touching_mask(film, contact_film: float) -> np.ndarray:

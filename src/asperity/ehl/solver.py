@@ -142,6 +142,15 @@ COARSE_SWEEPS = 1000
 #: of the seed's aspect-ratio study on 401 x 101 square cells converged without them (3066
 #: sweeps) and cycled with them.
 Y_LINES_BELOW = 3.0
+#: Cells (``dY >= FINE_CELL_ASPECT dX``) that the runners' mesh advice asks for on meshes
+#: finer than the default. On cells 3 dX across, fine meshes of a thin film let the x-line
+#: zebra relaxation swing whole rows between no pressure and three times the Hertz pressure:
+#: a user's 3/4 in steel ball on glass (PAO, 20 N, 0.1 m/s, Moes M = 611, L = 2.4, central
+#: film 32 nm, ``H_c`` = 0.017) did not converge on 433 x 145 or 865 x 289 nodes
+#: (``dY = 3 dX``) at any load gain (0.005-0.05) nor with a load tangent or y-line sweeps,
+#: and converged on 433 x 129 (3.4 dX), 513 x 129 and 865 x 217 (4 dX)
+#: (docs/ehl-robustness.md, "A thin film on fine meshes").
+FINE_CELL_ASPECT = 4.0
 
 #: Cells (``dY >= SOFT_CELL_ASPECT dX``) and nodes across y (at most ``SOFT_MAX_NY``) on which
 #: the steady solve of an isoviscous elastic point contact (:attr:`PointContact.soft`: a PDMS
@@ -728,7 +737,8 @@ def _relax(state, method, *, tol, max_sweeps, refresh, gain, callback, sweep_off
 
 
 class LoadTangent:
-    """Change of a line contact's steady solution per relative change of the load, on a grid.
+    """Change of a steady solution (line or point contact) per relative change of the load,
+    on a grid.
 
     ``(dP, dH, dH0) = (s1 - s0) / STEP`` between the converged states ``s0`` at the load and
     ``s1`` at ``1 + STEP`` times the load (:meth:`between`). :meth:`correct` moves a state on
@@ -737,6 +747,15 @@ class LoadTangent:
     the two solutions, whereas a shift of the separation alone leaves the pressure to relax
     in from the inlet over many sweeps (docs/ehl-robustness.md, "Line contacts on fine
     meshes").
+
+    With the default gain a point contact's grid with more nodes than its default mesh,
+    sequenced from a converged coarser grid, is steered by that grid's tangent too
+    (:func:`solve_steady`, ``point_tangent``). The seed's circle (a/b = 1, M = 174) on
+    801 x 201 took 779 sweeps on the finest grid (13 s) against 6271 (100 s) with the
+    scaled gain; the seed's gear case on 801 x 201 160 against 500; a user's ball on glass
+    at M = 611 on 433 x 145, which cycled with the gain, converged (docs/ehl-robustness.md,
+    "A thin film on fine meshes"). The default mesh and coarser grids keep the gain: a
+    tangent costs a second solve of the grid below.
     """
 
     #: Relative load step of the difference.
@@ -752,22 +771,28 @@ class LoadTangent:
     #: cycled (residual 0.87), with it it converged in 1270 sweeps (docs/ehl-robustness.md).
     RESIDUAL = 1e-2 * STEP
 
-    def __init__(self, X, dP, dH, dH0):
-        self.X, self.dP, self.dH, self.dH0 = X, dP, dH, dH0
+    def __init__(self, X, Y, dP, dH, dH0):
+        self.X, self.Y, self.dP, self.dH, self.dH0 = X, Y, dP, dH, dH0
 
     @classmethod
     def between(cls, s0, s1):
         """The tangent from the converged states ``s0`` and ``s1`` (loads 1 and 1 + STEP)."""
-        return cls(s0.X.copy(), (s1.P[:, 0] - s0.P[:, 0]) / cls.STEP,
-                   (s1.H[:, 0] - s0.H[:, 0]) / cls.STEP, (s1.H0 - s0.H0) / cls.STEP)
+        return cls(s0.X.copy(), s0.Y.copy(), (s1.P - s0.P) / cls.STEP,
+                   (s1.H - s0.H) / cls.STEP, (s1.H0 - s0.H0) / cls.STEP)
 
     def correct(self, state, load_error):
-        """Move ``state`` by ``-load_error`` along the tangent, interpolated linearly onto its
-        grid with the pressure part scaled to carry exactly the relative load (P >= 0 kept)."""
-        dP = np.interp(state.X, self.X, self.dP)
+        """Move ``state`` by ``-load_error`` along the tangent, interpolated (bi)linearly onto
+        its grid with the pressure part scaled to carry exactly the relative load (P >= 0
+        kept)."""
+        if state.line:
+            dP = np.interp(state.X, self.X, self.dP[:, 0])[:, None]
+            dH = np.interp(state.X, self.X, self.dH[:, 0])[:, None]
+        else:
+            dP = _bilinear(self.X, self.Y, self.dP, state.X, state.Y)
+            dH = _bilinear(self.X, self.Y, self.dH, state.X, state.Y)
         dP *= state.problem.load_integral / (dP.sum() * state.cell_area)
-        state.P = np.maximum(state.P - load_error * dP[:, None], 0.0)
-        state.H = state.H - load_error * np.interp(state.X, self.X, self.dH)[:, None]
+        state.P = np.maximum(state.P - load_error * dP, 0.0)
+        state.H = state.H - load_error * dH
         state.H0 -= load_error * self.dH0
 
 
@@ -788,6 +813,7 @@ def solve_steady(
     initial_film: float | None = None,
     boundary_friction: float = 0.1,
     damping: float = 1.0,
+    point_tangent: bool = True,
     callback=None,
 ) -> SteadyResult:
     """Steady smooth EHL solution of a point or line contact.
@@ -823,9 +849,12 @@ def solve_steady(
     levels : int, optional
         Grid sequencing: solve first on ``levels - 1`` grids coarsened by 2 in each direction
         (node counts ``(n - 1)/2 + 1``) and interpolate each solution as the next start.
-        Default: :func:`sequencing_levels` of the default mesh when ``nx`` is not given; with
-        ``nx`` given, :func:`sequencing_levels` of ``(nx, 1)`` for a line contact (cheap there,
-        and needed on fine meshes: docs/ehl-robustness.md), else 1.
+        Default: :func:`sequencing_levels` of the mesh, ``(nx, ny)`` (the default mesh where
+        they are not given; ``(nx, 1)`` for a line contact). Needed on fine meshes: a grid
+        with more nodes than the default mesh takes its load steering from the converged
+        grid below it (see ``load_gain``); a user's ball on glass on 865 x 289 nodes, solved
+        on that one grid (the default before session 42 where ``nx`` was given), cycled for
+        5000 sweeps (docs/ehl-robustness.md, "A thin film on fine meshes").
     near : int
         Number of x-neighbour pressure coefficients kept implicit by the line relaxation.
     tol : float
@@ -863,8 +892,10 @@ def solve_steady(
         that sequence ends unconverged (a grid of it whose best residual has stopped falling
         for :data:`STUCK_SWEEPS` sweeps ends it early) it is solved again with every
         converged grid's tangent steering the next (line contacts at L = 2), refreshing the
-        far field more often where a grid stalls. A point contact's grid finer
-        than the default mesh gets ``0.05 (dX / dX_default)`` (:data:`POINT_GAIN_EXPONENT`).
+        far field more often where a grid stalls. A point contact's grid with more nodes
+        than the default mesh is steered by the tangent of the converged grid below it in
+        the same way (see ``point_tangent``); without one, a grid finer than
+        the default mesh gets ``0.05 (dX / dX_default)`` (:data:`POINT_GAIN_EXPONENT`).
         A given value is used on every grid, without the tangent.
     initial_film : float, optional
         Central film of the Hertzian start, m; default Nijenbanning's (point) or Moes' (line)
@@ -874,6 +905,13 @@ def solve_steady(
     damping : float
         Factor 0 < damping <= 1 on the change of P and H at nodes whose change alternates in
         sign from sweep to sweep (:meth:`EHLState.sweep`); 1 (default) switches it off.
+    point_tangent : bool
+        With the default ``load_gain``, steer a point contact's grids with more nodes than
+        the default mesh by the :class:`LoadTangent` of the converged grid below (a line
+        contact's always are). False: the per-sweep gain on every grid, as before session
+        42; the transient runs' steady start keeps it (:func:`asperity.ehl.smooth_start.
+        smooth_start`), since their measured results and fallbacks rest on that start and a
+        run of minutes would gain seconds.
     callback : callable, optional
         ``callback(iteration, residual)`` after every refresh.
 
@@ -894,11 +932,11 @@ def solve_steady(
     if levels is None:
         if nx is None:
             levels = sequencing_levels(default_nx, default_ny)
-        elif line:
-            nx = check_int("nx", nx, 9, "an integer number of nodes >= 9")
-            levels = sequencing_levels(nx, 1)
         else:
-            levels = 1
+            nx = check_int("nx", nx, 9, "an integer number of nodes >= 9")
+            ny = 1 if line else check_int("ny", default_ny if ny is None else ny, 9,
+                                          "an integer number of nodes >= 9")
+            levels = sequencing_levels(nx, ny)
     nx = default_nx if nx is None else nx
     ny = default_ny if ny is None else ny
     levels = check_int("levels", levels, 1)
@@ -916,12 +954,13 @@ def solve_steady(
     k_near = near if method == "line" else 0
     settings = dict(method=method, tol=tol, max_iter=max_iter, refresh=refresh,
                     load_gain=load_gain, damping=damping, callback=callback,
-                    scale_gain=scale_gain, default_nx=default_nx, near=k_near, h_start=h_start)
-    use_tangent = line and scale_gain and method == "point"
+                    scale_gain=scale_gain, default_nx=default_nx, default_ny=default_ny,
+                    near=k_near, h_start=h_start)
+    use_tangent = scale_gain and (method == "point" if line else bool(point_tangent))
     run = _sequence(problem, grids, domain,
                     tangents_from="below_default" if use_tangent else None, **settings)
     total = run.total
-    if use_tangent and not run.converged:
+    if use_tangent and line and not run.converged:
         # the point update's load loop stalled or cycled: a line contact at low L (M 20 to
         # 1000, L = 2) converges with the tangent of every converged grid steering the next
         # one; on rows that converge without it (M = 50, L = 20) it can stall, so it is the
@@ -930,7 +969,8 @@ def solve_steady(
         total += retry.total
         if retry.converged or retry.residual < run.residual:
             run = retry
-    if use_tangent and not run.converged and default_refresh and refresh > LINE_RETRY_REFRESH:
+    if use_tangent and line and not run.converged and default_refresh \
+            and refresh > LINE_RETRY_REFRESH:
         # an Eyring oil at low sliding (roller, M = 36.8, L = 15.9, tau0 = 5-20 MPa,
         # slide/roll 0.05): the Hertz zone's Poiseuille term weighs as much as the wedge and
         # the cycle of 10 sweeps at a lagged far field grows an oscillation at the outlet;
@@ -979,7 +1019,7 @@ class _Sequenced(NamedTuple):
 
 
 def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_gain, damping,
-              callback, scale_gain, default_nx, near, h_start, tangents_from,
+              callback, scale_gain, default_nx, default_ny, near, h_start, tangents_from,
               y_lines=False, start=None, finest=None) -> _Sequenced:
     """Solve the grids of a sequence coarse to fine, each from the last one's solution
     (with ``y_lines``, :attr:`EHLState.y_lines` on every grid).
@@ -1017,15 +1057,17 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
                      tangent=tangent,
                      stall_refresh=method == "line" or (tangents_from == "every_grid"
                                                         and tangent is not None),
-                     give_up=tangents_from == "below_default")
+                     give_up=line and tangents_from == "below_default")
         converged, residual, sweeps, history = _relax_line_or_newton(
             state, method, line, polish=level + 1 == len(grids), sweep_offset=total, **relax)
         total += sweeps
         wanted = tangents_from == "every_grid" or (
             tangents_from == "below_default" and level + 1 < len(grids)
-            and grids[level + 1][0] >= default_nx)
+            and (grids[level + 1][0] >= default_nx if line
+                 else grids[level + 1][0] * grids[level + 1][1] > default_nx * default_ny))
         if wanted and converged and level + 1 < len(grids):
-            other = LineContactState(problem, x, y, near)
+            other = (LineContactState if line else EHLState)(problem, x, y, near)
+            other.damping, other.y_lines = damping, y_lines
             other.interpolate_from(state)
             # the perturbed solve by the gain alone: steered by the coarser grid's tangent
             # it would end within tol by that tangent and hand it on (line M = 1000, L = 10
@@ -1033,7 +1075,8 @@ def _sequence(problem, grids, domain, *, method, tol, max_iter, refresh, load_ga
             _, other_residual, extra, _ = _relax_line_or_newton(
                 other, method, line, tol=tol, max_sweeps=max_iter, refresh=refresh, gain=gain,
                 callback=None, tangent=None if tangents_from == "every_grid" else tangent,
-                load_factor=1.0 + LoadTangent.STEP, give_up=tangents_from == "below_default")
+                load_factor=1.0 + LoadTangent.STEP,
+                give_up=line and tangents_from == "below_default")
             total += extra
             if other_residual < max(tol, LoadTangent.RESIDUAL):
                 tangent = LoadTangent.between(state, other)

@@ -18,7 +18,13 @@ from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
 from ..ehl.sides import domain_probe, inlet_probe, side_probe
-from ..ehl.solver import NEWTON_CHECK_SWEEPS, SOFT_CELL_ASPECT, SOFT_MAX_NY, Y_LINES_BELOW
+from ..ehl.solver import (
+    FINE_CELL_ASPECT,
+    NEWTON_CHECK_SWEEPS,
+    SOFT_CELL_ASPECT,
+    SOFT_MAX_NY,
+    Y_LINES_BELOW,
+)
 from ..references import (
     ISOVISCOUS,
     RIGID_SHARE,
@@ -194,22 +200,22 @@ def stall_advice(case, res) -> str:
 
 def relaxed_cells(problem) -> tuple[float, int | None]:
     """The cells (least ``dy / dx``) and the most nodes across y on which the steady
-    relaxation of a point contact converges: ``Y_LINES_BELOW`` (3) and no limit, but
-    ``SOFT_CELL_ASPECT`` (3, with the solver's fallback for soft contacts) and
-    ``SOFT_MAX_NY`` (129) for an isoviscous elastic contact (:attr:`PointContact.soft`),
-    which did not converge on 257 nodes across at M = 434 and 964, nor on 409
-    (:data:`asperity.ehl.solver.SOFT_MAX_NY`)."""
+    relaxation of a point contact converges: ``FINE_CELL_ASPECT`` (4) and no limit (on
+    cells 3 dx across a thin film's x-line relaxation swung on fine meshes,
+    :data:`asperity.ehl.solver.FINE_CELL_ASPECT`), but ``SOFT_CELL_ASPECT`` (3, with the
+    solver's fallback for soft contacts) and ``SOFT_MAX_NY`` (129) for an isoviscous elastic
+    contact (:attr:`PointContact.soft`), which did not converge on 257 nodes across at
+    M = 434 and 964, nor on 409 (:data:`asperity.ehl.solver.SOFT_MAX_NY`)."""
     soft = not isinstance(problem, LineContact) and problem.soft
-    return (SOFT_CELL_ASPECT, SOFT_MAX_NY) if soft else (Y_LINES_BELOW, None)
+    return (SOFT_CELL_ASPECT, SOFT_MAX_NY) if soft else (FINE_CELL_ASPECT, None)
 
 
 def _cell_advice(problem, res) -> list[str]:
     """What to change for a point contact that did not converge, or converged only in the
     solver's second try with y-line sweeps, on cells shorter across y than
-    :func:`relaxed_cells` allows (``Y_LINES_BELOW`` times their length,
-    :data:`asperity.ehl.solver.Y_LINES_BELOW`; for soft EHL ``SOFT_CELL_ASPECT``, the
-    same since the solver's soft fallback) or, for soft EHL, on more than ``SOFT_MAX_NY``
-    nodes across."""
+    :func:`relaxed_cells` allows (``FINE_CELL_ASPECT`` times their length,
+    :data:`asperity.ehl.solver.FINE_CELL_ASPECT`; for soft EHL ``SOFT_CELL_ASPECT``) or,
+    for soft EHL, on more than ``SOFT_MAX_NY`` nodes across."""
     dx, dy = res.x[1] - res.x[0], res.y[1] - res.y[0]
     aspect, max_ny = relaxed_cells(problem)
     too_many = max_ny is not None and res.y.size > max_ny and not res.converged
@@ -229,11 +235,11 @@ def _cell_advice(problem, res) -> list[str]:
     cells = (f"The cells are {dy / dx:.2g} dx across (dy = {dy * 1e6:.3g} um, dx = "
              f"{dx * 1e6:.3g} um)")
     if max_ny is None:
-        return [f"{cells}: on such cells the rows couple at least as strongly as the nodes "
-                f"along them, and {outcome}. The relaxation converges best, and fastest, on "
-                f"cells with dy >= {aspect:g} dx: grid.ny <= {ny} with this nx (for more "
-                "nodes across, raise nx with ny), or leave out grid.nx and grid.ny so that "
-                "the mesh follows the contact."]
+        return [f"{cells}: on such cells neighbouring rows couple strongly (through the "
+                f"flow across y and the elastic deflection), and {outcome}. The relaxation "
+                f"converges best, and fastest, on cells with dy >= {aspect:g} dx: "
+                f"grid.ny <= {ny} with this nx (for more nodes across, raise nx with ny), or "
+                "leave out grid.nx and grid.ny so that the mesh follows the contact."]
     alpha_ph = problem.lubricant.pressure_viscosity * problem.p_hertz
     return [f"{cells} on {res.y.size} nodes across, and {outcome}. For an isoviscous elastic "
             f"contact (alpha p_h = {alpha_ph:.2g}, Moes M = {problem.M:.3g}) the relaxation, "
