@@ -152,6 +152,8 @@ def test_unconverged_run_exits_3_saying_why_and_what_to_change(tmp_path):
     errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("error:")]
     assert len(errors) == 1 and "Traceback" not in proc.stderr, proc.stderr
     assert "did not converge in" in errors[0] and "solver.max_sweeps (now 3)" in errors[0]
+    # its cells are 4.6 dx across y, shorter than the relaxation needs on fine meshes
+    assert "cells at least 6 dx across y" in errors[0]
     assert str(tmp_path / "o" / "report.html") in errors[0]
 
 

@@ -186,8 +186,8 @@ def test_not_converged_is_reported():
 
 def test_unconverged_run_on_square_cells_says_which_ny_to_use():
     """A point contact that does not converge on cells shorter across y than 3 dx (here dy =
-    dx / 2) gets a note naming the largest grid.ny with dy >= 4 dx at its nx
-    (``FINE_CELL_ASPECT``: on 3 dx a thin film's rows swung on fine meshes), after the
+    dx / 2) gets a note naming the largest grid.ny with dy >= 6 dx at its nx
+    (``FINE_CELL_ASPECT``: on 3-4 dx a thin film's rows swung on fine meshes), after the
     solver has tried the y-line sweeps too; on the default cells it gets no such note."""
     import re
 

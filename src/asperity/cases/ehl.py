@@ -438,8 +438,9 @@ class SolverSpec(CaseModel):
     """
 
     levels: Annotated[Integer, Field(ge=1, le=6)] = 1
-    """Grids in the multilevel sequence (node counts 2^(levels-1) m + 1); without a [grid]
-    table and without levels, chosen with the mesh."""
+    """Grids in the multilevel sequence (node counts 2^(levels-1) m + 1); without levels,
+    chosen with the mesh, the default one or the [grid] table's: up to 4 grids, each halved
+    while the coarsest keeps 33 nodes along x and 17 across."""
     tolerance: Annotated[Number, Field(gt=0, lt=1)] = 1e-5
     """Relative convergence tolerance."""
     max_sweeps: Annotated[Integer, Field(ge=1, le=200_000)] | None = None

@@ -142,15 +142,15 @@ COARSE_SWEEPS = 1000
 #: of the seed's aspect-ratio study on 401 x 101 square cells converged without them (3066
 #: sweeps) and cycled with them.
 Y_LINES_BELOW = 3.0
-#: Cells (``dY >= FINE_CELL_ASPECT dX``) that the runners' mesh advice asks for on meshes
-#: finer than the default. On cells 3 dX across, fine meshes of a thin film let the x-line
-#: zebra relaxation swing whole rows between no pressure and three times the Hertz pressure:
-#: a user's 3/4 in steel ball on glass (PAO, 20 N, 0.1 m/s, Moes M = 611, L = 2.4, central
-#: film 32 nm, ``H_c`` = 0.017) did not converge on 433 x 145 or 865 x 289 nodes
-#: (``dY = 3 dX``) at any load gain (0.005-0.05) nor with a load tangent or y-line sweeps,
-#: and converged on 433 x 129 (3.4 dX), 513 x 129 and 865 x 217 (4 dX)
-#: (docs/ehl-robustness.md, "A thin film on fine meshes").
-FINE_CELL_ASPECT = 4.0
+#: Cells (``dY >= FINE_CELL_ASPECT dX``) that the runners' mesh advice asks for. On cells a
+#: few dX across, fine meshes of a thin film let the zebra x-line relaxation swing whole
+#: rows between no pressure and three times the Hertz pressure, and the cells it needs grow
+#: longer as dY shrinks: a user's 3/4 in steel ball on glass (PAO, 20 N, 0.1 m/s, Moes
+#: M = 611, L = 2.4, central film 32 nm, ``H_c`` = 0.017) converged at ``dY = b/36`` on
+#: 3 dX (with the load tangent), at ``b/54`` on 4 and 5.3 dX and at ``b/72`` on 6 dX,
+#: and did not at ``b/72`` on 3 or 4 dX (865 x 289, 1153 x 289) with any load gain, the
+#: tangent or y-line sweeps (docs/ehl-robustness.md, "A thin film on fine meshes").
+FINE_CELL_ASPECT = 6.0
 
 #: Cells (``dY >= SOFT_CELL_ASPECT dX``) and nodes across y (at most ``SOFT_MAX_NY``) on which
 #: the steady solve of an isoviscous elastic point contact (:attr:`PointContact.soft`: a PDMS

@@ -186,11 +186,15 @@ def stall_advice(case, res) -> str:
     stalled within ``STALLED_WITHIN`` times the tolerance, before the sweep limit, is a
     solution close to converged whose last digits the iteration cannot settle (a user's roller
     bearing stopped at 1.8e-5 against 1e-5 after 5,460 sweeps, its central film 4 % from Moes's
-    formula); more sweeps would not help there."""
+    formula); more sweeps would not help there. A point contact on cells shorter across y
+    than ``FINE_CELL_ASPECT`` times their length is told the cells its relaxation needs on
+    fine meshes."""
     tol, limit = case.solver.tolerance, case.solver.sweep_limit(res.y.size == 1)
+    short = res.y.size > 1 and res.y[1] - res.y[0] < FINE_CELL_ASPECT * (res.x[1] - res.x[0])
+    cells = f"; cells at least {FINE_CELL_ASPECT:g} dx across y" if short else ""
     if res.sweeps >= limit or not res.residual < STALLED_WITHIN * tol:
         return (f" Raise solver.max_sweeps (now {limit}) if the residual was still falling, "
-                "else check the inlet and the mesh (grid.nx, solver.levels).")
+                f"else check the inlet and the mesh (grid.nx, solver.levels{cells}).")
     return (f" It stalled at {res.residual / tol:.2g} times the tolerance {tol:g}: close to a "
             "solution, but not one; loosen solver.tolerance (e.g. "
             f"{10 ** np.ceil(np.log10(res.residual)):g}) if that is accurate enough, or change "
@@ -200,8 +204,8 @@ def stall_advice(case, res) -> str:
 
 def relaxed_cells(problem) -> tuple[float, int | None]:
     """The cells (least ``dy / dx``) and the most nodes across y on which the steady
-    relaxation of a point contact converges: ``FINE_CELL_ASPECT`` (4) and no limit (on
-    cells 3 dx across a thin film's x-line relaxation swung on fine meshes,
+    relaxation of a point contact converges: ``FINE_CELL_ASPECT`` (6) and no limit (on
+    cells 3-4 dx across a thin film's x-line relaxation swung on fine meshes,
     :data:`asperity.ehl.solver.FINE_CELL_ASPECT`), but ``SOFT_CELL_ASPECT`` (3, with the
     solver's fallback for soft contacts) and ``SOFT_MAX_NY`` (129) for an isoviscous elastic
     contact (:attr:`PointContact.soft`), which did not converge on 257 nodes across at
@@ -213,14 +217,14 @@ def relaxed_cells(problem) -> tuple[float, int | None]:
 def _cell_advice(problem, res) -> list[str]:
     """What to change for a point contact that did not converge, or converged only in the
     solver's second try with y-line sweeps, on cells shorter across y than
-    :func:`relaxed_cells` allows (``FINE_CELL_ASPECT`` times their length,
-    :data:`asperity.ehl.solver.FINE_CELL_ASPECT`; for soft EHL ``SOFT_CELL_ASPECT``) or,
-    for soft EHL, on more than ``SOFT_MAX_NY`` nodes across."""
+    ``Y_LINES_BELOW`` times their length (:data:`asperity.ehl.solver.Y_LINES_BELOW`, where
+    the y-line sweeps are tried) or, for soft EHL, on more than ``SOFT_MAX_NY`` nodes
+    across: the largest ``grid.ny`` on the cells :func:`relaxed_cells` allows."""
     dx, dy = res.x[1] - res.x[0], res.y[1] - res.y[0]
     aspect, max_ny = relaxed_cells(problem)
     too_many = max_ny is not None and res.y.size > max_ny and not res.converged
-    if dy >= aspect * dx * (1.0 - 1e-9) and not too_many:
-        return []
+    if dy >= min(aspect, Y_LINES_BELOW) * dx * (1.0 - 1e-9) and not too_many:
+        return []  # (cells from 3 dx on: the stall advice names them, stall_advice)
     ny = 1 + int((res.y[-1] - res.y[0]) / (aspect * dx) * (1.0 + 1e-9))
     if max_ny is not None:
         ny = min(ny, max_ny)
