@@ -773,6 +773,7 @@ class LoadTangent:
 
     def __init__(self, X, Y, dP, dH, dH0):
         self.X, self.Y, self.dP, self.dH, self.dH0 = X, Y, dP, dH, dH0
+        self._on_grid = None  # (X, Y, dP, dH) of the last finer grid, interpolated once
 
     @classmethod
     def between(cls, s0, s1):
@@ -783,7 +784,18 @@ class LoadTangent:
     def correct(self, state, load_error):
         """Move ``state`` by ``-load_error`` along the tangent, interpolated (bi)linearly onto
         its grid with the pressure part scaled to carry exactly the relative load (P >= 0
-        kept)."""
+        kept). The interpolation is done once per grid: a relaxation calls this before
+        every far-field refresh."""
+        dP, dH = self._interpolated(state)
+        state.P = np.maximum(state.P - load_error * dP, 0.0)
+        state.H = state.H - load_error * dH
+        state.H0 -= load_error * self.dH0
+
+    def _interpolated(self, state):
+        """``(dP, dH)`` on the grid of ``state``, ``dP`` scaled to carry the problem's load."""
+        cached = self._on_grid
+        if cached is not None and cached[0] is state.X and cached[1] is state.Y:
+            return cached[2], cached[3]
         if state.line:
             dP = np.interp(state.X, self.X, self.dP[:, 0])[:, None]
             dH = np.interp(state.X, self.X, self.dH[:, 0])[:, None]
@@ -791,9 +803,8 @@ class LoadTangent:
             dP = _bilinear(self.X, self.Y, self.dP, state.X, state.Y)
             dH = _bilinear(self.X, self.Y, self.dH, state.X, state.Y)
         dP *= state.problem.load_integral / (dP.sum() * state.cell_area)
-        state.P = np.maximum(state.P - load_error * dP, 0.0)
-        state.H = state.H - load_error * dH
-        state.H0 -= load_error * self.dH0
+        self._on_grid = (state.X, state.Y, dP, dH)
+        return dP, dH
 
 
 @renamed_keywords(max_sweeps="max_iter")
