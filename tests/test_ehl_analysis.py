@@ -53,7 +53,7 @@ def test_line_example_and_alternative_forms():
     assert isinstance(prob, LineContact)
     assert prob.load_per_length == pytest.approx(527e3)
     assert prob.a == pytest.approx(0.335e-3, rel=5e-3)
-    assert case.grid.nodes(True) == (257, 1)
+    assert case.grid.nodes(prob) == (257, 1)
     # u1/u2 instead of u/xi, bodies instead of E', Barus/incompressible/Newtonian
     data = _example("holmes-smooth-point",
                     lubricant={"viscosity_model": "barus", "density_model": "incompressible",
@@ -74,7 +74,7 @@ def test_mesh_from_spacing():
                     solver={"levels": 4})
     del data["grid"]["nx"], data["grid"]["ny"]
     case = load_case(data)
-    assert case.grid.nodes(False) == (801, 201)  # the seed's mesh a/200 x b/50
+    assert case.grid.nodes(case.problem()) == (801, 201)  # the seed's mesh a/200 x b/50
 
 
 @pytest.mark.parametrize("table, change, field", [
@@ -571,7 +571,7 @@ def test_a_grid_table_with_only_the_domain_keeps_the_regime_mesh():
     case = load_case(parse_toml(ROLLER))
     out = run_case(case)
     prob = case.problem()
-    domain = case.grid.domain(prob.a, None)
+    domain = case.grid.domain(prob)
     nx = prob.default_nodes(domain)[0]
     assert out.converged and out.dataset.x.size == nx
     assert not [w for w in out.warnings if w.startswith("mesh")], out.warnings
@@ -733,12 +733,60 @@ def test_a_refused_default_mesh_names_the_domain_to_set_with_the_nodes():
                       message)
     assert match and float(match.group(1)) == pytest.approx(-2.5)
     assert float(match.group(3)) == -float(match.group(2)) == 2.0
-    assert "grid.x_min, grid.x_max, grid.y_min, grid.y_max at these bounds" in message
-    case = load_case({**slow, "grid": {"nx": 513, "ny": 129, "x_min": -2.5, "x_max": 1.5,
-                                       "y_min": -2.0, "y_max": 2.0}})
+    assert "or set grid.nx and grid.ny)" in message
+    case = load_case({**slow, "grid": {"nx": 513, "ny": 129}})  # nodes alone keep the domain
     problem = case.problem()
     (lo, _), _ = case.solve_options(problem)["domain"]
     assert lo / problem.a == pytest.approx(-2.5)
+
+
+THICK = """analysis = "ehl-steady"
+[body1]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[body2]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[contact]
+type = "point"
+rx = "12.7 mm"
+ry = "12.7 mm"
+load = "20 N"
+[speeds]
+u = "2 m/s"
+[lubricant]
+eta0 = "0.1 Pa s"
+alpha = "20 1/GPa"
+"""
+
+
+def test_a_grid_table_with_nodes_alone_keeps_the_contacts_own_domain():
+    """A [grid] table that sets only nx and ny (or a spacing) is solved on the contact's own
+    domain, not on the seed's -2.5 a..1.5 a, -2 b..2 b. A 1/2 in steel ball at 20 N in a
+    0.1 Pa s oil at 2 m/s (M = 13.5, Hamrock-Dowson 858 nm) has its default domain at
+    -5.96 a..1.5 a, +-3.6 b. Given 161 x 49 nodes alone it had been solved on the seed's
+    domain: 695 nm, with inlet (x_min <= -4 a) and sides (+-3 b) lines. On its own domain
+    it gives 766 nm and neither line (mesh lines only: 161 x 49 is coarse)."""
+    own = load_case(THICK)
+    problem = own.problem()
+    (x0, x1), (y0, y1) = problem.default_domain()
+    assert x0 / problem.a < -5.0 and y1 / problem.b > 3.0
+    case = load_case(THICK + "[grid]\nnx = 161\nny = 49\n")
+    assert case.solve_options(problem)["domain"] == ((x0, x1), (y0, y1))
+    spaced = load_case(THICK + "[grid]\ncells_per_a = 32\ncells_per_b = 16\nx_max = 2.0\n")
+    (sx0, sx1), _ = spaced.solve_options(problem)["domain"]
+    assert (sx0, sx1 / problem.a) == (x0, pytest.approx(2.0))
+    assert spaced.grid.nodes(problem) == (round((sx1 - sx0) / problem.a * 32) + 1,
+                                          round((y1 - y0) / problem.b * 16) + 1)
+    transient = load_case(THICK.replace("ehl-steady", "ehl-transient")
+                          + "[grid]\nnx = 161\nny = 49\n")
+    assert transient.mesh(problem) == (161, 49, ((x0, x1), (y0, y1)))
+    out = run_case(case)
+    assert out.converged
+    assert not [w for w in out.warnings if w.startswith(("inlet", "sides", "domain"))], \
+        out.warnings
+    film = out.summary["central_film_thickness_m"]
+    assert 0.74e-6 < film < 0.80e-6  # 766 nm measured; 695 nm on the seed's short inlet
 
 
 def test_a_nearly_rigid_contact_on_a_small_domain_is_reported():

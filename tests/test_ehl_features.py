@@ -195,7 +195,7 @@ def test_example_case_places_the_dent_upstream_of_the_inlet(name):
     """The example case files build a dent whose centre enters the inlet at the start."""
     case = load_case(example_text(name))
     prob = case.problem()
-    x, y = prob.grid(*case.grid.nodes(False), case.grid.domain(prob.a, prob.b))
+    x, y = prob.grid(*case.grid.nodes(prob), case.grid.domain(prob))
     spacing = (x[1] - x[0]) / 4
     surf = case.surface1.build(2e-3, spacing, y, x[1] - x[0])
     assert isinstance(surf, Topography)
@@ -219,7 +219,7 @@ def test_a_line_contact_takes_the_straight_features_only(feature, accepted):
         return
     case = load_case(data)
     prob = case.problem()
-    x, y = prob.grid(*case.grid.nodes(True), case.grid.domain(prob.a, None))
+    x, y = prob.grid(*case.grid.nodes(prob), case.grid.domain(prob))
     surf = case.surface1.build(2e-3, (x[1] - x[0]) / 4, y, x[1] - x[0])
     assert isinstance(surf, Profile)
     sign = -1.0 if feature == "groove" else 1.0

@@ -58,7 +58,7 @@ def _fig10_setup(counting_steps, snapshots, nx=NX, ny=None, domain=None, lowpass
     point, line = point_case.problem(), line_case.problem()
     ny = point_case.grid.ny if ny is None else ny
     if domain is None:
-        domain = point_case.grid.domain(point.a, point.b)
+        domain = point_case.grid.domain(point)
     else:
         (x0, x1), (y0, y1) = domain
         domain = ((x0 * point.a, x1 * point.a), (y0 * point.b, y1 * point.b))

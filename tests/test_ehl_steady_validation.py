@@ -147,7 +147,7 @@ def test_holmes_smooth_point_on_the_paper_mesh():
     data["grid"] = {"cells_per_a": 200, "cells_per_b": 50}
     data["solver"]["levels"] = 4
     case = load_case(data)
-    assert case.grid.nodes(False) == (801, 201)
+    assert case.grid.nodes(case.problem()) == (801, 201)
     out = run_case(case)
     assert out.converged
     paper = [c for c in out.comparisons if c.source == "Holmes et al., Fig. 2"]

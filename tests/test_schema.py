@@ -90,16 +90,17 @@ def test_ehl_grid_bounds_accept_lengths_as_well_as_semi_axes():
     data = parse_toml(example_text("holmes-smooth-point"))
     data.setdefault("grid", {})["x_min"] = -2.0                 # in Hertz semi-axes a
     case = load_case(data)
-    a, b = case.problem().a, case.problem().b
-    assert case.grid.domain(a, b)[0][0] == pytest.approx(-2.0 * a, rel=1e-12)
+    prob = case.problem()
+    a, b = prob.a, prob.b
+    assert case.grid.domain(prob)[0][0] == pytest.approx(-2.0 * a, rel=1e-12)
     data["grid"]["x_min"] = f"{-2.0 * a * 1e3:.12g} mm"           # the same bound as a length
     data["grid"]["y_max"] = f"{2.5 * b * 1e6:.12g} um"
-    (x0, _), (_, y1) = load_case(data).grid.domain(a, b)
+    (x0, _), (_, y1) = load_case(data).grid.domain(prob)
     assert x0 == pytest.approx(-2.0 * a, rel=1e-9)
     assert y1 == pytest.approx(2.5 * b, rel=1e-9)
     data["grid"]["x_min"] = f"{-0.5 * a * 1e3:.12g} mm"           # inside the contact
     with pytest.raises(InputError, match="grid.x_min"):
-        load_case(data).grid.domain(a, b)
+        load_case(data).grid.domain(prob)
 
 
 def test_examples_listing_reads_in_80_columns():

@@ -165,7 +165,9 @@ def _flatten(data, prefix: str = ""):
 
 def _parameters_table(case: dict, imperial: bool = False, chosen: dict | None = None) -> str:
     """The case's keys and values, quantities in readable units (SI as validated); the values
-    in ``chosen`` (:attr:`Outcome.chosen`) replace the case's defaults, marked as chosen.
+    in ``chosen`` (:attr:`Outcome.chosen`) replace the case's defaults, marked as chosen; a
+    chosen key the case leaves out (an EHL domain bound left to the contact) follows its
+    table's other keys.
 
     A key that takes a number or a quantity (an EHL domain bound) shows a number in Hertz
     semi-axes, as the case file means it. A key chosen as None does not apply to the run and
@@ -177,8 +179,15 @@ def _parameters_table(case: dict, imperial: bool = False, chosen: dict | None = 
     chosen = chosen or {}
     model = ANALYSES.get(case.get("analysis"))
     keys = {k.key: k for k in case_keys(model)} if model is not None else {}
+    items = list(_flatten(case))
+    for key, value in chosen.items():  # a key the case leaves out: after its table's others
+        if value is not None and key not in dict(items):
+            table = key.rsplit(".", 1)[0] + "."
+            at = max((i for i, (k, _) in enumerate(items) if k.startswith(table)),
+                     default=len(items) - 1)
+            items.insert(at + 1, (key, value))
     rows = []
-    for key, value in _flatten(case):
+    for key, value in items:
         if key in ("title", "description", "source"):
             continue
         spec = keys.get(re.sub(r"\[\d+\]", "[]", key))

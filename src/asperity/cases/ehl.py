@@ -36,7 +36,6 @@ Example (the smooth gear-disk contact of Holmes et al. 2005, Table 1)::
 
 from __future__ import annotations
 
-import math
 from typing import Annotated, Literal
 
 from pydantic import BeforeValidator, Field, field_validator, model_validator
@@ -53,6 +52,8 @@ from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 __all__ = [
     "ALPHA_MAX",
     "MAX_NODES",
+    "MAX_NX",
+    "MAX_NY",
     "ContactSpec",
     "EHLCaseBase",
     "EHLGridSpec",
@@ -66,6 +67,8 @@ __all__ = [
 
 #: Most nodes of an EHL case's mesh (four times the seed's 801 x 201).
 MAX_NODES = 801 * 201 * 4
+#: Most nodes along x and across y of an EHL case's mesh.
+MAX_NX, MAX_NY = 8193, 4097
 
 
 def check_node_count(nx: int, ny: int, chosen: bool, domain=None):
@@ -75,26 +78,18 @@ def check_node_count(nx: int, ny: int, chosen: bool, domain=None):
     asked for 542,009 x 42,345 nodes and ran out of memory without a word.
 
     ``domain``: the default domain that mesh is on, in Hertz semi-axes
-    ``((x_min, x_max), (y_min, y_max))`` (y None for a line contact), for a case without a
-    [grid] table, so that the line says which bounds to set with the node counts: a lightly
-    loaded ball (Moes M = 0.8, inlet at -58 a) was told to set grid.nx and grid.ny, and with
-    them alone ran on the [grid] table's -2.5 a..1.5 a, 2 % of its inlet, unconverged with its
-    load 13 % short."""
+    ``((x_min, x_max), (y_min, y_max))`` (y None for a line contact), named in the line: a
+    [grid] table that sets only grid.nx and grid.ny keeps it."""
     if nx * ny > MAX_NODES:
         where = ""
         if domain is not None:
             (x0, x1), y_bounds = domain
             where = f", on its domain x = {x0:.3g} a..{x1:.3g} a" + (
                 "" if y_bounds is None else f", y = {y_bounds[0]:.3g} b..{y_bounds[1]:.3g} b")
-        bounds = "" if domain is None else (
-            " with grid.x_min, grid.x_max" + ("" if domain[1] is None else
-                                              ", grid.y_min, grid.y_max") +
-            " at these bounds (a [grid] table without them takes -2.5 a..1.5 a" +
-            ("" if domain[1] is None else ", -2 b..2 b") + ")")
         why = "" if not chosen else (
             f" (the default mesh {nx} x {ny} for the contact's film and the surfaces' "
             f"features{where}; check the lubricant's and the contact's units, or set grid.nx "
-            f"and grid.ny{bounds})")
+            f"and grid.ny)")
         raise ValueError(f"expected at most {MAX_NODES} nodes, got {nx * ny}{why}")
 
 
@@ -342,78 +337,97 @@ UpperBound = _domain_bound(1.0, MAX_BOUND)
 class EHLGridSpec(CaseModel):
     """``[grid]``: nodes and domain of an EHL solve, in units of the Hertz semi-axes.
 
-    The domain is ``x_min a < x < x_max a``, ``y_min b < y < y_max b`` (default the seed's
-    -2.5a..1.5a, -2b..2b; y is unused for a line contact) and must hold the Hertz contact. A
-    bound may also be a length (``x_min = "-1.2 mm"``), taken as it is.
+    The domain is ``x_min a < x < x_max a``, ``y_min b < y < y_max b`` (y is unused for a line
+    contact) and must hold the Hertz contact. A bound may also be a length
+    (``x_min = "-1.2 mm"``), taken as it is. A bound the table does not set is the contact's
+    own (:meth:`asperity.ehl.PointContact.default_domain`: the seed's -2.5a..1.5a, -2b..2b for
+    the gear case, a longer inlet and wider sides for a thick film), the domain a case without
+    a [grid] table is solved on.
     The mesh is ``nx`` x ``ny`` nodes with end nodes on the bounds, or a spacing
-    ``cells_per_a`` (dx = a/cells_per_a) and ``cells_per_b``; the seed's mesh a/200 x b/50 is
-    ``nx = 801``, ``ny = 201``. A line contact has ``ny = 1``.
+    ``cells_per_a`` (dx = a/cells_per_a) and ``cells_per_b`` over the domain; the seed's mesh
+    a/200 x b/50 on -2.5a..1.5a, -2b..2b is ``nx = 801``, ``ny = 201``. A line contact has
+    ``ny = 1``.
     """
 
-    nx: Annotated[Integer, Field(ge=9, le=8193)] = 129
-    """Nodes along x (or cells_per_a: nodes per Hertz semi-axis a). A steady case that sets
-    neither nx nor ny gets the mesh its regime asks for on the domain instead of 129 x 65."""
-    ny: Annotated[Integer, Field(ge=1, le=4097)] = 65
-    """Nodes along y; 1 for a line contact (or cells_per_b)."""
-    x_min: LowerBound = -2.5
-    """Inlet end of the domain in Hertz semi-axes a (a number) or as a length (e.g. "-1.2 mm")."""
-    x_max: UpperBound = 1.5
-    """Outlet end of the domain in Hertz semi-axes a (a number) or as a length."""
-    y_min: LowerBound = -2.0
-    """Lower side of the domain in Hertz semi-axes b (a number) or as a length."""
-    y_max: UpperBound = 2.0
-    """Upper side of the domain in Hertz semi-axes b (a number) or as a length."""
+    nx: Annotated[Integer, Field(ge=9, le=MAX_NX)] = 129
+    """Nodes along x. A steady case that sets neither nx, ny nor a spacing gets the mesh its
+    regime asks for on the domain instead of 129 x 65."""
+    ny: Annotated[Integer, Field(ge=1, le=MAX_NY)] = 65
+    """Nodes along y; 1 for a line contact."""
+    cells_per_a: Annotated[Number, Field(gt=0)] | None = None
+    """Cells per Hertz semi-axis a along x (dx = a/cells_per_a), instead of nx."""
+    cells_per_b: Annotated[Number, Field(gt=0)] | None = None
+    """Cells per Hertz semi-axis b along y (dy = b/cells_per_b), instead of ny."""
+    x_min: LowerBound | None = None
+    """Inlet end of the domain in Hertz semi-axes a (a number) or as a length (e.g. "-1.2 mm");
+    default the contact's own inlet (-2.5 a for the seed's gear case)."""
+    x_max: UpperBound | None = None
+    """Outlet end of the domain in Hertz semi-axes a (a number) or as a length; default the
+    contact's own (1.5 a; further for a nearly rigid contact)."""
+    y_min: LowerBound | None = None
+    """Lower side of the domain in Hertz semi-axes b (a number) or as a length; default the
+    contact's own (-2 b for the seed's gear case)."""
+    y_max: UpperBound | None = None
+    """Upper side of the domain in Hertz semi-axes b (a number) or as a length; default the
+    contact's own (2 b for the seed's gear case)."""
 
-    @model_validator(mode="before")
-    @classmethod
-    def _spacing(cls, data):
-        """Turn ``cells_per_a``/``cells_per_b`` into node counts over the domain."""
-        if not isinstance(data, dict):
-            return data
-        data = dict(data)
-        for cells_key, nodes_key, lo, hi, default in (
-            ("cells_per_a", "nx", "x_min", "x_max", (-2.5, 1.5)),
-            ("cells_per_b", "ny", "y_min", "y_max", (-2.0, 2.0)),
-        ):
-            if cells_key not in data:
-                continue
-            if nodes_key in data:
+    @model_validator(mode="after")
+    def _nodes_or_spacing(self):
+        for cells_key, nodes_key in (("cells_per_a", "nx"), ("cells_per_b", "ny")):
+            if getattr(self, cells_key) is not None and nodes_key in self.model_fields_set:
                 raise ValueError(f"expected either {nodes_key} or {cells_key}, not both")
-            cells = data.pop(cells_key)
-            if isinstance(cells, bool):
-                raise ValueError(f"expected a number for {cells_key}")
-            try:
-                span = float(data.get(hi, default[1])) - float(data.get(lo, default[0]))
-                cells = float(cells)
-            except (TypeError, ValueError):
-                raise ValueError(f"expected numbers for {cells_key}, {lo}, {hi}") from None
-            if not (cells > 0 and math.isfinite(cells) and math.isfinite(span)):
-                raise ValueError(f"expected a positive {cells_key} (cells per semi-axis)")
-            data[nodes_key] = min(round(span * cells), 10**6) + 1
-        return data
+        return self
 
     @property
     def nodes_given(self) -> bool:
         """True when the table sets the mesh (``nx``, ``ny``, ``cells_per_a`` or
         ``cells_per_b``); otherwise the analysis chooses it for the contact."""
-        return bool({"nx", "ny"} & self.model_fields_set)
+        return bool({"nx", "ny", "cells_per_a", "cells_per_b"} & self.model_fields_set)
 
-    def nodes(self, line: bool) -> tuple[int, int]:
-        """(nx, ny) of the solve; ny = 1 for a line contact."""
-        return self.nx, 1 if line else self.ny
+    def nodes(self, problem: PointContact | LineContact) -> tuple[int, int]:
+        """(nx, ny) of the solve of ``problem`` on :meth:`domain`: the table's node counts, or
+        ``span / semi-axis * cells + 1`` nodes for a spacing; ny = 1 for a line contact.
 
-    def domain(self, a: float, b: float | None):
-        """((x0, x1), (y0, y1)) in m for Hertz semi-axes a, b (b None: line contact).
-
-        A bound given as a length is taken as it is; it must lie outside the Hertz contact.
+        Raises
+        ------
+        ValueError
+            Where a spacing asks for fewer or more nodes than ``nx`` or ``ny`` may have.
         """
-        x = (self._bound("x_min", a), self._bound("x_max", a))
-        if b is None:
-            return x, (0.0, 0.0)
-        return x, (self._bound("y_min", b), self._bound("y_max", b))
+        (x0, x1), (y0, y1) = self.domain(problem)
+        nx = self._spaced("cells_per_a", "nx", x1 - x0, problem.a, MAX_NX)
+        if isinstance(problem, LineContact):
+            return nx, 1
+        return nx, self._spaced("cells_per_b", "ny", y1 - y0, problem.b, MAX_NY)
 
-    def _bound(self, key: str, semi_axis: float) -> float:
+    def _spaced(self, cells_key: str, nodes_key: str, span: float, semi: float,
+                most: int) -> int:
+        cells = getattr(self, cells_key)
+        if cells is None:
+            return getattr(self, nodes_key)
+        nodes = round(span / semi * cells) + 1
+        least = 9 if nodes_key == "nx" else 2
+        if not least <= nodes <= most:
+            raise ValueError(f"expected grid.{cells_key} giving {least} to {most} nodes over "
+                             f"the domain's {span / semi:.4g} semi-axes; got {cells:g}, "
+                             f"{nodes} nodes")
+        return nodes
+
+    def domain(self, problem: PointContact | LineContact):
+        """((x0, x1), (y0, y1)) in m of the solve of ``problem`` (y0 = y1 = 0 for a line
+        contact): the table's bounds in the Hertz semi-axes, and where it sets none the
+        contact's own (:meth:`asperity.ehl.PointContact.default_domain`). A bound given as a
+        length is taken as it is; it must lie outside the Hertz contact.
+        """
+        (x0, x1), (y0, y1) = problem.default_domain()
+        x = (self._bound("x_min", problem.a, x0), self._bound("x_max", problem.a, x1))
+        if isinstance(problem, LineContact):
+            return x, (0.0, 0.0)
+        return x, (self._bound("y_min", problem.b, y0), self._bound("y_max", problem.b, y1))
+
+    def _bound(self, key: str, semi_axis: float, default: float) -> float:
         value = getattr(self, key)
+        if value is None:
+            return default
         if not isinstance(value, str):
             return value * semi_axis
         metres = to_si(value, "length", f"grid.{key}")
@@ -483,7 +497,8 @@ class EHLSteadyCase(EHLCaseBase):
     grid: EHLGridSpec = EHLGridSpec()
     """Mesh and domain (in Hertz semi-axes). Without a [grid] table both follow the contact:
     inlet from Hamrock-Dowson's fully flooded distance, spacing from the estimated film,
-    grid sequencing (docs/ehl-robustness.md)."""
+    grid sequencing (docs/ehl-robustness.md); bounds a [grid] table does not set follow it
+    too."""
     solver: SolverSpec = SolverSpec()
     """Solver options."""
     reference: ReferenceSpec | None = None
@@ -506,21 +521,24 @@ class EHLSteadyCase(EHLCaseBase):
         """``nx``, ``ny``, ``domain`` and ``levels`` for :func:`asperity.ehl.solve_steady`
         (None where the solver chooses: the mesh from the regime, see :attr:`regime_mesh`, and
         the grid sequence unless ``solver.levels`` is given)."""
-        line = self.contact.line
         levels = self.solver.levels if "levels" in self.solver.model_fields_set else None
         if self.regime_mesh:
             return {"nx": None, "ny": None, "domain": None, "levels": levels}
-        nx, ny = (None, None) if self.regime_nodes else self.grid.nodes(line)
-        return {"nx": nx, "ny": ny, "levels": levels,
-                "domain": self.grid.domain(problem.a, None if line else problem.b)}
+        nx, ny = (None, None) if self.regime_nodes else self.grid.nodes(problem)
+        return {"nx": nx, "ny": ny, "levels": levels, "domain": self.grid.domain(problem)}
 
     @model_validator(mode="after")
     def _mesh(self):
         line = self.contact.line
         if line and "ny" in self.grid.model_fields_set and self.grid.ny != 1:
             raise ValueError("expected grid.ny = 1 (or no ny) for a line contact")
+        try:
+            problem = self.problem()
+            options = self.solve_options(problem)
+        except InputError as exc:
+            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
         step = 2 ** (self.solver.levels - 1)
-        given = [] if self.regime_nodes else zip(("nx", "ny"), self.grid.nodes(line),
+        given = [] if self.regime_nodes else zip(("nx", "ny"), (options["nx"], options["ny"]),
                                                  strict=True)
         for key, n in given:
             if key == "ny" and line:
@@ -530,11 +548,6 @@ class EHLSteadyCase(EHLCaseBase):
                     f"expected grid.{key} = {step} m + 1 with m >= 8 for solver.levels = "
                     f"{self.solver.levels} (e.g. {8 * step + 1}, {16 * step + 1}, "
                     f"{32 * step + 1}); got {n}")
-        try:
-            problem = self.problem()
-        except InputError as exc:
-            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
-        options = self.solve_options(problem)
         nx, ny = (options["nx"], options["ny"]) if options["nx"] is not None else \
             problem.default_nodes(options["domain"])
         domain = None

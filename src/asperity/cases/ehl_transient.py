@@ -309,9 +309,9 @@ class EHLTransientCase(EHLCaseBase):
     long_running: bool = False
     """Marks a case that runs for many minutes (listed as such by asperity examples)."""
     grid: EHLGridSpec = EHLGridSpec()
-    """Mesh and domain (in Hertz semi-axes). Without a [grid] table the domain follows the
-    contact (inlet from Hamrock-Dowson's fully flooded distance) and without node counts the
-    mesh follows the film and the surfaces' features (:meth:`mesh`)."""
+    """Mesh and domain (in Hertz semi-axes). Bounds the table does not set follow the contact
+    (inlet from Hamrock-Dowson's fully flooded distance) and without node counts the mesh
+    follows the film and the surfaces' features (:meth:`mesh`)."""
     surface1: MovingSurfaceSpec = MovingSurfaceSpec()
     """Roughness of surface 1."""
     surface2: MovingSurfaceSpec = MovingSurfaceSpec()
@@ -355,19 +355,15 @@ class EHLTransientCase(EHLCaseBase):
     def mesh(self, problem) -> tuple[int, int, tuple]:
         """``(nx, ny, domain)`` of the run, domain in m.
 
-        The domain is the [grid] table's, or without one the problem's
+        The domain is the [grid] table's bounds, and where it sets none the problem's
         :meth:`~asperity.ehl.PointContact.default_domain`. The nodes are the table's, or
         without ``nx``/``ny`` the problem's
         :meth:`~asperity.ehl.PointContact.default_nodes` with the spacing the features ask
         for (:meth:`feature_spacing`): the steady default mesh where there is no feature.
         """
-        line = self.contact.line
-        if "grid" in self.model_fields_set:
-            domain = self.grid.domain(problem.a, None if line else problem.b)
-        else:
-            domain = problem.default_domain()
+        domain = self.grid.domain(problem)
         if self.grid.nodes_given:
-            nx, ny = self.grid.nodes(line)
+            nx, ny = self.grid.nodes(problem)
         else:
             max_dx, max_dy = self.feature_spacing()
             nx, ny = problem.default_nodes(domain, max_dx=max_dx, max_dy=max_dy)

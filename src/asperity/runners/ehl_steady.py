@@ -256,7 +256,7 @@ def _cell_advice(problem, res) -> list[str]:
 def chosen_mesh(case, problem, x, y) -> dict:
     """The mesh and domain an EHL run chose for the contact, as case keys
     (:attr:`asperity.results.Outcome.chosen`): ``grid.nx``, ``grid.ny`` where the case gives
-    no node count, the domain bounds in Hertz semi-axes where it has no [grid] table; a line
+    no node count, the domain bounds in Hertz semi-axes the [grid] table does not set; a line
     contact's ``grid.ny`` is 1 and its y bounds do not apply (None)."""
     line = isinstance(problem, LineContact)
     chosen = {}
@@ -266,12 +266,11 @@ def chosen_mesh(case, problem, x, y) -> dict:
         chosen["grid.ny"] = 1
     if line:
         chosen.update({"grid.y_min": None, "grid.y_max": None})
-    if "grid" not in case.model_fields_set:
-        chosen.update({"grid.x_min": float(x[0] / problem.a),
-                       "grid.x_max": float(x[-1] / problem.a)})
-        if not line:
-            chosen.update({"grid.y_min": float(y[0] / problem.b),
-                           "grid.y_max": float(y[-1] / problem.b)})
+    bounds = {"x_min": x[0] / problem.a, "x_max": x[-1] / problem.a}
+    if not line:
+        bounds.update({"y_min": y[0] / problem.b, "y_max": y[-1] / problem.b})
+    chosen.update({f"grid.{key}": float(value) for key, value in bounds.items()
+                   if key not in case.grid.model_fields_set})
     return chosen
 
 
