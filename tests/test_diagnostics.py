@@ -254,6 +254,34 @@ def test_ehl_minimum_film_mesh():
     assert len(lines) == 1 and "along x" in lines[0] and "y =" not in lines[0]
 
 
+def test_ehl_minimum_film_mesh_keeps_within_the_nodes_a_case_takes():
+    """Where the mesh for 2 % needs more nodes than a case takes, the line says so and names
+    the finest mesh within the limits at the same proportions, with the error the dy^2
+    scaling leaves on it, instead of a mesh the case refuses (probe case 04, a collapsed
+    side lobe at M = 4849, was told 569 x 5993 and 14489 nodes along x). The valley of the
+    test above needs 257 x 97 (dy = b/24, dx = dy/3): within 10,000 nodes the finest mesh
+    is 161 x 57 (both spacings 1.58 times larger, in blocks of 8 cells), on which the
+    0.33 * 0.3 = 9.9 % of the 129 x 41 mesh falls by (40/56)^2 to 5.05 %; within 200
+    nodes along x, 193 x 73."""
+    a = b = 1e-4
+    x = np.linspace(-2 * a, 1.5 * a, 129)
+    y = np.linspace(-2 * b, 2 * b, 41)
+    h = np.full((x.size, y.size), 100e-9)
+    bottom = 50e-9 * (1 + 1e-3 * (np.arange(x.size) - 60) ** 2)
+    h[:, 30:33] = np.outer(bottom, [1.3, 1, 1.3])
+    free = dg.ehl_minimum_film_mesh(h, x, y, a, b, max_nodes=(10**6, 8193, 4097))
+    assert free == dg.ehl_minimum_film_mesh(h, x, y, a, b)
+    assert "use ny >= 97 with nx >= 257 (dy >= 3 dx)" in free[0]
+    (line,) = dg.ehl_minimum_film_mesh(h, x, y, a, b, max_nodes=(10_000, 8193, 4097))
+    _every_line_names_a_limit([line])
+    assert "use ny" not in line
+    assert "needs nx >= 257, ny >= 97 (24,929 nodes), more than a case takes (10,000" in line
+    assert "nx = 161, ny = 57 (9,177 nodes)" in line
+    assert _percent(line, "still up to") == pytest.approx(0.099 * (40 / 56) ** 2, rel=1e-3)
+    (line,) = dg.ehl_minimum_film_mesh(h, x, y, a, b, max_nodes=(10**6, 200, 4097))
+    assert "nx <= 200" in line and "nx = 193, ny = 73 " in line
+
+
 def test_ehl_minimum_film_mesh_keeps_to_the_nodes_that_converge():
     """With ``max_ny`` (a soft point contact's relaxation converges on at most 129 nodes
     across, on cells dy >= 8 dx) a minimum film that needs more nodes across is told the
@@ -471,6 +499,34 @@ def test_film_collapse():
     _every_line_names_a_limit(lines)
     assert len(lines) == 1 and "-0.018 nm" in lines[0] and "<= 0 on 1 nodes" in lines[0]
     assert "about 2.5 nm" in lines[0]
+
+
+def test_film_collapse_over_part_of_the_hertz_zone():
+    """A positive film that has collapsed onto its floor over part of the Hertz zone (side
+    lobes of probe case 12 at 3e-5 of the formula's film) is reported with the share of the
+    Hertz area below 1 % of the formula's film; a thin lobe at 7 % of it (probe cases 15,
+    27) and a collapse outside the zone are not."""
+    x = np.linspace(-2.0, 1.5, 36)[:, None] * np.ones((1, 41))
+    y = np.ones((36, 1)) * np.linspace(-2.0, 2.0, 41)[None, :]
+    zone = x**2 + y**2 < 1.0
+    film = np.full(x.shape, 1e-7)
+    assert dg.ehl_film_collapse(film, 1e-7, zone) == []
+    lobes = film.copy()
+    lobes[zone & (np.abs(y) > 0.7)] = 7e-9  # thin lobes, 7 % of the formula's film
+    assert dg.ehl_film_collapse(lobes, 1e-7, zone) == []
+    collapsed = film.copy()
+    sides = zone & (np.abs(y) > 0.7)
+    collapsed[sides] = 3e-12
+    lines = dg.ehl_film_collapse(collapsed, 1e-7, zone)
+    _every_line_names_a_limit(lines)
+    share = np.count_nonzero(sides) / np.count_nonzero(zone)
+    assert _percent(lines[0], "collapsed on") == pytest.approx(share, abs=5e-4)
+    assert "below 1 % of the film formulas' 100 nm" in lines[0]
+    assert "0.003 nm at its thinnest" in lines[0]
+    assert dg.ehl_film_collapse(collapsed, None, zone) == []
+    outside = film.copy()
+    outside[~zone & (np.abs(y) > 1.5)] = 3e-12
+    assert dg.ehl_film_collapse(outside, 1e-7, zone) == []
 
 
 def test_roughness_correlation_length_in_cells():

@@ -32,6 +32,7 @@ __all__ = [
     "BOUNDARY_PRESSURE",
     "BOUNDARY_BAND",
     "FILM_MESH_ERROR",
+    "COLLAPSED_FILM",
     "SIDE_CENTRAL_CHANGE",
     "SIDE_FILM_CHANGE",
     "SIDE_PROBE_PRESSURE",
@@ -125,6 +126,9 @@ FILM_MESH_ERROR = 0.05
 #: (docs/ehl-robustness.md, "A minimum film the mesh does not resolve").
 MIN_FILM_ERROR_PER_CURVATURE = 0.33
 MIN_FILM_MESH_ERROR = 0.05
+#: Share of the film formulas' central film below which a smooth steady film in the Hertz
+#: zone has collapsed (:func:`ehl_film_collapse`).
+COLLAPSED_FILM = 0.01
 #: Loss of central film a short inlet may cause (Hamrock & Dowson's starvation fit) before it is
 #: reported.
 STARVED_FILM_LOSS = 0.02
@@ -939,15 +943,25 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
     return [*lines, DomainAdvice(f"{text}; {advice}", **advised)]
 
 
-def ehl_film_collapse(film, estimate: float | None = None) -> list[str]:
-    """A film at or below zero in a smooth steady contact: below what the solve resolves.
+def ehl_film_collapse(film, estimate: float | None = None, zone=None) -> list[str]:
+    """A film at or below zero in a smooth steady contact, or one that has collapsed over
+    part of the Hertz zone: below what the solve resolves.
+
+    A collapsed film sits on its floor, not on a thin lobe: on probe case 12 (seed 40, steel
+    on steel, k = 0.82, M = 1110, default mesh 513 x 41) 12.6 % of the Hertz area is below
+    1 % of Chittenden's central film and 13.0 % below 10 % of it, the nodes at 3e-5 of it; the
+    thin lobes of cases 15 and 27 (M 42 and 38) keep 7-11 % of it and pass. Such a film had
+    been reported as a minimum film the mesh does not resolve only.
 
     Parameters
     ----------
     film : ndarray
         Film thickness on the nodes, m.
     estimate : float, optional
-        A film-formula estimate of the central film, m, for the message.
+        A film-formula estimate of the central film, m, for the message and (with ``zone``)
+        the collapse: nodes of the zone below ``COLLAPSED_FILM`` of it.
+    zone : ndarray of bool, optional
+        The nodes inside the Hertz contact, shape of ``film``.
 
     Returns
     -------
@@ -956,15 +970,26 @@ def ehl_film_collapse(film, estimate: float | None = None) -> list[str]:
     """
     h = np.asarray(film, dtype=float)
     h_min = float(np.min(h))
-    if h_min > 0:
+    known = estimate is not None and estimate > 0
+    expected = f"; the film formulas expect about {estimate * 1e9:.3g} nm" if known else ""
+    if h_min <= 0:
+        return [f"film: the film is {h_min * 1e9:.3g} nm at its thinnest, <= 0 on "
+                f"{int(np.count_nonzero(h <= 0))} nodes (limit: > 0 in a smooth steady "
+                f"contact){expected}; the solution has collapsed below what the mesh and "
+                "tolerance resolve: refine the mesh (cells_per_a), lower solver.tolerance, or "
+                "check the speeds and viscosity"]
+    if not known or zone is None or not np.any(zone):
         return []
-    expected = (f"; the film formulas expect about {estimate * 1e9:.3g} nm"
-                if estimate is not None and estimate > 0 else "")
-    return [f"film: the film is {h_min * 1e9:.3g} nm at its thinnest, <= 0 on "
-            f"{int(np.count_nonzero(h <= 0))} nodes (limit: > 0 in a smooth steady contact)"
-            f"{expected}; the solution has collapsed below what the mesh and tolerance resolve: "
-            "refine the mesh (cells_per_a), lower solver.tolerance, or check the speeds and "
-            "viscosity"]
+    collapsed = np.count_nonzero(zone & (h < COLLAPSED_FILM * estimate))
+    if not collapsed:
+        return []
+    return [f"film: the film has collapsed on {_pct(collapsed / np.count_nonzero(zone))} of "
+            f"the Hertz area, below {_pct(COLLAPSED_FILM)} of the film formulas' "
+            f"{estimate * 1e9:.3g} nm there ({h_min * 1e9:.3g} nm at its thinnest; limit: "
+            f"no node of the Hertz zone below {_pct(COLLAPSED_FILM)} of it in a smooth steady "
+            "contact); a film the mesh does not carry, most often side lobes on too few "
+            "nodes across y: the minimum film and the friction are not trustworthy; refine "
+            "the mesh (a mesh: line says where), or check the speeds and viscosity"]
 
 
 def side_pressure(pressure, y, b: float) -> float:
@@ -1181,7 +1206,8 @@ def ehl_film_mesh(x, a: float, film: float, domain=None) -> list[str]:
 
 def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
                           cell_aspect: float = MIN_CELL_ASPECT,
-                          max_ny: int | None = None) -> list[str]:
+                          max_ny: int | None = None,
+                          max_nodes: tuple[int, int, int] | None = None) -> list[str]:
     """A minimum film the mesh does not resolve: its discretisation error estimated from the
     film's relative second difference at its node, in each direction.
 
@@ -1219,6 +1245,13 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
         (:data:`asperity.ehl.solver.SOFT_MAX_NY` for an isoviscous soft point contact). Where
         more are needed the line names this many, with the error left on it by the ``dY^2``
         scaling, instead of a mesh that does not converge.
+    max_nodes : (int, int, int), optional
+        Most nodes of a mesh in all, along x and across y that a case takes
+        (:data:`asperity.cases.ehl.MAX_NODES`, ``MAX_NX``, ``MAX_NY``). Where the mesh for
+        ``MESH_TARGET`` needs more, the line says so and names the finest mesh within them
+        (both spacings scaled alike, the cells' aspect kept) with the error the ``dx^2``,
+        ``dy^2`` scaling leaves on it: a collapsed side lobe of probe case 04 (M = 4849)
+        was told to use 569 x 5993 and 14489 nodes along x, which the case refuses.
 
     Returns
     -------
@@ -1234,9 +1267,8 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
         film = film[:, None]
     i, j = np.unravel_index(np.argmin(film), film.shape)
     h = film[i, j]
-    parts = []
-    capped_any = False
-    for (key, semi, name, line, k), (span, where) in zip(
+    judged = []  # (key, semi-axis name, thicker, error, nodes for MESH_TARGET)
+    for (key, semi, name, line, k), (span, _) in zip(
             (("y", b, "b", film[i, :], j), ("x", a, "a", film[:, j], i)), spans, strict=True):
         n = line.size
         if semi is None or n < 3 or k in (0, n - 1):
@@ -1246,28 +1278,42 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
         if error <= MIN_FILM_MESH_ERROR:
             continue
         step = _spacing(y if key == "y" else x) / math.sqrt(min(error, 1.0) / MESH_TARGET)
-        need = 8 * math.ceil(round(span / step / 8, 6)) + 1
-        capped = key == "y" and max_ny is not None and need > max_ny
-        rows = min(need, max_ny) if capped else need
-        advice = (f"n{key} >= {need}{where}" if not capped else
-                  f"ny = {max_ny}{where}" if y.size < max_ny else "")
-        if key == "y" and x.size > 1 and advice:  # the x-line relaxation needs long cells
-            dy = span / (rows - 1)
-            x_span, x_where = spans[1]
-            nx = 8 * math.ceil(round(x_span / (dy / cell_aspect) / 8, 6)) + 1
-            advice += (f" with nx >= {nx}{x_where} (dy >= {cell_aspect:g} dx)"
-                       if nx > x.size else "")
+        judged.append((key, name, thicker, error, 8 * math.ceil(round(span / step / 8, 6)) + 1))
+    if not judged:
+        return []
+    need = {key: n for key, _, _, _, n in judged}
+    capped = "y" in need and max_ny is not None and need["y"] > max_ny
+    rows = min(need["y"], max_ny) if capped else need.get("y", y.size)
+    cells_nx = 1
+    if "y" in need and x.size > 1:  # the x-line relaxation needs long cells
+        cells_nx = 8 * math.ceil(round(spans[1][0] / (spans[0][0] / (rows - 1) / cell_aspect)
+                                       / 8, 6)) + 1
+    mesh_nx = max(need.get("x", 1), cells_nx, x.size)
+    over = 1.0
+    if max_nodes is not None and not capped:
+        most, most_x, most_y = max_nodes
+        over = max(math.sqrt(mesh_nx * rows / most), mesh_nx / most_x, rows / most_y)
+    (y_span, y_where), (x_span, x_where) = spans
+    parts = []
+    for key, name, thicker, error, _ in judged:
+        semi = b if key == "y" else a
         spacing = semi / _spacing(y if key == "y" else x)
         estimate = f"{'up to ' + _pct(error) if error < 1.0 else 'over 100 %'}"
         part = (f"{'across y' if key == 'y' else 'along x'} (d{key} = {name}/{spacing:.3g}, "
                 f"the film at the nodes beside it "
                 f"{'thicker by ' + _pct(thicker) if h > 0.0 else 'above zero'}): "
                 f"estimated error {estimate}")
-        if not capped:
-            part += f"; use {advice} for about {_pct(MESH_TARGET)}"
+        if key == "x" or not capped:
+            advice = f"n{key} >= {need[key]}{y_where if key == 'y' else x_where}"
+            if key == "y" and cells_nx > x.size:
+                advice += f" with nx >= {cells_nx}{x_where} (dy >= {cell_aspect:g} dx)"
+            part += f"; use {advice} for about {_pct(MESH_TARGET)}" if over <= 1.0 else ""
         else:  # the finest mesh across y that converges, and the error it leaves
-            left = min(error, 1.0) * (span / (max_ny - 1) / _spacing(y)) ** 2
-            part += (f"; about {_pct(MESH_TARGET)} needs ny >= {need}{where}, but the "
+            left = min(error, 1.0) * (y_span / (max_ny - 1) / _spacing(y)) ** 2
+            advice = (f"ny = {max_ny}{y_where}" if y.size < max_ny else "")
+            if advice and cells_nx > x.size:
+                advice += f" with nx >= {cells_nx}{x_where} (dy >= {cell_aspect:g} dx)"
+            part += (f"; about {_pct(MESH_TARGET)} needs ny >= {need['y']}{y_where}, but the "
                      f"relaxation of this contact converges on at most {max_ny} nodes across "
                      f"and on cells dy >= {cell_aspect:g} dx; "
                      + (f"use {advice}, on which the minimum film is still "
@@ -1276,14 +1322,47 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
                         if advice else f"with {y.size} nodes across, take the estimate "
                         "as the error bar of the minimum film"))
         parts.append(part)
-        capped_any = capped_any or capped
-    if not parts:
-        return []
     at = f"x = {x[i] / a:.3g} a" + (f", y = {y[j] / b:.3g} b" if film.shape[1] > 1 else "")
-    return [f"mesh: the minimum film ({h * 1e9:.4g} nm at {at}) is not resolved "
-            + " and ".join(parts) + f" (limit {_pct(MIN_FILM_MESH_ERROR)}); "
-            + ("refine until the minimum film stops changing" if not capped_any else
-               "a finer mesh across y does not converge with the solver's relaxation")]
+    head = (f"mesh: the minimum film ({h * 1e9:.4g} nm at {at}) is not resolved "
+            + " and ".join(parts))
+    if over > 1.0:
+        head += "; " + _within_node_limits(judged, rows, mesh_nx, over, (x_span, y_span),
+                                           (x_where, y_where), x, y, max_nodes)
+    return [head + f" (limit {_pct(MIN_FILM_MESH_ERROR)}); "
+            + ("a finer mesh across y does not converge with the solver's relaxation"
+               if capped else "refine until the minimum film stops changing")]
+
+
+def _within_node_limits(judged, rows: int, nx: int, over: float, spans, wheres, x, y,
+                        max_nodes) -> str:
+    """The clause of :func:`ehl_minimum_film_mesh` for a mesh beyond a case's node limits:
+    the mesh for ``MESH_TARGET`` (``nx`` x ``rows``), and the finest within the limits
+    (both spacings ``over`` times theirs, in blocks of 8 cells) with the error left on it,
+    ``min(error, 1) (d / d_now)^2`` in each direction judged."""
+    most, most_x, most_y = max_nodes
+    (x_span, y_span), (x_where, y_where) = spans, wheres
+    fit_nx = max(8 * math.floor((nx - 1) / over / 8) + 1, x.size)
+    fit_ny = max(8 * math.floor((rows - 1) / over / 8) + 1, y.size) if y.size > 1 else 1
+    fit_nx = min(fit_nx, most_x, most // fit_ny)
+    left = 0.0
+    for key, _, _, error, _ in judged:
+        coord, span, fit = (y, y_span, fit_ny) if key == "y" else (x, x_span, fit_nx)
+        left = max(left, min(error, 1.0) * (span / (fit - 1) / _spacing(coord)) ** 2)
+    needs = f"nx >= {nx}{x_where}" + (f", ny >= {rows}{y_where}" if y.size > 1 else "")
+    finest = (f"nx = {fit_nx}" + (f", ny = {fit_ny}" if y.size > 1 else "")
+              + f" ({fit_nx * fit_ny:,} nodes)")
+    clipped = any(error >= 1.0 for _, _, _, error, _ in judged)
+    still = ("still over 100 % low by this estimate" if left >= 1.0 else
+             f"still up to {_pct(left)} low by this estimate" if not clipped else
+             f"still at least {_pct(left)} low by this estimate (over 100 % on this mesh, "
+             "counted as 100 % in the scaling)")
+    if fit_nx <= x.size and fit_ny <= y.size:
+        return (f"about {_pct(MESH_TARGET)} needs {needs} ({nx * rows:,} nodes), more than "
+                f"a case takes ({most:,} nodes, nx <= {most_x}, ny <= {most_y}); take the "
+                "estimate as the error bar of the minimum film")
+    return (f"about {_pct(MESH_TARGET)} needs {needs} ({nx * rows:,} nodes), more than a case "
+            f"takes ({most:,} nodes, nx <= {most_x}, ny <= {most_y}); the finest mesh within "
+            f"them at these proportions is {finest}, on which the minimum film is {still}")
 
 
 def smooth_start_contact(steady_film, x, y, a: float, b: float | None,

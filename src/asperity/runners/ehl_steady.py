@@ -13,7 +13,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.ehl import MAX_BOUND
+from ..cases.ehl import MAX_BOUND, MAX_NODES, MAX_NX, MAX_NY
 from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
@@ -131,7 +131,7 @@ def run(case, progress=None) -> Outcome:
     film = res.central_film if res.converged else problem.film_estimate()
     trust = ehl_warnings(case, problem, res.pressure, res.x, res.y, film, smooth_film=res.film,
                          film_solved=res.converged)
-    collapse = diagnostics.ehl_film_collapse(res.film, estimate)
+    collapse = diagnostics.ehl_film_collapse(res.film, estimate, _hertz_zone(problem, res))
     trust += collapse
     if not collapse and _sheared_piezoviscous(problem, res):
         # a collapsed film's friction is the collapse's, not the Newtonian law's
@@ -253,6 +253,14 @@ def _cell_advice(problem, res) -> list[str]:
             "(the default mesh converges)."]
 
 
+def _hertz_zone(problem, res) -> np.ndarray:
+    """The nodes of ``res`` inside the Hertz contact of ``problem``, shape of its film."""
+    x = res.x[:, None] / problem.a
+    if isinstance(problem, LineContact):
+        return np.broadcast_to(np.abs(x) < 1.0, res.film.shape)
+    return x**2 + (res.y[None, :] / problem.b) ** 2 < 1.0
+
+
 def chosen_mesh(case, problem, x, y) -> dict:
     """The mesh and domain an EHL run chose for the contact, as case keys
     (:attr:`asperity.results.Outcome.chosen`): ``grid.nx``, ``grid.ny`` where the case gives
@@ -350,7 +358,8 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if not mesh and smooth_film is not None:  # (a rough film's minimum: its asperity contacts)
         aspect, max_ny = relaxed_cells(problem)
         lines += diagnostics.ehl_minimum_film_mesh(smooth_film, x, y, hz.a, b, domain=advised,
-                                                   cell_aspect=aspect, max_ny=max_ny)
+                                                   cell_aspect=aspect, max_ny=max_ny,
+                                                   max_nodes=(MAX_NODES, MAX_NX, MAX_NY))
     if check_hardness and getattr(case, "body1", None) is not None:
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])

@@ -21,7 +21,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.ehl import MAX_NODES
+from ..cases.ehl import MAX_NODES, MAX_NX, MAX_NY
 from ..ehl import solve_transient
 from ..ehl.problem import LineContact
 from ..ehl.smooth_start import start_rows
@@ -349,14 +349,15 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
         # the steady start's minimum film, a row of the comparison table (a ball on a disc:
         # 4.1 nm against Hamrock-Dowson's 35.9 on b/20, shown without a word); where the start
         # touches, most often the side lobes, too narrow for the mesh: how to refine
-        start_mesh = diagnostics.ehl_minimum_film_mesh(res.steady_film, res.x, res.y,
-                                                       problem.a, b)
+        start_mesh = diagnostics.ehl_minimum_film_mesh(
+            res.steady_film, res.x, res.y, problem.a, b, max_nodes=(MAX_NODES, MAX_NX, MAX_NY))
         trust += start_mesh
     least = res.least_film
     if not start_mesh and np.isfinite(least).all() and least.min() > res.contact_film:
         # the reported minimum film without contact, at its step: a feature that crosses the
         # side lobes of a point contact is as thin as the mesh across y lets the lobes be
-        trust += diagnostics.ehl_minimum_film_mesh(least, res.x, res.y, problem.a, b)
+        trust += diagnostics.ehl_minimum_film_mesh(least, res.x, res.y, problem.a, b,
+                                                   max_nodes=(MAX_NODES, MAX_NX, MAX_NY))
     unconverged = ~res.step_converged[:res.steps_done]
     in_a_row = (res.steps_done if unconverged.all() else int(np.argmin(unconverged[::-1])))
     stopped = np.isfinite(res.residuals[res.steps_done - 1]) if res.steps_done else False
