@@ -77,6 +77,20 @@ def test_mesh_from_spacing():
     assert case.grid.nodes(case.problem()) == (801, 201)  # the seed's mesh a/200 x b/50
 
 
+@pytest.mark.parametrize("cells, expected", [
+    (float("inf"), "grid.cells_per_a: expected a value less than or equal to 8193"),
+    (0.5, "expected grid.cells_per_a giving 9 to 8193 nodes over the domain's 4 semi-axes"),
+    (2500, "expected grid.cells_per_a giving 9 to 8193 nodes"),
+])
+def test_a_spacing_that_gives_too_few_or_too_many_nodes_is_one_clear_line(cells, expected):
+    """A spacing is counted on the domain: too few or too many nodes, or an infinite spacing
+    (an internal OverflowError before it was bounded), is one line naming the key."""
+    data = _example("holmes-smooth-point", grid=None, solver=None)
+    data["grid"] = {"cells_per_a": cells}
+    with pytest.raises(InputError, match=re.escape(expected)):
+        load_case(data)
+
+
 @pytest.mark.parametrize("table, change, field", [
     ("speeds", {"u": "0 m/s"}, "speeds"),                     # no entrainment
     ("speeds", {"u": "-3 m/s"}, "speeds"),

@@ -354,9 +354,9 @@ class EHLGridSpec(CaseModel):
     regime asks for on the domain instead of 129 x 65."""
     ny: Annotated[Integer, Field(ge=1, le=MAX_NY)] = 65
     """Nodes along y; 1 for a line contact."""
-    cells_per_a: Annotated[Number, Field(gt=0)] | None = None
+    cells_per_a: Annotated[Number, Field(gt=0, le=MAX_NX)] | None = None
     """Cells per Hertz semi-axis a along x (dx = a/cells_per_a), instead of nx."""
-    cells_per_b: Annotated[Number, Field(gt=0)] | None = None
+    cells_per_b: Annotated[Number, Field(gt=0, le=MAX_NY)] | None = None
     """Cells per Hertz semi-axis b along y (dy = b/cells_per_b), instead of ny."""
     x_min: LowerBound | None = None
     """Inlet end of the domain in Hertz semi-axes a (a number) or as a length (e.g. "-1.2 mm");
