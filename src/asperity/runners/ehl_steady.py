@@ -257,7 +257,7 @@ def _hertz_zone(problem, res) -> np.ndarray:
     """The nodes of ``res`` inside the Hertz contact of ``problem``, shape of its film."""
     x = res.x[:, None] / problem.a
     if isinstance(problem, LineContact):
-        return np.broadcast_to(np.abs(x) < 1.0, res.film.shape)
+        return np.abs(x) < 1.0  # the film of a line contact is (nx, 1)
     return x**2 + (res.y[None, :] / problem.b) ** 2 < 1.0
 
 
