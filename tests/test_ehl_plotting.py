@@ -34,6 +34,26 @@ def test_a_soft_contact_is_drawn_in_kpa_and_um():
     assert fig.axes[1].get_ylabel() == "film (µm)"
 
 
+def test_a_film_collapsed_over_most_of_the_hertz_width_keeps_its_centre_on_the_axis():
+    """Probe case 04: the film at x = 0 sat on a 0.0004 nm floor over |y| = 0.35-0.95 b and
+    was 19 nm in the middle; scaled on its median over the Hertz width, the axis ran to
+    0.0012 nm and the central film was drawn off it. The centre's film now sets the scale
+    where it is above the median."""
+    import matplotlib.pyplot as plt
+
+    b = 1e-4
+    y = np.linspace(-3.2 * b, 3.2 * b, 81)
+    p = 2.5e9 * np.sqrt(np.clip(1 - (y / b) ** 2, 0, None))
+    h = np.where(np.abs(y) < 0.3 * b, 19e-9, 4e-13) + np.clip(np.abs(y) / b - 1, 0, None) * 1e-6
+    fig = transverse_section(y, p, h, b)
+    try:
+        ax_h = fig.axes[1]
+        assert ax_h.get_ylabel() == "film (nm)"
+        assert ax_h.get_ylim()[1] == pytest.approx(3 * 19.0)
+    finally:
+        plt.close(fig)
+
+
 def _histogram(counts):
     import types
 
