@@ -652,8 +652,9 @@ def test_the_tail_of_a_step_relaxes_without_the_oscillation_damping(tmp_path):
 
     data = dict((cid, c) for cid, c, _ in
                 load_study("holmes-aspect-ratio-paper").cases)["0002"]
-    data = {**data, "grid": {"nx": 201, "ny": 51}, "time": {"counting_steps": 300,
-                                                            "warmup_steps": 0}}
+    data = {**data, "grid": {"nx": 201, "ny": 51, "x_min": -2.5, "x_max": 1.5, "y_min": -2.0,
+                             "y_max": 2.0},
+            "time": {"counting_steps": 300, "warmup_steps": 0}}
     outcome = run_case(load_case(data), workdir=tmp_path)
     sweeps = outcome.dataset["sweeps"].values
     assert outcome.converged
