@@ -754,24 +754,12 @@ def test_a_refused_default_mesh_names_the_domain_to_set_with_the_nodes():
     assert lo / problem.a == pytest.approx(-2.5)
 
 
-THICK = """analysis = "ehl-steady"
-[body1]
-youngs_modulus = "210 GPa"
-poisson_ratio = 0.3
-[body2]
-youngs_modulus = "210 GPa"
-poisson_ratio = 0.3
-[contact]
-type = "point"
-rx = "12.7 mm"
-ry = "12.7 mm"
-load = "20 N"
-[speeds]
-u = "2 m/s"
-[lubricant]
-eta0 = "0.1 Pa s"
-alpha = "20 1/GPa"
-"""
+THICK = {"analysis": "ehl-steady",
+         "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+         "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+         "contact": {"type": "point", "rx": "12.7 mm", "ry": "12.7 mm", "load": "20 N"},
+         "speeds": {"u": "2 m/s"},
+         "lubricant": {"eta0": "0.1 Pa s", "alpha": "20 1/GPa"}}
 
 
 def test_a_grid_table_with_nodes_alone_keeps_the_contacts_own_domain():
@@ -785,15 +773,16 @@ def test_a_grid_table_with_nodes_alone_keeps_the_contacts_own_domain():
     problem = own.problem()
     (x0, x1), (y0, y1) = problem.default_domain()
     assert x0 / problem.a < -5.0 and y1 / problem.b > 3.0
-    case = load_case(THICK + "[grid]\nnx = 161\nny = 49\n")
+    case = load_case({**THICK, "grid": {"nx": 161, "ny": 49}})
     assert case.solve_options(problem)["domain"] == ((x0, x1), (y0, y1))
-    spaced = load_case(THICK + "[grid]\ncells_per_a = 32\ncells_per_b = 16\nx_max = 2.0\n")
+    spaced = load_case({**THICK, "grid": {"cells_per_a": 32, "cells_per_b": 16,
+                                     "x_max": 2.0}})
     (sx0, sx1), _ = spaced.solve_options(problem)["domain"]
     assert (sx0, sx1 / problem.a) == (x0, pytest.approx(2.0))
     assert spaced.grid.nodes(problem) == (round((sx1 - sx0) / problem.a * 32) + 1,
                                           round((y1 - y0) / problem.b * 16) + 1)
-    transient = load_case(THICK.replace("ehl-steady", "ehl-transient")
-                          + "[grid]\nnx = 161\nny = 49\n")
+    transient = load_case({**THICK, "analysis": "ehl-transient",
+                           "grid": {"nx": 161, "ny": 49}})
     assert transient.mesh(problem) == (161, 49, ((x0, x1), (y0, y1)))
     out = run_case(case)
     assert out.converged

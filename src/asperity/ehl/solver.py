@@ -991,7 +991,7 @@ def solve_steady(
         total += retry.total
         if retry.converged or retry.residual < run.residual:
             run = retry
-    if use_tangent and not line and not run.converged:
+    if use_tangent and not line and _blew_up(run):
         # a point contact's grid steered by the tangent grew unstable (a bearing contact whose
         # side lobes sit on their floor, :data:`TANGENT_BLOWUP`): the load gain instead
         retry = _sequence(problem, grids, domain, tangents_from=None, **settings)
@@ -1031,6 +1031,21 @@ def solve_steady(
             "the Hertz pressure), so the p = 0 inlet starves the film; expected x_min further "
             "upstream (the seed: -2.5 a)", RuntimeWarning, stacklevel=2)
     return result
+
+
+def _blew_up(run) -> bool:
+    """Whether the finest grid of a sequence ``run`` ended unconverged with a residual that is
+    not finite or :data:`TANGENT_BLOWUP` times the least of its history (what ``blow_up`` in
+    :func:`_relax` stops on); a grid that merely ran out of sweeps did not."""
+    if run.converged:
+        return False
+    if not np.isfinite(run.residual):
+        return True
+    history = np.abs(np.asarray(run.history, dtype=float))
+    if history.size == 0:
+        return False
+    least = float(np.min(np.max(history[:, 1:], axis=1)))
+    return run.residual > TANGENT_BLOWUP * least
 
 
 class _Sequenced(NamedTuple):
