@@ -41,6 +41,7 @@ PROFILES = {
     "nodata_value.txt": (0.5e-6, 1e-12),
     "unit_in_key.txt": (0.5e-6, 1e-12),
     "quoted_csv.csv": (0.5e-6, 1e-12),
+    "point_numbers_pitch.csv": (0.5e-6, 1e-12),
 }
 #: file -> height tolerance (m)
 TOPOGRAPHIES = {
@@ -112,6 +113,25 @@ def test_unlabelled_heights_warn_and_explicit_units_fix_them():
     assert not fixed.warnings
     both = read_measured(DATA / "x_um_z_um.csv", unit="nm")  # explicit units replace the file's
     assert np.ptp(both.surface.z) < 2e-9 and any("replaces" in n for n in both.notes)
+
+
+def test_a_column_of_point_numbers_is_not_read_as_x(tmp_path):
+    """A stylus export's ``"No.","Profile(um)"`` columns (point numbers 1..N, the pitch in the
+    header) were read as x in metres: 64 points at 0.5 um a 64 m profile. Unnamed point
+    numbers 0..N-1 need the spacing, as heights alone do; integer positions with an x unit
+    in the header stay positions."""
+    named = read_measured(DATA / "point_numbers_pitch.csv")
+    assert "point numbers named 'No.'" in named.style
+    with pytest.raises(InputError, match="expected a grid spacing"):
+        read_measured(DATA / "point_numbers_unnamed.txt")
+    unnamed = read_measured(DATA / "point_numbers_unnamed.txt", spacing=0.5e-6, z_unit="um")
+    np.testing.assert_allclose(unnamed.surface.z, f(np.arange(64) * 0.5e-6), atol=1e-12)
+    positions = tmp_path / "integer_um.txt"
+    positions.write_text("# X unit: um\n# Z unit: um\n" + "".join(
+        f"{i} {v * 1e6:.6f}\n" for i, v in enumerate(f(np.arange(64) * 1e-6))))
+    stays = read_measured(positions).surface
+    assert stays.spacing == pytest.approx(1e-6)
+    np.testing.assert_allclose(stays.z, f(np.arange(64) * 1e-6), atol=1e-12)
 
 
 def test_missing_points_refused_unless_filled():

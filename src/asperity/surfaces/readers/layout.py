@@ -8,6 +8,11 @@ Rules, in order (documented for users in docs/surfaces.md):
   is z; x and z make a profile, x, y and z a point list on a grid (an XYZ export): in any
   order, on uniform steps within the printed precision, positions absent from the list
   missing.
+- A first column that counts the points (1, 2, 3, ... or 0, 1, 2, ...; named ``No.``,
+  ``Index``, ``Point``, ``#`` or unnamed, with no x unit in the header) is a point number, not
+  a position: the heights then take the header's spacing (a pitch key) or the one given. Read
+  as x, a stylus export's ``"No.","Profile(um)"`` columns made 8,000 points at 0.5 um an
+  8,000 m profile.
 - Unnamed columns: one = heights, two = x and z, three or more = a height matrix -- except
   three columns whose first is evenly spaced, increasing positions: a profile export (x and
   two height channels) that would otherwise read as a 3-wide matrix, and three columns that are
@@ -39,6 +44,8 @@ __all__ = ["Layout", "interpret"]
 
 _X_WORDS = ("x", "lateral", "position", "distance", "horizontal", "length", "scan", "pos")
 _Y_WORDS = ("y",)
+_INDEX_WORDS = ("no", "nr", "num", "number", "index", "idx", "point", "points", "pt", "#", "n",
+                "count", "sample")
 _Z_WORDS = ("z", "height", "heights", "raw", "profile", "data", "value", "depth", "elevation",
             "total", "normal", "roughness", "surface", "amplitude", "h", "topography")
 _UNIT_KEYS = ("unit", "units", "length unit", "lateral and height unit")
@@ -148,6 +155,21 @@ def _role(name: str) -> str | None:
         if word in words:
             return role
     return None
+
+
+def _counts_points(table: TextTable, x_unit_known: bool) -> bool:
+    """Whether the first of two columns numbers the points (module docstring): consecutive
+    integers from 0 or 1, printed without decimals, and named like an index or, unnamed, with
+    no x unit in the header."""
+    column = table.data[:, 0]
+    if table.resolution[0] != 0 or column.size < 2 or not np.all(np.isfinite(column)):
+        return False
+    if column[0] not in (0.0, 1.0) or not np.all(np.diff(column) == 1.0):
+        return False
+    if table.names:
+        word = re.split(r"[\s_\[\](),/.:-]+", table.names[0].strip().lower())[0]
+        return word in _INDEX_WORDS or table.names[0].strip() in ("#", "No.", "Nr.")
+    return not x_unit_known
 
 
 def _columns(table: TextTable):
@@ -329,6 +351,11 @@ def interpret(table: TextTable, where: str) -> Layout:
         z = data[:, 0]
         z_unit = _named_unit(names[0], *z_unit) if names else z_unit
         style = "one column of heights" + (f" named {names[0]!r}" if names else "")
+    elif ncol == 2 and _counts_points(table, x_unit[0] is not None):
+        z = data[:, 1]
+        z_unit = _named_unit(names[1], *z_unit) if names else z_unit
+        style = ("a column of point numbers" + (f" named {names[0]!r}" if names else "")
+                 + " and heights" + (f" named {names[1]!r}" if names else ""))
     elif ncol == 2:
         x, z = data[:, 0], data[:, 1]
         resolution = float(table.resolution[0])
