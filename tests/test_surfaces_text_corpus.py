@@ -50,6 +50,8 @@ TOPOGRAPHIES = {
     "nova_scale.txt": 1e-12,
     "spip_bit2nm.asc": 1e-11,
     "gwyddion_xyz.xyz": 1e-12,
+    "matrix_with_axes.csv": 1e-12,
+    "matrix_with_axes_labelled.txt": 1e-12,
 }
 REFUSED = {
     "binary.dat": "expected a text file",

@@ -18,6 +18,12 @@ Rules, in order (documented for users in docs/surfaces.md):
   two height channels) that would otherwise read as a 3-wide matrix, and three columns that are
   an x, y, z point list (their first two repeat values covering a grid), both refused with how
   to name their columns.
+- A height matrix whose first row holds the x positions and first column the y positions,
+  with an empty corner cell or a label there (``,0.0,0.5,...`` or ``y\\x,0.0,0.5,...`` above
+  ``0.0,h,h,...``: how spreadsheets and
+  several instruments' "matrix with axes" exports write it), takes its coordinates from them;
+  read as heights they made a 64 x 32 map of Sq 0.36 um one of 65 x 33 with Sq 3.2 um once
+  the corner was filled.
 - A height matrix has one line per y, values along x (how instruments, Gwyddion and
   SurfaceTopography write images), except one written by asperity's ``write_surface`` (its
   first comment says ``asperity topography ... rows along x``), which has one line per x.
@@ -37,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import InputError
-from .text import TextTable
+from .text import TextTable, is_number, printed_resolution
 from .units import length_factor, unit_of_name
 
 __all__ = ["Layout", "interpret"]
@@ -253,6 +259,38 @@ def _grid_from_points(x, y, z, where: str, resolution=(0.0, 0.0)):
     return xs, ys, grid, size - z.size
 
 
+def _axis(values: np.ndarray, resolution: float) -> np.ndarray | None:
+    """``values`` as an axis: finite, strictly monotonic and evenly spaced within the printed
+    ``resolution``; their order (increasing) as indices, or None."""
+    if values.size < 2 or not np.all(np.isfinite(values)):
+        return None
+    steps = np.diff(values)
+    if not (np.all(steps > 0) or np.all(steps < 0)) or not _on_a_line(values, resolution):
+        return None
+    return np.argsort(values)
+
+
+def _matrix_axes(table: TextTable):
+    """(x, y, heights [ix, iy]) of a height matrix with its x positions in the first row and
+    its y positions in the first column, the corner cell empty (module docstring); None for
+    any other block."""
+    data, names = table.data, table.names
+    if names and len(names) == data.shape[1] and all(is_number(n) for n in names[1:]):
+        row = np.array([float(n) for n in names[1:]])   # a corner label (``y\x``) above
+        resolution = max(printed_resolution(n) for n in names[1:])
+    elif data.shape[0] >= 3 and np.isnan(data[0, 0]):
+        row, resolution, data = data[0, 1:], float(np.max(table.resolution[1:])), data[1:]
+    else:
+        return None
+    if data.shape[0] < 2 or data.shape[1] < 3:
+        return None
+    order_x = _axis(row, resolution)
+    order_y = _axis(data[:, 0], float(table.resolution[0]))
+    if order_x is None or order_y is None:
+        return None
+    return row[order_x], data[:, 0][order_y], data[:, 1:].T[order_x][:, order_y]
+
+
 def _point_grid(data: np.ndarray) -> bool:
     """Whether three unnamed columns hold an x, y, z point list: their first two columns
     repeat few values that together cover a grid, one point each -- which a height matrix
@@ -367,6 +405,9 @@ def interpret(table: TextTable, where: str) -> Layout:
         x, y, z, absent = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where,
                                             table.resolution[:2])
         style = "x, y, z points (Gwyddion XYZ export)" + _absent_text(absent, z.size)
+    elif (axes := _matrix_axes(table)) is not None:
+        x, y, z = axes
+        style = "height matrix, x in its first row and y in its first column"
     elif "asperity topography" in h:
         z = data
         style = "height matrix, one line per x (written by asperity)"

@@ -16,7 +16,8 @@ lines, a line of column names) followed by a block of numbers. The reader
    data line or more (a data line with a marker the reader does not know, which would
    otherwise cut the data in two and keep only the part after it);
 3. reads ``key: value`` pairs from the header (:func:`header_pairs`) and the column names from
-   the last header line with one name per column; when that line holds only length units
+   the last header line with one name per column (or a corner label and one number per
+   column after it: a matrix's x positions); when that line holds only length units
    (``mm,um``) and the line above it one name per column, the two make the names
    (``Distance [mm]``), and a line of units alone makes names of units (``[mm]``).
 
@@ -37,7 +38,8 @@ import numpy as np
 from ...errors import InputError
 from .units import length_factor
 
-__all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "read_table"]
+__all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "is_number",
+           "printed_resolution", "read_table"]
 
 #: Field values that instruments write for a point they could not measure (lower case).
 MISSING_TOKENS = frozenset({"", "nan", "-nan", "+nan", "bad", "nd", "n/a", "na", "***", "*",
@@ -111,7 +113,12 @@ def _value(token: str, decimal_comma: bool) -> float | None:
     return None
 
 
-def _resolution(token: str) -> float:
+def is_number(token: str) -> bool:
+    """Whether ``token`` is a plain decimal number (``12``, ``-0.5``, ``1.5e-6``)."""
+    return bool(_NUMBER.match(token))
+
+
+def printed_resolution(token: str) -> float:
     """The last printed digit's value: ``12.345`` -> 1e-3, ``1.5e-6`` -> 1e-7, ``7`` -> 1."""
     mantissa, _, exponent = token.lower().replace(",", ".").partition("e")
     decimals = len(mantissa.partition(".")[2])
@@ -212,6 +219,14 @@ def _names_over_units(units: list[str], header_lines: list[str], width: int):
     return [f"[{u}]" for u in bare], header_lines
 
 
+def _axis_row(fields: list[str]) -> bool:
+    """Whether a header line is a corner label and one number per column after it
+    (``y\\x,0.0,0.5,...`` over a height matrix whose first column is y): kept as the names,
+    whose numbers :mod:`asperity.surfaces.readers.layout` reads as x."""
+    return (len(fields) >= 3 and _value(fields[0], False) is None
+            and all(is_number(f) for f in fields[1:]))
+
+
 def _decimal_commas(names: list[str], line: str, rows: list[list[str]]) -> bool:
     """Whether comma-separated column ``names`` over data lines of twice as many fields read
     as numbers written with decimal commas and a comma separator (``x_mm,z_um`` over
@@ -307,7 +322,7 @@ def read_table(path: Path) -> TextTable:
     for j in range(width):
         column = [row[j] for row in tokens if _NUMBER.match(row[j].replace(",", "."))]
         fractional = [t for t in column if "." in t or "," in t or "e" in t.lower()]
-        resolution[j] = max((_resolution(t) for t in fractional), default=0.0)
+        resolution[j] = max((printed_resolution(t) for t in fractional), default=0.0)
     header_lines = lines[:start]
     names = None
     plain = [line for line in header_lines if line.strip() and not _COMMENT.match(line)]
@@ -315,7 +330,8 @@ def read_table(path: Path) -> TextTable:
                                 if not _KEY_VALUE.match(_COMMENT.sub("", line).strip())]
     for line in candidates:
         fields = _split(line) if width > 1 else [line.strip()]
-        if len(fields) == width and all(_value(f, False) is None for f in fields):
+        if len(fields) == width and (all(_value(f, False) is None for f in fields)
+                                     or _axis_row(fields)):
             names = fields
             header_lines = [h for h in header_lines if h is not line]
             if _unit_row(fields):
