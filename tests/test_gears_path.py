@@ -515,7 +515,9 @@ def test_figures_step_at_b_and_d_and_say_what_they_draw():
     sides at the roll angle of B and of D, the two-pair side 2/3 of the single-pair load
     T / (r_b1 b) (ISO/TR 13989-1), the pressure there sqrt(2/3) of it (line contact). The
     band B-D has a legend entry, lambda's axis names sigma, the temperature axis is deg C
-    with the flash rise in K on the right."""
+    with the flash rise in K on the right. The films, solved at the nodes only, are drawn
+    with their line broken across B and D (it drew a ramp from the two-pair node before B to
+    the single-pair node on B)."""
     from asperity.plotting.gear import (
         conditions_figure,
         film_figure,
@@ -544,6 +546,17 @@ def test_figures_step_at_b_and_d_and_say_what_they_draw():
     fig = film_figure(res, "t", "sigma = sqrt(Ra1² + Ra2²)")
     assert "single tooth contact B-D" in [t.get_text() for t in
                                           fig.axes[0].get_legend().get_texts()]
+    # the films, solved at the nodes only, are not drawn as a ramp across the jumps: the
+    # line breaks between the node before B and B, and between D and the node after it
+    (central,) = [line for line in fig.axes[0].get_lines()
+                  if line.get_label() == "central film (solver)"]
+    drawn = central.get_xdata()
+    angles = np.degrees(res.kin.roll_angle)
+    gaps = np.flatnonzero(np.isnan(drawn))
+    assert gaps.size == 2 and np.isnan(central.get_ydata()[gaps]).all()
+    b, d = (math.degrees(FZG.points[key] / rb1) for key in "BD")
+    assert drawn[gaps[0] + 1] == pytest.approx(b) and drawn[gaps[1] - 1] == pytest.approx(d)
+    assert np.array_equal(drawn[~np.isnan(drawn)], angles)
     assert "sqrt(Ra1² + Ra2²) = 0.42 µm" in fig.axes[1].get_ylabel()
     fig = friction_temperature_figure(res, "t", 90.0)
     temp = fig.axes[1]

@@ -4,7 +4,9 @@ Each panel marks the points A-E of the path (dotted verticals); the single-tooth
 B-D is shaded unless the overlap ratio reaches 1 (the load is then shared uniformly), and the
 shading has a legend entry. The load sharing of a spur pair jumps at B and D (ISO/TR 13989-1:
 2/3 outside, 1 on B..D); the load and Hertz pressure are drawn with the value on both sides of
-each jump at the same roll angle, so the jump is a step and not a ramp to the neighbouring node.
+each jump at the same roll angle, so the jump is a step and not a ramp to the neighbouring node;
+the films, lambda, friction and temperatures, solved at the nodes only, are drawn with their
+line broken across each jump.
 Temperatures are drawn in deg C (bulk and contact temperature), with the flash temperature rise
 (K) as the axis on the right, so that one axis never mixes the two. Positions whose EHL solve
 did not converge are crossed out (red x, with a legend entry) on the film, lambda, friction
@@ -21,7 +23,8 @@ from ..gears.loading import load_sharing
 from ..gears.path import BOUNDARY_LUBRICATION_LAMBDA
 from .style import new_figure
 
-__all__ = ["conditions_figure", "film_figure", "friction_temperature_figure", "step_curve"]
+__all__ = ["broken_curve", "conditions_figure", "film_figure", "friction_temperature_figure",
+           "step_curve"]
 
 BAND_LABEL = "single tooth contact B-D"
 UNCONVERGED_LABEL = "EHL solve not converged (not a solution)"
@@ -54,6 +57,23 @@ def _angle(result):
     return np.degrees(result.kin.roll_angle)
 
 
+def _jumps(result) -> list[tuple[int, float, float, float]]:
+    """The load-sharing jumps at B and D where a path node lies on them (as
+    :meth:`GearPair.path` places them): (node index, side of the two-pair values: -1 before
+    B, +1 after D, X at the node, X on the two-pair side)."""
+    pair, rho = result.pair, result.kin.rho1
+    pts = pair.points
+    jumps = []
+    for key, side in (("B", -1.0), ("D", 1.0)):
+        hits = np.flatnonzero(np.abs(rho - pts[key]) <= 1e-12 * pair.t1t2)
+        if not hits.size:
+            continue
+        at, outside = load_sharing(pair, np.array([pts[key], pts[key] + side * 1e-12 * pair.pbt]))
+        if at > 0 and abs(outside - at) > 1e-9 * at:
+            jumps.append((int(hits[0]), side, float(at), float(outside)))
+    return jumps
+
+
 def step_curve(result, values, exponent: float = 1.0):
     """Roll angles (deg) and ``values`` with the load-sharing jumps at B and D as steps.
 
@@ -78,21 +98,41 @@ def step_curve(result, values, exponent: float = 1.0):
     """
     x = list(_angle(result))
     y = list(np.asarray(values, dtype=float))
-    pair, rho = result.pair, result.kin.rho1
-    pts = pair.points
-    inserts = []
-    for key, side in (("B", -1.0), ("D", 1.0)):
-        hits = np.flatnonzero(np.abs(rho - pts[key]) <= 1e-12 * pair.t1t2)
-        if not hits.size:
-            continue
-        i = int(hits[0])
-        at, outside = load_sharing(pair, np.array([pts[key], pts[key] + side * 1e-12 * pair.pbt]))
-        if not at > 0 or abs(outside - at) <= 1e-9 * at:
-            continue
-        inserts.append((i if side < 0 else i + 1, x[i], y[i] * (outside / at) ** exponent))
+    inserts = [(i if side < 0 else i + 1, x[i], y[i] * (outside / at) ** exponent)
+               for i, side, at, outside in _jumps(result)]
     for pos, angle, value in sorted(inserts, reverse=True):
         x.insert(pos, angle)
         y.insert(pos, value)
+    return np.array(x), np.array(y)
+
+
+def broken_curve(result, values):
+    """Roll angles (deg) and ``values`` with the line broken across the load-sharing jumps
+    at B and D (a NaN between the node on B and the one before it, and between the node on D
+    and the one after it).
+
+    For values that the EHL solves give only at the nodes (films, lambda, friction,
+    temperatures): a line from the last two-pair node to the single-pair node on B drew a
+    ramp where the load, and with it the film, jumps.
+
+    Parameters
+    ----------
+    result : GearPathResult
+    values : array_like
+        One value per path position.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Roll angles and values, NaN inserted at each break.
+    """
+    x = list(_angle(result))
+    y = list(np.asarray(values, dtype=float))
+    for pos in sorted((i if side < 0 else i + 1 for i, side, _, _ in _jumps(result)),
+                      reverse=True):
+        if 0 < pos < len(x):
+            x.insert(pos, np.nan)
+            y.insert(pos, np.nan)
     return np.array(x), np.array(y)
 
 
@@ -103,12 +143,13 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
     ``"sigma = sqrt(Ra1² + Ra2²)"``); its value in um is added.
     """
     fig, (ax, ax2) = new_figure(6.4, 6.0, nrows=2, sharex=True)
-    x = _angle(result)
-    ax.plot(x, result.central_film * 1e6, "C0-o", ms=3, label="central film (solver)")
-    ax.plot(x, result.minimum_film * 1e6, "C1-o", ms=3, label="minimum film (solver)")
-    ax.plot(x, result.formula_central * 1e6, "C0--",
+    ax.plot(*broken_curve(result, result.central_film * 1e6), "C0-o", ms=3,
+            label="central film (solver)")
+    ax.plot(*broken_curve(result, result.minimum_film * 1e6), "C1-o", ms=3,
+            label="minimum film (solver)")
+    ax.plot(*broken_curve(result, result.formula_central * 1e6), "C0--",
             label=f"central ({result.formula_names[0]})")
-    ax.plot(x, result.formula_minimum * 1e6, "C1--",
+    ax.plot(*broken_curve(result, result.formula_minimum * 1e6), "C1--",
             label=f"minimum ({result.formula_names[1]})")
     _cross_unconverged(ax, result, result.central_film * 1e6, label=True)
     _cross_unconverged(ax, result, result.minimum_film * 1e6)
@@ -116,7 +157,7 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
     ax.set_title(title, pad=14)
-    ax2.plot(x, result.specific_film, "C2-o", ms=3)
+    ax2.plot(*broken_curve(result, result.specific_film), "C2-o", ms=3)
     _cross_unconverged(ax2, result, result.specific_film)
     ax2.axhline(1.0, color="C3", lw=0.8, ls="--", label="lambda = 1")
     if np.nanmin(result.specific_film) < 1.0:
@@ -174,18 +215,18 @@ def friction_temperature_figure(result, title, bulk_temperature, newtonian=False
     temperature rise in K on the same scale.
     """
     fig, (ax, ax2) = new_figure(6.4, 6.0, nrows=2, sharex=True)
-    x = _angle(result)
     if newtonian:
         ax.plot([], [], " ", label="EHL traction left out (Newtonian: no lubricant.tau0)")
     else:
-        ax.plot(x, result.ehl_friction, "C0--", label="EHL traction (Eyring)")
-    ax.plot(x, result.friction, "C0-o", ms=3, label="with boundary share")
+        ax.plot(*broken_curve(result, result.ehl_friction), "C0--",
+                label="EHL traction (Eyring)")
+    ax.plot(*broken_curve(result, result.friction), "C0-o", ms=3, label="with boundary share")
     _cross_unconverged(ax, result, result.friction, label=True)
     ax.set_ylabel("friction coefficient")
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
     ax.set_title(title, pad=14)
-    ax2.plot(x, result.contact_temperature, "C3-o", ms=3,
+    ax2.plot(*broken_curve(result, result.contact_temperature), "C3-o", ms=3,
              label="contact temperature = bulk + flash")
     ax2.axhline(bulk_temperature, color="0.4", lw=0.8, ls="--", label="bulk temperature")
     _cross_unconverged(ax2, result, result.contact_temperature)
