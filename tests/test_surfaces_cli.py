@@ -97,6 +97,12 @@ def test_plot_writes_a_png(runner, tmp_path):
                                   *extra])
         assert res.exit_code == 0, res.output
         assert png.read_bytes()[:4] == b"\x89PNG"
+    # --out without a suffix: matplotlib wrote "<out>.png" and the CLI said "wrote <out>"
+    res = runner.invoke(app, ["surface", "plot", str(tmp_path / "t.npz"), "--out",
+                              str(tmp_path / "figure")])
+    assert res.exit_code == 0, res.output
+    assert (tmp_path / "figure.png").read_bytes()[:4] == b"\x89PNG"
+    assert res.output.strip().endswith(f"wrote {tmp_path / 'figure.png'}")
 
 
 @pytest.mark.parametrize("args, message", [

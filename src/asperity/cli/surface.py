@@ -431,6 +431,8 @@ def plot(
                                    form_degree=form_degree, exclude=reading.excluded)
         warnings = _warnings(reading, texture)
         fig = plot_texture(texture, title=file.name)
+    if not out.suffix:  # matplotlib writes a PNG to "<out>.png"; say so
+        out = out.with_suffix(".png")
     try:
         fig.savefig(out, dpi=150)
     except (ValueError, OSError) as err:
