@@ -300,7 +300,7 @@ def test_a_moving_surface_file_too_short_for_the_run_is_refused_naming_it(tmp_pa
     domain -2.5b..1.5b, b = 148.6 um; u_2 = 4.875 m/s)."""
     _trace(tmp_path, _cosine(H * np.arange(400)))
     with pytest.raises(InputError, match=r"surface2\.path: expected a trace at least "
-                                         r"[0-9.]+ mm long.*trace\.csv is 0\.1995 mm.*"
+                                         r"[0-9.]+ mm long along x.*trace\.csv is 0\.1995 mm.*"
                                          r"time\.counting_steps"):
         _run(tmp_path, ROLLER.replace("warmup_steps = 1", "warmup_steps = 600"))
 

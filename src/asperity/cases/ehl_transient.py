@@ -228,14 +228,15 @@ def _backwards_error(speeds, k: int, u: float) -> ValidationError:
 
 def _check_trace_length(key: str, path: str, surface, travel: float, warmup: int,
                         counting: int):
-    """Refuse a measured trace shorter than the ``travel`` (m) its surface makes in the run:
-    the solver feeds the surface in from the inlet and has no heights for the rest."""
+    """Refuse a measured trace or map shorter than the ``travel`` (m) its surface makes in the
+    run: the solver feeds the surface in from the inlet and has no heights for the rest."""
     have = float(surface.x[-1] - surface.x[0])
+    what = "map" if np.ndim(surface.z) == 2 else "trace"
     if travel > have:
-        raise InputError(key, f"a trace at least {travel * 1e3:.4g} mm long, as far as its "
-                         f"surface travels in the run's {warmup} warm-up and {counting} "
+        raise InputError(key, f"a {what} at least {travel * 1e3:.4g} mm long along x, as far "
+                         f"as its surface travels in the run's {warmup} warm-up and {counting} "
                          f"counting steps ({Path(path).name} is {have * 1e3:.4g} mm): measure "
-                         "a longer trace, or shorten the run (time.warmup_steps, "
+                         f"a longer {what}, or shorten the run (time.warmup_steps, "
                          "time.counting_steps)")
 
 
