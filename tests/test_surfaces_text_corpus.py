@@ -136,6 +136,26 @@ def test_a_column_of_point_numbers_is_not_read_as_x(tmp_path):
     np.testing.assert_allclose(stays.z, f(np.arange(64) * 1e-6), atol=1e-12)
 
 
+def test_a_matrix_with_a_number_in_its_corner_reads_its_axes_unless_it_is_a_plane(tmp_path):
+    """The corner cell of a matrix with axes may hold a number (here 0): the first row and
+    column are still its x and y where the heights beside them are not evenly spaced. A
+    tilted plane's matrix, every row and column on a line, stays a matrix of heights."""
+    x, y = np.arange(64) * 0.5, np.arange(8) * 0.5
+    z = (f(x * 1e-6)[None, :] + g(y * 1e-6)[:, None]) * 1e6
+    corner = tmp_path / "corner.csv"
+    corner.write_text("Unit,um\n0," + ",".join(f"{v:.1f}" for v in x) + "\n" + "".join(
+        f"{yj:.1f}," + ",".join(f"{v:.6f}" for v in row) + "\n" for yj, row in zip(y, z)))
+    reading = read_measured(corner)
+    assert "corner's 0 not read" in reading.style and reading.surface.shape == (64, 8)
+    np.testing.assert_allclose(reading.surface.z, z.T * 1e-6, atol=1e-12)
+    plane = tmp_path / "plane.csv"
+    rows = 1e-3 * np.arange(8)[:, None] + 2e-3 * np.arange(64)[None, :]
+    plane.write_text("# Spacing: 0.5 um\n# Unit: um\n" + "".join(
+        ",".join(f"{v:.4f}" for v in row) + "\n" for row in rows))
+    flat = read_measured(plane)
+    assert flat.surface.shape == (64, 8) and "one line per y" in flat.style
+
+
 def test_missing_points_refused_unless_filled():
     with pytest.raises(InputError, match=r"3 of 64 points \(4.69 %\) missing"):
         read_measured(DATA / "tab_angstrom_missing.txt")

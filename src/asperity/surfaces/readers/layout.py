@@ -18,12 +18,12 @@ Rules, in order (documented for users in docs/surfaces.md):
   two height channels) that would otherwise read as a 3-wide matrix, and three columns that are
   an x, y, z point list (their first two repeat values covering a grid), both refused with how
   to name their columns.
-- A height matrix whose first row holds the x positions and first column the y positions,
-  with an empty corner cell or a label there (``,0.0,0.5,...`` or ``y\\x,0.0,0.5,...`` above
-  ``0.0,h,h,...``: how spreadsheets and
-  several instruments' "matrix with axes" exports write it), takes its coordinates from them;
-  read as heights they made a 64 x 32 map of Sq 0.36 um one of 65 x 33 with Sq 3.2 um once
-  the corner was filled.
+- A height matrix whose first row holds the x positions and first column the y positions
+  (``,0.0,0.5,...`` or ``y\\x,0.0,0.5,...`` above ``0.0,h,h,...``: how spreadsheets and
+  several instruments' "matrix with axes" exports write it) takes its coordinates from them.
+  The corner cell is empty, a label or a number; a number only where the heights beside that
+  row and column are not evenly spaced themselves. Read as heights, they made a 64 x 32 map
+  of Sq 0.36 um one of 65 x 33 with Sq 3.2 um once the corner was filled.
 - A height matrix has one line per y, values along x (how instruments, Gwyddion and
   SurfaceTopography write images), except one written by asperity's ``write_surface`` (its
   first comment says ``asperity topography ... rows along x``), which has one line per x.
@@ -271,14 +271,22 @@ def _axis(values: np.ndarray, resolution: float) -> np.ndarray | None:
 
 
 def _matrix_axes(table: TextTable):
-    """(x, y, heights [ix, iy]) of a height matrix with its x positions in the first row and
-    its y positions in the first column, the corner cell empty (module docstring); None for
-    any other block."""
+    """(x, y, heights [ix, iy], the corner's value or None) of a height matrix with its x
+    positions in the first row and its y positions in the first column (module docstring);
+    None for any other block. The corner cell is empty, a label, or a number whose row and
+    column are evenly spaced positions while the heights beside them are not (a tilted
+    plane's matrix has every row and column on a line, and is read as heights)."""
     data, names = table.data, table.names
+    corner = None
     if names and len(names) == data.shape[1] and all(is_number(n) for n in names[1:]):
         row = np.array([float(n) for n in names[1:]])   # a corner label (``y\x``) above
         resolution = max(printed_resolution(n) for n in names[1:])
-    elif data.shape[0] >= 3 and np.isnan(data[0, 0]):
+    elif data.shape[0] >= 3 and data.shape[1] >= 3:
+        if not np.isnan(data[0, 0]):
+            res = float(np.max(table.resolution[1:]))
+            if _on_a_line(data[1, 1:], res) or _on_a_line(data[1:, 1], res):
+                return None
+            corner = float(data[0, 0])
         row, resolution, data = data[0, 1:], float(np.max(table.resolution[1:])), data[1:]
     else:
         return None
@@ -288,7 +296,7 @@ def _matrix_axes(table: TextTable):
     order_y = _axis(data[:, 0], float(table.resolution[0]))
     if order_x is None or order_y is None:
         return None
-    return row[order_x], data[:, 0][order_y], data[:, 1:].T[order_x][:, order_y]
+    return row[order_x], data[:, 0][order_y], data[:, 1:].T[order_x][:, order_y], corner
 
 
 def _point_grid(data: np.ndarray) -> bool:
@@ -405,12 +413,13 @@ def interpret(table: TextTable, where: str) -> Layout:
         x, y, z, absent = _grid_from_points(data[:, 0], data[:, 1], data[:, 2], where,
                                             table.resolution[:2])
         style = "x, y, z points (Gwyddion XYZ export)" + _absent_text(absent, z.size)
-    elif (axes := _matrix_axes(table)) is not None:
-        x, y, z = axes
-        style = "height matrix, x in its first row and y in its first column"
     elif "asperity topography" in h:
         z = data
         style = "height matrix, one line per x (written by asperity)"
+    elif (axes := _matrix_axes(table)) is not None:
+        x, y, z, corner = axes
+        style = "height matrix, x in its first row and y in its first column" + (
+            "" if corner is None else f" (the corner's {corner:g} not read)")
     else:
         if ncol == 3:
             _positions_first(table, where)
