@@ -143,8 +143,10 @@ def test_a_matrix_with_a_number_in_its_corner_reads_its_axes_unless_it_is_a_plan
     x, y = np.arange(64) * 0.5, np.arange(8) * 0.5
     z = (f(x * 1e-6)[None, :] + g(y * 1e-6)[:, None]) * 1e6
     corner = tmp_path / "corner.csv"
-    corner.write_text("Unit,um\n0," + ",".join(f"{v:.1f}" for v in x) + "\n" + "".join(
-        f"{yj:.1f}," + ",".join(f"{v:.6f}" for v in row) + "\n" for yj, row in zip(y, z)))
+    lines = [f"{yj:.1f}," + ",".join(f"{v:.6f}" for v in row)
+             for yj, row in zip(y, z, strict=True)]
+    corner.write_text("Unit,um\n0," + ",".join(f"{v:.1f}" for v in x) + "\n"
+                      + "\n".join(lines) + "\n")
     reading = read_measured(corner)
     assert "corner's 0 not read" in reading.style and reading.surface.shape == (64, 8)
     np.testing.assert_allclose(reading.surface.z, z.T * 1e-6, atol=1e-12)
