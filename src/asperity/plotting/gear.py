@@ -96,43 +96,32 @@ def step_curve(result, values, exponent: float = 1.0):
     (ndarray, ndarray)
         Roll angles and values, with the duplicated points inserted.
     """
-    x = list(_angle(result))
-    y = list(np.asarray(values, dtype=float))
-    inserts = [(i if side < 0 else i + 1, x[i], y[i] * (outside / at) ** exponent)
-               for i, side, at, outside in _jumps(result)]
-    for pos, angle, value in sorted(inserts, reverse=True):
-        x.insert(pos, angle)
-        y.insert(pos, value)
-    return np.array(x), np.array(y)
+    return _inserted(result, values,
+                     lambda angle, value, at, outside: (angle, value * (outside / at) ** exponent))
 
 
 def broken_curve(result, values):
-    """Roll angles (deg) and ``values`` with the line broken across the load-sharing jumps
-    at B and D (a NaN between the node on B and the one before it, and between the node on D
-    and the one after it).
+    """Roll angles (deg) and ``values`` (one per path position) with the line broken across
+    the load-sharing jumps at B and D: a NaN point between the node on B and the one before
+    it, and between the node on D and the one after it.
 
     For values that the EHL solves give only at the nodes (films, lambda, friction,
     temperatures): a line from the last two-pair node to the single-pair node on B drew a
     ramp where the load, and with it the film, jumps.
-
-    Parameters
-    ----------
-    result : GearPathResult
-    values : array_like
-        One value per path position.
-
-    Returns
-    -------
-    (ndarray, ndarray)
-        Roll angles and values, NaN inserted at each break.
     """
+    return _inserted(result, values, lambda *_: (np.nan, np.nan))
+
+
+def _inserted(result, values, point):
+    """Roll angles and ``values`` with one point inserted at each jump of :func:`_jumps`, on
+    its two-pair side: ``point(angle, value, X_node, X_outside)`` gives it from the node's."""
     x = list(_angle(result))
     y = list(np.asarray(values, dtype=float))
-    for pos in sorted((i if side < 0 else i + 1 for i, side, _, _ in _jumps(result)),
-                      reverse=True):
-        if 0 < pos < len(x):
-            x.insert(pos, np.nan)
-            y.insert(pos, np.nan)
+    inserts = [(i if side < 0 else i + 1, *point(x[i], y[i], at, outside))
+               for i, side, at, outside in _jumps(result)]
+    for pos, angle, value in sorted(inserts, reverse=True):
+        x.insert(pos, angle)
+        y.insert(pos, value)
     return np.array(x), np.array(y)
 
 
