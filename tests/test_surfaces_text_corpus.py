@@ -124,7 +124,8 @@ def test_a_column_of_point_numbers_is_not_read_as_x(tmp_path):
     in the header stay positions."""
     named = read_measured(DATA / "point_numbers_pitch.csv")
     assert "point numbers named 'No.'" in named.style
-    with pytest.raises(InputError, match="expected a grid spacing"):
+    with pytest.raises(InputError, match="expected a grid spacing for .*point_numbers_unnamed"
+                                         r"\.txt \(a column of point numbers and heights\)"):
         read_measured(DATA / "point_numbers_unnamed.txt")
     unnamed = read_measured(DATA / "point_numbers_unnamed.txt", spacing=0.5e-6, z_unit="um")
     np.testing.assert_allclose(unnamed.surface.z, f(np.arange(64) * 0.5e-6), atol=1e-12)

@@ -398,7 +398,7 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
                 xf = xf or lay.spacing_factor
             else:
                 _replaced_spacing(spacing, header, warnings)
-        surface = _from_heights(z, spacing, str(path), lay.origin, lay.periodic)
+        surface = _from_heights(z, spacing, f"{path} ({lay.style})", lay.origin, lay.periodic)
     described = "; ".join((
         _unit_text("x", units.x, lay.x_factor, lay.x_unit_source) if lay.x is not None
         else _spacing_text(lay, given_spacing, units.x),
