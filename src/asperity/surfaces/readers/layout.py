@@ -155,8 +155,14 @@ def _quantity(text: str | None) -> tuple[list[float], float | None] | None:
     return numbers, length_factor(unit) if unit else None
 
 
+def _first_word(name: str) -> str:
+    """The first word of a column name, lower case (``"X [um]"`` -> ``"x"``, ``"No."`` ->
+    ``"no"``)."""
+    return re.split(r"[\s_\[\](),/.:-]+", name.strip().lower())[0] if name.strip() else ""
+
+
 def _role(name: str) -> str | None:
-    word = re.split(r"[\s_\[\](),/.:-]+", name.strip().lower())[0] if name.strip() else ""
+    word = _first_word(name)
     for role, words in (("x", _X_WORDS), ("y", _Y_WORDS), ("z", _Z_WORDS)):
         if word in words:
             return role
@@ -173,8 +179,7 @@ def _counts_points(table: TextTable, x_unit_known: bool) -> bool:
     if column[0] not in (0.0, 1.0) or not np.all(np.diff(column) == 1.0):
         return False
     if table.names:
-        word = re.split(r"[\s_\[\](),/.:-]+", table.names[0].strip().lower())[0]
-        return word in _INDEX_WORDS or table.names[0].strip() in ("#", "No.", "Nr.")
+        return _first_word(table.names[0]) in _INDEX_WORDS
     return not x_unit_known
 
 
@@ -282,12 +287,12 @@ def _matrix_axes(table: TextTable):
         row = np.array([float(n) for n in names[1:]])   # a corner label (``y\x``) above
         resolution = max(printed_resolution(n) for n in names[1:])
     elif data.shape[0] >= 3 and data.shape[1] >= 3:
+        resolution = float(np.max(table.resolution[1:]))
         if not np.isnan(data[0, 0]):
-            res = float(np.max(table.resolution[1:]))
-            if _on_a_line(data[1, 1:], res) or _on_a_line(data[1:, 1], res):
+            if _on_a_line(data[1, 1:], resolution) or _on_a_line(data[1:, 1], resolution):
                 return None
             corner = float(data[0, 0])
-        row, resolution, data = data[0, 1:], float(np.max(table.resolution[1:])), data[1:]
+        row, data = data[0, 1:], data[1:]
     else:
         return None
     if data.shape[0] < 2 or data.shape[1] < 3:
