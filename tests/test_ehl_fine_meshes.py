@@ -100,3 +100,24 @@ def test_a_point_tangent_moves_the_load_by_the_wanted_fraction():
     assert fine.H0 - h0 == pytest.approx(-0.03 * tangent.dH0, rel=1e-12)
     centre = np.unravel_index(np.argmin(np.abs(fine.X)[:, None] + np.abs(fine.Y)), h.shape)
     assert tangent.dH0 != 0.0 and fine.H[centre] != h[centre]
+
+
+def test_a_tangent_that_blows_up_is_given_up_for_the_gain(monkeypatch):
+    """The fallback of :func:`solve_steady` when the tangent-steered finest grid grows
+    unstable (:data:`~asperity.ehl.solver.TANGENT_BLOWUP`; a bearing contact did, in a slow
+    test): here the tangent is made to push the load the wrong way 30 times too far, so the
+    finest grid's residual grows; the sequence is then solved again with the load gain and
+    the result is that of the gain alone (``point_tangent=False``: the same film and sweeps),
+    with both sequences' sweeps in ``total_sweeps``. A 1 m/s, 20 N steel ball with a 0.1 Pa s
+    oil on 289 x 81 nodes, twice its default mesh (145 x 41) each way."""
+    prob = PointContact(10e-3, 10e-3, 20.0, 1.0, 1.0, STEEL, STEEL, Lubricant(0.1, 20e-9))
+    domain = ((-3.0 * prob.a, 1.5 * prob.a), (-2.0 * prob.b, 2.0 * prob.b))
+    assert prob.default_nodes(domain) == (145, 41)
+    gain = solve_steady(prob, nx=289, ny=81, domain=domain, point_tangent=False)
+    correct = LoadTangent.correct
+    monkeypatch.setattr(LoadTangent, "correct",
+                        lambda self, state, error: correct(self, state, -30.0 * error))
+    steered = solve_steady(prob, nx=289, ny=81, domain=domain)
+    assert gain.converged and steered.converged
+    assert steered.central_film == gain.central_film and steered.sweeps == gain.sweeps
+    assert steered.total_sweeps > gain.total_sweeps + 500
