@@ -727,3 +727,89 @@ def test_a_result_constant_over_the_study_is_drawn_flat_not_as_a_trend(tmp_path)
     assert not film_ax.yaxis.get_major_formatter().get_useOffset()
     low, high = pressure_ax.get_ylim()
     assert low < 1.0 and 3.0 < high < 3.5
+
+
+@pytest.mark.parametrize(("key", "values", "quoted"), [
+    ("geometry.rx", "[10, 12]", "'10 mm'"),            # meant in mm: ran 10 m and 12 m radii
+    ("body1.youngs_modulus", "[200, 220]", "'210 GPa'"),  # meant in GPa: 200 Pa
+])
+def test_bare_numbers_meant_in_the_unit_of_the_base_are_refused(tmp_path, key, values, quoted):
+    """A bare number is in the key's SI unit: rx = [10, 12] on a base of "10 mm" ran balls of
+    10 m and 12 m radius, and a tangential case answered for them without a word. Where every
+    bare value is at least 100 times off the base in SI and near it in the base's own unit,
+    the study is refused naming the unit to write."""
+    message = _error(tmp_path, f'[[axis]]\nkey = "{key}"\nvalues = {values}\n')
+    assert message.startswith("axis[0].values: ")
+    assert quoted in message
+    ratio = {"geometry.rx": 10 / 0.010, "body1.youngs_modulus": 200 / 210e9}[key]
+    assert f"{ratio:.4g} times" in message
+
+
+def test_bare_numbers_in_si_near_the_base_still_run(tmp_path):
+    """Metres on a base in mm, a load in N beside its base and a speed-like decade sweep stay
+    allowed: only values that read as the base's unit are refused."""
+    study = _study(tmp_path, '[[axis]]\nkey = "geometry.rx"\nvalues = [0.005, 0.012]\n'
+                             '[[axis]]\nkey = "loading.load"\nvalues = [1, 100, 1000]\n')
+    rx = [case["geometry"]["rx"] for _, case, _ in study.cases[::3]]
+    assert rx == [0.005, 0.012]
+
+
+@pytest.mark.parametrize(("range_text", "start"), [
+    ('{start = "10 N", stop = "50 N", num = 3}', "axis[0].range.start: expected a number (give "
+                                                 "the unit once"),
+    ("{start = 1, stop = inf, num = 3}", "axis[0].range.stop: expected a finite number, got inf"),
+])
+def test_range_ends_are_plain_finite_numbers(tmp_path, range_text, start):
+    """start = "10 N" was "expected a table {start, stop, num[, unit, scale]}, got {...}",
+    which did not say what was wrong; stop = inf gave numpy's "invalid value encountered in
+    multiply" and then "values 1 and 2 are the same case: inf and inf"."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        message = _error(tmp_path, f'[[axis]]\nkey = "loading.load"\nrange = {range_text}\n')
+    assert message.startswith(start)
+
+
+def test_the_analysis_key_is_not_swept(tmp_path):
+    """values = ["normal", "ehl-steady"] on analysis was refused as "case 1 (geometry):
+    missing", a key the user had not touched."""
+    message = _error(tmp_path, '[[axis]]\nkey = "analysis"\nvalues = ["normal", "ehl-steady"]\n')
+    assert message.startswith("axis[0].key: analysis is not swept")
+    assert "'normal'" in message
+
+
+@pytest.mark.parametrize(("key", "near"), [
+    ("contact.load", "loading.load"),   # the EHL cases' load key on a dry normal base
+    ("geometry.rxx", "geometry.rx"),
+])
+def test_an_axis_key_the_analysis_lacks_names_the_axis_and_the_nearest_key(tmp_path, key, near):
+    """contact.load on a normal base was "case 0 (contact): unknown key (check the spelling)":
+    it named neither the axis nor the analysis, though the key is a good one of another."""
+    message = _error(tmp_path, f'[[axis]]\nkey = "{key}"\nvalues = ["5 N", "10 N"]\n')
+    assert message == (f'axis[0].key: {key} is not a key of analysis = "normal" (did you mean '
+                       f"{near}?); asperity schema normal lists them")
+
+
+def test_figure_joins_the_points_in_the_order_of_the_axis(tmp_path, monkeypatch):
+    """Loads written ["10 N", 20, "0.03 kN", "5 lbf"] (10, 20, 30 and 22.24 N) were joined in
+    that order, each result drawn as a loop back from 30 N to 22.24 N; the table keeps the
+    study's order of cases."""
+    import asperity.plotting.study as study_plot
+    from asperity.report import write_study_report
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                             'values = ["10 N", 20, "0.03 kN", "5 lbf"]\n')
+    out = tmp_path / "out"
+    loads = [10.0, 20.0, 30.0, 5 * 4.4482216152605]
+    _done_cases(out, [{"max_pressure_pa": 1e8 * load ** (1 / 3)} for load in loads])
+    figures = []
+    real = study_plot.plot_study
+    monkeypatch.setattr(study_plot, "plot_study", lambda ds, v: figures.append(real(ds, v))
+                        or figures[-1])
+    write_study_report(combine(study, out), out)
+    x = figures[0].axes[0].lines[0].get_xdata()
+    np.testing.assert_allclose(x, sorted(loads))
+    html = (out / "report.html").read_text()
+    assert html.index("<td>0003</td><td>22.24 N</td>") > html.index("<td>0002</td><td>30 N</td>")

@@ -522,6 +522,25 @@ units, in study.nc.</p>
 """
 
 
+def _in_axis_order(ds):
+    """The study with its cases in increasing order of the first axis, for the figure.
+
+    The figure joins the points in the order of the cases: a load axis written
+    ``["10 N", 20, "0.03 kN", "5 lbf"]`` (10, 20, 30, 22.2 N) drew every result as a loop
+    back from 30 N to 22.2 N, as if it were not single valued. Labelled axes keep their order;
+    the table of cases keeps the study's.
+    """
+    import numpy as np
+
+    names = [n for n in ds.attrs.get("axes", "").split(",") if n]
+    if not names or names[0] not in ds.coords:
+        return ds
+    values = ds[names[0]].values
+    if not np.issubdtype(values.dtype, np.number) or np.all(np.diff(values) >= 0):
+        return ds
+    return ds.sortby(names[0])
+
+
 def write_study_report(ds, out_dir) -> Path:
     """Draw the study figure (``study.png``) and write ``report.html`` into ``out_dir``.
 
@@ -545,7 +564,7 @@ def write_study_report(ds, out_dir) -> Path:
     variables = study_variables(ds)
     png = None
     if variables:
-        fig = plot_study(ds, variables)
+        fig = plot_study(_in_axis_order(ds), variables)
         with atomic_path(out / "study.png") as tmp:
             fig.savefig(tmp, format="png", dpi=110, bbox_inches="tight")
         plt.close(fig)

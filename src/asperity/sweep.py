@@ -37,6 +37,7 @@ names on every variable; ``OUT/report.html`` plots the results against the axes
 from __future__ import annotations
 
 import copy
+import difflib
 import itertools
 import json
 import math
@@ -51,7 +52,7 @@ from .errors import InputError
 from .formatting import cf_units, describe_key
 from .report import write_study_report
 from .results import atomic_path, write_json, write_netcdf
-from .units import is_bare
+from .units import DIMENSIONS, is_bare, to_si, unit_of
 
 __all__ = ["RANGE_KEYS", "THREAD_VARIABLES", "Study", "case_status", "combine",
            "convergence_message", "estimated_seconds", "load_study", "local_cluster", "run_one",
@@ -130,11 +131,11 @@ def _axis_values(axis: dict, index: int) -> list:
         return values
     if "range" in axis:
         r = axis["range"]
-        try:
-            start, stop, num = float(r["start"]), float(r["stop"]), r["num"]
-        except (KeyError, TypeError, ValueError):
+        if not isinstance(r, dict) or not {"start", "stop", "num"} <= set(r):
             raise InputError(f"{where}.range", "a table {start, stop, num[, unit, scale]}",
-                             r) from None
+                             r)
+        start, stop, num = (_range_end(r, "start", where), _range_end(r, "stop", where),
+                            r["num"])
         unknown = sorted(set(r) - set(RANGE_KEYS))
         if unknown:
             raise InputError(f"{where}.range.{unknown[0]}",
@@ -154,6 +155,26 @@ def _axis_values(axis: dict, index: int) -> list:
         unit = r.get("unit")
         return [f"{v:.12g} {unit}" if unit else float(v) for v in vals]
     raise InputError(where, "a values list or a range table")
+
+
+def _range_end(r: dict, end: str, where: str) -> float:
+    """The ``start`` or ``stop`` of an axis's range as a finite number.
+
+    A quantity (``start = "10 N"``) is refused with where its unit goes (the table's ``unit``,
+    for both ends), and an infinite end, which had made a range of repeated infinities refused
+    as "the same case" after a numpy warning.
+    """
+    value = r[end]
+    if isinstance(value, str) and not is_bare(value):
+        raise InputError(f"{where}.range.{end}", "a number (give the unit once for both ends: "
+                         "start = 10, stop = 50, unit = \"N\")", value)
+    try:
+        number = float(value) if not isinstance(value, bool) else math.nan
+    except (TypeError, ValueError):
+        number = math.nan
+    if not math.isfinite(number):
+        raise InputError(f"{where}.range.{end}", "a finite number", value)
+    return number
 
 
 def _axis(ax, i: int) -> tuple:
@@ -229,21 +250,27 @@ def _base_keys(base_case: dict) -> dict:
     return {} if model is None else {k.key: k for k in case_keys(model)}
 
 
-def _check_axes(axes: list, keys: dict, mode: str) -> tuple:
+def _check_axes(axes: list, keys: dict, mode: str, base_case: dict | None = None) -> tuple:
     """Refuse what would run but not answer the question; return each axis' SI unit.
 
     A key swept by two axes (the second overrode the first in every case and the combination
     failed after all cases had run), a key that names a table given values that are not tables,
-    bare numbers beside quantities where a bare number is not in the key's SI unit, and one
-    value twice on an axis of a cross study (the same case run twice, a coordinate that
-    selects two rows).
+    bare numbers beside quantities where a bare number is not in the key's SI unit, bare
+    numbers meant in the unit the base writes the key in (:func:`_check_bare_scale`), the
+    ``analysis`` key (a study runs its base's analysis), and one value twice on an axis of a
+    cross study (the same case run twice, a coordinate that selects two rows).
     """
+    base_case = base_case or {}
     seen: dict[str, int] = {}
     names: dict[str, int] = {}
     units = []
     for i, (name, axis_keys, values, _) in enumerate(axes):
         field = f"axis[{i}].key" if len(axis_keys) == 1 else f"axis[{i}].keys"
         for k, key in enumerate(axis_keys):
+            if key == "analysis":
+                raise InputError(field, "", problem="analysis is not swept: a study runs the "
+                                 f"analysis of its base ({base_case.get('analysis')!r}); write "
+                                 "one study per analysis")
             if key in seen:
                 raise InputError(field, "", problem=f"{key} is already swept by "
                                  f"axis[{seen[key]}]")
@@ -266,6 +293,9 @@ def _check_axes(axes: list, keys: dict, mode: str) -> tuple:
                 raise InputError(f"axis[{i}].values", "", problem=f"bare numbers beside "
                                  f"quantities for {key}, where a bare number is not in "
                                  f"{spec.unit}; give every value with its unit, or none")
+            if spec is not None and spec.type == "quantity" and spec.unit:
+                _check_bare_scale(f"axis[{i}].values", key, column, spec.unit,
+                                  _get_path(base_case, key))
         if name in names:
             raise InputError(f"axis[{i}].name", "", problem=f"{name.replace('__', '.')} is "
                              f"already the name of axis[{names[name]}]; give each axis its own "
@@ -278,6 +308,60 @@ def _check_axes(axes: list, keys: dict, mode: str) -> tuple:
         if mode == "cross":
             _check_distinct(i, axis_keys, values, unit, keys)
     return tuple(units)
+
+
+def _get_path(data: dict, dotted: str):
+    """The value at a dotted key of a case, or None where it is not set."""
+    node = data
+    for k in dotted.split("."):
+        node = node.get(k) if isinstance(node, dict) else None
+    return node
+
+
+def _dimension_of(si_unit: str) -> str | None:
+    """The :data:`~asperity.units.DIMENSIONS` name of an SI unit (``"m"``: ``"length"``)."""
+    return next((d for d, u in DIMENSIONS.items() if u and u == si_unit), None)
+
+
+def _written_unit(value, dimension: str) -> tuple[str, float] | None:
+    """The unit a case value is written in and its size in SI (``"9.525 mm"``:
+    ``("mm", 0.001)``), or None for a bare number or a value that is not a quantity."""
+    unit = unit_of(value)
+    if unit is None:
+        return None
+    try:
+        return unit, to_si(f"1 {unit}", dimension, "base")
+    except InputError:
+        return None
+
+
+def _check_bare_scale(field: str, key: str, column: list, si_unit: str, base_value) -> None:
+    """Refuse bare numbers that read as the base's unit but are taken in SI.
+
+    A base written ``rx = "9.525 mm"`` swept with ``values = [9.525, 12.7]`` ran radii of
+    9.5 and 12.7 m (a bare number is in the key's SI unit), and a tangential case answered for
+    them without a word. Refused where the base is written in a unit at least 100 times the SI
+    one or smaller, and every bare value is at least 100 times off the base in SI but within a
+    factor 10 of it read in the base's unit.
+    """
+    dimension = _dimension_of(si_unit)
+    written = None if dimension is None else _written_unit(base_value, dimension)
+    bare = [float(v) for v in column if is_bare(v)]
+    if written is None or not bare or abs(math.log10(written[1])) < 2:
+        return
+    try:
+        base_si = abs(to_si(base_value, dimension, key))
+    except InputError:  # the base's own check says what is wrong with it
+        return
+    if base_si == 0 or not all(math.isfinite(v) and v != 0 for v in bare):
+        return
+    if all(abs(math.log10(abs(v) / base_si)) >= 2
+           and abs(math.log10(abs(v) * written[1] / base_si)) <= 1 for v in bare):
+        v = bare[0]
+        raise InputError(field, "", problem=f"{v:g} on {key} is {v:g} {si_unit} (a bare "
+                         f"number is in {si_unit}), {abs(v) / base_si:.4g} times the base's "
+                         f"{base_value!r}; give the unit (\"{v:g} {written[0]}\"), or write "
+                         f"\"{v:g} {si_unit}\" if that is meant")
 
 
 def _check_distinct(i: int, axis_keys, values, unit, keys) -> None:
@@ -310,6 +394,31 @@ def _normal_values(values: list, unit) -> list:
     if np.issubdtype(numbers.dtype, np.number):
         return [float(f"{v:.12g}") for v in numbers]
     return [json.dumps(v, sort_keys=True, default=str) for v in values]
+
+
+def _unknown_axis_key(exc: InputError, axes: list, base_case: dict) -> None:
+    """Name the axis whose key the case refused as unknown, with the analysis and the nearest
+    key it has (``loading.load`` on an EHL base: ``contact.load``).
+
+    The case's own line named the first unknown part only (``case 0 (loading): unknown key
+    (check the spelling)``) though the key is the study's and may be a key of another analysis.
+    """
+    if not exc.problem.startswith("unknown key"):
+        return
+    for i, (_, axis_keys, _, _) in enumerate(axes):
+        for key in axis_keys:
+            if key != exc.field and not key.startswith(exc.field + "."):
+                continue
+            known = list(_base_keys(base_case))
+            last = key.rsplit(".", 1)[-1]
+            near = [k for k in known if k.rsplit(".", 1)[-1] == last] or \
+                difflib.get_close_matches(key, known, n=1, cutoff=0.6)
+            analysis = base_case.get("analysis")
+            field = f"axis[{i}].key" if len(axis_keys) == 1 else f"axis[{i}].keys"
+            raise InputError(field, "", problem=f"{key} is not a key of analysis = "
+                             f"\"{analysis}\""
+                             + (f" (did you mean {near[0]}?)" if near else "")
+                             + f"; asperity schema {analysis} lists them") from None
 
 
 def load_study(path: str | Path) -> Study:
@@ -352,7 +461,7 @@ def load_study(path: str | Path) -> Study:
     axes = [_axis(ax, i) for i, ax in enumerate(axes_spec)]
     if mode == "zip" and len({len(ax[2]) for ax in axes}) != 1:
         raise InputError("axis", "axes of equal length for mode = \"zip\"")
-    units = _check_axes(axes, _base_keys(base_case), mode)
+    units = _check_axes(axes, _base_keys(base_case), mode, base_case)
     positions = (zip(*(range(len(ax[2])) for ax in axes), strict=True) if mode == "zip"
                  else itertools.product(*(range(len(ax[2])) for ax in axes)))
     title = spec.get("title", path.stem)
@@ -367,6 +476,7 @@ def load_study(path: str | Path) -> Study:
         try:
             load_case(case)
         except InputError as exc:
+            _unknown_axis_key(exc, axes, base_case)
             text = str(exc)
             problem = text[len(exc.field) + 2:] if text.startswith(f"{exc.field}: ") else text
             raise InputError(f"case {n} ({exc.field})", exc.expected, problem=problem) from None

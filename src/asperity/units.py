@@ -102,6 +102,16 @@ def is_bare(value) -> bool:
     return True
 
 
+def unit_of(value) -> str | None:
+    """The unit a case-file quantity is written in (``"9.525 mm"``: ``"mm"``), or None for a
+    bare number or a value that does not start with a number."""
+    if not isinstance(value, str):
+        return None
+    match = _LEADING_NUMBER.match(value)
+    unit = value[match.end():].strip() if match else ""
+    return unit or None
+
+
 #: (SI unit wanted, dimension given) -> what the given quantity probably is, and what to write.
 _MISTAKEN = {
     ("Pa*s", "[length] ** 2 / [time]"): "this is a kinematic viscosity: the dynamic viscosity "
