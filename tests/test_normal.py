@@ -818,3 +818,92 @@ def test_a_smooth_flat_punch_says_its_largest_pressure_is_the_meshs():
         "loading": {"load": "50 N"},
         "grid": {"nx": 32, "ny": 32, "x_extent": "0.4 mm", "y_extent": "0.4 mm"}})).notes
         if s.startswith("A smooth flat")]
+
+
+def _ball_case(geometry, modulus="210 GPa", load="50 N"):
+    """A steel ball's normal case (R = 10 mm unless ``geometry`` says otherwise)."""
+    return {"analysis": "normal",
+            "body1": {"youngs_modulus": modulus, "poisson_ratio": 0.3},
+            "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+            "geometry": geometry, "loading": {"load": load},
+            "grid": {"nx": 48, "ny": 48, "x_extent": "0.6 mm", "y_extent": "0.6 mm"}}
+
+
+def test_a_sphere_with_two_radii_is_refused_not_solved_as_an_ellipsoid():
+    """A user's ``shape = "sphere"`` with ``rx = "10 mm"`` and a stray ``ry = "40 mm"`` ran
+    as an ellipsoid under the name of a sphere: Hertz semi-axes 145.0 and 362.5 um at 100 N
+    on steel, not the sphere's a = (3 P R / (4 E*))^(1/3) = 186.6 um. Now it is one line
+    naming geometry.ry; ``ry`` equal to ``rx`` is still a sphere, and a flat with a radius is
+    refused likewise (it was ignored)."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    with pytest.raises(InputError, match=r'^geometry\.ry: expected no ry for a sphere.*'
+                       r'"ellipsoid"'):
+        load_case(_ball_case({"shape": "sphere", "rx": "10 mm", "ry": "40 mm"}, load="100 N"))
+    with pytest.raises(InputError, match=r'^geometry\.rx: expected no rx for shape = "flat"'):
+        load_case(_ball_case({"shape": "flat", "rx": "10 mm"}))
+    out = run_case(load_case(_ball_case({"shape": "sphere", "rx": "10 mm", "ry": "10 mm"},
+                                        load="100 N")))
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    a = (3 * 100.0 * 0.01 / (4 * e_star)) ** (1 / 3)
+    assert out.summary["hertz_a_m"] == pytest.approx(a, rel=1e-9)
+    assert out.summary["hertz_b_m"] == pytest.approx(a, rel=1e-9)
+
+
+def test_a_modulus_stiffer_than_diamond_is_refused():
+    """``youngs_modulus = "30e6 GPa"`` (GPa typed for psi) is 3e16 Pa, 25000 times diamond's
+    1.2 TPa; it ran with only a mesh warning (a contact of 11 um on a 1 mm grid). Now it is
+    refused, naming the key and the unit to check; 1.2 TPa itself (diamond) runs."""
+    from asperity.cases import load_case
+
+    with pytest.raises(InputError, match=r"^body1\.youngs_modulus: expected at most 1200 GPa "
+                       r"\(diamond's.*check the unit"):
+        load_case(_ball_case({"shape": "sphere", "rx": "10 mm"}, modulus="30e6 GPa"))
+    load_case(_ball_case({"shape": "sphere", "rx": "10 mm"}, modulus="1.2 TPa"))
+
+
+def test_a_bare_modulus_that_reads_as_psi_is_warned_about():
+    """``youngs_modulus = 30e6`` (a bare TOML number: Pa) for a steel ball meant as 30e6 psi is
+    30 MPa, 6895 times softer: the run warned only of the consequences (a/R = 0.48, a rubber's
+    strains, the contact off the grid), never of the unit. Now the first line names
+    body1.youngs_modulus with both readings: 30 MPa, and 30e6 psi = 30e6 x 6894.757 Pa =
+    206.8 GPa. Written with its unit ("30e6 psi", "30 MPa"), or as a bare SI steel modulus
+    (210e9), no such line; with "30e6 psi" the contact radius is Hertz's for E = 206.8 GPa."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    sphere = {"shape": "sphere", "rx": "10 mm"}
+    out = run_case(load_case(_ball_case(sphere, modulus=30e6, load="0.001 N")))
+    (line,) = [w for w in out.warnings if w.startswith("body1.youngs_modulus")]
+    assert "bare number 3e7 is read in Pa, 30 MPa" in line
+    assert "206.8 GPa" in line and '"3e7 psi"' in line
+    for modulus in ("30e6 psi", "30 MPa", 210e9):
+        quiet = run_case(load_case(_ball_case(sphere, modulus=modulus, load="0.001 N")))
+        assert not [w for w in quiet.warnings if "youngs_modulus" in w]
+    psi = run_case(load_case(_ball_case(sphere, modulus="30e6 psi", load="50 N")))
+    e1 = 30e6 * 6894.757293168
+    e_star = 1.0 / ((1 - 0.3**2) / e1 + (1 - 0.3**2) / 210e9)
+    assert psi.summary["hertz_a_m"] == pytest.approx((3 * 50 * 0.01 / (4 * e_star)) ** (1 / 3),
+                                                     rel=1e-9)
+
+
+def test_a_bare_modulus_that_reads_as_psi_is_warned_about_in_an_ehl_run():
+    """The same line leads an EHL run's warnings (:func:`asperity.cases.bodies.body_doubts`,
+    shared by every runner): a steel ball on steel, ``body1.youngs_modulus = 30e6``, 20 N,
+    1 m/s, on a coarse mesh; with ``"30e6 psi"`` none."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    def case(modulus):
+        return {"analysis": "ehl-steady",
+                "body1": {"youngs_modulus": modulus, "poisson_ratio": 0.3},
+                "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": 0.3},
+                "contact": {"type": "point", "rx": "10 mm", "ry": "10 mm", "load": "20 N"},
+                "speeds": {"u": "1 m/s"}, "lubricant": {"eta0": "0.1 Pa s", "alpha": "20 1/GPa"},
+                "grid": {"nx": 65, "ny": 17}}
+
+    out = run_case(load_case(case(30e6)))
+    assert out.warnings[0].startswith("body1.youngs_modulus: the bare number 3e7 is read in Pa")
+    quiet = run_case(load_case(case("30e6 psi")))
+    assert not [w for w in quiet.warnings if "youngs_modulus" in w]

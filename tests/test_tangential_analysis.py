@@ -788,3 +788,32 @@ def test_a_rough_ball_under_a_force_lists_its_spots_count_not_520_rows_and_warns
     assert s["friction_capacity_n"] == pytest.approx(0.3 * 50, rel=1e-9)
     (line,) = [w for w in out.warnings if "contact spots" in w]
     assert line.startswith("mesh: half the load is carried by contact spots of 9 cells")
+
+
+def test_a_bare_modulus_that_reads_as_psi_is_warned_about_in_a_tangential_run():
+    """A user's steel ball on a steel flat with ``youngs_modulus = 30e6`` (a bare number: Pa,
+    30 MPa, meant as 30e6 psi) ran a rubber's contact (a = 2.8 mm on R = 10 mm) with warnings
+    about a/R and strains only. Now the first warning names body1.youngs_modulus, both
+    readings (30 MPa; 206.8 GPa in psi) and what to write. Written "30e6 psi", no such line,
+    and the shift at Q = 0.5 mu P is Cattaneo-Mindlin's (Johnson eq. 7.42) for
+    E = 30e6 x 6894.757 Pa: delta = 3 mu P (2 - nu) / (8 G a) [1 - (1 - Q/mu P)^(2/3)] for
+    two such bodies, a = (3 P R / (4 E*))^(1/3)."""
+    def ball(modulus):
+        return {"analysis": "tangential", "mu": 0.3,
+                "body1": {"youngs_modulus": modulus, "poisson_ratio": 0.3},
+                "body2": {"youngs_modulus": modulus, "poisson_ratio": 0.3},
+                "pressure": {"source": "hertz", "load": "100 N", "rx": "10 mm"},
+                "loading": {"force": "15 N"}, "grid": {"nx": 48, "ny": 48}}
+
+    bare = run_case(load_case(ball(30e6)))
+    lines = [w for w in bare.warnings if "youngs_modulus" in w]
+    assert [w.split(":")[0] for w in lines] == ["body1.youngs_modulus", "body2.youngs_modulus"]
+    assert bare.warnings[0] == lines[0]
+    assert "30 MPa" in lines[0] and "206.8 GPa" in lines[0] and '"3e7 psi"' in lines[0]
+    psi = run_case(load_case(ball("30e6 psi")))
+    assert not [w for w in psi.warnings if "youngs_modulus" in w]
+    e, nu = 30e6 * PSI, 0.3
+    g, e_star = e / (2 * (1 + nu)), e / (2 * (1 - nu**2))
+    a = (3 * 100.0 * 0.01 / (4 * e_star)) ** (1 / 3)
+    shift = 3 * 30.0 * (2 - nu) / (8 * g * a) * (1 - 0.5 ** (2 / 3))
+    assert psi.summary["shift_m"] == pytest.approx(shift, rel=0.01)

@@ -4,12 +4,23 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import Field, model_validator
+from pydantic import Field, PrivateAttr, field_validator, model_validator
 
+from ..formatting import format_quantity
 from ..materials import Material
+from ..units import to_si
 from .fields import CaseModel, Integer, Number, Quantity
 
-__all__ = ["MaterialSpec", "GridSpec"]
+__all__ = ["MaterialSpec", "GridSpec", "STIFFEST_SOLID", "PSI_AMBIGUOUS", "body_doubts"]
+
+#: Young's modulus of diamond, the stiffest solid (about 1.05-1.2 TPa), Pa: no body is stiffer,
+#: so a larger modulus is a unit mistake ("30e6 GPa" for "30e6 psi").
+STIFFEST_SOLID = 1.2e12
+
+#: Bare moduli (TOML numbers, read in Pa) in this range are a soft solid's in Pa (0.1-200 MPa:
+#: rubbers, soft polymers) or an engineering solid's in psi (1e5 psi a soft polymer, 1e7-3e7 psi
+#: the metals, 1.7e8 psi diamond): the number alone does not say which.
+PSI_AMBIGUOUS = (1e5, 2e8)
 
 
 class MaterialSpec(CaseModel):
@@ -30,6 +41,59 @@ class MaterialSpec(CaseModel):
     """Indentation hardness; contact pressures above it make the run warn that the elastic answer is
     not physical there, and in a dry contact a Hertz peak above 0.57 of it that the body yields
     beneath the surface (p0 = 1.6 Y with H = 2.8 Y)."""
+
+    _bare_modulus: float | None = PrivateAttr(default=None)
+
+    @field_validator("youngs_modulus")
+    @classmethod
+    def _solid(cls, value):
+        """No solid is stiffer than diamond (:data:`STIFFEST_SOLID`)."""
+        if value > STIFFEST_SOLID:
+            raise ValueError(
+                f"expected at most {format_quantity(STIFFEST_SOLID, 'Pa')} (diamond's, the "
+                f"stiffest solid; this is {format_quantity(value, 'Pa')}): check the unit "
+                '(steel is "210 GPa" or "30e6 psi")')
+        return value
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _bare(cls, data, handler):
+        """Remember a modulus written as a bare number (read in Pa) for
+        :meth:`unit_doubts`."""
+        spec = handler(data)
+        raw = data.get("youngs_modulus") if isinstance(data, dict) else None
+        if isinstance(raw, int | float) and not isinstance(raw, bool):
+            spec._bare_modulus = float(raw)
+        return spec
+
+    def unit_doubts(self, key: str) -> list[str]:
+        """A warning when the modulus was a bare number in :data:`PSI_AMBIGUOUS`.
+
+        A bare number is read in Pa, so ``youngs_modulus = 30e6`` is 30 MPa, a rubber's
+        modulus, and the steel meant as 30e6 psi (206.8 GPa) becomes 6900 times softer: the
+        contact grows and its pressure falls, each by about the cube root of that. The line
+        says both readings and what to write for each.
+
+        Parameters
+        ----------
+        key : str
+            The body's table, ``"body1"`` or ``"body2"``.
+
+        Returns
+        -------
+        list of str
+            One line, or none.
+        """
+        raw = self._bare_modulus
+        if raw is None or not PSI_AMBIGUOUS[0] <= raw <= PSI_AMBIGUOUS[1]:
+            return []
+        as_psi = to_si(f"{raw!r} psi", "pressure", "")
+        number = f"{raw:.6g}".replace("e+0", "e").replace("e+", "e")
+        return [f"{key}.youngs_modulus: the bare number {number} is read in Pa, "
+                f"{format_quantity(raw, 'Pa')} (a rubber's or a soft polymer's modulus); read "
+                f"in psi it would be {format_quantity(as_psi, 'Pa')}; write the unit: "
+                f'"{number} psi" for a metal or a ceramic given in psi, '
+                f'"{format_quantity(raw, "Pa")}" to confirm the soft body']
 
     @model_validator(mode="before")
     @classmethod
@@ -84,3 +148,11 @@ class GridSpec(CaseModel):
         x0 = -0.5 * self.x_extent if self.x_start is None else self.x_start
         y0 = -0.5 * self.y_extent if self.y_start is None else self.y_start
         return x0 + dx * (np.arange(self.nx) + 0.5), y0 + dy * (np.arange(self.ny) + 0.5)
+
+
+def body_doubts(case) -> list[str]:
+    """:meth:`MaterialSpec.unit_doubts` of a case's ``body1`` and ``body2`` (a body not given,
+    as beside an EHL case's ``reduced_modulus``, has none): the first lines of every runner's
+    warnings."""
+    return [line for key in ("body1", "body2") if getattr(case, key, None) is not None
+            for line in getattr(case, key).unit_doubts(key)]

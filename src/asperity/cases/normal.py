@@ -6,6 +6,8 @@ from typing import Literal
 
 from pydantic import model_validator
 
+from ..errors import InputError
+from ..formatting import format_quantity
 from .bodies import GridSpec, MaterialSpec
 from .fields import CaseHeader, CaseModel, Quantity
 from .roughness import RoughnessSpec
@@ -30,8 +32,23 @@ class GeometrySpec(CaseModel):
 
     @model_validator(mode="after")
     def _radii(self):
+        """Each shape takes its own radii: a flat none, a sphere ``rx`` alone (an ``ry``
+        beside it would silently make the gap an ellipsoid's, ``x^2/(2 rx) + y^2/(2 ry)``,
+        under the name of a sphere), an ellipsoid both."""
         if self.shape == "flat":
+            given = [k for k in ("rx", "ry") if getattr(self, k) is not None]
+            if given:
+                raise InputError(f"geometry.{given[0]}", "", problem=(
+                    f'expected no {" or ".join(given)} for shape = "flat" (a nominally flat '
+                    'contact has no curvature); give shape = "sphere" or "ellipsoid" for a '
+                    "curved body, or leave the radii out"))
             return self
+        if (self.shape == "sphere" and self.rx is not None and self.ry is not None
+                and abs(self.ry - self.rx) > 1e-12 * self.rx):
+            raise InputError("geometry.ry", "", problem=(
+                f"expected no ry for a sphere (one radius, rx = {format_quantity(self.rx, 'm')})"
+                f", got ry = {format_quantity(self.ry, 'm')}; for two radii give shape = "
+                '"ellipsoid"'))
         if self.rx is None:
             raise ValueError("expected rx (radius of curvature along x) for a "
                              f"{self.shape}")

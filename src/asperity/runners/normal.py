@@ -8,6 +8,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
+from ..cases.bodies import body_doubts
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..contact.greenwood_tripp import greenwood_tripp_sphere, summit_parameters
@@ -202,15 +203,17 @@ def _punch_note(case, res, x, y) -> list[str]:
 
 
 def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
-    """Trust checks (:mod:`asperity.diagnostics`): a measured file's doubts first (the
-    reader's and its units', its sampling against the grid's), a surface that is not periodic
-    on a periodic grid, then domain (a curved body's contact against the period; a nominally
-    flat patch is a periodic representative surface, whose contact may span the period near
-    full contact), mesh (the apparent contact, then a rough contact's spots), roughness on the
-    mesh and hardness."""
+    """Trust checks (:mod:`asperity.diagnostics`): a modulus given as a bare number that may
+    have been meant in psi (:meth:`MaterialSpec.unit_doubts`) first, then a measured file's
+    doubts (the reader's and its units', its sampling against the grid's), a surface that is
+    not periodic on a periodic grid, then domain (a curved body's contact against the period;
+    a nominally flat patch is a periodic representative surface, whose contact may span the
+    period near full contact), mesh (the apparent contact, then a rough contact's spots),
+    roughness on the mesh and hardness."""
     size = None
-    lines = [] if on_grid is None else diagnostics.measured_file_on_grid("roughness", on_grid,
-                                                                         x, y)
+    lines = body_doubts(case)
+    if on_grid is not None:
+        lines += diagnostics.measured_file_on_grid("roughness", on_grid, x, y)
     if on_grid is not None and case.grid.periodic:
         lines += diagnostics.periodic_seam("roughness", on_grid.heights,
                                            on_grid.sampling_cells(x, y))

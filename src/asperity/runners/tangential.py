@@ -17,6 +17,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
+from ..cases.bodies import body_doubts
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact.load_path import proportional_path, tangential_load_path
@@ -562,8 +563,9 @@ def _gross_slip_warning(case, fld, res, applied) -> list[str]:
     if ratio <= 3.0:
         hint = (f"for partial slip lower {' and '.join(keys)} below the gross-slip load, or "
                 "raise mu or the normal load")
-    return [f"{', '.join(keys)}: {what} (limit: at most 1 time it): friction cannot carry the "
-            "load, the contact slides as a whole (gross slip): there is no shift, twist or "
+    return [f"{', '.join(keys)}: {what} (limit: at most the gross-slip load): friction "
+            "cannot carry the load, the contact slides as a whole (gross slip): there is no "
+            "shift, twist or "
             f"stick zone, only the full-slip traction; {hint}"]
 
 
@@ -737,7 +739,8 @@ def run(case, progress=None) -> Outcome:
         notes.append("A step of the load path did not converge; the path is not trustworthy.")
     # prescribed pressures (Hertz, uniform regions) lie inside the grid by construction; a
     # normal solve's contact can be cut off by it
-    trust = _gross_slip_warning(case, fld, res, applied)
+    trust = body_doubts(case)
+    trust += _gross_slip_warning(case, fld, res, applied)
     trust += (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
               if case.pressure.source == "normal" else [])
     trust += diagnostics.contact_resolution(fld.pressure > 0, fld.x, fld.y)
