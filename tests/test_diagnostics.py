@@ -116,6 +116,8 @@ def test_contact_resolved_by_too_few_cells():
     _every_line_names_a_limit(lines)
     assert len(lines) == 1 and lines[0].startswith("mesh:")
     assert "4 cells per semi-axis along x" in lines[0] and "nx >= 160" in lines[0]
+    # the size given is the semi-axis those cells make (4 cells of 1 m), not a cell's
+    assert "(a semi-axis of about 4 m;" in lines[0]
 
 
 def test_contact_resolved_by_enough_cells_is_silent():

@@ -440,7 +440,8 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
                           "file; measure finer, or read them as the file's resolution allows")
             else:
                 advice = f"use n{name} >= {need} on the same extent, or a smaller {name}_extent"
-            lines.append(f"{cells:g} cells per semi-axis along {name} (about "
+            lines.append(f"{cells:g} cell{'' if cells == 1 else 's'} per semi-axis along "
+                         f"{name} (a semi-axis of about "
                          f"{format_quantity(cells * _spacing(coord), 'm', digits=3)}; "
                          f"n{name} = {n}; {advice})")
     if not lines:
