@@ -293,3 +293,18 @@ def test_an_unknown_key_names_the_key_of_its_table_it_reads_like(example, old, n
 def test_an_unknown_key_with_no_unwritten_key_like_it_says_check_the_spelling(old, new):
     with pytest.raises(InputError, match=r"unknown key \(check the spelling\)$"):
         load_case(example_text("rough-sphere-normal").replace(old, new, 1))
+
+
+@pytest.mark.parametrize("rms, message", [
+    (0.1, "roughness.rms: expected at most 10 mm, got 0.1 (a bare number is in m: 100 mm)"),
+    ('"100 mm"', "roughness.rms: expected at most 10 mm, got '100 mm'"),
+    (0, "roughness.rms: expected at least 0.001 nm, got 0"),
+])
+def test_a_quantity_out_of_its_bounds_is_told_the_bound_in_a_unit(rms, message):
+    """``roughness.rms = 0.1`` (meant in um, a bare number in m) was told "expected a value
+    less than or equal to 0.01, got 0.1": the bound of the SI value, without a unit. The
+    bounds of ``rms`` are 1e-12 m and 1e-2 m (the model's)."""
+    text = example_text("rough-flat-normal").replace('rms = "0.5 um"', f"rms = {rms}")
+    with pytest.raises(InputError) as info:
+        load_case(text)
+    assert str(info.value) == message

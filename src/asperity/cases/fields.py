@@ -25,7 +25,9 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from ..errors import InputError
+from ..formatting import format_quantity
 from ..units import DIMENSIONS, to_si
+from .keys import case_keys
 
 __all__ = [
     "CaseHeader",
@@ -187,6 +189,46 @@ _PROBLEMS = {
 _LENGTHS = {"too_short": ("at least", "min_length"), "too_long": ("at most", "max_length")}
 
 
+#: pydantic's bound errors, in words
+_BOUNDS = {"greater_than": "more than", "greater_than_equal": "at least",
+           "less_than": "less than", "less_than_equal": "at most"}
+
+
+def _bound_with_unit(err: dict, field: str, model: type[BaseModel] | None,
+                     data) -> InputError | None:
+    """A quantity's bound in a readable unit, and a bare number's reading in SI.
+
+    pydantic states the bound of the SI value as a bare number: ``roughness.rms = 0.1``
+    (meant in um, read in m) was told "expected a value less than or equal to 0.01, got 0.1",
+    naming neither unit. Now: "expected at most 10 mm, got 0.1 (a bare number is in m:
+    100 mm)". None where the error is no bound of a quantity whose key :func:`case_keys`
+    lists (the caller's message stands).
+    """
+    words = _BOUNDS.get(err["type"])
+    if words is None or model is None:
+        return None
+    key = ".".join(str(p) for p in err["loc"]
+                   if isinstance(p, str) and not p.startswith("function-"))
+    unit = next((k.unit for k in case_keys(model) if k.key == key and k.type == "quantity"),
+                "")
+    bound = next(iter(err.get("ctx", {}).values()), None)
+    if not unit or not isinstance(bound, int | float):
+        return None
+    raw = data
+    for part in err["loc"]:
+        try:
+            raw = raw[part]
+        except (KeyError, IndexError, TypeError):
+            raw = None
+            break
+    value = err.get("input")
+    got = f"{raw!r}" if isinstance(raw, str) else f"{value:g}"
+    if isinstance(raw, int | float) and not isinstance(raw, bool) and raw != 0:
+        got += f" (a bare number is in {unit}: {format_quantity(float(raw), unit)})"
+    return InputError(field, "", problem=f"expected {words} {format_quantity(bound, unit)}, "
+                      f"got {got}")
+
+
 def _key(part) -> str:
     """A key as written in a case file; odd keys (spaces, control characters) quoted."""
     text = str(part)
@@ -302,6 +344,9 @@ def first_error(exc: ValidationError, prefix: str = "", model: type[BaseModel] |
         expected = f"a list of {bound} {ctx[key]} item{'s' * (ctx[key] != 1)}"
         return InputError(field, expected, problem=f"expected {expected}, got "
                           f"{ctx['actual_length']}")
+    bounded = _bound_with_unit(err, field, model, data)
+    if bounded is not None:
+        return bounded
     msg = err["msg"]
     for lead in ("Value error, ", "Assertion failed, "):
         msg = msg.removeprefix(lead)
