@@ -3,6 +3,7 @@
 import itertools
 import json
 import math
+import re
 import subprocess
 import sys
 import time
@@ -95,12 +96,14 @@ def test_study_report_plots_results_against_the_axes_and_lists_cases(cross_study
     assert (out / "study.png").stat().st_size > 10_000
     assert html.count("data:image/png;base64,") == 1
     assert html.count("<tr><td>00") == 6                  # one row per case
-    assert "<td>10 mm</td>" in html and "<td>5 N</td>" in html   # axis values in units
+    # axis values in one unit per column, named in the heading
+    assert "<th>geometry.<wbr>rx (mm)</th>" in html and "<th>loading.<wbr>load (N)</th>" in html
+    assert "<td>10</td>" in html and "<td>5</td>" in html
     assert "maximum pressure" in html and "max_pressure_pa" not in html
     assert "6 of 6 cases done" in html
     # a long key may wrap after its dots and the table scrolls on its own: at 1200 px a study of
     # loading.load x body2.youngs_modulus had pushed its last column off the page
-    assert "<th>geometry.<wbr>rx</th>" in html and "<div class=scroll><table>" in html
+    assert "<th>geometry.<wbr>rx (mm)</th>" in html and "<div class=scroll><table>" in html
 
 
 def test_dask_two_workers_match_serial_and_share_the_cores(tmp_path):
@@ -234,7 +237,8 @@ def test_study_table_shows_flags_and_round_off_as_people_read_them(tmp_path):
     assert ds["gross_slip"].attrs["flag_meanings"] == "no yes"   # CF flags for a yes/no
     html = render_study_report(ds)
     assert "<td>no</td>" in html and "<td>yes</td>" in html
-    assert "<td>2.669 kN</td>" in html and "<td>0 N</td>" in html
+    assert "<th>force x (kN)</th>" in html
+    assert "<td>2.669</td>" in html and "<td>0</td>" in html
 
 
 def test_study_table_shows_fractions_in_percent_as_a_run_report_does(tmp_path):
@@ -251,7 +255,8 @@ def test_study_table_shows_fractions_in_percent_as_a_run_report_does(tmp_path):
     ds = combine(study, out)
     assert ds["contact_area_fraction"].attrs["units"] == "1"    # stored as a fraction
     html = render_study_report(ds)
-    assert "<td>38.5 %</td>" in html and "<td>50 %</td>" in html
+    assert "<th>contact area fraction (%)</th>" in html
+    assert "<td>38.5</td>" in html and "<td>50</td>" in html
 
 
 @pytest.mark.parametrize(("values", "expected", "units"), [
@@ -356,7 +361,8 @@ def test_study_shows_a_quantity_stored_as_fraction_and_percent_once(tmp_path):
     from asperity.report import render_study_report
 
     html = render_study_report(ds)
-    assert "35.1 ± 4.2 %" in html and "98.8 ± 5.2 %" in html
+    assert "<th>contact time (%)</th>" in html
+    assert "<td>35.1 ± 4.2</td>" in html and "<td>98.8 ± 5.2</td>" in html
 
 
 def test_each_case_is_titled_by_its_own_axis_values(tmp_path):
@@ -806,10 +812,131 @@ def test_figure_joins_the_points_in_the_order_of_the_axis(tmp_path, monkeypatch)
     _done_cases(out, [{"max_pressure_pa": 1e8 * load ** (1 / 3)} for load in loads])
     figures = []
     real = study_plot.plot_study
-    monkeypatch.setattr(study_plot, "plot_study", lambda ds, v: figures.append(real(ds, v))
-                        or figures[-1])
+    monkeypatch.setattr(study_plot, "plot_study", lambda ds, v, **kw: figures.append(
+        real(ds, v, **kw)) or figures[-1])
     write_study_report(combine(study, out), out)
     x = figures[0].axes[0].lines[0].get_xdata()
     np.testing.assert_allclose(x, sorted(loads))
     html = (out / "report.html").read_text()
-    assert html.index("<td>0003</td><td>22.24 N</td>") > html.index("<td>0002</td><td>30 N</td>")
+    assert html.index("<td>0003</td><td>22.24</td>") > html.index("<td>0002</td><td>30</td>")
+
+
+def _table_columns(html):
+    """The headings and the columns of cells (case id first) of a study report's table."""
+    table = html[html.index("<h2>Cases</h2>"):]
+    table = table[:table.index("</table>")]
+    heads = re.findall(r"<th(?: class=l)?>(.*?)</th>", table)
+    rows = [re.findall(r"<td(?: class=l)?>(.*?)</td>", row)
+            for row in re.findall(r"<tr><td>\d{4}</td>.*?</tr>", table)]
+    return heads, [list(column) for column in zip(*rows, strict=True)]
+
+
+def test_a_column_of_the_table_of_cases_is_in_one_unit(tmp_path):
+    """Each cell was formatted on its own, so one column switched units between rows (a
+    contact area read "4608 µm²" in one row and "0.01053 mm²" in the next, a load "500 mN"
+    then "20 N"); each quantity column now has one unit, chosen from its largest magnitude and
+    named once in its heading, and its cells are plain numbers. Flags and text stay text."""
+    from asperity.report import render_study_report
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["500 mN", "20 N"]\n')
+    out = tmp_path / "out"
+    _done_cases(out, [
+        {"max_pressure_pa": 358.8e6, "contact_area_m2": 4608e-12, "approach_m": 254.9e-9,
+         "gross_slip": False, "contact_area_fraction": 0.006944},
+        {"max_pressure_pa": 1.724e9, "contact_area_m2": 0.01053e-6, "approach_m": 5.528e-6,
+         "gross_slip": True, "contact_area_fraction": 0.1233}])
+    heads, columns = _table_columns(render_study_report(combine(study, out)))
+    by_head = dict(zip(heads, columns, strict=True))
+    assert by_head["loading.<wbr>load (N)"] == ["0.5", "20"]
+    assert by_head["maximum pressure (GPa)"] == ["0.3588", "1.724"]
+    assert by_head["contact area (mm²)"] == ["0.004608", "0.01053"]
+    assert by_head["approach (µm)"] == ["0.2549", "5.528"]
+    assert by_head["contact area fraction (%)"] == ["0.6944", "12.33"]
+    assert by_head["gross slip at the applied load"] == ["no", "yes"]
+    assert by_head["state"] == ["<span class=pass>done</span>"] * 2
+    for column in columns[1:-2]:  # no cell of a quantity names a unit: the heading does
+        assert not any(re.search(r"[a-zA-Zµ%²]", cell) for cell in column
+                       if cell not in ("yes", "no")), column
+
+
+def test_the_figure_draws_the_formulas_beside_the_solver(tmp_path):
+    """study.nc carries the closed-form references of the runners' summaries (the EHL film
+    formulas, Hertz), but the figure drew the solver alone (and a formula, where it fitted in
+    the nine panels, in a panel of its own). Each result's panel now has the formulas of the
+    same quantity beside it, dashed, in the result's unit and named in the legend: the
+    central film beside the central-film formulas, the minimum film beside the minimum-film
+    one, the maximum pressure beside Hertz's (constant over a speed sweep); a formula of
+    another quantity is not drawn there, and a formula drawn beside its result has no panel."""
+    from asperity.plotting.study import plot_study
+    from asperity.report import study_references, study_variables
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\n'
+                             'range = {start = 1, stop = 8, num = 4, scale = "log", unit = "N"}\n')
+    out = tmp_path / "out"
+    speeds = np.geomspace(1, 8, 4)
+    _done_cases(out, [{"central_film_thickness_m": 120e-9 * u**0.67,
+                       "minimum_film_thickness_m": 60e-9 * u**0.68,
+                       "max_pressure_pa": 640e6 + 5e6 * u, "hertz_max_pressure_pa": 628e6,
+                       "friction_coefficient": 0.026 + 0.001 * u,
+                       "nijenbanning_central_film_m": 135e-9 * u**0.67,
+                       "hamrock_dowson_central_film_m": 128e-9 * u**0.67,
+                       "hamrock_dowson_minimum_film_m": 75e-9 * u**0.68} for u in speeds])
+    ds = combine(study, out)
+    variables = study_variables(ds)
+    assert variables == ["central_film_thickness_m", "minimum_film_thickness_m",
+                         "max_pressure_pa", "friction_coefficient"]   # no panel of a formula
+    assert study_references(ds, variables) == {
+        "central_film_thickness_m": [("hamrock_dowson_central_film_m", "Hamrock-Dowson (1977)"),
+                                     ("nijenbanning_central_film_m",
+                                      "Nijenbanning et al. (1994)")],
+        "minimum_film_thickness_m": [("hamrock_dowson_minimum_film_m",
+                                      "Hamrock-Dowson (1977)")],
+        "max_pressure_pa": [("hertz_max_pressure_pa", "Hertz")]}
+    central, minimum, pressure, friction = plot_study(
+        ds, variables, references=study_references(ds, variables)).axes[:4]
+
+    def drawn(ax):
+        return {line.get_label(): line for line in ax.get_lines()}
+
+    def legend(ax):
+        return [t.get_text() for t in ax.get_legend().get_texts()]
+
+    assert legend(central) == ["solver", "Hamrock-Dowson (1977)", "Nijenbanning et al. (1994)"]
+    assert legend(minimum) == ["solver", "Hamrock-Dowson (1977)"]
+    assert legend(pressure) == ["solver", "Hertz"]
+    assert friction.get_legend() is None and len(friction.get_lines()) == 1
+    lines = drawn(central)
+    assert lines["solver"].get_linestyle() == "-"
+    assert lines["Hamrock-Dowson (1977)"].get_linestyle() == "--"
+    assert central.get_ylabel() == "central film thickness (nm)"   # the formula in nm too
+    np.testing.assert_allclose(lines["Hamrock-Dowson (1977)"].get_ydata(), 128 * speeds**0.67)
+    np.testing.assert_allclose(drawn(minimum)["Hamrock-Dowson (1977)"].get_ydata(),
+                               75 * speeds**0.68)
+    np.testing.assert_allclose(drawn(pressure)["Hertz"].get_ydata(), [628] * 4)  # MPa
+    assert central.get_yscale() == "log"
+    assert plot_study(ds, variables, references={}).axes[0].get_legend() is None
+
+
+def test_formulas_of_a_cross_study_follow_each_line_and_are_named_once(tmp_path):
+    """With a line per value of the other axes, each line's formula is dashed in that line's
+    colour, and the legend names each formula once (in grey) after the lines."""
+    from asperity.plotting.study import plot_study
+    from asperity.report import study_references
+    from asperity.sweep import combine
+
+    study = _study(tmp_path, '[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "10 N"]\n'
+                             '[[axis]]\nkey = "geometry.rx"\nvalues = ["5 mm", "10 mm"]\n')
+    out = tmp_path / "out"
+    _done_cases(out, [{"max_pressure_pa": 1e9 * load / rx, "hertz_max_pressure_pa":
+                       1.01e9 * load / rx} for load in (5, 10) for rx in (5, 10)])
+    ds = combine(study, out)
+    ax = plot_study(ds, ["max_pressure_pa"],
+                    references=study_references(ds, ["max_pressure_pa"])).axes[0]
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "geometry.rx = 5 mm", "geometry.rx = 10 mm", "Hertz"]
+    solid = [line for line in ax.get_lines() if line.get_linestyle() == "-"]
+    dashed = [line for line in ax.get_lines() if line.get_linestyle() == "--"]
+    assert len(solid) == len(dashed) == 2
+    assert [d.get_color() for d in dashed] == [s.get_color() for s in solid]

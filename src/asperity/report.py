@@ -17,20 +17,20 @@ import re
 from pathlib import Path
 
 from .formatting import (
+    NOISE,
     STANDARD_ERROR,
     SummaryRow,
     describe_key,
-    format_axis_value,
+    display_unit,
     format_number,
     format_quantity,
-    format_summary_value,
     summary_rows,
-    with_standard_error,
+    units_from_cf,
 )
 from .results import Outcome, atomic_path
 
-__all__ = ["render_report", "render_study_report", "study_status", "study_variables",
-           "write_report", "write_study_report"]
+__all__ = ["REFERENCES", "render_report", "render_study_report", "study_references",
+           "study_status", "study_variables", "write_report", "write_study_report"]
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:2rem auto;
@@ -77,6 +77,34 @@ _SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps",
                 "path_iterations", "path_converged", "points",
                 "fixed_point_distance_pressure_fraction", "fixed_point_distance_film_fraction",
                 "ehl_solves_converged", "ehl_wall_time_s", "status")
+
+
+#: The closed-form references of a result (summary keys, as the runners write them): drawn
+#: beside it, dashed, in its panel of a study's figure (:func:`study_references`), each with
+#: the name of its formula in the legend. Only the same quantity: a central film beside the
+#: central-film formulas (:func:`asperity.references.film_formulas`), a minimum film beside
+#: the minimum-film ones, a dry contact's maximum pressure and approach beside Hertz's (an EHL
+#: contact's maximum pressure beside its Hertz pressure), a rough sphere's real area and load
+#: radius beside Greenwood & Tripp's.
+REFERENCES = {
+    "central_film_thickness_m": (
+        ("hamrock_dowson_central_film_m", "Hamrock-Dowson (1977)"),
+        ("hamrock_dowson_soft_central_film_m", "Hamrock-Dowson, soft EHL (1978)"),
+        ("nijenbanning_central_film_m", "Nijenbanning et al. (1994)"),
+        ("chittenden_central_film_m", "Chittenden et al. (1985)"),
+        ("moes_central_film_m", "Moes (1992)")),
+    "minimum_film_thickness_m": (
+        ("hamrock_dowson_minimum_film_m", "Hamrock-Dowson (1977)"),
+        ("hamrock_dowson_soft_minimum_film_m", "Hamrock-Dowson, soft EHL (1978)"),
+        ("chittenden_minimum_film_m", "Chittenden et al. (1985)"),
+        ("dowson_higginson_minimum_film_m", "Dowson-Higginson (1977)"),
+        ("martin_minimum_film_m", "Martin (1916)"),
+        ("brewe_hamrock_taylor_minimum_film_m", "Brewe-Hamrock-Taylor (1979)")),
+    "max_pressure_pa": (("hertz_max_pressure_pa", "Hertz"),),
+    "approach_m": (("hertz_approach_m", "Hertz"),),
+    "contact_area_m2": (("greenwood_tripp_real_area_m2", "Greenwood-Tripp (1967)"),),
+    "load_rms_radius_m": (("greenwood_tripp_rms_radius_m", "Greenwood-Tripp (1967)"),),
+}
 
 
 def _unique(rows: list[SummaryRow]) -> list[SummaryRow]:
@@ -311,7 +339,9 @@ def write_report(title: str, case: dict, outcome: Outcome, files: dict, path, *,
 def study_variables(ds, limit: int = 9) -> list[str]:
     """The numeric results of a study that vary from case to case: headline quantities first,
     solver bookkeeping, repeats of a swept value and second copies of a quantity (the same
-    long name: a fraction and its percent) left out.
+    long name: a fraction and its percent) left out, and so are the closed-form references
+    drawn beside a result in its panel (:func:`study_references`: Hertz's maximum pressure
+    beside the maximum pressure, not a panel of its own).
 
     Parameters
     ----------
@@ -347,7 +377,42 @@ def study_variables(ds, limit: int = 9) -> list[str]:
         if label not in seen:
             seen.add(label)
             kept.append(k)
-    return kept[:limit]
+    # a reference drawn in its result's panel (study_references) has no panel of its own
+    drawn = {ref for refs in study_references(ds, kept).values() for ref, _ in refs}
+    return [k for k in kept if k not in drawn][:limit]
+
+
+def study_references(ds, variables) -> dict[str, list[tuple[str, str]]]:
+    """The closed-form references that ``study.nc`` carries for each of ``variables``
+    (:data:`REFERENCES`): those in the dataset, numeric, in the result's unit and with a
+    value somewhere, whether or not they vary over the study (Hertz's pressure beside the
+    maximum pressure of an EHL speed sweep).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` (:func:`asperity.sweep.combine`).
+    variables : list of str
+        The results plotted (:func:`study_variables`).
+
+    Returns
+    -------
+    dict
+        Result key -> list of (reference key, formula's name), for the results that have any.
+    """
+    import numpy as np
+
+    found = {}
+    for key in variables:
+        if key not in ds:
+            continue
+        refs = [(ref, name) for ref, name in REFERENCES.get(key, ())
+                if ref in ds and np.issubdtype(ds[ref].dtype, np.number)
+                and ds[ref].attrs.get("units") == ds[key].attrs.get("units")
+                and np.isfinite(ds[ref].values.astype(float)).any()]
+        if refs:
+            found[key] = refs
+    return found
 
 
 def _repeats_axis(var, coord) -> bool:
@@ -363,30 +428,80 @@ def _repeats_axis(var, coord) -> bool:
     return bool(np.allclose(values.values, axis.values, rtol=1e-9, equal_nan=True))
 
 
+def _column_unit(key: str, magnitude: float) -> tuple[float, str]:
+    """The one unit of a study table's column of summary key ``key`` whose values reach
+    ``magnitude`` (SI): the factor from SI and its label, ``(1e6, "mm²")`` for areas up to
+    1.053e-8 m²; a fraction in percent (``(100.0, "%")``); ``(1.0, "")`` when dimensionless."""
+    unit = describe_key(key)[1]
+    factor = 100.0 if unit == "%" and key.removesuffix(STANDARD_ERROR).endswith(
+        "fraction") else 1.0
+    scale, label = display_unit(magnitude * factor, unit)
+    return factor * scale, label
+
+
+def _axis_unit(coord) -> tuple[float, str] | None:
+    """The one unit of a study table's axis column (angles in degrees, as they are written),
+    or None for labels."""
+    import numpy as np
+
+    if not np.issubdtype(coord.dtype, np.number):
+        return None
+    unit = coord.attrs.get("units", "1")
+    if unit == "rad":
+        return math.degrees(1.0), "deg"
+    values = np.abs(coord.values.astype(float))
+    finite = values[np.isfinite(values)]
+    return display_unit(float(finite.max()) if finite.size else 0.0, units_from_cf(unit))
+
+
+def _header(text: str, unit: str) -> str:
+    """A column heading (HTML already escaped) with its unit, if any, once: ``contact area
+    (mm²)``."""
+    return f"<th>{text} ({html.escape(unit)})</th>" if unit else f"<th>{text}</th>"
+
+
 def _cases_table(ds, variables) -> str:
+    """The table of cases: the axis values, the results ``variables``, state and errors.
+
+    Each quantity column is in one unit, chosen from its largest magnitude
+    (:func:`asperity.formatting.display_unit`, as the figure's axes) and named once in its
+    heading; the cells are numbers with 4 significant digits (a standard error with 2).
+    Formatted cell by cell, a column of contact areas read "4608 µm²" in one row and
+    "0.01053 mm²" in the next. Labels, yes/no flags, states and errors stay text.
+    """
     import numpy as np
 
     axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
     dims = list(ds["state"].dims)
     scale = {v: float(np.nanmax(np.abs(ds[v].values))) for v in variables}
-    head = "".join(f"<th>{_breakable(ds[a].attrs.get('long_name', a))}</th>" for a in axes)
-    head += "".join(f"<th>{html.escape(describe_key(v)[0])}</th>" for v in variables)
+    axis_units = {a: _axis_unit(ds[a]) for a in axes}
+    flags = {v for v in variables if ds[v].attrs.get("flag_meanings") == "no yes"
+             and np.all(np.isin(ds[v].values[np.isfinite(ds[v].values)], (0.0, 1.0)))}
+    units = {v: (1.0, "") if v in flags else _column_unit(v, scale[v]) for v in variables}
+    head = "".join(_header(_breakable(ds[a].attrs.get("long_name", a)),
+                           axis_units[a][1] if axis_units[a] else "") for a in axes)
+    head += "".join(_header(html.escape(describe_key(v)[0]), units[v][1]) for v in variables)
     rows = []
     for n, index in enumerate(np.ndindex(*ds["state"].shape)):
         sel = dict(zip(dims, index, strict=True))
         cells = []
         for a in axes:
             coord = ds[a].isel({d: i for d, i in sel.items() if d in ds[a].dims})
-            cells.append(format_axis_value(coord.values.item(), ds[a].attrs.get("units", "1")))
+            value = coord.values.item()
+            cells.append(str(value) if axis_units[a] is None
+                         else format_number(float(value) * axis_units[a][0]))
         for v in variables:
             value = float(ds[v].isel(sel).values)
-            if ds[v].attrs.get("flag_meanings") == "no yes" and value in (0.0, 1.0):
-                cells.append("yes" if value else "no")
+            if v in flags:
+                cells.append("n/a" if math.isnan(value) else "yes" if value else "no")
                 continue
-            text = format_summary_value(v, value, scale=scale[v])  # as in a run's report
-            if v + STANDARD_ERROR in ds:
-                text = with_standard_error(
-                    v, text, float(ds[v + STANDARD_ERROR].isel(sel).values))
+            if describe_key(v)[1] and math.isfinite(value) and abs(value) <= NOISE * scale[v]:
+                value = 0.0  # round-off of a quantity that is zero (as in a run's report)
+            text = format_number(value * units[v][0])
+            spread = (float(ds[v + STANDARD_ERROR].isel(sel).values)
+                      if v + STANDARD_ERROR in ds else math.nan)
+            if math.isfinite(spread):  # its standard error, in the column's unit
+                text += f" ± {format_number(spread * units[v][0], 2)}"
             cells.append(text)
         state = str(ds["state"].isel(sel).values)
         error = str(ds["error"].isel(sel).values)
@@ -564,7 +679,8 @@ def write_study_report(ds, out_dir) -> Path:
     variables = study_variables(ds)
     png = None
     if variables:
-        fig = plot_study(_in_axis_order(ds), variables)
+        ordered = _in_axis_order(ds)
+        fig = plot_study(ordered, variables, references=study_references(ordered, variables))
         with atomic_path(out / "study.png") as tmp:
             fig.savefig(tmp, format="png", dpi=110, bbox_inches="tight")
         plt.close(fig)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
+from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullFormatter
 
 from ..formatting import (
@@ -26,7 +27,8 @@ from ..formatting import (
 )
 from .style import plt
 
-__all__ = ["FLAT_RANGE", "FLAT_SPAN", "LOG_TICKS", "LOG_Y_SPAN", "plot_study"]
+__all__ = ["FLAT_RANGE", "FLAT_SPAN", "LOG_TICKS", "LOG_Y_SPAN", "REFERENCE_STYLES",
+           "plot_study"]
 
 #: A log x axis with at most this many swept values has a tick at each of them.
 LOG_TICKS = 8
@@ -39,6 +41,9 @@ LOG_Y_SPAN = 3.0
 FLAT_SPAN = 1e-3
 #: A flat panel's y range: its mean plus and minus this fraction of the mean's magnitude.
 FLAT_RANGE = 0.02
+
+#: Line styles of the closed-form references drawn beside a result, in turn.
+REFERENCE_STYLES = ("--", "-.", ":")
 
 
 def _flat_limits(values: np.ndarray) -> tuple[float, float] | None:
@@ -91,10 +96,12 @@ def _axis_values(ds, name):
     return None, [str(v) for v in values]
 
 
-def plot_study(ds, variables, columns: int = 3):
+def plot_study(ds, variables, columns: int = 3, references=None):
     """One panel per variable against the study's first axis: one line per combination of
     the other axes (``mode = "cross"``, at most 10), or one line with each point labelled with
-    the other axes' values (``mode = "zip"``).
+    the other axes' values (``mode = "zip"``); the closed-form references of a variable
+    beside it, dashed, in its colour and unit, named in the legend (``Hamrock-Dowson
+    (1977)`` beside the central film, the solver's line labelled ``solver``).
 
     Parameters
     ----------
@@ -104,11 +111,15 @@ def plot_study(ds, variables, columns: int = 3):
         Summary keys to plot (numeric variables of ``ds``).
     columns : int
         Panels per row.
+    references : dict, optional
+        Variable -> list of (reference key, name in the legend) drawn beside it (the study
+        report passes :func:`asperity.report.study_references`); none by default.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
+    references = references or {}
     mode = ds.attrs.get("mode", "cross")
     axes_names = [str(n) for n in ds.attrs.get("axes", "").split(",") if n] or [
         d for d in ds.dims]
@@ -135,15 +146,31 @@ def plot_study(ds, variables, columns: int = 3):
             scale, shown = 100.0, "%"
         else:
             scale, shown = display_unit(float(np.nanmax(np.abs(ds[key].values))), unit)
-        drawn = []
+        drawn, refs = [], references.get(key, [])
+        styles = dict(zip((r for r, _ in refs), itertools.cycle(REFERENCE_STYLES)))
+        handles = []
         for combo in combos:
             sel = dict(zip(others, combo, strict=True))
             y = ds[key].isel(sel).values.astype(float) * scale
             text = ", ".join(f"{ds[o].attrs.get('long_name', o)} = "
                              f"{_axis_values(ds, o)[1][i]}" for o, i in sel.items())
             xs = x if x is not None else np.arange(len(labels))
-            ax.plot(xs, y, "o-", ms=4, lw=1.2, label=text or None)
+            (line,) = ax.plot(xs, y, "o-", ms=4, lw=1.2,
+                              label=text or ("solver" if refs else None))
+            handles.append(line)
             drawn.append(y)
+            for n, (ref, name) in enumerate(refs):  # each formula beside the solver: in a
+                # colour of its own on a single line, else in that line's colour
+                y_ref = ds[ref].isel(sel).values.astype(float) * scale
+                colour = f"C{n + 1}" if len(combos) == 1 else line.get_color()
+                (ref_line,) = ax.plot(xs, y_ref, styles[ref], lw=1.4, color=colour,
+                                      label=name)
+                if len(combos) == 1:
+                    handles.append(ref_line)
+                drawn.append(y_ref)
+        if refs and len(combos) > 1:  # one legend entry per formula, in grey
+            handles += [Line2D([], [], ls=styles[ref], lw=1.4, color="0.4", label=name)
+                        for ref, name in refs]
         flat = _flat_limits(np.concatenate(drawn)) if drawn else None
         if flat is not None:
             ax.set_ylim(*flat)
@@ -166,8 +193,8 @@ def plot_study(ds, variables, columns: int = 3):
         ax.set_xlabel(f"{xlabel} ({x_shown})" if x is not None and x_shown else xlabel)
         ax.set_ylabel(f"{label} ({shown})" if shown else label)
         ax.grid(True, lw=0.3, alpha=0.6)
-        if others:
-            ax.legend(fontsize=7)
+        if others or refs:
+            ax.legend(handles=handles, fontsize=7)
     for ax in list(axes.flat)[len(variables):]:
         ax.set_visible(False)
     fig.suptitle(ds.attrs.get("title", "Parameter study"), fontsize=11)
