@@ -817,3 +817,43 @@ def test_a_bare_modulus_that_reads_as_psi_is_warned_about_in_a_tangential_run():
     a = (3 * 100.0 * 0.01 / (4 * e_star)) ** (1 / 3)
     shift = 3 * 30.0 * (2 - nu) / (8 * g * a) * (1 - 0.5 ** (2 / 3))
     assert psi.summary["shift_m"] == pytest.approx(shift, rel=0.01)
+
+
+
+def test_the_summary_carries_the_closed_forms_a_study_draws_beside_the_solver():
+    """A circular Hertz contact's summary holds Cattaneo-Mindlin's shift and stick radius
+    under a force alone and Lubkin's twist and stick radius under a moment alone, so that a
+    study draws them beside the solver's (:data:`asperity.report.REFERENCES`). By hand, two
+    steel bodies (E = 210 GPa, nu = 0.3), P = 100 N on R = 10 mm, mu = 0.3:
+    a = (3 P R / (4 E*))^(1/3); at Q = 15 N, c = a (1 - Q/(mu P))^(1/3) and the relative shift
+    3 mu P (2 - nu) / (8 G a) [1 - (1 - Q/(mu P))^(2/3)], twice one body's (Johnson eq. 7.42).
+    Lubkin's values under half the gross-slip moment 3 pi mu P a / 16 are set beside the
+    solver's twist and stick radius (the solver's own Lubkin check is in test_tangential.py),
+    with the sign of the moment. A force with a moment has neither closed form."""
+    e, nu, load, mu = 210e9, 0.3, 100.0, 0.3
+    g, e_star = e / (2 * (1 + nu)), e / (2 * (1 - nu**2))
+    a = (3 * load * 0.01 / (4 * e_star)) ** (1 / 3)
+
+    def case(**loading):
+        return {"analysis": "tangential", "mu": mu,
+                "body1": {"youngs_modulus": "210 GPa", "poisson_ratio": nu},
+                "body2": {"youngs_modulus": "210 GPa", "poisson_ratio": nu},
+                "pressure": {"source": "hertz", "load": "100 N", "rx": "10 mm"},
+                "loading": loading, "grid": {"nx": 48, "ny": 48}}
+
+    force = run_case(load_case(case(force="15 N"))).summary
+    assert force["cattaneo_mindlin_stick_radius_m"] == pytest.approx(a * 0.5 ** (1 / 3),
+                                                                     rel=1e-9)
+    shift = 3 * mu * load * (2 - nu) / (8 * g * a) * (1 - 0.5 ** (2 / 3))
+    assert force["cattaneo_mindlin_shift_m"] == pytest.approx(shift, rel=1e-9)
+    assert force["shift_m"] == pytest.approx(shift, rel=0.01)   # the solver, on 48 x 48
+    assert "lubkin_rotation_rad" not in force
+
+    gross = 3 * math.pi * mu * load * a / 16
+    moment = run_case(load_case(case(moment=f"{-0.5 * gross} N*m"))).summary
+    assert "cattaneo_mindlin_shift_m" not in moment
+    assert moment["lubkin_rotation_rad"] < 0 and moment["rotation_rad"] < 0
+    assert moment["lubkin_rotation_rad"] == pytest.approx(moment["rotation_rad"], rel=0.02)
+    assert moment["lubkin_stick_radius_m"] == pytest.approx(moment["stick_radius_m"], rel=0.05)
+    both = run_case(load_case(case(force="15 N", moment=f"{0.2 * gross} N*m"))).summary
+    assert not {"cattaneo_mindlin_shift_m", "lubkin_rotation_rad"} & set(both)

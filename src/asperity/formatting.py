@@ -93,14 +93,15 @@ _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "nijenbanning": "Nijenbanning", "dowson": "Dowson", "higginson": "Higginson",
           "hamrock": "Hamrock", "chittenden": "Chittenden", "roelands": "Roelands",
           "greenwood": "Greenwood", "tripp": "Tripp", "brewe": "Brewe", "taylor": "Taylor",
-          "eyring": "Eyring", "iso": "ISO",
+          "eyring": "Eyring", "cattaneo": "Cattaneo", "mindlin": "Mindlin",
+          "lubkin": "Lubkin", "iso": "ISO",
           "centreline": "centre line", "center": "centre", "rms": "rms", "u1": "u1", "u2": "u2",
           "a": "a", "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
 
 #: Authors of a formula: written side by side in a key, joined by a hyphen in its label
 #: (``hamrock_dowson_central_film`` -> "Hamrock-Dowson central film").
 _AUTHORS = frozenset({"Hamrock", "Dowson", "Higginson", "Greenwood", "Tripp", "Brewe", "Taylor",
-                      "Nijenbanning", "Moes", "Chittenden"})
+                      "Nijenbanning", "Moes", "Chittenden", "Cattaneo", "Mindlin"})
 
 #: ISO 4287 / 13565 / 25178 parameter names as they appear (lower case) in summary keys.
 _ISO_PARAMETER = re.compile(r"[prws](a|q|sk|ku|p|v|t|z|dq|dc|k|pk|vk|dr|al|tr|td)|[rs]?mr[12]?"

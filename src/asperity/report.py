@@ -85,7 +85,8 @@ _SOLVER_KEYS = ("converged", "iterations", "residual", "sweeps", "total_sweeps",
 #: central-film formulas (:func:`asperity.references.film_formulas`), a minimum film beside
 #: the minimum-film ones, a dry contact's maximum pressure and approach beside Hertz's (an EHL
 #: contact's maximum pressure beside its Hertz pressure), a rough sphere's real area and load
-#: radius beside Greenwood & Tripp's.
+#: radius beside Greenwood & Tripp's, a tangential contact's shift, twist and stick radius
+#: beside Cattaneo-Mindlin's or Lubkin's.
 REFERENCES = {
     "central_film_thickness_m": (
         ("hamrock_dowson_central_film_m", "Hamrock-Dowson (1977)"),
@@ -102,6 +103,10 @@ REFERENCES = {
         ("brewe_hamrock_taylor_minimum_film_m", "Brewe-Hamrock-Taylor (1979)")),
     "max_pressure_pa": (("hertz_max_pressure_pa", "Hertz"),),
     "approach_m": (("hertz_approach_m", "Hertz"),),
+    "shift_m": (("cattaneo_mindlin_shift_m", "Cattaneo-Mindlin"),),
+    "rotation_rad": (("lubkin_rotation_rad", "Lubkin (1951)"),),
+    "stick_radius_m": (("cattaneo_mindlin_stick_radius_m", "Cattaneo-Mindlin"),
+                       ("lubkin_stick_radius_m", "Lubkin (1951)")),
     "contact_area_m2": (("greenwood_tripp_real_area_m2", "Greenwood-Tripp (1967)"),),
     "load_rms_radius_m": (("greenwood_tripp_rms_radius_m", "Greenwood-Tripp (1967)"),),
 }

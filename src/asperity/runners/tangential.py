@@ -472,6 +472,30 @@ def _percent(value: float, reference: float) -> str:
     return f"{100.0 * (value / reference - 1.0):+.2g} %"
 
 
+def _closed_forms(case, fld, res, body1, body2) -> dict:
+    """The summary's closed forms of this load on a circular Hertz pressure with one mu,
+    without gross slip: Cattaneo-Mindlin's shift and stick radius under a force alone
+    (Johnson eq. 7.42), Lubkin's twist and stick radius under a moment alone about the
+    centre (Johnson eq. 7.50), as the comparison rows give them; none otherwise. A study
+    draws them beside the solver's shift, rotation and stick radius
+    (:data:`asperity.report.REFERENCES`)."""
+    if res.gross_slip or not _circular_hertz(case, fld):
+        return {}
+    h, mu = fld.hertz, case.mu
+    force, moment = math.hypot(*case.loading.vector()), abs(_centred_moment(case))
+    if moment == 0.0 and 0.0 < force < mu * h.load:
+        cm = cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+        return {"cattaneo_mindlin_shift_m": cm.shift,
+                "cattaneo_mindlin_stick_radius_m": cm.stick_radius}
+    if force == 0.0 and case.loading.rotation == "free" and 0.0 < moment < (
+            gross_slip_moment_hertz(mu, h.load, h.a)):
+        c = lubkin_stick_radius(moment, h.a, mu, h.p_max)
+        twist = lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
+        return {"lubkin_rotation_rad": math.copysign(twist, _centred_moment(case)),
+                "lubkin_stick_radius_m": c}
+    return {}
+
+
 def _coupling_effect(case, fld, res, body1, body2) -> str:
     """What the coupling does to this solution against the uncoupled closed form that applies
     (Cattaneo-Mindlin under a force, Lubkin under a moment, circular Hertz), in words."""
@@ -671,6 +695,7 @@ def run(case, progress=None) -> Outcome:
                                     callback=step_cb, rotation=case.loading.rotation)
         planned = len(loads)
     summary = _summary(case, fld, res, applied, identical)
+    summary.update(_closed_forms(case, fld, res, body1, body2))
     if path is not None:
         summary.update(_path_summary(path))
     free = case.loading.rotation == "free"
