@@ -308,3 +308,32 @@ def test_a_quantity_out_of_its_bounds_is_told_the_bound_in_a_unit(rms, message):
     with pytest.raises(InputError) as info:
         load_case(text)
     assert str(info.value) == message
+
+
+@pytest.mark.parametrize("example, table, key", [
+    ("holmes-smooth-point", "contact", "rx"),
+    ("rough-sphere-normal", "geometry", "rx"),
+    ("seireg-sphere-torsion", "pressure", "rx"),
+])
+def test_a_bare_radius_of_metres_is_doubted_with_both_readings(example, table, key):
+    """``rx = 9.525`` (a 3/4 in ball's radius typed in mm, read in m) ran a 9.5 m ball: the EHL
+    domain is in Hertz semi-axes, so nothing looked wrong. A bare radius of 1 m or more is now
+    doubted (:func:`asperity.cases.doubts.unit_doubts`), naming the key, its reading and what
+    to write; with a unit, or a bare radius in metres (0.009525), no line."""
+    from asperity.cases import parse_toml
+    from asperity.cases.doubts import unit_doubts
+
+    def case(value):
+        data = parse_toml(example_text(example))
+        data[table][key] = value
+        data[table].pop("ry", None)   # a sphere's single radius where the example has two
+        if example == "holmes-smooth-point":
+            data[table]["ry"] = value
+        return load_case(data)
+
+    lines = unit_doubts(case(9.525))
+    assert lines[0] == (f"{table}.{key}: the bare number 9.525 is read in m, 9.525 m, as a "
+                        "radius of relative curvature larger than most contacts have (a bare "
+                        "number is in the key's SI unit); if millimetres were meant write "
+                        '"9.525 mm", else "9.525 m" to confirm')
+    assert unit_doubts(case("9.525 mm")) == [] and unit_doubts(case(0.009525)) == []

@@ -889,7 +889,7 @@ def test_a_bare_modulus_that_reads_as_psi_is_warned_about():
 
 
 def test_a_bare_modulus_that_reads_as_psi_is_warned_about_in_an_ehl_run():
-    """The same line leads an EHL run's warnings (:func:`asperity.cases.bodies.body_doubts`,
+    """The same line leads an EHL run's warnings (:func:`asperity.cases.doubts.unit_doubts`,
     shared by every runner): a steel ball on steel, ``body1.youngs_modulus = 30e6``, 20 N,
     1 m/s, on a coarse mesh; with ``"30e6 psi"`` none."""
     from asperity.cases import load_case

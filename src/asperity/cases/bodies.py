@@ -11,7 +11,7 @@ from ..materials import Material
 from ..units import to_si
 from .fields import CaseModel, Integer, Number, Quantity
 
-__all__ = ["MaterialSpec", "GridSpec", "STIFFEST_SOLID", "PSI_AMBIGUOUS", "body_doubts"]
+__all__ = ["MaterialSpec", "GridSpec", "STIFFEST_SOLID", "PSI_AMBIGUOUS"]
 
 #: Young's modulus of diamond, the stiffest solid (about 1.05-1.2 TPa), Pa: no body is stiffer,
 #: so a larger modulus is a unit mistake ("30e6 GPa" for "30e6 psi").
@@ -148,11 +148,3 @@ class GridSpec(CaseModel):
         x0 = -0.5 * self.x_extent if self.x_start is None else self.x_start
         y0 = -0.5 * self.y_extent if self.y_start is None else self.y_start
         return x0 + dx * (np.arange(self.nx) + 0.5), y0 + dy * (np.arange(self.ny) + 0.5)
-
-
-def body_doubts(case) -> list[str]:
-    """:meth:`MaterialSpec.unit_doubts` of a case's ``body1`` and ``body2`` (a body not given,
-    as beside an EHL case's ``reduced_modulus``, has none): the first lines of every runner's
-    warnings."""
-    return [line for key in ("body1", "body2") if getattr(case, key, None) is not None
-            for line in getattr(case, key).unit_doubts(key)]

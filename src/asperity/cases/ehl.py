@@ -47,6 +47,7 @@ from ..errors import InputError
 from ..materials import Material
 from ..units import to_si
 from .bodies import MaterialSpec
+from .doubts import CurvedBody
 from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 
 __all__ = [
@@ -168,7 +169,7 @@ class LubricantSpec(CaseModel):
         )
 
 
-class ContactSpec(CaseModel):
+class ContactSpec(CurvedBody):
     """``[contact]``: shape and load.
 
     ``type = "point"``: radii of relative curvature ``rx`` (entrainment direction) and ``ry``,

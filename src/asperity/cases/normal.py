@@ -9,13 +9,14 @@ from pydantic import model_validator
 from ..errors import InputError
 from ..formatting import format_quantity
 from .bodies import GridSpec, MaterialSpec
+from .doubts import CurvedBody
 from .fields import CaseHeader, CaseModel, Quantity
 from .roughness import RoughnessSpec
 
 __all__ = ["NormalCase", "GeometrySpec", "NormalLoading"]
 
 
-class GeometrySpec(CaseModel):
+class GeometrySpec(CurvedBody):
     """Undeformed shape: radii of relative curvature ``rx``, ``ry`` (m); a sphere when equal.
 
     ``shape = "flat"`` gives a nominally flat contact (use with a rough surface and a periodic

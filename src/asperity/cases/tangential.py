@@ -44,6 +44,7 @@ from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from ..contact.hertz import radius_ratio
 from .bodies import MaterialSpec
+from .doubts import CurvedBody
 from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 from .roughness import RoughnessSpec
 
@@ -127,7 +128,7 @@ def _overlap(r1: RegionSpec, c1, r2: RegionSpec, c2) -> bool:
     return gap < circle.radius
 
 
-class PressureSpec(CaseModel):
+class PressureSpec(CurvedBody):
     """``[pressure]``: where the normal pressure comes from.
 
     - ``source = "hertz"``: ``load`` and the relative radii of curvature ``rx`` (``ry``

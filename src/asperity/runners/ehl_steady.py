@@ -13,7 +13,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.bodies import body_doubts
+from ..cases.doubts import unit_doubts
 from ..cases.ehl import MAX_BOUND, MAX_NODES, MAX_NX, MAX_NY
 from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
@@ -365,7 +365,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
         lines += diagnostics.above_hardness(pressure, [("body1", case.body1.material()),
                                                        ("body2", case.body2.material())])
     lines += _contact_size(problem)
-    return body_doubts(case) + lines
+    return unit_doubts(case) + lines
 
 
 def _contact_size(problem) -> list[str]:

@@ -14,7 +14,7 @@ import time
 import numpy as np
 import xarray as xr
 
-from ..cases.bodies import body_doubts
+from ..cases.doubts import unit_doubts
 from ..ehl.formula_range import dowson_higginson_range_note, hamrock_dowson_range_note
 from ..ehl.problem import FILM_ERROR
 from ..gears.handoff import point_index, toml_text, transient_case
@@ -256,7 +256,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     }
     # solve_path's lines include the lubricant.tau0 line of a Newtonian film (its traction
     # left out) and the minimum film <= 0 of an implausible load
-    trust = body_doubts(case) + case.thermal_notes() + list(result.warnings)
+    trust = unit_doubts(case) + case.thermal_notes() + list(result.warnings)
     return Outcome(ds, summary, figures, comparisons, converged=bool(result.converged.all()),
                    notes=notes, warnings=trust)
 

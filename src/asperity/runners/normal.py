@@ -8,7 +8,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.bodies import body_doubts
+from ..cases.doubts import unit_doubts
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..contact.greenwood_tripp import greenwood_tripp_sphere, summit_parameters
@@ -211,7 +211,7 @@ def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
     period near full contact), mesh (the apparent contact, then a rough contact's spots),
     roughness on the mesh and hardness."""
     size = None
-    lines = body_doubts(case)
+    lines = unit_doubts(case)
     if on_grid is not None:
         lines += diagnostics.measured_file_on_grid("roughness", on_grid, x, y)
     if on_grid is not None and case.grid.periodic:

@@ -17,7 +17,7 @@ import numpy as np
 import xarray as xr
 
 from .. import diagnostics
-from ..cases.bodies import body_doubts
+from ..cases.doubts import unit_doubts
 from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal, solve_tangential
 from ..contact.load_path import proportional_path, tangential_load_path
@@ -764,7 +764,7 @@ def run(case, progress=None) -> Outcome:
         notes.append("A step of the load path did not converge; the path is not trustworthy.")
     # prescribed pressures (Hertz, uniform regions) lie inside the grid by construction; a
     # normal solve's contact can be cut off by it
-    trust = body_doubts(case)
+    trust = unit_doubts(case)
     trust += _gross_slip_warning(case, fld, res, applied)
     trust += (diagnostics.contact_at_grid_edge(fld.pressure, fld.x, fld.y)
               if case.pressure.source == "normal" else [])

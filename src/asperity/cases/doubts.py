@@ -1,0 +1,89 @@
+"""Doubts about what a bare number in a case file meant.
+
+A bare TOML number is read in the key's SI unit, which is what it means most of the time and
+silently wrong when the user wrote it in the unit they think in: ``rx = 9.525`` for a 3/4 in
+ball is a 9.5 m radius, ``youngs_modulus = 30e6`` for a steel in psi is 30 MPa. The run
+cannot know, so it says both readings and what to write, first among its warnings, for the
+values whose bare reading is implausible for what the key holds
+(:meth:`asperity.cases.bodies.MaterialSpec.unit_doubts`, :class:`CurvedBody`). A value with
+its unit is never doubted.
+"""
+
+from __future__ import annotations
+
+from pydantic import PrivateAttr, model_validator
+
+from ..formatting import format_quantity
+from .fields import CaseModel
+
+__all__ = ["BARE_RADIUS", "CurvedBody", "unit_doubts"]
+
+#: A radius of relative curvature given as a bare number (metres) at least this large is
+#: doubted: the contacts asperity models have radii of millimetres to centimetres (a crowned
+#: roller's or a rail's transverse radius a few tenths of a metre), and a radius of metres
+#: written bare is most often millimetres.
+BARE_RADIUS = 1.0
+
+#: The radius keys of :class:`CurvedBody` tables.
+RADIUS_KEYS = ("rx", "ry", "radius")
+
+
+class CurvedBody(CaseModel):
+    """A table with radii of relative curvature (``rx``, ``ry``, ``radius``): it remembers
+    those written as bare numbers of at least :data:`BARE_RADIUS` metres for
+    :meth:`unit_doubts`."""
+
+    _bare_radii: dict = PrivateAttr(default_factory=dict)
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _bare(cls, data, handler):
+        """Record the bare radii of ``data`` (the table as written)."""
+        spec = handler(data)
+        if isinstance(data, dict):
+            spec._bare_radii = {
+                k: float(v) for k, v in data.items()
+                if k in RADIUS_KEYS and isinstance(v, int | float) and not isinstance(v, bool)
+                and v >= BARE_RADIUS}
+        return spec
+
+    def unit_doubts(self, key: str) -> list[str]:
+        """One line per radius written as a bare number of at least :data:`BARE_RADIUS`.
+
+        Parameters
+        ----------
+        key : str
+            The table's name in the case (``"contact"``, ``"geometry"``, ``"pressure"``).
+
+        Returns
+        -------
+        list of str
+            ``contact.rx: the bare number 9.525 is read in m, 9.525 m; ...``.
+        """
+        return [f"{key}.{name}: the bare number {value:g} is read in m, "
+                f"{format_quantity(value, 'm')}, as a radius of relative curvature larger than "
+                "most contacts have (a bare number is in the key's SI unit); if millimetres "
+                f'were meant write "{value:g} mm", else "{value:g} m" to confirm'
+                for name, value in self._bare_radii.items()]
+
+
+def unit_doubts(case) -> list[str]:
+    """The doubts of every table of ``case`` that has them (``unit_doubts(key)``: the bodies'
+    moduli, the radii of a :class:`CurvedBody`), in the order of the case's keys: the first
+    lines of every runner's warnings.
+
+    Parameters
+    ----------
+    case : CaseModel
+        A validated case.
+
+    Returns
+    -------
+    list of str
+    """
+    lines = []
+    for key in type(case).model_fields:
+        table = getattr(case, key, None)
+        if hasattr(table, "unit_doubts"):
+            lines += table.unit_doubts(key)
+    return lines
