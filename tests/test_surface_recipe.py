@@ -414,7 +414,7 @@ def test_surface_generate_reads_its_options_as_the_case_keys(tmp_path):
     res = runner.invoke(app, ["surface", "generate", "ground", "--ra", "2 cm", "--out",
                               str(out)])
     assert res.exit_code == 2
-    assert res.stderr.startswith("error: --ra: expected a value less than or equal to 0.01")
+    assert res.stderr.startswith("error: --ra: expected at most 10 mm, got '2 cm'")
 
 
 def test_a_roller_map_in_a_contact_warns_that_its_curvature_is_in_the_gap(tmp_path):

@@ -308,8 +308,9 @@ def _surface_keys(kind: str, options: dict):
     try:
         return SurfaceKeys(kind=kind, **given)
     except ValidationError as exc:
-        err = first_error(exc)
-        raise InputError(_OPTIONS.get(err.field, err.field), err.expected, err.got) from None
+        err = first_error(exc, model=SurfaceKeys, data={"kind": kind, **given})
+        raise InputError(_OPTIONS.get(err.field, err.field), err.expected, err.got,
+                         problem=err.problem) from None
 
 
 @surface_app.command()
