@@ -700,3 +700,19 @@ def test_asperity_plasticity_note_for_metals_without_a_hardness():
     assert asperity_plasticity_note(4e9, e_star, [("body1", steel), ("body2", steel)]) == []
     rubber = Material(5e6, 0.49)
     assert asperity_plasticity_note(1e6, 5e6, [("body1", rubber), ("body2", steel)]) == []
+
+
+def test_a_generated_roughness_longer_than_its_grid_is_reported():
+    """A periodic patch holds wavelengths up to its size: ``rolloff_wavelength = 100`` (meant
+    in um, read in m) on a 0.5 mm patch ran without a word. The roll-off at the patch size
+    itself, and a Gaussian correlation length of a quarter of it, are silent; one of more than
+    half of it is a hill or two and is reported."""
+    x = y = _cells(64, 0.5e-3)
+    (line,) = dg.roughness_extent("roughness", x, y, rolloff_wavelength=100.0)
+    _every_line_names_a_limit([line])
+    assert line.startswith("roughness: rolloff_wavelength = 100 m is longer than the grid "
+                           "(500 µm x 500 µm;")
+    assert dg.roughness_extent("roughness", x, y, rolloff_wavelength=0.5e-3) == []
+    assert dg.roughness_extent("roughness", x, y, correlation_length=0.125e-3) == []
+    (line,) = dg.roughness_extent("roughness", x, y, correlation_length=0.3e-3)
+    assert line.startswith("roughness: correlation_length = 300 µm is more than 1/2 of the grid")

@@ -47,6 +47,7 @@ __all__ = [
     "LOWPASS_RMS_SHARE",
     "NEWTONIAN_TRACTION_LIMIT",
     "COARSE_FILE_FACTOR",
+    "MIN_CORRELATION_LENGTHS_ON_GRID",
     "DECIMATED_FILE_FACTOR",
     "SEAM_JUMP_RATIO",
     "above_hardness",
@@ -58,6 +59,7 @@ __all__ = [
     "flat_on_open_grid",
     "contact_resolution",
     "spot_resolution",
+    "roughness_extent",
     "MIN_CELLS_PER_SPOT",
     "ehl_inlet",
     "ehl_rigid_domain",
@@ -1748,6 +1750,60 @@ def roughness_resolution(label: str, correlation_length: float, x, y,
             "asperity size and the real contact area and asperity pressures depend on the "
             f"mesh; use cells <= {ell / 4 * 1e6:.2g} um{where} and check that the answer no "
             "longer moves"]
+
+
+#: Correlation lengths a generated Gaussian surface needs across the grid for its heights to
+#: have the surface's statistics rather than those of a few hills.
+MIN_CORRELATION_LENGTHS_ON_GRID = 2.0
+
+
+def roughness_extent(label: str, x, y, *, rolloff_wavelength: float | None = None,
+                     correlation_length: float | None = None) -> list[str]:
+    """A generated roughness whose longest length is not on the grid it is generated on.
+
+    A periodic patch holds wavelengths up to its size only. A self-affine surface's
+    ``rolloff_wavelength`` longer than the patch is then not represented: its spectrum rises
+    to the patch size without its plateau, and the rms asked for sits at wavelengths the
+    surface given would not carry it at (``rolloff_wavelength = 100``, meant in um and read in
+    m on a 0.5 mm patch, ran without a word). A Gaussian surface whose correlation length is
+    more than ``1 / MIN_CORRELATION_LENGTHS_ON_GRID`` of the patch is a hill or two, not a
+    sample of the surface.
+
+    Parameters
+    ----------
+    label : str
+        The surface, e.g. ``"roughness"``.
+    x, y : ndarray
+        Cell-centre coordinates of the grid the surface is generated on, m.
+    rolloff_wavelength, correlation_length : float, optional
+        The surface's roll-off wavelength (self-affine) or correlation length (Gaussian), m.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    sizes = [np.asarray(c).size * _spacing(c) for c in (x, y) if np.asarray(c).size > 1]
+    size = max(sizes)
+    extent = " x ".join(format_quantity(s, "m", digits=3) for s in sizes)
+    if rolloff_wavelength is not None and rolloff_wavelength > size * (1 + 1e-9):
+        return [f"{label}: rolloff_wavelength = "
+                f"{format_quantity(rolloff_wavelength, 'm', digits=3)} is longer than the "
+                f"grid ({extent}; limit: at most its size), whose longest wavelength is its "
+                "size: the roll-off is not represented, the spectrum rises to the grid's size "
+                "and the rms sits at shorter wavelengths than the surface given has; enlarge "
+                f"the grid to the roll-off or check its value and unit (a bare number is in "
+                "m)"]
+    if correlation_length is not None and (
+            correlation_length * MIN_CORRELATION_LENGTHS_ON_GRID > min(sizes) * (1 + 1e-9)):
+        return [f"{label}: correlation_length = "
+                f"{format_quantity(correlation_length, 'm', digits=3)} is more than "
+                f"1/{MIN_CORRELATION_LENGTHS_ON_GRID:g} of the grid ({extent}; limit "
+                f"{MIN_CORRELATION_LENGTHS_ON_GRID:g} correlation lengths across it): the "
+                "surface on it is a hill or two, whose heights and contact are not those of "
+                "the surface given; enlarge the grid or check the value and its unit (a bare "
+                "number is in m)"]
+    return []
 
 
 #: Sampling interval of a measured roughness file, in grid spacings, above which the file is

@@ -241,6 +241,10 @@ def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
             spots, x, y, file_spacing=on_grid.file_spacing,
             cutoff_key="roughness.short_cutoff" if free else None)
     rough = case.roughness
+    if rough is not None and rough.kind in ("gaussian", "self-affine"):  # generated on the grid
+        lines += diagnostics.roughness_extent(
+            "roughness", x, y, rolloff_wavelength=rough.rolloff_wavelength,
+            correlation_length=rough.correlation_length if rough.kind == "gaussian" else None)
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
         ell = rough.correlation_length
         if ell is None and rough.kind == "ground":

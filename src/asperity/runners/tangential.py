@@ -437,7 +437,8 @@ def _long_ellipse_note(case, fld, res) -> list[str]:
 
 
 def _spot_warnings(case, fld) -> list[str]:
-    """A rough normal solve's contact spots of a few cells
+    """A generated roughness longer than the grid (:func:`asperity.diagnostics.roughness_extent`)
+    and a rough normal solve's contact spots of a few cells
     (:func:`asperity.diagnostics.spot_resolution`): its pressures, and the stick and slip on
     each spot, are then set by the mesh."""
     rough = fld.roughness
@@ -446,7 +447,11 @@ def _spot_warnings(case, fld) -> list[str]:
     spots = contact_spots(fld.pressure > 0, fld.pressure, fld.cell_area)
     spec = case.pressure.roughness
     free = spec.kind == "self-affine" and spec.short_cutoff is None
-    return diagnostics.spot_resolution(
+    extent = [] if spec.kind not in ("gaussian", "self-affine") else \
+        diagnostics.roughness_extent(
+            "pressure.roughness", fld.x, fld.y, rolloff_wavelength=spec.rolloff_wavelength,
+            correlation_length=spec.correlation_length if spec.kind == "gaussian" else None)
+    return extent + diagnostics.spot_resolution(
         spots, fld.x, fld.y, file_spacing=rough.file_spacing,
         cutoff_key="pressure.roughness.short_cutoff" if free else None)
 
