@@ -907,3 +907,30 @@ def test_a_bare_modulus_that_reads_as_psi_is_warned_about_in_an_ehl_run():
     assert out.warnings[0].startswith("body1.youngs_modulus: the bare number 3e7 is read in Pa")
     quiet = run_case(load_case(case("30e6 psi")))
     assert not [w for w in quiet.warnings if "youngs_modulus" in w]
+
+
+def test_a_generator_refusal_names_the_key_in_its_table_with_the_value():
+    """``correlation_length = 40`` (meant in um, read in m) was refused as "correlation_length:
+    expected a length the surface can hold ...", naming a key no table has and no value. Now
+    the line names ``roughness.correlation_length`` and the 40 m it read; a transient run's
+    surface likewise (``surface2.correlation_length``)."""
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    text = example_text("rough-flat-normal").replace('kind = "self-affine"', 'kind = "gaussian"')
+    text = "\n".join(line for line in text.splitlines()
+                     if not line.startswith(("hurst", "rolloff_wavelength", "short_cutoff")))
+    text = text.replace('rms = "0.5 um"', 'rms = "0.5 um"\ncorrelation_length = 40')
+    with pytest.raises(InputError, match=r"^roughness\.correlation_length: expected a length "
+                       r"the surface can hold.*got '40 m'$"):
+        run_case(load_case(text))
+    transient = {"analysis": "ehl-transient", "reduced_modulus": "227 GPa",
+                 "contact": {"type": "line", "radius": "19.1 mm",
+                             "load_per_length": "527 kN/m"},
+                 "speeds": {"u": "25 m/s", "xi": 0.25},
+                 "lubricant": {"eta0": "0.0048 Pa s", "alpha": "11.1 1/GPa"},
+                 "grid": {"nx": 81}, "time": {"counting_steps": 5},
+                 "surface2": {"kind": "gaussian", "rms": "0.05 um", "correlation_length": 40}}
+    with pytest.raises(InputError, match=r"^surface2\.correlation_length: .*got '40 m'$"):
+        run_case(load_case(transient))

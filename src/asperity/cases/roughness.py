@@ -19,13 +19,15 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from ..errors import InputError
+from ..formatting import format_quantity
 from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface, build_surface_record
 from ..surfaces.topography import Profile
 from .fields import CaseModel, Integer, Number, Quantity, existing_file
 
 __all__ = ["DEFAULT_FORM_DEGREE", "FormKeys", "GridRoughness", "KIND_KEYS", "MeasuredFile",
            "RoughnessSpec", "SurfaceKeys", "WavinessSpec", "length_unit", "measured_file",
-           "roughness_on_grid", "surface_heights", "surface_recipe", "undeformed_gap"]
+           "named_in_table", "roughness_on_grid", "surface_heights", "surface_recipe",
+           "undeformed_gap"]
 
 #: Degree of the least-squares form removed from a measured file by default (its mean line or
 #: plane: the offset and tilt of an unlevelled scan), as ``asperity surface stats`` does.
@@ -336,9 +338,23 @@ def roughness_on_grid(spec: RoughnessSpec, x, y, label: str = "roughness") -> Gr
     if spec.kind == "builtin":
         length, spacing = length + dx, min(dx, 0.5e-6)
     ys = y - y[0] + dy / 2
-    surf = build_surface(surface_recipe(spec, scale=1.0), length, spacing, width=len(y) * dy,
-                         y=ys)
+    try:
+        surf = build_surface(surface_recipe(spec, scale=1.0), length, spacing,
+                             width=len(y) * dy, y=ys)
+    except InputError as exc:  # the generator's key, named in the case's table
+        raise named_in_table(exc, label, spec) from None
     return GridRoughness(spec.scale * _on_grid(surf, x - x[0] + dx / 2, ys))
+
+
+def named_in_table(exc: InputError, table: str, spec) -> InputError:
+    """An error of a surface generator with its field named in the case's ``table``
+    (``correlation_length`` -> ``surface2.correlation_length``) and, where it gave none, the
+    value the table holds, in SI (``correlation_length = 40``, meant in um, is 40 m)."""
+    field = exc.field if exc.field.startswith(table + ".") else f"{table}.{exc.field}"
+    got = exc.got
+    if got is None and isinstance(getattr(spec, exc.field, None), float):
+        got = format_quantity(getattr(spec, exc.field), "m")
+    return InputError(field, exc.expected, got, problem=exc.problem)
 
 
 def surface_heights(spec: RoughnessSpec, x, y) -> np.ndarray:
