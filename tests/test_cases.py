@@ -337,3 +337,22 @@ def test_a_bare_radius_of_metres_is_doubted_with_both_readings(example, table, k
                         "number is in the key's SI unit); if millimetres were meant write "
                         '"9.525 mm", else "9.525 m" to confirm')
     assert unit_doubts(case("9.525 mm")) == [] and unit_doubts(case(0.009525)) == []
+
+
+@pytest.mark.parametrize("xi, doubted", [(25, True), (-2.5, True), (2.0, False), (0.25, False),
+                                         ('"25 %"', False)])
+def test_a_slide_roll_ratio_beyond_two_is_doubted(xi, doubted):
+    """``xi = 25`` meant as 25 % ran surfaces in opposite directions without a word: at
+    u = 25 m/s, u1 = u (1 + xi/2) = 337.5 m/s and u2 = u (1 - xi/2) = -287.5 m/s. Beyond 2
+    either way the run now says so; 2 (one surface at rest) and "25 %" (0.25) do not."""
+    from asperity.cases.doubts import unit_doubts
+
+    text = example_text("holmes-smooth-point")
+    assert "\nxi = 0.25 " in text
+    lines = unit_doubts(load_case(text.replace("\nxi = 0.25 ", f"\nxi = {xi} ")))
+    assert bool(lines) == doubted
+    if xi == 25:
+        assert lines == ["speeds.xi: the slide/roll ratio 25 is beyond 2 (limit: at most 2 "
+                         "either way), so the surfaces move in opposite directions (u1 = "
+                         "337.5 m/s, u2 = -287.5 m/s); a ratio in percent is written \"25 %\" "
+                         "(xi = 0.25), and opposite surface speeds are clearer as u1 and u2"]

@@ -6,7 +6,8 @@ ball is a 9.5 m radius, ``youngs_modulus = 30e6`` for a steel in psi is 30 MPa. 
 cannot know, so it says both readings and what to write, first among its warnings, for the
 values whose bare reading is implausible for what the key holds
 (:meth:`asperity.cases.bodies.MaterialSpec.unit_doubts`, :class:`CurvedBody`). A value with
-its unit is never doubted.
+its unit is not doubted, except a slide/roll ratio beyond 2 however written
+(:meth:`asperity.cases.ehl.SpeedSpec.unit_doubts`: ``xi = 25`` meant as 25 %).
 """
 
 from __future__ import annotations

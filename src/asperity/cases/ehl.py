@@ -44,6 +44,7 @@ from ..ehl.lubricant import DH_GAMMA, DH_LAMBDA, ROELANDS_CHI, ROELANDS_KAPPA, L
 from ..ehl.problem import MAX_BOUND as PROBLEM_MAX_BOUND
 from ..ehl.problem import LineContact, PointContact
 from ..errors import InputError
+from ..formatting import format_quantity
 from ..materials import Material
 from ..units import to_si
 from .bodies import MaterialSpec
@@ -247,6 +248,31 @@ class SpeedSpec(CaseModel):
                              "lubricated contact needs entrainment (for a dry contact use "
                              'analysis = "normal")')
         return self
+
+    def unit_doubts(self, key: str) -> list[str]:
+        """A line when the slide/roll ratio ``xi`` is beyond 2 (:mod:`asperity.cases.doubts`):
+        the surfaces then move in opposite directions, which rigs seldom run and a ratio
+        meant in percent (``xi = 25`` for 25 %) gives without a word (u1 = 13.5 m/s,
+        u2 = -11.5 m/s at u = 1 m/s).
+
+        Parameters
+        ----------
+        key : str
+            The table's name, ``"speeds"``.
+
+        Returns
+        -------
+        list of str
+            One line, or none.
+        """
+        if self.xi is None or abs(self.xi) <= 2.0:
+            return []
+        u1, u2 = self.surface_speeds()
+        return [f"{key}.xi: the slide/roll ratio {self.xi:g} is beyond 2 (limit: at most 2 "
+                f"either way), so the surfaces move in opposite directions (u1 = "
+                f"{format_quantity(u1, 'm/s')}, u2 = {format_quantity(u2, 'm/s')}); a ratio "
+                f'in percent is written "{self.xi:g} %" (xi = {self.xi / 100:g}), and '
+                "opposite surface speeds are clearer as u1 and u2"]
 
     def surface_speeds(self) -> tuple[float, float]:
         """(u1, u2) in m/s."""
