@@ -356,3 +356,21 @@ def test_a_slide_roll_ratio_beyond_two_is_doubted(xi, doubted):
                          "either way), so the surfaces move in opposite directions (u1 = "
                          "337.5 m/s, u2 = -287.5 m/s); a ratio in percent is written \"25 %\" "
                          "(xi = 0.25), and opposite surface speeds are clearer as u1 and u2"]
+
+
+@pytest.mark.parametrize("eta0, doubted", [(100, True), (10, True), (2, False),
+                                           ('"100 mPa s"', False), ('"100 Pa s"', False)])
+def test_a_bare_viscosity_beyond_lubricants_is_doubted(eta0, doubted):
+    """``eta0 = 100`` (cP meant, read in Pa s) is 100 Pa s, a thousand times the oil: a bare
+    viscosity of 10 Pa s or more is doubted, naming the key and what to write; 2 Pa s (a
+    heavy gear oil cold, glycerol 1.4) and any value with its unit are not."""
+    from asperity.cases.doubts import unit_doubts
+
+    text = example_text("holmes-smooth-point")
+    old = next(line for line in text.splitlines() if line.startswith("eta0 = "))
+    lines = unit_doubts(load_case(text.replace(old, f"eta0 = {eta0}")))
+    assert bool(lines) == doubted
+    if eta0 == 100:
+        assert lines == ['lubricant.eta0: the bare number 100 is read in Pa s, 100 Pa s, more '
+                         'viscous than lubricants are (a bare number is in Pa s); if mPa s (cP) '
+                         'were meant write "100 mPa s", else "100 Pa s" to confirm']

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import Field, PrivateAttr, field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..formatting import format_quantity
 from ..materials import Material
 from ..units import to_si
+from .doubts import BareNumbers
 from .fields import CaseModel, Integer, Number, Quantity
 
 __all__ = ["MaterialSpec", "GridSpec", "STIFFEST_SOLID", "PSI_AMBIGUOUS"]
@@ -23,7 +24,7 @@ STIFFEST_SOLID = 1.2e12
 PSI_AMBIGUOUS = (1e5, 2e8)
 
 
-class MaterialSpec(CaseModel):
+class MaterialSpec(BareNumbers):
     """An elastic body: ``youngs_modulus`` (e.g. ``"30e6 psi"``) and ``poisson_ratio``.
 
     ``hardness`` (optional, e.g. ``"6 GPa"``): contact pressures above it make the run warn
@@ -42,8 +43,6 @@ class MaterialSpec(CaseModel):
     not physical there, and in a dry contact a Hertz peak above 0.57 of it that the body yields
     beneath the surface (p0 = 1.6 Y with H = 2.8 Y)."""
 
-    _bare_modulus: float | None = PrivateAttr(default=None)
-
     @field_validator("youngs_modulus")
     @classmethod
     def _solid(cls, value):
@@ -54,17 +53,6 @@ class MaterialSpec(CaseModel):
                 f"stiffest solid; this is {format_quantity(value, 'Pa')}): check the unit "
                 '(steel is "210 GPa" or "30e6 psi")')
         return value
-
-    @model_validator(mode="wrap")
-    @classmethod
-    def _bare(cls, data, handler):
-        """Remember a modulus written as a bare number (read in Pa) for
-        :meth:`unit_doubts`."""
-        spec = handler(data)
-        raw = data.get("youngs_modulus") if isinstance(data, dict) else None
-        if isinstance(raw, int | float) and not isinstance(raw, bool):
-            spec._bare_modulus = float(raw)
-        return spec
 
     def unit_doubts(self, key: str) -> list[str]:
         """A warning when the modulus was a bare number in :data:`PSI_AMBIGUOUS`.
@@ -84,7 +72,7 @@ class MaterialSpec(CaseModel):
         list of str
             One line, or none.
         """
-        raw = self._bare_modulus
+        raw = self.bare("youngs_modulus")
         if raw is None or not PSI_AMBIGUOUS[0] <= raw <= PSI_AMBIGUOUS[1]:
             return []
         as_psi = to_si(f"{raw!r} psi", "pressure", "")

@@ -48,7 +48,7 @@ from ..formatting import format_quantity
 from ..materials import Material
 from ..units import to_si
 from .bodies import MaterialSpec
-from .doubts import CurvedBody
+from .doubts import BARE_VISCOSITY, BareNumbers, CurvedBody
 from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 
 __all__ = [
@@ -100,7 +100,7 @@ def check_node_count(nx: int, ny: int, chosen: bool, domain=None):
 ALPHA_MAX = 1e-6
 
 
-class LubricantSpec(CaseModel):
+class LubricantSpec(BareNumbers):
     """``[lubricant]``: viscosity and density laws and the Eyring stress (seed Eqs. 3-4).
 
     ``eta0`` ambient viscosity, ``alpha`` pressure-viscosity coefficient (``"11.1 1/GPa"``),
@@ -158,6 +158,29 @@ class LubricantSpec(CaseModel):
             raise ValueError(f"expected eta0 > kappa = {self.kappa:g} Pa s for the Roelands law "
                              '(or viscosity_model = "barus")')
         return self
+
+    def unit_doubts(self, key: str) -> list[str]:
+        """A line when ``eta0`` was a bare number of at least
+        :data:`~asperity.cases.doubts.BARE_VISCOSITY` Pa s (:mod:`asperity.cases.doubts`):
+        ``eta0 = 100`` is 100 Pa s, a bitumen's, where 100 mPa s (cP) was meant.
+
+        Parameters
+        ----------
+        key : str
+            The table's name, ``"lubricant"``.
+
+        Returns
+        -------
+        list of str
+            One line, or none.
+        """
+        value = self.bare("eta0")
+        if value is None or value < BARE_VISCOSITY:
+            return []
+        return [f"{key}.eta0: the bare number {value:g} is read in Pa s, "
+                f"{format_quantity(value, 'Pa*s')}, more viscous than lubricants are (a bare "
+                f'number is in Pa s); if mPa s (cP) were meant write "{value:g} mPa s", else '
+                f'"{value:g} Pa s" to confirm']
 
     def lubricant(self) -> Lubricant:
         """The :class:`asperity.ehl.Lubricant` this table describes."""

@@ -24,7 +24,8 @@ Every key of an asperity case file, by analysis, generated from the case models
 A **quantity** is a number in the SI unit shown or a string with any unit of the same
 dimension (`"2160 lbf"`, `"0.6 in"`, `"30e6 psi"`, `"25 um"`). A bare number whose SI reading
 is unlikely for what the key holds runs with a warning that gives both readings and what to
-write (`youngs_modulus = 30e6`: 30 MPa, or 206.8 GPa in psi; `rx = 9.525`: 9.525 m, or mm?);
+write (`youngs_modulus = 30e6`: 30 MPa, or 206.8 GPa in psi; `rx = 9.525`: 9.525 m, or mm?;
+`eta0 = 100`: 100 Pa s, or mPa s?; a slide/roll ratio beyond 2 however written);
 one out of a key's bounds is refused with the bound in a unit. An **integer** (a mesh size,
 a count, a seed) is a TOML integer (`nx = 128`; `128.0`, a float without a fraction, is the same
 count), not a quoted one (`"128"`); `true`/`false` is neither an integer nor a **number**
