@@ -22,6 +22,7 @@ __all__ = [
     "STANDARD_ERROR",
     "SummaryRow",
     "cf_units",
+    "coordinate_unit",
     "display_unit",
     "format_axis_value",
     "format_duration",
@@ -30,6 +31,7 @@ __all__ = [
     "format_quantity",
     "format_summary_value",
     "given_in_imperial",
+    "result_unit",
     "summary_rows",
     "unit_label",
     "units_from_cf",
@@ -256,6 +258,27 @@ def display_unit(magnitude: float, unit: str) -> tuple[float, str]:
         return 1.0, unit_label(unit)
     converted, label = _convert(abs(magnitude), unit, choices)
     return converted / abs(magnitude), label
+
+
+def result_unit(key: str, magnitude: float) -> tuple[float, str]:
+    """The one unit of a summary key's values up to ``magnitude`` (SI), for a study's figure
+    panel and its table column alike: the factor from SI and its label (:func:`display_unit`;
+    ``(1e6, "mm²")`` for areas up to 1.05e-8 m²), a fraction in percent (``(100.0, "%")``).
+    A ``_standard_error`` key has its quantity's unit."""
+    unit = describe_key(key)[1]
+    if unit == "%" and key.removesuffix(STANDARD_ERROR).endswith("fraction"):
+        return 100.0, "%"
+    return display_unit(magnitude, unit)
+
+
+def coordinate_unit(values, cf_unit: str) -> tuple[float, str]:
+    """The one unit of a study axis's numeric ``values`` in CF unit ``cf_unit``, for its
+    figure axis and its table column alike: angles in degrees, as they are written, else
+    :func:`display_unit` of the largest finite magnitude."""
+    if cf_unit == "rad":
+        return math.degrees(1.0), "deg"
+    magnitudes = [abs(float(v)) for v in values if math.isfinite(float(v))]
+    return display_unit(max(magnitudes, default=0.0), units_from_cf(cf_unit))
 
 
 def format_quantity(value, unit: str = "", *, imperial: bool = False, digits: int = 4) -> str:

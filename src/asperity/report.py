@@ -20,12 +20,12 @@ from .formatting import (
     NOISE,
     STANDARD_ERROR,
     SummaryRow,
+    coordinate_unit,
     describe_key,
-    display_unit,
     format_number,
     format_quantity,
+    result_unit,
     summary_rows,
-    units_from_cf,
 )
 from .results import Outcome, atomic_path
 
@@ -433,32 +433,6 @@ def _repeats_axis(var, coord) -> bool:
     return bool(np.allclose(values.values, axis.values, rtol=1e-9, equal_nan=True))
 
 
-def _column_unit(key: str, magnitude: float) -> tuple[float, str]:
-    """The one unit of a study table's column of summary key ``key`` whose values reach
-    ``magnitude`` (SI): the factor from SI and its label, ``(1e6, "mm²")`` for areas up to
-    1.053e-8 m²; a fraction in percent (``(100.0, "%")``); ``(1.0, "")`` when dimensionless."""
-    unit = describe_key(key)[1]
-    factor = 100.0 if unit == "%" and key.removesuffix(STANDARD_ERROR).endswith(
-        "fraction") else 1.0
-    scale, label = display_unit(magnitude * factor, unit)
-    return factor * scale, label
-
-
-def _axis_unit(coord) -> tuple[float, str] | None:
-    """The one unit of a study table's axis column (angles in degrees, as they are written),
-    or None for labels."""
-    import numpy as np
-
-    if not np.issubdtype(coord.dtype, np.number):
-        return None
-    unit = coord.attrs.get("units", "1")
-    if unit == "rad":
-        return math.degrees(1.0), "deg"
-    values = np.abs(coord.values.astype(float))
-    finite = values[np.isfinite(values)]
-    return display_unit(float(finite.max()) if finite.size else 0.0, units_from_cf(unit))
-
-
 def _header(text: str, unit: str) -> str:
     """A column heading (HTML already escaped) with its unit, if any, once: ``contact area
     (mm²)``."""
@@ -469,7 +443,7 @@ def _cases_table(ds, variables) -> str:
     """The table of cases: the axis values, the results ``variables``, state and errors.
 
     Each quantity column is in one unit, chosen from its largest magnitude
-    (:func:`asperity.formatting.display_unit`, as the figure's axes) and named once in its
+    (:func:`asperity.formatting.result_unit`, as the figure's axes) and named once in its
     heading; the cells are numbers with 4 significant digits (a standard error with 2).
     Formatted cell by cell, a column of contact areas read "4608 µm²" in one row and
     "0.01053 mm²" in the next. Labels, yes/no flags, states and errors stay text.
@@ -479,10 +453,11 @@ def _cases_table(ds, variables) -> str:
     axes = [a for a in ds.attrs.get("axes", "").split(",") if a]
     dims = list(ds["state"].dims)
     scale = {v: float(np.nanmax(np.abs(ds[v].values))) for v in variables}
-    axis_units = {a: _axis_unit(ds[a]) for a in axes}
+    axis_units = {a: coordinate_unit(ds[a].values, ds[a].attrs.get("units", "1"))
+                  if np.issubdtype(ds[a].dtype, np.number) else None for a in axes}
     flags = {v for v in variables if ds[v].attrs.get("flag_meanings") == "no yes"
              and np.all(np.isin(ds[v].values[np.isfinite(ds[v].values)], (0.0, 1.0)))}
-    units = {v: (1.0, "") if v in flags else _column_unit(v, scale[v]) for v in variables}
+    units = {v: (1.0, "") if v in flags else result_unit(v, scale[v]) for v in variables}
     head = "".join(_header(_breakable(ds[a].attrs.get("long_name", a)),
                            axis_units[a][1] if axis_units[a] else "") for a in axes)
     head += "".join(_header(html.escape(describe_key(v)[0]), units[v][1]) for v in variables)

@@ -19,11 +19,11 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullFormatter
 
 from ..formatting import (
+    coordinate_unit,
     describe_key,
-    display_unit,
     format_axis_value,
     format_number,
-    units_from_cf,
+    result_unit,
 )
 from .style import plt
 
@@ -126,11 +126,8 @@ def plot_study(ds, variables, columns: int = 3, references=None):
     first = axes_names[0]
     x, labels = _axis_values(ds, first)
     x_shown = ""
-    if x is not None and ds[first].attrs.get("units") == "rad":
-        x, x_shown = np.degrees(x), "deg"  # swept angles in degrees, as they are written
-    elif x is not None:
-        x_scale, x_shown = display_unit(float(np.nanmax(np.abs(x))),
-                                        units_from_cf(ds[first].attrs.get("units", "1")))
+    if x is not None:  # swept angles in degrees, as they are written
+        x_scale, x_shown = coordinate_unit(x, ds[first].attrs.get("units", "1"))
         x = x * x_scale
     rows = int(np.ceil(len(variables) / columns))
     fig, axes = plt.subplots(rows, min(columns, len(variables)), squeeze=False,
@@ -141,11 +138,8 @@ def plot_study(ds, variables, columns: int = 3, references=None):
     paired = ([", ".join(_axis_values(ds, o)[1][i] for o in axes_names[1:])
                for i in range(ds.sizes["case"])] if mode == "zip" and axes_names[1:] else [])
     for ax, key in zip(axes.flat, variables, strict=False):
-        label, unit = describe_key(key)
-        if unit == "%" and key.endswith("fraction"):
-            scale, shown = 100.0, "%"
-        else:
-            scale, shown = display_unit(float(np.nanmax(np.abs(ds[key].values))), unit)
+        label = describe_key(key)[0]
+        scale, shown = result_unit(key, float(np.nanmax(np.abs(ds[key].values))))
         drawn, refs = [], references.get(key, [])
         styles = dict(zip((r for r, _ in refs), itertools.cycle(REFERENCE_STYLES)))
         handles = []
