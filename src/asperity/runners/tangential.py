@@ -487,39 +487,36 @@ def _closed_forms(case, fld, res, body1, body2) -> dict:
     if res.gross_slip or not _circular_hertz(case, fld):
         return {}
     h, mu = fld.hertz, case.mu
-    force, moment = math.hypot(*case.loading.vector()), abs(_centred_moment(case))
+    force, moment = math.hypot(*case.loading.vector()), _centred_moment(case)
     if moment == 0.0 and 0.0 < force < mu * h.load:
         cm = cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
         return {"cattaneo_mindlin_shift_m": cm.shift,
                 "cattaneo_mindlin_stick_radius_m": cm.stick_radius}
-    if force == 0.0 and case.loading.rotation == "free" and 0.0 < moment < (
+    if force == 0.0 and case.loading.rotation == "free" and 0.0 < abs(moment) < (
             gross_slip_moment_hertz(mu, h.load, h.a)):
-        c = lubkin_stick_radius(moment, h.a, mu, h.p_max)
+        c = lubkin_stick_radius(abs(moment), h.a, mu, h.p_max)
         twist = lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
-        return {"lubkin_rotation_rad": math.copysign(twist, _centred_moment(case)),
+        return {"lubkin_rotation_rad": math.copysign(twist, moment),
                 "lubkin_stick_radius_m": c}
     return {}
 
 
 def _coupling_effect(case, fld, res, body1, body2) -> str:
     """What the coupling does to this solution against the uncoupled closed form that applies
-    (Cattaneo-Mindlin under a force, Lubkin under a moment, circular Hertz), in words."""
-    if res.gross_slip or not _circular_hertz(case, fld):
-        return ""
-    h, mu = fld.hertz, case.mu
-    force, moment = math.hypot(*case.loading.vector()), abs(_centred_moment(case))
+    (:func:`_closed_forms`: Cattaneo-Mindlin under a force, Lubkin under a moment, circular
+    Hertz), in words."""
+    closed = _closed_forms(case, fld, res, body1, body2)
     stick = math.sqrt(res.stick.sum() * fld.cell_area / math.pi)
-    if moment == 0.0 and 0.0 < force < mu * h.load:
-        cm = cattaneo_mindlin(h.load, force, mu, h.a, body1, body2)
+    if "cattaneo_mindlin_shift_m" in closed:
+        ref, c = closed["cattaneo_mindlin_shift_m"], closed["cattaneo_mindlin_stick_radius_m"]
         shift = math.hypot(*res.shift)
-        text = (f"at Q = {force / (mu * h.load):.2g} mu P the shift is "
-                f"{format_quantity(shift, 'm')}, {_percent(shift, cm.shift)} from Mindlin's "
-                f"{format_quantity(cm.shift, 'm')}")
-        c = cm.stick_radius
-    elif force == 0.0 and case.loading.rotation == "free" and 0.0 < moment < (
-            gross_slip_moment_hertz(mu, h.load, h.a)):
-        c = lubkin_stick_radius(moment, h.a, mu, h.p_max)
-        twist, ref = abs(res.rotation), lubkin_twist(c, h.a, mu, h.p_max, body1, body2)
+        force = math.hypot(*case.loading.vector())
+        text = (f"at Q = {force / (case.mu * fld.hertz.load):.2g} mu P the shift is "
+                f"{format_quantity(shift, 'm')}, {_percent(shift, ref)} from Mindlin's "
+                f"{format_quantity(ref, 'm')}")
+    elif "lubkin_rotation_rad" in closed:
+        ref, c = abs(closed["lubkin_rotation_rad"]), closed["lubkin_stick_radius_m"]
+        twist = abs(res.rotation)
         text = (f"the twist is {format_quantity(twist, 'rad')}, {_percent(twist, ref)} from "
                 f"Lubkin's {format_quantity(ref, 'rad')}")
     else:
@@ -594,8 +591,7 @@ def _gross_slip_warning(case, fld, res, applied) -> list[str]:
                 "raise mu or the normal load")
     return [f"{', '.join(keys)}: {what} (limit: at most the gross-slip load): friction "
             "cannot carry the load, the contact slides as a whole (gross slip): there is no "
-            "shift, twist or "
-            f"stick zone, only the full-slip traction; {hint}"]
+            f"shift, twist or stick zone, only the full-slip traction; {hint}"]
 
 
 def _validity_warnings(case, fld, body1, body2) -> list[str]:
