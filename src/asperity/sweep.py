@@ -102,6 +102,14 @@ def _set_path(data: dict, dotted: str, value) -> None:
     node[keys[-1]] = value
 
 
+def _get_path(data: dict, dotted: str):
+    """The value at a dotted key of a case, or None where it is not set."""
+    node = data
+    for k in dotted.split("."):
+        node = node.get(k) if isinstance(node, dict) else None
+    return node
+
+
 def _unset(data: dict, keys) -> None:
     """Remove the dotted ``keys`` of the study's ``unset`` list from the base case.
 
@@ -111,10 +119,8 @@ def _unset(data: dict, keys) -> None:
     if not (isinstance(keys, list) and all(isinstance(k, str) for k in keys)):
         raise InputError("unset", "a list of dotted keys of the base case", keys)
     for i, dotted in enumerate(keys):
-        *head, last = dotted.split(".")
-        node = data
-        for k in head:
-            node = node.get(k) if isinstance(node, dict) else None
+        head, _, last = dotted.rpartition(".")
+        node = _get_path(data, head) if head else data
         if not isinstance(node, dict) or last not in node:
             raise InputError(f"unset[{i}]", "a key the base case sets", dotted)
         del node[last]
@@ -308,14 +314,6 @@ def _check_axes(axes: list, keys: dict, mode: str, base_case: dict | None = None
         if mode == "cross":
             _check_distinct(i, axis_keys, values, unit, keys)
     return tuple(units)
-
-
-def _get_path(data: dict, dotted: str):
-    """The value at a dotted key of a case, or None where it is not set."""
-    node = data
-    for k in dotted.split("."):
-        node = node.get(k) if isinstance(node, dict) else None
-    return node
 
 
 def _dimension_of(si_unit: str) -> str | None:

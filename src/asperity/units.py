@@ -17,7 +17,7 @@ from functools import lru_cache
 
 from .errors import InputError
 
-__all__ = ["DIMENSIONS", "is_bare", "registry", "to_si"]
+__all__ = ["DIMENSIONS", "is_bare", "registry", "to_si", "unit_of"]
 
 #: What a case-file field measures -> its SI unit (a pint unit string; "" for pure numbers).
 DIMENSIONS = {

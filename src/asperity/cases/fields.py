@@ -214,13 +214,7 @@ def _bound_with_unit(err: dict, field: str, model: type[BaseModel] | None,
     bound = next(iter(err.get("ctx", {}).values()), None)
     if not unit or not isinstance(bound, int | float):
         return None
-    raw = data
-    for part in err["loc"]:
-        try:
-            raw = raw[part]
-        except (KeyError, IndexError, TypeError):
-            raw = None
-            break
+    raw = _written_at(data, err["loc"])
     value = err.get("input")
     got = f"{raw!r}" if isinstance(raw, str) else f"{value:g}"
     if isinstance(raw, int | float) and not isinstance(raw, bool) and raw != 0:
@@ -268,14 +262,21 @@ def _table_keys(model: type[BaseModel], loc) -> list[str]:
                               for name, info in table.model_fields.items()))
 
 
-def _given_keys(data, loc) -> set[str]:
-    """The keys the user wrote in the table at ``loc`` of the case's ``data``."""
+def _written_at(data, loc):
+    """The value the user wrote at ``loc`` (keys and list indices) of the case's ``data``,
+    or None where there is none."""
     for part in loc:
         try:
             data = data[part]
         except (KeyError, IndexError, TypeError):
-            return set()
-    return set(data) if isinstance(data, dict) else set()
+            return None
+    return data
+
+
+def _given_keys(data, loc) -> set[str]:
+    """The keys the user wrote in the table at ``loc`` of the case's ``data``."""
+    table = _written_at(data, loc)
+    return set(table) if isinstance(table, dict) else set()
 
 
 def _unknown_key(err: dict, model: type[BaseModel] | None, data) -> str:
