@@ -934,3 +934,19 @@ def test_a_generator_refusal_names_the_key_in_its_table_with_the_value():
                  "surface2": {"kind": "gaussian", "rms": "0.05 um", "correlation_length": 40}}
     with pytest.raises(InputError, match=r"^surface2\.correlation_length: .*got '40 m'$"):
         run_case(load_case(transient))
+
+
+def test_a_roll_off_longer_than_the_patch_is_reported_by_the_run():
+    """The runner's use of :func:`asperity.diagnostics.roughness_extent`: the built-in
+    ``rough-flat-normal`` (roll-off 0.1 mm on a 0.5 mm patch) is silent; with
+    ``rolloff_wavelength = 100`` (um meant, read in m) its run names the key and the grid."""
+    from asperity.cases import load_case
+    from asperity.examples import example_text
+    from asperity.runners import run_case
+
+    text = example_text("rough-flat-normal")
+    assert not [w for w in run_case(load_case(text)).warnings if "rolloff" in w]
+    text = text.replace('rolloff_wavelength = "0.1 mm"', "rolloff_wavelength = 100")
+    (line,) = [w for w in run_case(load_case(text)).warnings if "rolloff" in w]
+    assert line.startswith("roughness: rolloff_wavelength = 100 m is longer than the grid "
+                           "(500 µm x 500 µm;")

@@ -162,6 +162,17 @@ class SurfaceKeys(MeasuredFile):
 
     _path = field_validator("path")(measured_file)
 
+    def longest_lengths(self) -> dict:
+        """The longest lengths of a surface generated on its grid, as keywords of
+        :func:`asperity.diagnostics.roughness_extent`: a self-affine surface's
+        ``rolloff_wavelength``, a Gaussian one's ``correlation_length``; none for the other
+        kinds (a profile, a file, a built-in trace have their own length)."""
+        if self.kind == "self-affine":
+            return {"rolloff_wavelength": self.rolloff_wavelength}
+        if self.kind == "gaussian":
+            return {"correlation_length": self.correlation_length}
+        return {}
+
     def check_kind(self, need: dict, uses: dict | None = None) -> None:
         """Refuse a missing key that ``need[kind]`` names, reading keys of a measured file for
         another kind, a key that ``uses[kind]`` (when given) does not list, and a self-affine

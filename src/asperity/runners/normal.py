@@ -203,13 +203,14 @@ def _punch_note(case, res, x, y) -> list[str]:
 
 
 def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
-    """Trust checks (:mod:`asperity.diagnostics`): a modulus given as a bare number that may
-    have been meant in psi (:meth:`MaterialSpec.unit_doubts`) first, then a measured file's
+    """Trust checks (:mod:`asperity.diagnostics`): the case's bare numbers that may mean
+    another unit (:func:`asperity.cases.doubts.unit_doubts`) first, then a measured file's
     doubts (the reader's and its units', its sampling against the grid's), a surface that is
     not periodic on a periodic grid, then domain (a curved body's contact against the period;
     a nominally flat patch is a periodic representative surface, whose contact may span the
     period near full contact), mesh (the apparent contact, then a rough contact's spots),
-    roughness on the mesh and hardness."""
+    a generated roughness against the grid (its longest and shortest lengths) and
+    hardness."""
     size = None
     lines = unit_doubts(case)
     if on_grid is not None:
@@ -241,10 +242,8 @@ def _warnings(case, res, x, y, body1, body2, on_grid, spots) -> list[str]:
             spots, x, y, file_spacing=on_grid.file_spacing,
             cutoff_key="roughness.short_cutoff" if free else None)
     rough = case.roughness
-    if rough is not None and rough.kind in ("gaussian", "self-affine"):  # generated on the grid
-        lines += diagnostics.roughness_extent(
-            "roughness", x, y, rolloff_wavelength=rough.rolloff_wavelength,
-            correlation_length=rough.correlation_length if rough.kind == "gaussian" else None)
+    if rough is not None:
+        lines += diagnostics.roughness_extent("roughness", x, y, **rough.longest_lengths())
     if rough is not None and rough.kind in ("gaussian", "ground"):  # generated on the grid
         ell = rough.correlation_length
         if ell is None and rough.kind == "ground":

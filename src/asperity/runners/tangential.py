@@ -447,10 +447,8 @@ def _spot_warnings(case, fld) -> list[str]:
     spots = contact_spots(fld.pressure > 0, fld.pressure, fld.cell_area)
     spec = case.pressure.roughness
     free = spec.kind == "self-affine" and spec.short_cutoff is None
-    extent = [] if spec.kind not in ("gaussian", "self-affine") else \
-        diagnostics.roughness_extent(
-            "pressure.roughness", fld.x, fld.y, rolloff_wavelength=spec.rolloff_wavelength,
-            correlation_length=spec.correlation_length if spec.kind == "gaussian" else None)
+    extent = diagnostics.roughness_extent("pressure.roughness", fld.x, fld.y,
+                                          **spec.longest_lengths())
     return extent + diagnostics.spot_resolution(
         spots, fld.x, fld.y, file_spacing=rough.file_spacing,
         cutoff_key="pressure.roughness.short_cutoff" if free else None)
