@@ -160,20 +160,10 @@ class LubricantSpec(BareNumbers):
         return self
 
     def unit_doubts(self, key: str) -> list[str]:
-        """A line when ``eta0`` was a bare number of at least
-        :data:`~asperity.cases.doubts.BARE_VISCOSITY` Pa s (:mod:`asperity.cases.doubts`):
-        ``eta0 = 100`` is 100 Pa s, a bitumen's, where 100 mPa s (cP) was meant.
-
-        Parameters
-        ----------
-        key : str
-            The table's name, ``"lubricant"``.
-
-        Returns
-        -------
-        list of str
-            One line, or none.
-        """
+        """The doubt of this table, named ``key`` (:func:`asperity.cases.doubts.unit_doubts`):
+        a line when ``eta0`` was a bare number of at least
+        :data:`~asperity.cases.doubts.BARE_VISCOSITY` Pa s; ``eta0 = 100`` is 100 Pa s, a
+        bitumen's, where 100 mPa s (cP) was meant."""
         value = self.bare("eta0")
         if value is None or value < BARE_VISCOSITY:
             return []
@@ -273,21 +263,10 @@ class SpeedSpec(CaseModel):
         return self
 
     def unit_doubts(self, key: str) -> list[str]:
-        """A line when the slide/roll ratio ``xi`` is beyond 2 (:mod:`asperity.cases.doubts`):
-        the surfaces then move in opposite directions, which rigs seldom run and a ratio
-        meant in percent (``xi = 25`` for 25 %) gives without a word (u1 = 13.5 m/s,
-        u2 = -11.5 m/s at u = 1 m/s).
-
-        Parameters
-        ----------
-        key : str
-            The table's name, ``"speeds"``.
-
-        Returns
-        -------
-        list of str
-            One line, or none.
-        """
+        """The doubt of this table, named ``key`` (:func:`asperity.cases.doubts.unit_doubts`):
+        a line when the slide/roll ratio ``xi`` is beyond 2. The surfaces then move in
+        opposite directions, which rigs seldom run and a ratio meant in percent (``xi = 25``
+        for 25 %) gives without a word (u1 = 13.5 m/s, u2 = -11.5 m/s at u = 1 m/s)."""
         if self.xi is None or abs(self.xi) <= 2.0:
             return []
         u1, u2 = self.surface_speeds()
