@@ -41,9 +41,19 @@ def helical():
     return GearPair((23, 67), 3e-3, 20 * DEG, 15 * DEG, (0.3, 0.1), 40e-3)
 
 
+def planet_ring():
+    """A planet in its ring (an internal pair written as in ISO 21771: the ring negative)."""
+    return GearPair((27, -75), 3e-3, 20 * DEG, 0.0, (0.0, 0.0), 30e-3)
+
+
+def shifted_helical_ring():
+    return GearPair((24, -61), 2.5e-3, 20 * DEG, 12 * DEG, (0.3, 0.2), 25e-3)
+
+
+INTERNAL = [planet_ring, shifted_helical_ring]
 PAIRS = [khk_pair, fzg_c, helical,
          lambda: GearPair((20, 20), 5e-3, 25 * DEG, 0.0, (0.0, 0.0), 30e-3,
-                          tip_relief=(10e-6, 0.0))]
+                          tip_relief=(10e-6, 0.0)), *INTERNAL]
 
 
 def test_khk_worked_example():
@@ -93,15 +103,20 @@ def test_contact_ratio_two_routes(make):
 
 @pytest.mark.parametrize("make", PAIRS)
 def test_radii_sum_to_line_of_action(make):
-    """rho1 + rho2 = T1T2 = sqrt(a_w^2 - (r_b1 + r_b2)^2) (Pythagoras on the centre line)."""
+    """rho1 + rho2 = T1T2 = sqrt(a_w^2 - (r_b1 + r_b2)^2) (Pythagoras on the centre line); a
+    ring's concave flank rho2 = -(rho1 + T1T2) with T1T2 = sqrt(a_w^2 - (r_b2 - r_b1)^2)."""
     g = make()
     rho1 = g.path(25)
     kin = kinematics(g, rho1, 100.0)
-    t1t2 = math.sqrt(g.aw**2 - (g.rb[0] + g.rb[1]) ** 2)
-    assert kin.rho1 + kin.rho2 == pytest.approx(np.full(25, t1t2), rel=1e-12)
+    if g.internal:
+        t1t2 = math.sqrt(g.aw**2 - (g.rb[1] - g.rb[0]) ** 2)
+        assert kin.rho2 == pytest.approx(-(kin.rho1 + t1t2), rel=1e-12)
+    else:
+        t1t2 = math.sqrt(g.aw**2 - (g.rb[0] + g.rb[1]) ** 2)
+        assert kin.rho1 + kin.rho2 == pytest.approx(np.full(25, t1t2), rel=1e-12)
     # the tips: rho1 at E and rho2 at A are the involute radii sqrt(r_a^2 - r_b^2)
     assert kin.rho1[-1] == pytest.approx(math.sqrt(g.ra[0] ** 2 - g.rb[0] ** 2), rel=1e-12)
-    assert kin.rho2[0] == pytest.approx(math.sqrt(g.ra[1] ** 2 - g.rb[1] ** 2), rel=1e-12)
+    assert abs(kin.rho2[0]) == pytest.approx(math.sqrt(g.ra[1] ** 2 - g.rb[1] ** 2), rel=1e-12)
 
 
 @pytest.mark.parametrize("make", PAIRS)
@@ -555,3 +570,99 @@ def test_iso_nominal_stress_is_z_beta_times_the_pitch_hertz_pressure():
         p_h = math.sqrt(w * 210e9 / (2 * (1 - 0.09)) / (math.pi * radius))
         iso = nominal_contact_stress(pair, 250.0, steel, steel)
         assert iso.stress / p_h == pytest.approx(1 / math.sqrt(math.cos(beta)), rel=1e-9)
+
+
+def khk_internal(z1, z2, m, alpha, x1, x2_khk):
+    """An internal spur pair by the KHK/SDP-SI tables' own route (the ring's teeth positive,
+    its profile shift of the opposite sign to ISO 21771's, no tip alteration), written
+    independently of asperity's signed ISO formulas: working pressure angle, centre distance,
+    tip diameters and the contact ratio from the tips' involute lengths."""
+    inv_w = 2 * math.tan(alpha) * (x2_khk - x1) / (z2 - z1) + involute(alpha)
+    alpha_w = inverse_involute(inv_w)
+    a = (z2 - z1) * m / 2 * math.cos(alpha) / math.cos(alpha_w)
+    da1, da2 = m * (z1 + 2 + 2 * x1), m * (z2 - 2 + 2 * x2_khk)
+    rb1, rb2 = (m * z * math.cos(alpha) / 2 for z in (z1, z2))
+    eps = (math.sqrt((da1 / 2) ** 2 - rb1**2) - math.sqrt((da2 / 2) ** 2 - rb2**2)
+           + a * math.sin(alpha_w)) / (math.pi * m * math.cos(alpha))
+    return alpha_w, a, (da1, da2), eps
+
+
+@pytest.mark.parametrize("x1, x2_iso", [(0.0, 0.0), (0.3, 0.2), (0.5, -0.25)])
+def test_internal_pair_against_the_khk_route(x1, x2_iso):
+    """A 24 / -60 pair, m 3, 20 deg, ISO 21771 signs (ring z2 < 0, x2 with ISO's sign)
+    against the KHK route with the ring's shift written -x2: working pressure angle,
+    centre distance, tips and contact ratio to 1e-9."""
+    g = GearPair((24, -60), 3e-3, 20 * DEG, 0.0, (x1, x2_iso), 30e-3)
+    alpha_w, a, da, eps = khk_internal(24, 60, 3e-3, 20 * DEG, x1, -x2_iso)
+    assert g.internal and g.ratio == pytest.approx(-2.5)
+    assert g.alpha_wt == pytest.approx(alpha_w, rel=1e-9)
+    assert g.aw == pytest.approx(a, rel=1e-9)
+    assert np.array(g.da) == pytest.approx(da, rel=1e-9)
+    assert g.contact_ratio == pytest.approx(eps, rel=1e-9)
+    # a standard pair: a = (z2 - z1) m / 2 = 54 mm and d_w = d
+    if x1 == x2_iso == 0.0:
+        assert g.aw == pytest.approx(54e-3, rel=1e-12)
+        assert np.array(g.dw) == pytest.approx([72e-3, 180e-3], rel=1e-12)
+
+
+def test_internal_reduced_radius_speeds_and_sliding():
+    """At the pitch point of the planet-ring pair the flanks roll at omega1 r_w1 sin alpha_w
+    with the reduced radius rho1 rho2 / (rho2 - rho1) of a convex flank in a concave one
+    (rho_i = r_bi tan alpha_w); along the path the ring's flank moves the pinion's way and
+    the sliding is (1 - z1/|z2|) omega1 s, 1 - 27/75 = 0.64 of an external pair's
+    (1 + z1/z2) omega1 s with the same pinion."""
+    g = planet_ring()
+    omega1 = 800 * 2 * math.pi / 60
+    kin = kinematics(g, g.path(25), omega1)
+    rho1_c, rho2_c = (rb * math.tan(20 * DEG) for rb in g.rb)
+    i_c = int(np.argmin(np.abs(kin.distance)))
+    assert kin.reduced_radius[i_c] == pytest.approx(rho1_c * rho2_c / (rho2_c - rho1_c),
+                                                    rel=1e-12)
+    assert kin.reduced_radius[i_c] == pytest.approx(21.64e-3, rel=1e-3)  # 13.85 x 38.48 / 24.63
+    assert kin.u1[i_c] == pytest.approx(omega1 * 0.5 * 81e-3 * math.sin(20 * DEG), rel=1e-12)
+    assert kin.u2 == pytest.approx(-kin.rho2 * omega1 * 27 / 75, rel=1e-12)
+    assert np.all(kin.u2 > 0) and np.all(kin.reduced_radius > 0)
+    assert kin.sliding_speed == pytest.approx((1 - 27 / 75) * omega1 * kin.distance,
+                                              rel=1e-10, abs=1e-12)
+
+
+def test_trochoid_interference_of_a_standard_internal_pair():
+    """The pinion's tip clears the ring's tooth tips leaving the mesh from 9 teeth of
+    difference on for a standard 20 deg pair (SDP/SI's rule for a standard internal gear);
+    8 is refused at 30-60 pinion teeth, in one line naming gear.teeth's problem."""
+    for z1 in (30, 40, 60):
+        GearPair((z1, -(z1 + 9)), 2e-3, 20 * DEG, 0.0, (0.0, 0.0), 20e-3)
+        with pytest.raises(InputError, match="trochoid interference") as err:
+            GearPair((z1, -(z1 + 8)), 2e-3, 20 * DEG, 0.0, (0.0, 0.0), 20e-3)
+        assert err.value.field == "teeth" and f"needs {z1 + 9}" in str(err.value)
+
+
+@pytest.mark.parametrize("teeth, word", [
+    ((20, -60), "past T1"),  # the ring's tip circle crosses the line before T1
+    ((20, -30), "base diameter"),  # a standard ring below 34 teeth: tip inside the base circle
+    ((30, -30), "more teeth than the pinion"),
+    ((40, -30), "more teeth than the pinion"),
+])
+def test_internal_pairs_that_cannot_mesh_are_refused(teeth, word):
+    with pytest.raises(InputError, match=word):
+        GearPair(teeth, 3e-3, 20 * DEG, 0.0, (0.0, 0.0), 30e-3)
+
+
+def test_internal_centre_distance_and_backlash():
+    """A ring pair's teeth jam at a longer centre distance (the pinion goes deeper into the
+    ring) and gain backlash at a shorter one. At 0.2 mm less than the 54 mm of a standard
+    24 / -60 pair the backlash is the ring's space width less the pinion's tooth thickness on
+    the working pitch circles (tooth thickness at radius r by the involute, the ring's
+    tooth growing outwards), times cos alpha_w: 0.1349 mm."""
+    with pytest.raises(InputError, match="<= 54.0000 mm"):
+        GearPair((24, -60), 3e-3, 20 * DEG, 0.0, (0.0, 0.0), 30e-3, centre_distance=54.2e-3)
+    a, m, alpha = 53.8e-3, 3e-3, 20 * DEG
+    g = GearPair((24, -60), m, alpha, 0.0, (0.0, 0.0), 30e-3, centre_distance=a)
+    alpha_w = math.acos((90e-3 - 36e-3) * math.cos(alpha) / a)
+    dw1, dw2 = 2 * a * 24 / 36, 2 * a * 60 / 36
+    s = math.pi * m / 2  # both tooth thicknesses at the reference circles (no shift)
+    s_w1 = dw1 * (s / 72e-3 + involute(alpha) - involute(alpha_w))
+    s_w2 = dw2 * (s / 180e-3 - involute(alpha) + involute(alpha_w))
+    space_w2 = math.pi * dw2 / 60 - s_w2
+    assert g.backlash == pytest.approx((space_w2 - s_w1) * math.cos(alpha_w), rel=1e-9)
+    assert g.backlash * 1e3 == pytest.approx(0.1349, abs=1e-4)  # about 2 (0.2 mm) sin(alpha_w)

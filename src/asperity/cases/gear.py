@@ -4,7 +4,7 @@
 
     analysis = "gear"
     [gear]
-    teeth = [16, 24]
+    teeth = [16, 24]                     # a ring gear negative: [27, -75] (ISO 21771)
     normal_module = "4.5 mm"
     pressure_angle = "20 deg"
     helix_angle = "0 deg"
@@ -131,8 +131,10 @@ NON_PARALLEL_KEYS = frozenset({"shaft_angle", "axis_angle", "crossing_angle", "c
 class GearSpec(CaseModel):
     """``[gear]``: the involute pair (ISO 21771); lists are ``[pinion, wheel]``."""
 
-    teeth: tuple[Annotated[Integer, Field(ge=5, le=1000)], Annotated[Integer, Field(ge=5, le=1000)]]
-    """Numbers of teeth [pinion, wheel]."""
+    teeth: tuple[Annotated[Integer, Field(ge=5, le=1000)],
+                 Annotated[Integer, Field(ge=-1000, le=1000)]]
+    """Numbers of teeth [pinion, wheel]; a negative wheel is a ring gear (an internal pair,
+    ISO 21771: ``[27, -75]`` is a planet in its ring), with more teeth than the pinion."""
     normal_module: GearLength(*MODULE_RANGE)
     """Normal module m_n, 0.05 mm to 100 mm ("4 mm"; a bare number is metres; a diametral
     pitch "8 1/in" is refused with the module it means, 1/P)."""
@@ -157,15 +159,16 @@ class GearSpec(CaseModel):
     @classmethod
     def _parallel_axes(cls, data):
         """Refuse the keys of a bevel or crossed-axis pair in words (they were "unknown key
-        (check the spelling)"): only parallel-axis external pairs are modelled."""
+        (check the spelling)"): only parallel-axis pairs are modelled."""
         if isinstance(data, dict):
             for key in data:
                 if key in NON_PARALLEL_KEYS:
                     raise InputError(f"gear.{key}", "", problem=(
-                        "only parallel-axis external pairs (spur and helical, ISO 21771) are "
-                        "modelled; bevel, hypoid, worm and crossed-axis helical gears are not "
-                        "(their contact and sliding differ from a cylindrical pair's): give "
-                        "the pair's teeth, module and helix angle on parallel shafts"))
+                        "only parallel-axis pairs (spur and helical, external or internal, "
+                        "ISO 21771) are modelled; bevel, hypoid, worm and crossed-axis helical "
+                        "gears are not (their contact and sliding differ from a cylindrical "
+                        "pair's): give the pair's teeth, module and helix angle on parallel "
+                        "shafts"))
         return data
 
     @field_validator("helix_angle", mode="before")
@@ -183,16 +186,19 @@ class GearSpec(CaseModel):
 
     @field_validator("teeth", mode="before")
     @classmethod
-    def _external(cls, value):
-        """Refuse a negative number of teeth (ISO 21771's internal gear) in words: only
-        external pairs are modelled."""
-        if isinstance(value, list | tuple) and any(
-                isinstance(z, int | float) and not isinstance(z, bool) and z < 0
-                for z in value):
-            raise ValueError(
-                "expected the numbers of teeth of an external pair [pinion, wheel], both >= 5 "
-                "(a negative number of teeth is an internal gear in ISO 21771: internal, "
-                f"ring-gear and planetary meshes are not modelled), got {list(value)}")
+    def _ring_second(cls, value):
+        """Refuse in words a negative pinion (the pinion of an internal pair is the external
+        gear, the ring the wheel) and a ring of fewer than 5 teeth."""
+        if isinstance(value, list | tuple) and len(value) == 2 and all(
+                isinstance(z, int | float) and not isinstance(z, bool) for z in value):
+            if value[0] < 0:
+                raise ValueError(
+                    "expected [pinion, wheel] with the pinion external (> 0): an internal pair "
+                    "is written with the ring gear as the wheel, negative (ISO 21771), e.g. "
+                    f"[{abs(value[0]):g}, {-abs(value[1]):g}], got {list(value)}")
+            if -5 < value[1] < 5:
+                raise ValueError("expected a wheel of at least 5 teeth (negative: a ring gear "
+                                 f"of at least 5), got {list(value)}")
         return value
 
     @field_validator("normal_module", mode="before")

@@ -1,4 +1,5 @@
-"""Involute geometry of an external spur or helical gear pair and its path of contact (ISO 21771).
+"""Involute geometry of a spur or helical gear pair, external or internal, and its path of
+contact (ISO 21771).
 
 All lengths in m, angles in rad. Subscript 1 is the pinion (the driving gear), 2 the wheel.
 The relations (ISO 21771:2007, clauses 4 and 5; the same as in any gear textbook)::
@@ -22,6 +23,37 @@ are also the transverse radii of curvature of the pinion flank (``rho2 = T1T2 - 
     B = E - p_bt, D = A + p_bt   lowest and highest points of single contact on the pinion
     p_bt = pi m_t cos alpha_t = 2 pi r_b1 / z1   (transverse base pitch)
     eps_alpha = (E - A) / p_bt,  eps_beta = b sin beta / (pi m_n)
+
+An internal pair (a planetary's planet and ring) is written as in ISO 21771: the wheel (the
+ring) has a negative number of teeth ``z2 < 0``; diameters, radii and the centre distance are
+positive (ISO 21771:2007, unlike DIN 3960's negative ones), and the profile shift keeps ISO's
+sign: ``x2 > 0`` moves the ring's tip circle towards its axis (the KHK/JIS tables write the
+opposite sign). With ``|z2|`` the ring's teeth and ``d2 = |z2| m_t``::
+
+    inv alpha_wt = inv alpha_t + 2 tan alpha_n (x1 + x2) / (z1 + z2)   (z2 < 0; no backlash)
+    a_w = (d2 - d1) cos alpha_t / (2 cos alpha_wt),  cos alpha_wt = (d_b2 - d_b1) / (2 a_w)
+    j_bn = 2 a_w (inv alpha_wt0 - inv alpha_wt) cos alpha_wt cos beta_b
+                                       (a longer centre distance takes backlash away)
+    d_a2 = d2 - 2 m_n (1 + x2)          the ring's tip circle (no tip alteration)
+    s_a2 = d_a2 (s2/d2 - inv alpha_t + inv alpha_a2)   ring tooth thickness at its tip
+
+Both base circles touch the line of action on the same side of the contact, T2 beyond T1
+(``T1T2 = a_w sin alpha_wt``), so the ring's flank is concave with the signed radius of
+curvature ``rho2 = -(rho1 + T1T2)``; contact starts at the ring's tip,
+``A: rho1 = sqrt(r_a2^2 - r_b2^2) - T1T2``, and ends at the pinion's, as above. The ring's
+tip must not reach past T1 (``A > 0``), and the pinion's tip must clear the ring's tooth
+tips as it leaves the mesh (no trochoid interference, SDP/SI *Elements of metric gear
+technology*, eqs. 5-6 to 5-8, in transverse quantities)::
+
+    (z1/|z2|) theta1 + inv alpha_wt - inv alpha_a2 >= theta2,
+    theta1 = acos((r_a2^2 - r_a1^2 - a_w^2) / (2 a_w r_a1)) + inv alpha_a1 - inv alpha_wt,
+    theta2 = acos((a_w^2 + r_a2^2 - r_a1^2) / (2 a_w r_a2)),
+
+which a standard 20 deg pair meets from ``|z2| - z1 = 9`` (the reference's rule: 9 teeth
+of difference or more); with fewer than 34 teeth a standard ring's tip circle lies inside
+its base circle. The ring is not checked
+for undercut (it is cut by a pinion-type cutter; the cutter's own interference limits are a
+manufacturing matter).
 """
 
 from __future__ import annotations
@@ -34,7 +66,7 @@ import numpy as np
 from ..errors import InputError, check_positive
 
 __all__ = ["BACKLASH_FACTOR", "MIN_TIP_THICKNESS", "GearPair", "involute", "inverse_involute",
-           "minimum_backlash"]
+           "minimum_backlash", "trochoid_clearance"]
 
 #: Normal tooth thickness at the tip, in normal modules, below which a pair is warned about
 #: (a common design minimum: a thinner tip chips, and a case-hardened one hardens through;
@@ -80,6 +112,45 @@ def inverse_involute(value: float) -> float:
     return alpha
 
 
+def _check_undercut(name: str, z: int, x: float, alpha_t: float, cos_b: float):
+    """Refuse undercut of an external gear, ``x < 1 - z sin^2(alpha_t) / (2 cos beta)`` (the
+    basic rack's addendum 1)."""
+    x_min = 1.0 - z * math.sin(alpha_t) ** 2 / (2.0 * cos_b)
+    z_min = 2.0 * cos_b / math.sin(alpha_t) ** 2  # x_min = 0
+    if x < x_min - 1e-9:
+        raise InputError("profile_shift", (
+            f"no undercut: the {name} shift x = {x:.4f} is below x_min = {x_min:.4f} = "
+            f"1 - z sin^2(alpha_t) / (2 cos beta) for z = {z} (without shift a gear "
+            f"needs z >= 2 cos beta / sin^2(alpha_t) = {z_min:.4g}"
+            " teeth); raise the profile shift"))
+
+
+def trochoid_clearance(z1: int, z2: int, ra, rb, aw: float, alpha_wt: float) -> float:
+    """Margin against trochoid interference of an internal pair, rad (module notes; SDP/SI
+    eqs. 5-6 to 5-8): ``(z1/z2) theta1 + inv alpha_wt - inv alpha_a2 - theta2``, negative
+    where the pinion's tip cuts into the ring's tooth tips as it leaves the mesh.
+
+    Parameters
+    ----------
+    z1, z2 : int
+        Teeth of pinion and ring (``z2`` as a positive count).
+    ra, rb : (float, float)
+        Tip and base radii of pinion and ring, m (the ring's tip radius is its inner circle).
+    aw : float
+        Working centre distance, m.
+    alpha_wt : float
+        Working transverse pressure angle, rad.
+    """
+    (ra1, ra2), (rb1, rb2) = ra, rb
+    cos1 = (ra2**2 - ra1**2 - aw**2) / (2.0 * aw * ra1)
+    cos2 = (aw**2 + ra2**2 - ra1**2) / (2.0 * aw * ra2)
+    if not (-1.0 <= cos1 <= 1.0 and -1.0 <= cos2 <= 1.0):
+        return math.inf  # the tip circles do not cross: the pinion tip never meets the ring's
+    theta1 = math.acos(cos1) + involute(math.acos(rb1 / ra1)) - involute(alpha_wt)
+    theta2 = math.acos(cos2)
+    return z1 / z2 * theta1 + involute(alpha_wt) - involute(math.acos(rb2 / ra2)) - theta2
+
+
 def _pair(name: str, values, positive: bool = False) -> tuple[float, float]:
     try:
         first, second = (float(v) for v in values)
@@ -98,12 +169,13 @@ def _derived(name: str, doc: str) -> property:
 
 @dataclass(frozen=True)
 class GearPair:
-    """An external involute gear pair (spur for ``helix_angle = 0``).
+    """An involute gear pair, external or internal (spur for ``helix_angle = 0``).
 
     Parameters
     ----------
     teeth : (int, int)
-        Numbers of teeth z1 (pinion), z2 (wheel).
+        Numbers of teeth z1 (pinion), z2 (wheel); ``z2 < 0`` is an internal wheel (a ring
+        gear, ISO 21771), which needs more teeth than the pinion, ``|z2| > z1``.
     normal_module : float
         m_n, m.
     pressure_angle : float
@@ -116,9 +188,11 @@ class GearPair:
         Common face width b, m.
     centre_distance : float, optional
         Working centre distance a_w, m; default the backlash-free distance of the shifts.
-        A distance shorter than that is refused (the teeth would jam).
+        A distance shorter than that (longer for an internal pair) is refused (the teeth
+        would jam).
     tip_diameter : (float, float), optional
-        d_a1, d_a2, m; default ISO 21771's standard tips with the tip alteration k.
+        d_a1, d_a2, m; default ISO 21771's standard tips with the tip alteration k (an
+        internal pair's without it).
     tip_relief : (float, float)
         Amount of tip relief C_a of pinion and wheel, m (changes the load sharing).
     crowning : (float, float)
@@ -128,8 +202,9 @@ class GearPair:
     Raises
     ------
     InputError
-        Interference (the mating tip passes the point of tangency of a base circle), a
-        pointed tip, a transverse contact ratio below 1, undercut, tips below the base circle.
+        Interference (the mating tip passes the point of tangency of a base circle, or an
+        internal pair's trochoid interference), a pointed tip, a transverse contact ratio
+        below 1, undercut of the pinion or of an external wheel, tips below the base circle.
     """
 
     teeth: tuple
@@ -149,8 +224,12 @@ class GearPair:
             z1, z2 = (int(z) for z in self.teeth)
         except (TypeError, ValueError):
             raise InputError("teeth", "two integers (pinion, wheel)", self.teeth) from None
-        if any(isinstance(z, bool) or int(z) != z for z in self.teeth) or min(z1, z2) < 5:
-            raise InputError("teeth", "two integers >= 5 (pinion, wheel)", self.teeth)
+        if any(isinstance(z, bool) or int(z) != z for z in self.teeth) or min(z1, abs(z2)) < 5:
+            raise InputError("teeth", "two integers >= 5 (pinion, wheel; a negative wheel is a "
+                             "ring gear)", self.teeth)
+        if z2 < 0 and not -z2 > z1:
+            raise InputError("teeth", f"a ring gear with more teeth than the pinion, |z2| > "
+                             f"{z1}", self.teeth)
         mn = check_positive("normal_module", self.normal_module)
         alpha_n = check_positive("pressure_angle", self.pressure_angle)
         if not alpha_n < math.radians(45):
@@ -172,38 +251,45 @@ class GearPair:
         object.__setattr__(self, "derived", self._derive(z1, z2, mn, alpha_n, beta, x1, x2, b))
 
     def _derive(self, z1, z2, mn, alpha_n, beta, x1, x2, b) -> dict:
-        """Every derived quantity of ISO 21771 the path of contact needs, checked."""
+        """Every derived quantity of ISO 21771 the path of contact needs, checked (module
+        notes; ``z2 < 0``: an internal pair, with the signs written there)."""
+        internal = z2 < 0
+        side = -1.0 if internal else 1.0  # the wheel's base circle across the line of action
         cos_b = math.cos(beta)
         alpha_t = math.atan(math.tan(alpha_n) / cos_b)
         mt = mn / cos_b
-        d = (z1 * mt, z2 * mt)
+        d = (z1 * mt, abs(z2) * mt)
         db = tuple(di * math.cos(alpha_t) for di in d)
         beta_b = math.asin(abs(math.sin(beta)) * math.cos(alpha_n))
-        a0 = 0.5 * (d[0] + d[1])
+        a0 = 0.5 * (d[1] + side * d[0])
         inv_wt = involute(alpha_t) + 2.0 * math.tan(alpha_n) * (x1 + x2) / (z1 + z2)
         if not inv_wt > 0:
             raise InputError("profile_shift", "a sum x1 + x2 giving a positive working "
                              "pressure angle", (x1, x2))
-        tight = 0.5 * (db[0] + db[1]) / math.cos(inverse_involute(inv_wt))
+        base = 0.5 * (db[1] + side * db[0])  # a_w cos alpha_wt
+        tight = base / math.cos(inverse_involute(inv_wt))
         if self.centre_distance is None:
             aw = tight
         else:
             aw = check_positive("centre_distance", self.centre_distance)
-            if aw < tight * (1.0 - 1e-6):
-                raise InputError("centre_distance", f">= {tight * 1e3:.4f} mm, the distance at "
-                                 "which the shifted teeth mesh without backlash (they would "
-                                 "jam)", f"{aw * 1e3:.4f} mm")
-            if not aw > 0.5 * (db[0] + db[1]):
-                raise InputError("centre_distance", "more than the sum of the base radii",
+            if side * (aw - tight) < -1e-6 * tight:
+                raise InputError("centre_distance", (
+                    f"{'<=' if internal else '>='} {tight * 1e3:.4f} mm, the distance at which "
+                    "the shifted teeth mesh without backlash (they would jam)"),
+                    f"{aw * 1e3:.4f} mm")
+            if not aw > base:
+                raise InputError("centre_distance", "more than the "
+                                 + ("difference" if internal else "sum") + " of the base radii",
                                  aw)
-        alpha_wt = math.acos(0.5 * (db[0] + db[1]) / aw)
+        alpha_wt = math.acos(base / aw)
         # the working pitch circles' pitch less both tooth thicknesses there, 2 a_w (inv
-        # alpha_wt - inv alpha_wt0), in the normal direction
-        backlash = (2.0 * aw * (involute(alpha_wt) - inv_wt) * math.cos(alpha_wt)
+        # alpha_wt - inv alpha_wt0) (the other sign for an internal pair), in the normal
+        # direction
+        backlash = (2.0 * side * aw * (involute(alpha_wt) - inv_wt) * math.cos(alpha_wt)
                     * math.cos(beta_b))
         if self.tip_diameter is None:
-            k = min(0.0, (aw - a0) / mn - (x1 + x2))
-            da = (d[0] + 2.0 * mn * (1.0 + x1 + k), d[1] + 2.0 * mn * (1.0 + x2 + k))
+            k = 0.0 if internal else min(0.0, (aw - a0) / mn - (x1 + x2))
+            da = (d[0] + 2.0 * mn * (1.0 + x1 + k), d[1] + 2.0 * side * mn * (1.0 + x2 + k))
         else:
             da = _pair("tip_diameter", self.tip_diameter, positive=True)
         for i, name in enumerate(("pinion", "wheel")):
@@ -213,38 +299,46 @@ class GearPair:
         rb = (0.5 * db[0], 0.5 * db[1])
         ra = (0.5 * da[0], 0.5 * da[1])
         t1t2 = aw * math.sin(alpha_wt)
-        rho_a = t1t2 - math.sqrt(ra[1] ** 2 - rb[1] ** 2)
+        rho_a = side * (t1t2 - math.sqrt(ra[1] ** 2 - rb[1] ** 2))
         rho_e = math.sqrt(ra[0] ** 2 - rb[0] ** 2)
         rho_c = rb[0] * math.tan(alpha_wt)
         pbt = math.pi * mt * math.cos(alpha_t)
         tip_thickness = []
         for i, (z, x, name) in enumerate(((z1, x1, "pinion"), (z2, x2, "wheel"))):
-            x_min = 1.0 - z * math.sin(alpha_t) ** 2 / (2.0 * cos_b)
-            z_min = 2.0 * cos_b / math.sin(alpha_t) ** 2  # x_min = 0
-            if x < x_min - 1e-9:
-                raise InputError("profile_shift", (
-                    f"no undercut: the {name} shift x = {x:.4f} is below x_min = {x_min:.4f} = "
-                    f"1 - z sin^2(alpha_t) / (2 cos beta) for z = {z} (without shift a gear "
-                    f"needs z >= 2 cos beta / sin^2(alpha_t) = {z_min:.4g}"
-                    " teeth); raise the profile shift"))
+            if z > 0:
+                _check_undercut(name, z, x, alpha_t, cos_b)
             s_ref = mt * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
             alpha_a = math.acos(db[i] / da[i])
-            s_tip = da[i] * (s_ref / d[i] + involute(alpha_t) - involute(alpha_a))
+            s_tip = da[i] * (s_ref / d[i] + math.copysign(1.0, z)
+                             * (involute(alpha_t) - involute(alpha_a)))
             tip_thickness.append(s_tip)
             if not s_tip > 0:
                 raise InputError("tip_diameter", (
                     f"no pointed tip: the {name} tooth thickness at the tip is "
-                    f"{s_tip * 1e3:.4f} mm; reduce the tip diameter or the profile shift"))
+                    f"{s_tip * 1e3:.4f} mm; reduce the tip diameter or the profile shift"
+                    if z > 0 else
+                    f"no pointed tip: the ring's tooth thickness at its tip is "
+                    f"{s_tip * 1e3:.4f} mm; raise the ring's tip diameter or lower its "
+                    "profile shift"))
         if not rho_a > 0:
             raise InputError("tip_diameter", (
                 f"no interference: the wheel tip reaches {-rho_a * 1e3:.3f} mm past T1, where "
-                "the line of action touches the pinion's base circle; reduce the wheel tip "
-                "diameter or raise the pinion profile shift"))
-        if not rho_e < t1t2:
+                "the line of action touches the pinion's base circle; "
+                + ("raise the ring's tip diameter or the pinion profile shift" if internal else
+                   "reduce the wheel tip diameter or raise the pinion profile shift")))
+        if not internal and not rho_e < t1t2:
             raise InputError("tip_diameter", (
                 "no interference: the pinion tip reaches past T2, where the line of action "
                 "touches the wheel's base circle; reduce the pinion tip diameter or raise the "
                 "wheel profile shift"))
+        if internal:
+            clearance = trochoid_clearance(z1, -z2, ra, rb, aw, alpha_wt)
+            if not clearance >= 0:
+                raise InputError("teeth", (
+                    f"no trochoid interference: leaving the mesh, the pinion tip cuts into the "
+                    f"ring's tooth tips (by {-math.degrees(clearance):.3f} deg of ring "
+                    f"rotation); give the ring more teeth (a standard 20 deg pair needs "
+                    f"{z1 + 9}), or a smaller pinion tip or a larger ring tip diameter"))
         eps_alpha = (rho_e - rho_a) / pbt
         if not eps_alpha >= 1.0:
             raise InputError("centre_distance", (
@@ -253,7 +347,7 @@ class GearPair:
         return {
             "alpha_t": alpha_t, "mt": mt, "d": d, "db": db, "rb": rb, "da": da, "ra": ra,
             "beta_b": beta_b, "a0": a0, "aw": aw, "alpha_wt": alpha_wt,
-            "dw": (2.0 * aw * z1 / (z1 + z2), 2.0 * aw * z2 / (z1 + z2)),
+            "dw": (2.0 * aw * z1 / abs(z1 + z2), 2.0 * aw * abs(z2) / abs(z1 + z2)),
             "t1t2": t1t2, "pbt": pbt, "eps_alpha": eps_alpha,
             "eps_beta": b * abs(math.sin(beta)) / (math.pi * mn),
             "path": {"A": rho_a, "B": rho_e - pbt, "C": rho_c, "D": rho_a + pbt, "E": rho_e},
@@ -270,9 +364,9 @@ class GearPair:
     rb = _derived("rb", "Base radii, m.")
     da = _derived("da", "Tip diameters (given or ISO 21771 standard), m.")
     ra = _derived("ra", "Tip radii, m.")
-    dw = _derived("dw", "Working pitch diameters 2 a_w z / (z1 + z2), m.")
+    dw = _derived("dw", "Working pitch diameters 2 a_w |z| / |z1 + z2|, m.")
     beta_b = _derived("beta_b", "Base helix angle, rad.")
-    a0 = _derived("a0", "Reference centre distance (d1 + d2)/2, m.")
+    a0 = _derived("a0", "Reference centre distance (d1 + d2)/2 ((d2 - d1)/2 internal), m.")
     aw = _derived("aw", "Working centre distance, m.")
     alpha_wt = _derived("alpha_wt", "Working transverse pressure angle, rad.")
     t1t2 = _derived("t1t2", "Length T1T2 = a_w sin alpha_wt of the line of action, m.")
@@ -316,7 +410,8 @@ class GearPair:
                       / (2.0 * math.tan(alpha_n)))
             lines.append(
                 f"gear.centre_distance: {self.aw * 1e3:.4g} mm is "
-                f"{(self.aw - self.tight_centre_distance) * 1e3:.4g} mm more than the "
+                f"{abs(self.aw - self.tight_centre_distance) * 1e3:.4g} mm "
+                f"{'less' if self.internal else 'more'} than the "
                 f"{self.tight_centre_distance * 1e3:.6g} mm at which the profile shifts "
                 f"(x1 + x2 = {sum(self.profile_shift):.4g}) mesh without backlash: a normal "
                 f"backlash of {self.backlash * 1e3:.3g} mm = {self.backlash / mn:.3g} m_n, "
@@ -337,7 +432,7 @@ class GearPair:
 
     @property
     def ratio(self) -> float:
-        """Gear ratio u = z2 / z1."""
+        """Gear ratio u = z2 / z1 (negative for an internal pair, as in ISO 6336)."""
         return self.teeth[1] / self.teeth[0]
 
     @property
@@ -373,9 +468,17 @@ class GearPair:
         """True when either flank is crowned: the contact is then elliptical."""
         return max(self.crowning) > 0
 
+    @property
+    def internal(self) -> bool:
+        """True for an internal pair (a ring gear, ``z2 < 0``)."""
+        return self.teeth[1] < 0
+
     def rho2(self, rho1):
-        """Transverse radius of curvature of the wheel flank, T1T2 - rho1, m."""
-        return self.derived["t1t2"] - np.asarray(rho1, dtype=float)
+        """Signed transverse radius of curvature of the wheel flank, m: T1T2 - rho1 (convex),
+        or -(rho1 + T1T2) for a ring gear (concave, negative as in ISO 21771)."""
+        rho1 = np.asarray(rho1, dtype=float)
+        t1t2 = self.derived["t1t2"]
+        return -(rho1 + t1t2) if self.internal else t1t2 - rho1
 
     def roll_angle(self, rho1):
         """Pinion roll angle rho1 / r_b1, rad (the tangent of the pressure angle there)."""

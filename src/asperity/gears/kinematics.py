@@ -1,7 +1,11 @@
 """Rolling and sliding speeds and radii of curvature along the path of contact.
 
 At a point of the line of action at distance ``rho1`` from T1 the flanks have the transverse
-radii of curvature ``rho1`` and ``rho2 = T1T2 - rho1`` (ISO 21771, clause 5), and each flank
+radii of curvature ``rho1`` and ``rho2 = T1T2 - rho1`` (ISO 21771, clause 5; a ring gear's
+concave flank ``rho2 = -(rho1 + T1T2)``, negative, and it turns the same way as the pinion,
+``omega2 = omega1 z1 / z2 < 0`` with ``z2 < 0``, so that its speed ``omega2 rho2`` has the
+pinion's sign and the reduced radius ``r1 r2 / (r1 + r2)`` is ``r1 |r2| / (|r2| - r1)``), and
+each flank
 moves across the line of action at its rolling speed ``omega_i rho_i``. In a helical pair
 the flank velocity at the contact is ``omega_i (rho_i`` across the plane of action, ``+ r_bi``
 within it``)``: the part within the plane splits into the normal approach ``omega_i r_bi cos
@@ -10,7 +14,8 @@ the entraining speeds across the contact line are the transverse ``omega_i rho_i
 in the section perpendicular to the contact line are ``rho_i / cos beta_b``.
 
 Sliding: ``u1 - u2 = (omega1 + omega2) s`` with ``s = rho1 - rho1(C)`` the signed distance
-from the pitch point, since ``omega1 rho1(C) = omega2 rho2(C)`` there.
+from the pitch point, since ``omega1 rho1(C) = omega2 rho2(C)`` there (an internal pair slides
+``omega1 + omega2 = omega1 (1 - z1/|z2|)`` times less than an external one).
 """
 
 from __future__ import annotations
@@ -33,13 +38,15 @@ class Kinematics:
     Attributes
     ----------
     rho1, rho2 : ndarray
-        Transverse radii of curvature of pinion and wheel flank, m.
+        Transverse radii of curvature of pinion and wheel flank, m (``rho2 < 0``: a ring
+        gear's concave flank).
     roll_angle : ndarray
         Pinion roll angle rho1 / r_b1, rad.
     distance : ndarray
         Signed distance from the pitch point along the line of action, m (positive towards E).
     radius1, radius2, reduced_radius : ndarray
-        Normal-section radii rho_i / cos beta_b and R = r1 r2 / (r1 + r2), m.
+        Normal-section radii rho_i / cos beta_b (signed as ``rho_i``) and
+        R = r1 r2 / (r1 + r2) > 0, m.
     u1, u2 : ndarray
         Rolling speeds of pinion and wheel flank normal to the contact line, m/s.
     sliding_speed : ndarray
@@ -82,7 +89,9 @@ def kinematics(pair: GearPair, rho1, pinion_speed: float) -> Kinematics:
     rho1 : array_like
         Positions on the line of action, distance from T1, m.
     pinion_speed : float
-        Angular speed omega1 of the pinion, rad/s (the wheel turns at omega1 z1 / z2).
+        Angular speed omega1 of the pinion, rad/s (the wheel turns at omega1 z1 / z2, the
+        other way for an external pair; a ring gear's speed is relative to the carrier of a
+        planetary stage when the pinion's is).
 
     Returns
     -------

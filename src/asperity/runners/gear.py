@@ -100,7 +100,9 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     dims = ("point",)
     fields = {
         "rho1": (kin.rho1, "m", "pinion transverse radius of curvature"),
-        "rho2": (kin.rho2, "m", "wheel transverse radius of curvature"),
+        "rho2": (kin.rho2, "m", "wheel transverse radius of curvature (negative: a ring "
+                 "gear's concave flank)" if pair.internal
+                 else "wheel transverse radius of curvature"),
         "distance": (kin.distance, "m", "distance from the pitch point on the line of action"),
         "reduced_radius": (kin.reduced_radius, "m", "reduced radius of curvature (normal)"),
         "u1": (kin.u1, "m/s", "pinion rolling speed"),
@@ -156,6 +158,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     rb1 = pair.rb[0]
     iso = nominal_contact_stress(pair, case.operation.torque, *case.bodies())
     summary = {
+        "internal_pair": pair.internal,
         "transverse_contact_ratio": pair.contact_ratio,
         "overlap_ratio": pair.overlap_ratio,
         "centre_distance_m": pair.aw,
