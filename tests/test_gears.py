@@ -639,7 +639,7 @@ def test_trochoid_interference_of_a_standard_internal_pair():
 
 @pytest.mark.parametrize("teeth, word", [
     ((20, -60), "past T1"),  # the ring's tip circle crosses the line before T1
-    ((20, -30), "base diameter"),  # a standard ring below 34 teeth: tip inside the base circle
+    ((20, -30), "at least 34 teeth"),  # a standard ring below 34: tip inside its base circle
     ((30, -30), "more teeth than the pinion"),
     ((40, -30), "more teeth than the pinion"),
 ])
@@ -666,3 +666,22 @@ def test_internal_centre_distance_and_backlash():
     space_w2 = math.pi * dw2 / 60 - s_w2
     assert g.backlash == pytest.approx((space_w2 - s_w1) * math.cos(alpha_w), rel=1e-9)
     assert g.backlash * 1e3 == pytest.approx(0.1349, abs=1e-4)  # about 2 (0.2 mm) sin(alpha_w)
+
+
+def test_a_pitch_point_outside_the_path_is_not_taken_as_a_path_point():
+    """A ring pair 31 / -89, m 2.5, x 0.25 / 0.8 meshes in recess alone: by hand (the KHK
+    route) C = r_b1 tan alpha_w = 6.34 mm lies 3.4 mm before A = 9.75 mm. The path had taken
+    C as a node with its load sharing extrapolated (X = 0.013, a "pitch" Hertz pressure of
+    85 MPa); now every node lies on A-E and carries a share of the ISO form."""
+    g = GearPair((31, -89), 2.5e-3, 20 * DEG, 0.0, (0.25, 0.8), 28e-3)
+    alpha_w, a, da, _ = khk_internal(31, 89, 2.5e-3, 20 * DEG, 0.25, -0.8)
+    rb1, rb2 = (0.5 * z * 2.5e-3 * math.cos(20 * DEG) for z in (31, 89))
+    c = rb1 * math.tan(alpha_w)
+    start = math.sqrt((da[1] / 2) ** 2 - rb2**2) - a * math.sin(alpha_w)
+    assert c * 1e3 == pytest.approx(6.34, abs=0.01) and start * 1e3 == pytest.approx(9.75, abs=0.01)
+    assert not g.pitch_on_path and planet_ring().pitch_on_path
+    rho = g.path(9)
+    pts = g.points
+    assert rho.min() >= pts["A"] and rho.max() <= pts["E"]
+    assert pts["B"] in rho and pts["D"] in rho
+    assert np.all(load_sharing(g, rho) >= 1 / 3 - 1e-12)

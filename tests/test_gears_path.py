@@ -245,6 +245,28 @@ def test_a_planet_in_its_ring_from_the_command_line(tmp_path):
     assert ratio == pytest.approx(moes / float(ext["formula_central_film"][j_c]), rel=0.02)
 
 
+def test_a_pair_meshing_in_recess_alone_has_no_pitch_rows(tmp_path):
+    """The planet-ring case with x = 0.25 / 0.8 on a z 31 / -89 pair: its pitch point lies
+    before A. The run had reported a pitch Hertz pressure of 85 MPa and a pitch lambda (exit
+    0, no word); the pitch rows are now NaN with a note naming the path's roll angles, the
+    films are compared at A, and a hand-off at the pitch point is refused in words."""
+    text = (RING_CASE.replace("[27, -75]", "[31, -89]").replace('"3 mm"', '"2.5 mm"')
+            .replace("[gear]", "[gear]\nprofile_shift = [0.25, 0.8]"))
+    case = tmp_path / "recess.toml"
+    case.write_text(text)
+    out = CliRunner().invoke(app, ["gear", str(case), "--out", str(tmp_path / "o"), "-q"])
+    assert out.exit_code == 0, out.output
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["pitch_hertz_pressure_pa"] is None and summary["pitch_lambda"] is None
+    assert summary["maximum_hertz_pressure_pa"] > 3e8
+    report = (tmp_path / "o" / "report.html").read_text()
+    assert "lies outside the path of contact" in report and "film at A" in report
+    out = CliRunner().invoke(app, ["gear", str(case), "--out", str(tmp_path / "p"), "-q",
+                                   "--emit-transient", str(tmp_path / "t"), "--at", "pitch"])
+    assert out.exit_code == 2
+    assert "pitch point lies outside the path of contact" in out.output
+
+
 @pytest.mark.parametrize("name", ["gear-fzg-c", "gear-fzg-c-crowned", "gear-helical-industrial",
                                   "gear-planet-ring"])
 def test_examples_validate(name):

@@ -292,6 +292,13 @@ class GearPair:
             da = (d[0] + 2.0 * mn * (1.0 + x1 + k), d[1] + 2.0 * side * mn * (1.0 + x2 + k))
         else:
             da = _pair("tip_diameter", self.tip_diameter, positive=True)
+        if internal and self.tip_diameter is None and not da[1] > db[1]:
+            z_min = math.ceil(2.0 * (1.0 + x2) * cos_b / (1.0 - math.cos(alpha_t)) - 1e-9)
+            raise InputError("teeth", (
+                f"a ring whose tip circle lies outside its base circle: its standard tip "
+                f"diameter d2 - 2 m_n (1 + x2) = {da[1] * 1e3:.4f} mm is inside its base "
+                f"circle {db[1] * 1e3:.4f} mm, where its involute begins; give the ring at "
+                f"least {z_min} teeth at this shift, or lower its profile shift x2"))
         for i, name in enumerate(("pinion", "wheel")):
             if not da[i] > db[i]:
                 raise InputError(f"tip_diameter ({name})", f"more than the base diameter "
@@ -341,6 +348,11 @@ class GearPair:
                     f"{z1 + 9}), or a smaller pinion tip or a larger ring tip diameter"))
         eps_alpha = (rho_e - rho_a) / pbt
         if not eps_alpha >= 1.0:
+            if internal:
+                raise InputError("tip_diameter", (
+                    f"a transverse contact ratio >= 1 (it is {eps_alpha:.3f}: the mesh loses "
+                    "contact); raise the pinion's tip diameter or lower the ring's (its tip "
+                    "circle nearer its axis)"))
             raise InputError("centre_distance", (
                 f"a transverse contact ratio >= 1 (it is {eps_alpha:.3f}: the mesh loses "
                 "contact); raise the tip diameters or reduce the centre distance"))
@@ -494,18 +506,28 @@ class GearPair:
                              f"{math.degrees(angle):.3f} deg")
         return rho
 
+    @property
+    def pitch_on_path(self) -> bool:
+        """Whether the pitch point C lies on the path of contact A-E. Heavily shifted pairs
+        (an internal pair with ``x2 = 0.8``, C 3.4 mm before A) mesh in recess or approach
+        alone; their path has no pitch point."""
+        pts = self.derived["path"]
+        return pts["A"] <= pts["C"] <= pts["E"]
+
     def path(self, n: int) -> np.ndarray:
-        """``n`` positions rho1 (m) spread evenly from A to E, with B, C and D always among
-        them: each takes the nearest interior node not yet taken, in that order. (Moving only
-        a node within half a spacing lost C when B-D is short against the spacing: 5 points
-        on a pair with contact ratio 1.66 reported the "pitch" film 1.27 mm from C, and a
-        maximum Hertz pressure 19 % low.)"""
+        """``n`` positions rho1 (m) spread evenly from A to E, with B, D and C (where it lies
+        on the path, :attr:`pitch_on_path`) always among them: each takes the nearest
+        interior node not yet taken, in that order. (Moving only a node within half a spacing
+        lost C when B-D is short against the spacing: 5 points on a pair with contact ratio
+        1.66 reported the "pitch" film 1.27 mm from C, and a maximum Hertz pressure 19 %
+        low. A pitch point outside A-E had been taken as a node there, with its load sharing
+        extrapolated: a pitch Hertz pressure of 85 MPa where the teeth do not touch.)"""
         if isinstance(n, bool) or not isinstance(n, int) or n < 5:
             raise InputError("points", "an integer >= 5", n)
         pts = self.derived["path"]
         rho = np.linspace(pts["A"], pts["E"], n)
         free = list(range(1, n - 1))
-        for key in ("B", "C", "D"):
+        for key in ("B", "C", "D") if self.pitch_on_path else ("B", "D"):
             i = min(free, key=lambda k: abs(rho[k] - pts[key]))
             rho[i] = pts[key]
             free.remove(i)

@@ -87,6 +87,10 @@ def point_index(result: GearPathResult, at: str, roll_angle: float | None = None
     if roll_angle is not None:
         return int(np.argmin(np.abs(result.kin.roll_angle - roll_angle)))
     if at == "pitch":
+        if not result.pair.pitch_on_path:
+            raise InputError("at", '"min-lambda", "max-flash" or a roll angle on the path: the '
+                             "pitch point lies outside the path of contact A-E (the pair "
+                             "meshes in approach or recess alone)", at)
         return int(np.argmin(np.abs(result.kin.distance)))
     if at == "min-lambda":
         return critical["minimum_lambda"]

@@ -40,10 +40,11 @@ def _cross_unconverged(ax, result, values, label: bool = False):
 
 
 def _mark_points(ax, result, band_label: bool = False):
-    """Dotted verticals and labels at A-E; shade B-D (single tooth contact) where it matters,
-    with a legend entry when ``band_label``."""
+    """Dotted verticals and labels at A-E (C only where it lies on the path); shade B-D
+    (single tooth contact) where it matters, with a legend entry when ``band_label``."""
     rb1 = result.pair.rb[0]
-    pts = {k: math.degrees(v / rb1) for k, v in result.pair.points.items()}
+    pts = {k: math.degrees(v / rb1) for k, v in result.pair.points.items()
+           if k != "C" or result.pair.pitch_on_path}
     if result.pair.overlap_ratio < 1.0:  # helical pairs with full overlap share uniformly
         lo, hi = sorted((pts["B"], pts["D"]))
         ax.axvspan(lo, hi, color="0.92", zorder=0, label=BAND_LABEL if band_label else None)

@@ -145,7 +145,12 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     crit = result.critical()
     i_lam, i_fl, i_p = (crit[k] for k in ("minimum_lambda", "maximum_flash_temperature",
                                           "maximum_hertz_pressure"))
-    i_c = point_index(result, "pitch")
+    # the pitch point, or where it lies outside the path the end nearest it (its rows NaN)
+    on_path = pair.pitch_on_path
+    i_c = int(np.argmin(np.abs(kin.distance)))
+    at_pitch = (lambda v: float(v)) if on_path else (lambda v: math.nan)
+    where = ("the pitch point" if on_path else
+             f"{'A' if kin.distance[i_c] > 0 else 'E'} (the pitch point lies outside the path)")
     if i_fl is None:  # unknown somewhere along the path (a Newtonian film): not a maximum
         hottest = {"maximum_flash_temperature_k": math.nan,
                    "maximum_contact_temperature_c": math.nan,
@@ -175,7 +180,7 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         **hottest,
         "maximum_hertz_pressure_pa": float(result.hertz_pressure[i_p]),
         **_at(result, i_p, "maximum_hertz_pressure"),
-        "pitch_hertz_pressure_pa": float(result.hertz_pressure[i_c]),
+        "pitch_hertz_pressure_pa": at_pitch(result.hertz_pressure[i_c]),
         "iso_nominal_contact_stress_pa": iso.stress,
         "iso_zone_factor": iso.zone,
         "iso_elasticity_factor_sqrt_mpa": iso.elasticity / 1e3,
@@ -183,9 +188,9 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         "iso_helix_angle_factor": iso.helix,
         "iso_nominal_tangential_force_n": iso.tangential_force,
         "minimum_film_m": float(np.nanmin(result.minimum_film)),
-        "pitch_central_film_m": float(result.central_film[i_c]),
-        "pitch_minimum_film_m": float(result.minimum_film[i_c]),
-        "pitch_lambda": float(result.specific_film[i_c]),
+        "pitch_central_film_m": at_pitch(result.central_film[i_c]),
+        "pitch_minimum_film_m": at_pitch(result.minimum_film[i_c]),
+        "pitch_lambda": at_pitch(result.specific_film[i_c]),
         # NaN when any loaded point's friction is unknown (a Newtonian film): a mean of the
         # boundary points alone would pass for the path's
         "mean_friction_coefficient": float(np.mean(result.friction[result.load > 0])),
@@ -204,10 +209,10 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         outside = hamrock_dowson_range_note(pitch.b / pitch.a)
         central_note = minimum_note = f"{formula_note}; {outside}" if outside else formula_note
     comparisons = [
-        Comparison("central film at the pitch point", float(result.central_film[i_c]),
+        Comparison(f"central film at {where}", float(result.central_film[i_c]),
                    float(result.formula_central[i_c]), result.formula_names[0], "m", None,
                    central_note),
-        Comparison("minimum film at the pitch point", float(result.minimum_film[i_c]),
+        Comparison(f"minimum film at {where}", float(result.minimum_film[i_c]),
                    float(result.formula_minimum[i_c]), result.formula_names[1], "m", None,
                    minimum_note),
     ]
@@ -222,8 +227,11 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         f"sqrt(F_t/(d1 b) (u+1)/u) = {iso.stress / 1e6:.4g} MPa (Z_H {iso.zone:.4g}, Z_E "
         f"{iso.elasticity / 1e3:.4g} sqrt(MPa), Z_eps {iso.contact_ratio:.4g}, Z_beta = "
         f"1/sqrt(cos beta) {iso.helix:.4g}, F_t {iso.tangential_force:.5g} N; no K or Z_B/Z_D "
-        f"factors) beside the Hertz pressure {result.hertz_pressure[i_c] / 1e6:.4g} MPa at the "
-        "pitch point: Z_eps is ISO's contact-ratio factor, not the load sharing of the path, "
+        + (f"factors) beside the Hertz pressure {result.hertz_pressure[i_c] / 1e6:.4g} MPa at "
+           "the pitch point: " if on_path else
+           "factors), at a pitch point that lies outside the path of contact, where no pair of "
+           "teeth touches: ")
+        + "Z_eps is ISO's contact-ratio factor, not the load sharing of the path, "
         "and Z_beta an empirical factor of the standard (for eps_beta >= 1 sigma_H0 is exactly "
         "Z_beta times the pitch Hertz pressure; docs/gears.md).",
         f"Mesh: {case.ehl.nx} nodes on {case.ehl.levels} grid(s) over "
@@ -234,6 +242,15 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         + _mesh_accuracy(case.ehl, result),
         *result.notes,  # solve_path's: a Newtonian traction no result uses
     ]
+    if not on_path:
+        angles = {k: math.degrees(v / rb1) for k, v in pair.points.items()}
+        notes.append(
+            f"The pitch point C (pinion roll angle {angles['C']:.4g} deg) lies outside the path "
+            f"of contact A-E ({angles['A']:.4g}-{angles['E']:.4g} deg): the pair meshes in "
+            f"{'recess' if angles['C'] < angles['A'] else 'approach'} alone, sliding "
+            "everywhere, so the pitch rows of the summary are left out (NaN) and the films "
+            f"are compared with the formulas at {'A' if angles['C'] < angles['A'] else 'E'}, "
+            "the end of the path nearest it.")
     title = case.title
     from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
 
