@@ -70,6 +70,8 @@ __all__ = [
     "ehl_film_mesh",
     "ehl_mesh",
     "ehl_minimum_film_mesh",
+    "minimum_film_curvature",
+    "MIN_FILM_MESH_ERROR",
     "ehl_side_film",
     "ehl_sides",
     "DomainAdvice",
@@ -1207,6 +1209,38 @@ def ehl_film_mesh(x, a: float, film: float, domain=None) -> list[str]:
             f"{_pct(MESH_TARGET)}"]
 
 
+def minimum_film_curvature(film, direction: str) -> tuple[float, float] | None:
+    """The relative second difference of the film at the node of its least value, and the
+    discretisation error of that minimum it gives (:func:`ehl_minimum_film_mesh`).
+
+    ``s = (h[k-1] + h[k+1]) / (2 h[k]) - 1`` across y (``direction = "y"``) or along x
+    (``"x"``), the error estimated as ``MIN_FILM_ERROR_PER_CURVATURE s``; ``s`` is infinite
+    for a least film of zero.
+
+    Parameters
+    ----------
+    film : ndarray
+        Film thickness, shape (nx, ny) or (nx,), m.
+    direction : {"y", "x"}
+
+    Returns
+    -------
+    (float, float) or None
+        ``(s, error)``; None where the least film lies on a boundary node in that direction
+        or there are fewer than 3 nodes.
+    """
+    film = np.asarray(film, dtype=float)
+    if film.ndim == 1:
+        film = film[:, None]
+    i, j = np.unravel_index(np.argmin(film), film.shape)
+    line, k = (film[i, :], j) if direction == "y" else (film[:, j], i)
+    if line.size < 3 or k in (0, line.size - 1):
+        return None
+    h = film[i, j]
+    thicker = (line[k - 1] + line[k + 1]) / (2.0 * h) - 1.0 if h > 0.0 else np.inf
+    return thicker, MIN_FILM_ERROR_PER_CURVATURE * thicker
+
+
 def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
                           cell_aspect: float = MIN_CELL_ASPECT,
                           max_ny: int | None = None,
@@ -1271,13 +1305,11 @@ def ehl_minimum_film_mesh(film, x, y, a: float, b: float | None, domain=None, *,
     i, j = np.unravel_index(np.argmin(film), film.shape)
     h = film[i, j]
     judged = []  # (key, semi-axis name, thicker, error, nodes for MESH_TARGET)
-    for (key, semi, name, line, k), (span, _) in zip(
-            (("y", b, "b", film[i, :], j), ("x", a, "a", film[:, j], i)), spans, strict=True):
-        n = line.size
-        if semi is None or n < 3 or k in (0, n - 1):
+    for (key, semi, name), (span, _) in zip((("y", b, "b"), ("x", a, "a")), spans, strict=True):
+        curvature = minimum_film_curvature(film, key)
+        if semi is None or curvature is None:
             continue
-        thicker = (line[k - 1] + line[k + 1]) / (2.0 * h) - 1.0 if h > 0.0 else np.inf
-        error = MIN_FILM_ERROR_PER_CURVATURE * thicker
+        thicker, error = curvature
         if error <= MIN_FILM_MESH_ERROR:
             continue
         step = _spacing(y if key == "y" else x) / math.sqrt(min(error, 1.0) / MESH_TARGET)

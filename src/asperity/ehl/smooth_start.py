@@ -16,14 +16,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .problem import MIN_CELL_ASPECT
-from .solver import SOFT_CELL_ASPECT, SOFT_MAX_NY, sequencing_levels, solve_steady
+from .rows import doubled_rows
+from .solver import sequencing_levels, solve_steady
 
-__all__ = ["MAX_ROW_DOUBLINGS", "StartRows", "smooth_start", "start_rows", "touching_mask"]
-
-#: At most this many doublings of the rows across y (four times the nodes and the cost per
-#: step at most: a run's mesh is the user's time).
-MAX_ROW_DOUBLINGS = 2
+__all__ = ["StartRows", "smooth_start", "start_rows", "touching_mask"]
 
 
 def smooth_start(problem, nx: int, ny: int, domain, *, method: str | None = None,
@@ -102,11 +98,9 @@ def start_rows(problem, nx: int, ny: int, domain, *, contact_film: float | None 
 
     The smooth start is solved on ``nx x ny`` nodes (:func:`smooth_start`); while it touches
     (:func:`touching_mask`) the rows are doubled, ``2 (ny - 1) + 1``, at most
-    :data:`MAX_ROW_DOUBLINGS` times, keeping the default mesh's cells
-    (``dY >= MIN_CELL_ASPECT dX``, :data:`asperity.ehl.problem.MIN_CELL_ASPECT`),
-    ``nx ny <= max_nodes`` and, for a soft contact (:attr:`PointContact.soft`), the steady
-    solver's :data:`~asperity.ehl.solver.SOFT_MAX_NY` rows and ``SOFT_CELL_ASPECT`` cells. A
-    finer start that does not converge is not taken. Without a touching start the result is
+    :data:`~asperity.ehl.rows.MAX_ROW_DOUBLINGS` times, within the cells and nodes of
+    :func:`asperity.ehl.rows.doubled_rows`. A finer start that does not converge is not
+    taken. Without a touching start the result is
     the start :func:`asperity.ehl.solve_transient` would have solved, to the bit.
 
     Parameters
@@ -132,16 +126,11 @@ def start_rows(problem, nx: int, ny: int, domain, *, contact_film: float | None 
     if contact_film is None:
         contact_film = tol * problem.film_estimate()
     x, y = problem.grid(nx, ny, domain)
-    dx, width = x[1] - x[0], y[-1] - y[0]
-    aspect = max(MIN_CELL_ASPECT, SOFT_CELL_ASPECT) if problem.soft else MIN_CELL_ASPECT
     steady = smooth_start(problem, nx, ny, domain, method=method, near=near, tol=tol)
     touching = int(touching_mask(steady.film, contact_film).sum())
     tried = [(ny, touching, bool(steady.converged))]
-    for _ in range(MAX_ROW_DOUBLINGS):
-        finer = 2 * (ny - 1) + 1
-        if not touching or width / (finer - 1) < aspect * dx * (1 - 1e-9) \
-                or (max_nodes is not None and nx * finer > max_nodes) \
-                or (problem.soft and finer > SOFT_MAX_NY):
+    for finer in doubled_rows(problem, nx, ny, y[-1] - y[0], x[1] - x[0], max_nodes):
+        if not touching:
             break
         trial = smooth_start(problem, nx, finer, domain, method=method, near=near, tol=tol)
         count = int(touching_mask(trial.film, contact_film).sum())

@@ -18,6 +18,7 @@ from ..cases.ehl import MAX_BOUND, MAX_NODES, MAX_NX, MAX_NY
 from ..ehl import solve_steady
 from ..ehl.line_newton import MAX_NODES as NEWTON_MAX_NODES
 from ..ehl.problem import LineContact
+from ..ehl.rows import doubled_rows
 from ..ehl.sides import domain_probe, inlet_probe, side_probe
 from ..ehl.solver import (
     FINE_CELL_ASPECT,
@@ -37,7 +38,7 @@ from ..references import (
 from ..results import Outcome, variable
 
 __all__ = ["STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
-           "isoviscous_line_advice", "relaxed_cells", "run", "stall_advice"]
+           "isoviscous_line_advice", "relaxed_cells", "run", "side_lobe_rows", "stall_advice"]
 
 #: A steady solve that stopped before its sweep limit with a residual below this many times
 #: its tolerance stalled near a solution (:func:`stall_advice`).
@@ -52,13 +53,17 @@ def run(case, progress=None) -> Outcome:
         def callback(sweep, residual):
             progress(sweep, None, f"EHL sweep {sweep}, residual {residual:.1e}")
 
-    with warnings.catch_warnings():  # the solver's starved-inlet warning: see ehl_warnings
-        warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
-        res = solve_steady(problem, **case.solve_options(problem), method=case.solver.method,
-                           tol=case.solver.tolerance,
-                           max_iter=case.solver.sweep_limit(line),
-                           boundary_friction=case.solver.boundary_friction,
-                           callback=callback)
+    def solve(options):
+        with warnings.catch_warnings():  # the solver's starved-inlet warning: ehl_warnings
+            warnings.filterwarnings("ignore", "domain: the inlet", RuntimeWarning)
+            return solve_steady(problem, **options, method=case.solver.method,
+                                tol=case.solver.tolerance,
+                                max_iter=case.solver.sweep_limit(line),
+                                boundary_friction=case.solver.boundary_friction,
+                                callback=callback)
+
+    res = solve(case.solve_options(problem))
+    res, rows_note = side_lobe_rows(case, problem, res, solve)
     lub = problem.lubricant
     hz = problem.hertz
     ds = xr.Dataset(
@@ -101,7 +106,7 @@ def run(case, progress=None) -> Outcome:
     summary.update(film_formulas(problem))
     comparisons = ehl_steady_comparisons(problem, res, case.reference)
     figures = _figures(case.title, problem, res, line)
-    notes = []
+    notes = [rows_note] if rows_note else []
     if not (lub.newtonian and lub.viscosity_model == "barus" and not lub.compressible):
         notes.append(f"The film formulas are Newtonian, isothermal fits; the solution uses "
                      f"{lubricant_laws(lub)}, so they are shown for orientation only.")
@@ -142,6 +147,69 @@ def run(case, progress=None) -> Outcome:
         chosen["solver.levels"] = len(res.levels)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,
                    warnings=trust, chosen=chosen)
+
+
+def side_lobe_rows(case, problem, res, solve):
+    """The steady solution on rows across y that resolve its minimum film, where asperity
+    chose the mesh.
+
+    A point contact's default mesh has ``dY = b/10``; the side lobes of a heavily loaded
+    contact are narrower, and there the minimum film comes out too thin or collapses onto a
+    line of dry nodes (a steel ball at Moes M = 1000: 0.002 nm on 41 rows, 77 nm on 81,
+    124.5 nm on 161; docs/ehl-robustness.md, "Side lobes on the default mesh"). Where the
+    case gives no nodes and the converged solution's minimum film has an estimated error
+    across y above :data:`asperity.diagnostics.MIN_FILM_MESH_ERROR`
+    (:func:`asperity.diagnostics.minimum_film_curvature`), the contact is solved once more on
+    the fewest doublings of the rows that bring the ``dY^2`` scaling of that error under the
+    limit, at most those :func:`asperity.ehl.rows.doubled_rows` allows (the x spacing and
+    the domain kept). A finer solution that does not converge is not taken. A soft contact
+    (:attr:`PointContact.soft`) keeps its mesh and the mesh line's advice: its relaxation on
+    the finer rows took 154 s against 18 s for the PDMS ball of
+    ``tests/corpus/warn-ehl-point-soft-side-lobes.toml`` (and its advised mesh did not
+    converge, docs/ehl-robustness.md).
+
+    Parameters
+    ----------
+    case : EHLSteadyCase
+    problem : PointContact or LineContact
+    res : SteadyResult
+        The solution on the chosen mesh.
+    solve : callable
+        ``solve(options)``: the runner's solve with ``nx``, ``ny``, ``domain``, ``levels``.
+
+    Returns
+    -------
+    (SteadyResult, str)
+        The solution kept and a note on the rows ('' where they were not doubled).
+    """
+    if res.y.size == 1 or problem.soft or not res.converged \
+            or not (case.regime_mesh or case.regime_nodes):
+        return res, ""
+    curvature = diagnostics.minimum_film_curvature(res.film, "y")
+    if curvature is None or not curvature[1] > diagnostics.MIN_FILM_MESH_ERROR:
+        return res, ""
+    nx, ny = res.x.size, res.y.size
+    finer = doubled_rows(problem, nx, ny, res.y[-1] - res.y[0], res.x[1] - res.x[0],
+                         MAX_NODES)
+    if not finer:
+        return res, ""
+    error = min(curvature[1], 1.0)
+    rows = next((n for n in finer if error * ((ny - 1) / (n - 1)) ** 2
+                 <= diagnostics.MIN_FILM_MESH_ERROR), finer[-1])
+    domain = ((res.x[0], res.x[-1]), (res.y[0], res.y[-1]))
+    levels = case.solver.levels if "levels" in case.solver.model_fields_set else None
+    trial = solve({"nx": nx, "ny": rows, "domain": domain, "levels": levels})
+    b = problem.b
+    estimate = "over 100 %" if curvature[1] >= 1.0 else f"{curvature[1]:.0%}"
+    before = (f"on the {ny} rows across y of the default mesh "
+              f"(dy = b/{b / (res.y[1] - res.y[0]):.3g}) the minimum film, "
+              f"{res.minimum_film * 1e9:.4g} nm, was not resolved (estimated error {estimate})")
+    if not trial.converged:
+        return res, (f"Mesh: {before}; solved again on {rows} rows, which did not converge "
+                     f"(residual {trial.residual:.2e}), so the results are those of {ny} rows.")
+    return trial, (f"Mesh: {before}; the contact was solved again on {rows} rows "
+                   f"(dy = b/{b / (trial.y[1] - trial.y[0]):.3g}, {trial.total_sweeps} sweeps), "
+                   f"whose results these are: minimum film {trial.minimum_film * 1e9:.4g} nm.")
 
 
 def _sheared_piezoviscous(problem, res) -> bool:
