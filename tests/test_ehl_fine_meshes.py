@@ -124,8 +124,9 @@ def test_a_tangent_that_blows_up_is_given_up_for_the_gain(monkeypatch):
 
 
 def test_row_doublings_keep_the_cells_and_the_node_limit():
-    """doubled_rows: 41 -> 81 -> 161 while dy >= 3 dx, none past the node limit, and a soft
-    contact's within SOFT_MAX_NY rows and SOFT_CELL_ASPECT cells."""
+    """doubled_rows: 41 -> 81 -> 161 while dy >= 3 dx (or the aspect asked for), none past
+    the node limit, and a soft contact's within SOFT_MAX_NY rows and SOFT_CELL_ASPECT
+    cells."""
     from asperity.ehl.rows import MAX_ROW_DOUBLINGS, doubled_rows
     from asperity.ehl.solver import SOFT_CELL_ASPECT, SOFT_MAX_NY
 
@@ -136,6 +137,7 @@ def test_row_doublings_keep_the_cells_and_the_node_limit():
     assert MAX_ROW_DOUBLINGS == 2
     assert doubled_rows(Contact(), 257, 41, width, dx) == [81, 161]
     assert doubled_rows(Contact(), 257, 41, width, 4.0 / 40 / 7) == [81]  # 161: dy = 1.75 dx
+    assert doubled_rows(Contact(), 257, 41, width, dx, aspect=6.0) == [81]  # 161: dy = 5 dx
     assert doubled_rows(Contact(), 257, 41, width, dx, max_nodes=257 * 100) == [81]
     assert doubled_rows(Contact(), 257, 41, width, dx, max_nodes=257 * 60) == []
     soft = Contact()

@@ -22,11 +22,11 @@ MAX_ROW_DOUBLINGS = 2
 
 
 def doubled_rows(problem, nx: int, ny: int, width: float, dx: float,
-                 max_nodes: int | None = None) -> list[int]:
+                 max_nodes: int | None = None, aspect: float = MIN_CELL_ASPECT) -> list[int]:
     """The doublings ``2 (ny - 1) + 1``, ``4 (ny - 1) + 1`` of a point contact's rows that
     keep its mesh solvable, at most :data:`MAX_ROW_DOUBLINGS` of them.
 
-    A doubling is kept while the cells stay long across y (``dY >= MIN_CELL_ASPECT dX``, and
+    A doubling is kept while the cells stay long across y (``dY >= aspect dX``, and
     ``SOFT_CELL_ASPECT dX`` with at most ``SOFT_MAX_NY`` rows for a soft contact,
     :attr:`PointContact.soft`: the x-line relaxation diverges on shorter cells) and
     ``nx ny <= max_nodes``.
@@ -43,13 +43,17 @@ def doubled_rows(problem, nx: int, ny: int, width: float, dx: float,
         Spacing along x, m.
     max_nodes : int, optional
         Most nodes of a mesh.
+    aspect : float
+        Least ``dY / dX`` of the finer cells (``MIN_CELL_ASPECT``, 3, the default mesh's;
+        the steady runner asks for :data:`asperity.ehl.solver.FINE_CELL_ASPECT`, 6, as its
+        mesh advice does: a ball at M = 1822, k = 0.32 diverged on 4.1 dX).
 
     Returns
     -------
     list of int
         The finer row counts, coarsest first (empty where none is allowed).
     """
-    aspect = max(MIN_CELL_ASPECT, SOFT_CELL_ASPECT) if problem.soft else MIN_CELL_ASPECT
+    aspect = max(aspect, SOFT_CELL_ASPECT) if problem.soft else aspect
     rows = []
     for _ in range(MAX_ROW_DOUBLINGS):
         finer = 2 * ((rows[-1] if rows else ny) - 1) + 1

@@ -37,12 +37,18 @@ from ..references import (
 )
 from ..results import Outcome, variable
 
-__all__ = ["STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
+__all__ = ["SIDE_LOBE_MAX_NODES", "STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
            "isoviscous_line_advice", "relaxed_cells", "run", "side_lobe_rows", "stall_advice"]
 
 #: A steady solve that stopped before its sweep limit with a residual below this many times
 #: its tolerance stalled near a solution (:func:`stall_advice`).
 STALLED_WITHIN = 10.0
+
+#: Most nodes of the mesh on which :func:`side_lobe_rows` solves a contact again: on about
+#: 200,000 nodes a heavily loaded ball takes about a minute (2 cores); the 394,000 nodes of
+#: a probe case at M = 3300 took 112 s in all and 395,000 at M = 4900 more than 180 s, where
+#: the mesh line's advice is left to the user (docs/ehl-robustness.md).
+SIDE_LOBE_MAX_NODES = 200_000
 
 def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
@@ -156,13 +162,15 @@ def side_lobe_rows(case, problem, res, solve):
     A point contact's default mesh has ``dY = b/10``; the side lobes of a heavily loaded
     contact are narrower, and there the minimum film comes out too thin or collapses onto a
     line of dry nodes (a steel ball at Moes M = 1000: 0.002 nm on 41 rows, 77 nm on 81,
-    124.5 nm on 161; docs/ehl-robustness.md, "Side lobes on the default mesh"). Where the
-    case gives no nodes and the converged solution's minimum film has an estimated error
-    across y above :data:`asperity.diagnostics.MIN_FILM_MESH_ERROR`
+    124.5 nm on 161, 137.5 nm on 1025 x 321; docs/ehl-robustness.md, "Side lobes on the
+    default mesh"). Where the case gives no nodes and the converged solution's minimum film
+    has an estimated error across y above :data:`asperity.diagnostics.MIN_FILM_MESH_ERROR`
     (:func:`asperity.diagnostics.minimum_film_curvature`), the contact is solved once more on
     the fewest doublings of the rows that bring the ``dY^2`` scaling of that error under the
-    limit, at most those :func:`asperity.ehl.rows.doubled_rows` allows (the x spacing and
-    the domain kept). A finer solution that does not converge is not taken. A soft contact
+    limit, at most those :func:`asperity.ehl.rows.doubled_rows` allows on
+    :data:`SIDE_LOBE_MAX_NODES` nodes and cells ``dY >= FINE_CELL_ASPECT dX`` (the cells the
+    mesh line advises; the x spacing and the domain kept). A finer solution that does not
+    converge is not taken. A soft contact
     (:attr:`PointContact.soft`) keeps its mesh and the mesh line's advice: its relaxation on
     the finer rows took 154 s against 18 s for the PDMS ball of
     ``tests/corpus/warn-ehl-point-soft-side-lobes.toml`` (and its advised mesh did not
@@ -190,7 +198,7 @@ def side_lobe_rows(case, problem, res, solve):
         return res, ""
     nx, ny = res.x.size, res.y.size
     finer = doubled_rows(problem, nx, ny, res.y[-1] - res.y[0], res.x[1] - res.x[0],
-                         MAX_NODES)
+                         min(MAX_NODES, SIDE_LOBE_MAX_NODES), aspect=FINE_CELL_ASPECT)
     if not finer:
         return res, ""
     error = min(curvature[1], 1.0)
