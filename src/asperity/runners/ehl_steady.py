@@ -50,6 +50,7 @@ STALLED_WITHIN = 10.0
 #: the mesh line's advice is left to the user (docs/ehl-robustness.md).
 SIDE_LOBE_MAX_NODES = 200_000
 
+
 def run(case, progress=None) -> Outcome:
     """Solve the case's steady EHL contact and compare it with its references."""
     problem = case.problem()
@@ -170,11 +171,10 @@ def side_lobe_rows(case, problem, res, solve):
     limit, at most those :func:`asperity.ehl.rows.doubled_rows` allows on
     :data:`SIDE_LOBE_MAX_NODES` nodes and cells ``dY >= FINE_CELL_ASPECT dX`` (the cells the
     mesh line advises; the x spacing and the domain kept). A finer solution that does not
-    converge is not taken. A soft contact
-    (:attr:`PointContact.soft`) keeps its mesh and the mesh line's advice: its relaxation on
-    the finer rows took 154 s against 18 s for the PDMS ball of
-    ``tests/corpus/warn-ehl-point-soft-side-lobes.toml`` (and its advised mesh did not
-    converge, docs/ehl-robustness.md).
+    converge is not taken. A soft contact (:attr:`PointContact.soft`) keeps its mesh and the
+    mesh line's advice: its relaxation on the finer rows took 154 s against 18 s for the
+    PDMS ball of ``tests/corpus/warn-ehl-point-soft-side-lobes.toml`` (and its advised mesh
+    did not converge, docs/ehl-robustness.md).
 
     Parameters
     ----------
