@@ -40,14 +40,16 @@ def test_short_inlet_of_a_bearing_contact_gives_the_measured_loss():
     -2.5 a (the same mesh spacing; -4 a adds 1.0 %). Hamrock & Dowson's fit, fed the starved
     film of the short solve, said 4.63 % and nothing else; fed the flooded film it says
     5.5 %, and the line now quotes the inlet probe's solves on half the nodes, within 1.5
-    points of the loss measured here."""
+    points of the loss measured here. (Both runs take 161 rows across since session 46,
+    their side-lobe minimum film unresolved on the default 81: the fit's 5.54 % became
+    5.55 %.)"""
     short = run_case(load_case({**BEARING, "grid": {"x_min": -1.5, "x_max": 1.5}}))
     long_ = run_case(load_case({**BEARING, "grid": {"x_min": -2.5, "x_max": 1.5}}))
     loss = 1 - short.summary["central_film_thickness_m"] / long_.summary[
         "central_film_thickness_m"]
     assert loss == pytest.approx(0.096, abs=0.005)
     (line,) = [w for w in short.warnings if w.startswith("inlet:")]
-    assert "their starvation fit puts the central film 5.54 % below" in line
+    assert "their starvation fit puts the central film 5.55 % below" in line
     fit, = re.findall(r"central film ([0-9.]+) % below the flooded", line)
     assert loss - float(fit) / 100 > 0.03  # the fit alone is short by 4 points
     measured, = _percents(line, "the central film is")

@@ -4,6 +4,7 @@
 import json
 import math
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -21,6 +22,7 @@ from asperity.gears import (
     EHLMesh,
     GearPair,
     load_sharing,
+    point_index,
     roughness_nodes,
     solve_path,
     transient_case,
@@ -261,10 +263,9 @@ def test_a_pair_meshing_in_recess_alone_has_no_pitch_rows(tmp_path):
     assert summary["maximum_hertz_pressure_pa"] > 3e8
     report = (tmp_path / "o" / "report.html").read_text()
     assert "lies outside the path of contact" in report and "film at A" in report
-    out = CliRunner().invoke(app, ["gear", str(case), "--out", str(tmp_path / "p"), "-q",
-                                   "--emit-transient", str(tmp_path / "t"), "--at", "pitch"])
-    assert out.exit_code == 2
-    assert "pitch point lies outside the path of contact" in out.output
+    path = SimpleNamespace(pair=load_case(text).pair(), critical=dict)
+    with pytest.raises(InputError, match="pitch point lies outside the path of contact"):
+        point_index(path, "pitch")
 
 
 @pytest.mark.parametrize("name", ["gear-fzg-c", "gear-fzg-c-crowned", "gear-helical-industrial",
