@@ -14,8 +14,9 @@ the entraining speeds across the contact line are the transverse ``omega_i rho_i
 in the section perpendicular to the contact line are ``rho_i / cos beta_b``.
 
 Sliding: ``u1 - u2 = (omega1 + omega2) s`` with ``s = rho1 - rho1(C)`` the signed distance
-from the pitch point, since ``omega1 rho1(C) = omega2 rho2(C)`` there (an internal pair slides
-``omega1 + omega2 = omega1 (1 - z1/|z2|)`` times less than an external one).
+from the pitch point, since ``omega1 rho1(C) = omega2 rho2(C)`` there (an internal pair has
+``omega1 + omega2 = omega1 (1 - z1/|z2|)`` where an external one of the same pinion and teeth
+has ``omega1 (1 + z1/z2)``: it slides less at the same distance from C).
 """
 
 from __future__ import annotations

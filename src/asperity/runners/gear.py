@@ -149,8 +149,8 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
     on_path = pair.pitch_on_path
     i_c = int(np.argmin(np.abs(kin.distance)))
     at_pitch = (lambda v: float(v)) if on_path else (lambda v: math.nan)
-    where = ("the pitch point" if on_path else
-             f"{'A' if kin.distance[i_c] > 0 else 'E'} (the pitch point lies outside the path)")
+    end = "A" if pair.points["C"] < pair.points["A"] else "E"  # nearest C when off the path
+    where = "the pitch point" if on_path else f"{end} (the pitch point lies outside the path)"
     if i_fl is None:  # unknown somewhere along the path (a Newtonian film): not a maximum
         hottest = {"maximum_flash_temperature_k": math.nan,
                    "maximum_contact_temperature_c": math.nan,
@@ -243,14 +243,13 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
         *result.notes,  # solve_path's: a Newtonian traction no result uses
     ]
     if not on_path:
-        angles = {k: math.degrees(v / rb1) for k, v in pair.points.items()}
+        angle = {k: summary[f"roll_angle_{k}_deg"] for k in "ACE"}
         notes.append(
-            f"The pitch point C (pinion roll angle {angles['C']:.4g} deg) lies outside the path "
-            f"of contact A-E ({angles['A']:.4g}-{angles['E']:.4g} deg): the pair meshes in "
-            f"{'recess' if angles['C'] < angles['A'] else 'approach'} alone, sliding "
-            "everywhere, so the pitch rows of the summary are left out (NaN) and the films "
-            f"are compared with the formulas at {'A' if angles['C'] < angles['A'] else 'E'}, "
-            "the end of the path nearest it.")
+            f"The pitch point C (pinion roll angle {angle['C']:.4g} deg) lies outside the path "
+            f"of contact A-E ({angle['A']:.4g}-{angle['E']:.4g} deg): the pair meshes in "
+            f"{'recess' if end == 'A' else 'approach'} alone, sliding everywhere, so the pitch "
+            "rows of the summary are left out (NaN) and the films are compared with the "
+            f"formulas at {end}, the end of the path nearest it.")
     title = case.title
     from ..plotting.gear import conditions_figure, film_figure, friction_temperature_figure
 
