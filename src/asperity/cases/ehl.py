@@ -99,6 +99,15 @@ def check_node_count(nx: int, ny: int, chosen: bool, domain=None):
 #: of a traction fluid): above it a bare number in 1/Pa was meant in 1/GPa.
 ALPHA_MAX = 1e-6
 
+#: Largest limit density ratio ``gamma / lambda`` of the Dowson-Higginson law a case takes
+#: (the law's own constants: 1.35; liquids compress by some 20-35 % at 1-3 GPa): above it a
+#: constant was mistyped (``gamma = "2270 1/GPa"`` made a 5.2 nm film of a 128 nm one).
+DH_LIMIT_RATIO_MAX = 2.0
+
+#: Largest Dowson-Higginson ``lambda`` a case takes, 1/Pa (100 1/GPa: half the compression
+#: reached by 10 MPa; the law's own 1.68 1/GPa).
+DH_LAMBDA_MAX = 1e-7
+
 
 class LubricantSpec(BareNumbers):
     """``[lubricant]``: viscosity and density laws and the Eyring stress (seed Eqs. 3-4).
@@ -157,6 +166,33 @@ class LubricantSpec(BareNumbers):
         if self.viscosity_model == "roelands" and not self.eta0 > self.kappa:
             raise ValueError(f"expected eta0 > kappa = {self.kappa:g} Pa s for the Roelands law "
                              '(or viscosity_model = "barus")')
+        return self
+
+    @model_validator(mode="after")
+    def _density_constants(self):
+        """rho/rho0 = (1 + gamma p) / (1 + lambda p) rises with p to gamma/lambda only for
+        gamma >= lambda; a swapped pair or gamma = 0 made a density that falls (films 15-28 %
+        too thick, converged without a word)."""
+        if self.density_model != "dowson-higginson":
+            return self
+        gamma, lam = self.gamma, self.lambda_
+        if gamma < lam:
+            raise ValueError(
+                f"expected gamma >= lambda for the Dowson-Higginson density (1 + gamma p) / "
+                f"(1 + lambda p), got gamma = {gamma * 1e9:g} and lambda = {lam * 1e9:g} 1/GPa: "
+                "the density would fall with pressure (the law's constants: gamma = "
+                f"{DH_GAMMA * 1e9:g}, lambda = {DH_LAMBDA * 1e9:g} 1/GPa; for no compression "
+                'write density_model = "incompressible")')
+        if lam > DH_LAMBDA_MAX:
+            raise ValueError(f"expected a Dowson-Higginson lambda of at most "
+                             f"{DH_LAMBDA_MAX * 1e9:g} 1/GPa (the law's: {DH_LAMBDA * 1e9:g} "
+                             f"1/GPa; a bare number is in 1/Pa), got {lam * 1e9:g} 1/GPa")
+        if gamma > DH_LIMIT_RATIO_MAX * lam:
+            ratio = "unbounded" if lam == 0 else f"{gamma / lam:.3g}"
+            raise ValueError(
+                f"expected gamma at most {DH_LIMIT_RATIO_MAX:g} lambda (the density's limit "
+                f"ratio gamma/lambda; the law's own {DH_GAMMA / DH_LAMBDA:.3g}), got "
+                f"gamma = {gamma * 1e9:g} and lambda = {lam * 1e9:g} 1/GPa ({ratio})")
         return self
 
     def unit_doubts(self, key: str) -> list[str]:
