@@ -260,7 +260,8 @@ def roelands_viscosity(p, eta0, alpha, kappa=ROELANDS_KAPPA, chi=ROELANDS_CHI):
         Viscosity, Pa s.
     """
     z = roelands_index(eta0, alpha, kappa, chi)
-    return _roelands(np.asarray(p, dtype=float), eta0, math.log(eta0 / kappa), chi, z)
+    with np.errstate(over="ignore"):  # beyond about 1e308 Pa s the law's value is inf
+        return _roelands(np.asarray(p, dtype=float), eta0, math.log(eta0 / kappa), chi, z)
 
 
 def dowson_higginson_density(p, rho0=1.0, gamma=DH_GAMMA, lam=DH_LAMBDA):

@@ -149,6 +149,9 @@ def run(case, progress=None) -> Outcome:
     if not collapse and _sheared_piezoviscous(problem, res):
         # a collapsed film's friction is the collapse's, not the Newtonian law's
         trust += diagnostics.newtonian_traction(res.friction_coefficient, lub.newtonian)
+    if res.converged:
+        trust += diagnostics.friction_undefined(
+            res.friction_coefficient, float(lub.eta(res.max_pressure)), res.max_pressure)
     chosen = chosen_mesh(case, problem, res.x, res.y)
     if "levels" not in case.solver.model_fields_set:  # the grid sequence chosen with the mesh
         chosen["solver.levels"] = len(res.levels)
