@@ -52,6 +52,17 @@ def test_edge_advice_uses_the_expected_contact_size():
     assert "x_extent >= 1.01 mm" in lines[0] and "y_extent >= 1.01 mm" in lines[0]
 
 
+def test_edge_advice_for_a_contact_wider_than_expected():
+    """A contact that reaches x_max on a grid already 1.5 times the expected (smooth) size
+    along both axes (a rough contact spreading beyond Hertz): the advice enlarges x, the
+    axis it reaches, by half (64 -> 96 um) and leaves y alone (it said y_extent before)."""
+    x, y = _cells(128, 64e-6), _cells(96, 48e-6)
+    p = _hertz(x - 12e-6, y, 21e-6)  # reaches x = +33 um > +32 um
+    lines = dg.contact_at_grid_edge(p, x, y, (30e-6, 30e-6))
+    assert "at x_max (" in lines[0] and "reaches beyond it" in lines[0]
+    assert "x_extent >= 96 µm" in lines[0] and "y_extent" not in lines[0]
+
+
 def test_contact_inside_the_grid_is_silent():
     x = y = _cells(64, 2e-3)
     assert dg.contact_at_grid_edge(_hertz(x, y, 0.6e-3), x, y) == []
@@ -336,6 +347,9 @@ def test_ehl_side_film():
     assert _percent(lines[0], "minimum film is") == pytest.approx(80 / 76 - 1, rel=1e-3)
     assert _percent(lines[0], "central film") == pytest.approx(150 / 149 - 1, rel=1e-3)
     assert "higher" in lines[0]
+    lower = dg.ehl_side_film(probe(84e-9, 150e-9), b)[0]  # the wider sides thin it: no "-4.76"
+    assert _percent(lower, "minimum film is") == pytest.approx(1 - 80 / 84, rel=1e-3)
+    assert "% lower and the central" in lower and "-" not in lower.split("minimum film is")[1][:3]
     assert dg.ehl_side_film(probe(79e-9, 149e-9), b) == []
     assert len(dg.ehl_side_film(probe(79e-9, 147e-9), b)) == 1  # the central film alone
     assert dg.ehl_side_film(probe(60e-9, 140e-9, converged=False), b) == []
@@ -716,3 +730,26 @@ def test_a_generated_roughness_longer_than_its_grid_is_reported():
     assert dg.roughness_extent("roughness", x, y, correlation_length=0.125e-3) == []
     (line,) = dg.roughness_extent("roughness", x, y, correlation_length=0.3e-3)
     assert line.startswith("roughness: correlation_length = 300 µm is more than 1/2 of the grid")
+
+
+# ------------------------------------------------------------------------- EHL friction
+def test_friction_undefined_where_the_viscosity_overflows():
+    """alpha = 999 1/GPa (the largest a case takes), eta0 = 10 mPa s: Roelands' index
+    Z = alpha / (chi ln(eta0/kappa)) = 38.7, and at 183 MPa ln(eta/eta0) = ln(eta0/kappa)
+    ((1 + chi p)^Z - 1) = 6.6e11: the law's viscosity is inf, without numpy's overflow
+    warning, and the friction line names alpha; a finite friction is silent."""
+    import warnings
+
+    from asperity.ehl.lubricant import ROELANDS_CHI, ROELANDS_KAPPA, roelands_viscosity
+
+    eta0, alpha, p = 0.01, 999e-9, 183e6
+    z = alpha / (ROELANDS_CHI * math.log(eta0 / ROELANDS_KAPPA))
+    assert z == pytest.approx(38.7, abs=0.05)
+    assert math.log(eta0 / ROELANDS_KAPPA) * ((1 + ROELANDS_CHI * p) ** z - 1) > 709.8
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        eta = float(roelands_viscosity(p, eta0, alpha))
+    assert eta == math.inf
+    lines = dg.friction_undefined(math.nan, eta, p)
+    assert len(lines) == 1 and lines[0].startswith("lubricant.alpha:") and "183 MPa" in lines[0]
+    assert dg.friction_undefined(0.05, 1e3, p) == []

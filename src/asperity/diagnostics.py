@@ -236,16 +236,24 @@ def contact_at_grid_edge(pressure, x, y, contact_size=None) -> list[str]:
         return []
     share = float(p[edge].sum()) / total
     extent = (nx * _spacing(x), ny * _spacing(y) if ny > 1 else math.inf)
-    advice = "enlarge the grid (x_extent, y_extent) well beyond the contact"
+    # an axis whose edge the contact reaches needs 1.5 times its extent at least, whatever
+    # the expected size (a rough contact spreads beyond its smooth Hertz size)
+    widths = (None, None) if contact_size is None else contact_size
+    need = []
+    for axis, width, e in (("x", widths[0], extent[0]), ("y", widths[1], extent[1])):
+        target = 1.5 * width if width is not None else 0.0
+        if any(side.startswith(axis) for side in sides):
+            target = max(target, 1.5 * e)
+        if math.isfinite(e) and e < target:
+            need.append(f"{axis}_extent >= {format_quantity(target, 'm', digits=3)}")
+    advice = "use " + " and ".join(need)
     if contact_size is not None:
         wx, wy = contact_size
-        need = [f"{name} >= {format_quantity(1.5 * w, 'm', digits=3)}" for name, w, e in
-                (("x_extent", wx, extent[0]), ("y_extent", wy, extent[1]))
-                if math.isfinite(e) and e < 1.5 * w]
-        if need:
-            advice = (f"the expected contact is {format_quantity(wx, 'm', digits=3)} x "
-                      f"{format_quantity(wy, 'm', digits=3)} wide; use "
-                      + " and ".join(need))
+        beyond = all(not math.isfinite(e) or e >= 1.5 * w
+                     for w, e in zip(contact_size, extent, strict=True))
+        advice = (f"the expected (smooth) contact is {format_quantity(wx, 'm', digits=3)} x "
+                  f"{format_quantity(wy, 'm', digits=3)} wide"
+                  + (", and this one reaches beyond it" if beyond else "") + "; " + advice)
     return [f"domain: the contact reaches the grid edge at {', '.join(sides)} "
             f"({int(np.count_nonzero(edge & (p > 0)))} edge cells carry {_pct(share)} of the "
             "load; limit: no contact on the edge cells); the pressure beyond the grid is taken "
@@ -1053,7 +1061,7 @@ def ehl_side_film(probe, b: float) -> list[str]:
     return [DomainAdvice(
             f"sides: the side boundaries at y = {y0 / b:.3g} b and {y1 / b:.3g} b change the "
             f"film: with them at {w0 / b:.3g} b and {w1 / b:.3g} b the minimum film is "
-            f"{_pct(-dmin / (1.0 + dmin))} {'higher' if dmin < 0 else 'lower'} and the central "
+            f"{_pct(abs(dmin) / (1.0 + dmin))} {'higher' if dmin < 0 else 'lower'} and the central "
             f"film {_pct(abs(dcen) / (1.0 + dcen))} {'higher' if dcen < 0 else 'lower'} "
             f"(steady smooth solutions on {probe.nodes[0]} x {probe.nodes[1]} nodes; limits "
             f"{_pct(SIDE_FILM_CHANGE)} and {_pct(SIDE_CENTRAL_CHANGE)}); the side leakage is "
@@ -1127,6 +1135,37 @@ def newtonian_traction(mu: float, newtonian: bool) -> list[str]:
             f"viscosity; it is more than a dry contact's {NEWTONIAN_TRACTION_LIMIT:g} and not a "
             "traction. Set lubricant.tau0 (the Eyring stress; the seed's gear oil has 10 MPa) "
             "for the traction coefficient"]
+
+
+def friction_undefined(mu: float, peak_viscosity: float, peak_pressure: float) -> list[str]:
+    """A converged film whose friction coefficient is not a number.
+
+    Where the viscosity law overflows (``eta = inf`` beyond about 1e308 Pa s: a
+    pressure-viscosity coefficient of several hundred 1/GPa at 1 GPa), the wall shear stress
+    there is unbounded, even with the Eyring law, and the friction coefficient undefined.
+
+    Parameters
+    ----------
+    mu : float
+        Friction coefficient of the solution (NaN or inf for this line).
+    peak_viscosity : float
+        Viscosity at the largest pressure, Pa s.
+    peak_pressure : float
+        The largest pressure, Pa.
+
+    Returns
+    -------
+    list of str
+        At most one line.
+    """
+    if np.isfinite(mu):
+        return []
+    why = (f"the viscosity law overflows at the pressure peak (eta = {peak_viscosity:g} Pa s "
+           f"at {format_quantity(peak_pressure, 'Pa', digits=3)}), where the shear stress is "
+           "then unbounded" if not np.isfinite(peak_viscosity)
+           else "the shear stress is not finite at every node")
+    return [f"lubricant.alpha: the friction coefficient is undefined: {why}; check the "
+            "pressure-viscosity coefficient (oils: 5-50 1/GPa) and the viscosity law"]
 
 
 def ehl_sides(pressure, y, b: float, p_hertz: float) -> list[str]:
