@@ -37,7 +37,8 @@ from ..references import (
 )
 from ..results import Outcome, variable
 
-__all__ = ["SIDE_LOBE_MAX_NODES", "STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
+__all__ = ["SIDE_LOBE_MAX_NODES", "SIDE_LOBE_SHORT_ASPECT", "SIDE_LOBE_SHORT_CELLS_M",
+           "STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
            "isoviscous_line_advice", "relaxed_cells", "run", "side_lobe_rows", "stall_advice"]
 
 #: A steady solve that stopped before its sweep limit with a residual below this many times
@@ -49,6 +50,15 @@ STALLED_WITHIN = 10.0
 #: a probe case at M = 3300 took 112 s in all and 395,000 at M = 4900 more than 180 s, where
 #: the mesh line's advice is left to the user (docs/ehl-robustness.md).
 SIDE_LOBE_MAX_NODES = 200_000
+
+#: Moes M up to which :func:`side_lobe_rows` doubles the rows down to cells
+#: ``dY >= SIDE_LOBE_SHORT_ASPECT dX`` instead of ``FINE_CELL_ASPECT dX``: a user's steel ball
+#: on glass (M = 213, L = 5.5) and a slow ball-on-disc (M = 183) converged on cells of 1.6
+#: and 1.2 dX (10-21 s), where their default meshes' minimum films were 45 % and 30 % too
+#: thin and no doubling kept 6 dX; the short cells that diverged were those of heavier
+#: contacts (M = 611 on 3-4 dX, M = 1822 on 4.1 dX, docs/ehl-robustness.md).
+SIDE_LOBE_SHORT_CELLS_M = 300.0
+SIDE_LOBE_SHORT_ASPECT = 1.5
 
 
 def run(case, progress=None) -> Outcome:
@@ -173,7 +183,8 @@ def side_lobe_rows(case, problem, res, solve):
     the fewest doublings of the rows that bring the ``dY^2`` scaling of that error under the
     limit, at most those :func:`asperity.ehl.rows.doubled_rows` allows on
     :data:`SIDE_LOBE_MAX_NODES` nodes and cells ``dY >= FINE_CELL_ASPECT dX`` (the cells the
-    mesh line advises; the x spacing and the domain kept). A finer solution that does not
+    mesh line advises; ``SIDE_LOBE_SHORT_ASPECT dX`` up to ``SIDE_LOBE_SHORT_CELLS_M``; the
+    x spacing and the domain kept). A finer solution that does not
     converge is not taken. A soft contact (:attr:`PointContact.soft`) keeps its mesh and the
     mesh line's advice: its relaxation on the finer rows took 154 s against 18 s for the
     PDMS ball of ``tests/corpus/warn-ehl-point-soft-side-lobes.toml`` (and its advised mesh
@@ -200,8 +211,10 @@ def side_lobe_rows(case, problem, res, solve):
     if curvature is None or not curvature[1] > diagnostics.MIN_FILM_MESH_ERROR:
         return res, ""
     nx, ny = res.x.size, res.y.size
+    aspect = SIDE_LOBE_SHORT_ASPECT if problem.M <= SIDE_LOBE_SHORT_CELLS_M \
+        else FINE_CELL_ASPECT
     finer = doubled_rows(problem, nx, ny, res.y[-1] - res.y[0], res.x[1] - res.x[0],
-                         min(MAX_NODES, SIDE_LOBE_MAX_NODES), aspect=FINE_CELL_ASPECT)
+                         min(MAX_NODES, SIDE_LOBE_MAX_NODES), aspect=aspect)
     if not finer:
         return res, ""
     error = min(curvature[1], 1.0)
