@@ -101,6 +101,7 @@ def test_no_imperial_for_units_without_one():
     ("hamrock_dowson_central_film_m", "Hamrock-Dowson central film", "m"),   # one formula's
     ("brewe_hamrock_taylor_minimum_film_m", "Brewe-Hamrock-Taylor minimum film", "m"),
     ("moes_central_film_m", "Moes central film", "m"),
+    ("martin_minimum_film_m", "Martin minimum film", "m"),       # it read "martin minimum film"
     ("moment_center_x_m", "moment centre x", "m"),             # the case key keeps "center"
     ("slide_roll_ratio", "slide/roll ratio", ""),
     ("fixed_point_distance_pressure_fraction", "last step's pressure change, relaxed further",

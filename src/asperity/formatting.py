@@ -96,7 +96,7 @@ _WORDS = {"max": "maximum", "min": "minimum", "hertz": "Hertz", "moes": "Moes",
           "hamrock": "Hamrock", "chittenden": "Chittenden", "roelands": "Roelands",
           "greenwood": "Greenwood", "tripp": "Tripp", "brewe": "Brewe", "taylor": "Taylor",
           "eyring": "Eyring", "cattaneo": "Cattaneo", "mindlin": "Mindlin",
-          "lubkin": "Lubkin", "iso": "ISO",
+          "lubkin": "Lubkin", "martin": "Martin", "iso": "ISO",
           "centreline": "centre line", "center": "centre", "rms": "rms", "u1": "u1", "u2": "u2",
           "a": "a", "b": "b", "x": "x", "y": "y", "rsm": "RSm"}
 

@@ -124,6 +124,12 @@ def run(case, progress=None) -> Outcome:
     comparisons = ehl_steady_comparisons(problem, res, case.reference)
     figures = _figures(case.title, problem, res, line)
     notes = [rows_note] if rows_note else []
+    if problem.sliding_speed != 0.0:
+        # the two walls' shear stresses differ by h dp/dx: a cam on a flat read 0.0109 with
+        # the cam as surface 1 and 0.0095 with the bodies' speeds swapped
+        notes.append("The friction coefficient is the film's shear traction on surface 1 (the "
+                     "one moving at u1) over the load; on surface 2 it differs by the "
+                     "pressure-gradient part of the wall stress, h dp/dx over the load.")
     if not (lub.newtonian and lub.viscosity_model == "barus" and not lub.compressible):
         notes.append(f"The film formulas are Newtonian, isothermal fits; the solution uses "
                      f"{lubricant_laws(lub)}, so they are shown for orientation only.")
