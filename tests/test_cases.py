@@ -374,3 +374,13 @@ def test_a_bare_viscosity_beyond_lubricants_is_doubted(eta0, doubted):
         assert lines == ['lubricant.eta0: the bare number 100 is read in Pa s, 100 Pa s, more '
                          'viscous than lubricants are (a bare number is in Pa s); if mPa s (cP) '
                          'were meant write "100 mPa s", else "100 Pa s" to confirm']
+
+
+def test_a_reference_tolerance_in_percent():
+    """``reference.tolerance = "5 %"`` was refused while ``speeds.xi = "25 %"`` was read."""
+    from asperity.cases.ehl import ReferenceSpec
+
+    assert ReferenceSpec(source="a rig", central_film="100 nm", tolerance="5 %").tolerance \
+        == pytest.approx(0.05)
+    with pytest.raises(ValueError, match="less than 1"):
+        ReferenceSpec(source="a rig", central_film="100 nm", tolerance="150 %")

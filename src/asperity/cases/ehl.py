@@ -549,8 +549,8 @@ class ReferenceSpec(CaseModel):
     """Published minimum film thickness."""
     max_pressure: Quantity("pressure", gt=0) | None = None
     """Published maximum pressure."""
-    tolerance: Annotated[Number, Field(gt=0, lt=1)] = 0.05
-    """Relative tolerance of the comparison."""
+    tolerance: Quantity("dimensionless", gt=0, lt=1) = 0.05
+    """Relative tolerance of the comparison (0.05 or "5 %")."""
 
 
 class EHLSteadyCase(EHLCaseBase):
