@@ -421,7 +421,8 @@ class EHLState:
             self._spectrum = np.empty(summed.spectrum.shape, dtype=summed.spectrum.dtype)
         spectrum = summed.spectrum_of(self.P, out=self._spectrum)
         rows, columns = film.edge_values(spectrum)
-        S = np.asfortranarray(summed.from_spectrum(spectrum))
+        spectrum *= summed.even_spectrum  # in place: f is even (taken at |x|, |y|)
+        S = np.asfortranarray(summed.inverse(spectrum))
         far_field(S, self.P, self._source, self.c, self.f_near, self.dX**2, self.dY**2,
                   not self.line, self.efar, True)
         ends = [0, -1]

