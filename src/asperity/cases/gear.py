@@ -54,6 +54,7 @@ from ..gears.path import EHLMesh, Thermal
 from ..materials import Material
 from ..units import is_bare, registry, to_si
 from .bodies import MaterialSpec
+from .doubts import BareNumbers
 from .ehl import LubricantSpec
 from .ehl_transient import MovingSurfaceSpec, TimeSpec, TransientSolverSpec
 from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
@@ -221,10 +222,14 @@ class GearSpec(CaseModel):
 
     @model_validator(mode="after")
     def _valid(self):
+        """Build the pair; its refusal names the ``[gear]`` keys it concerns
+        (``gear.tip_diameter: expected ...``; it read ``gear: expected ... (centre_distance)``,
+        a key the case need not have)."""
         try:
             self.pair()
         except InputError as exc:
-            raise ValueError(f"expected {exc.expected} ({exc.field})") from None
+            keys = ", ".join(f"gear.{key}" for key in exc.field.split(", "))
+            raise InputError(keys, exc.expected, exc.got, problem=exc.problem) from None
         return self
 
     def pair(self) -> GearPair:
@@ -317,7 +322,14 @@ def _power(value) -> float | None:
         return None
 
 
-class OperationSpec(CaseModel):
+#: Bulk temperature of the teeth, deg C, from which it is doubted: gear teeth run at about
+#: 40-150 deg C (sump or jet oil plus 10-30 K), and mineral and synthetic gear oils oxidise
+#: fast and approach their flash points above about 200 deg C; a bare number this large is
+#: most often kelvin (400 K = 126.85 deg C).
+HOT_BULK_TEMPERATURE = 200.0
+
+
+class OperationSpec(BareNumbers):
     """``[operation]``: pinion ``torque``, pinion ``speed`` (with its unit: rpm, rad/s), the
     ``bulk_temperature`` of the teeth in deg C (the lubricant's eta0 is taken at it)."""
 
@@ -334,7 +346,35 @@ class OperationSpec(CaseModel):
                                                                 "type": "number or temperature"})
                                 ] = 90.0
     """Bulk temperature of the teeth: a number in deg C, or with its unit ("80 degC",
-    "353.15 K", "176 degF"); the lubricant's eta0 is taken at it."""
+    "353.15 K", "176 degF"); the lubricant's eta0 is taken at it. From 200 deg C it is warned
+    (a bare 400 with its kelvin reading, 126.85 deg C)."""
+
+    def unit_doubts(self, key: str) -> list[str]:
+        """A line when the bulk temperature is at least :data:`HOT_BULK_TEMPERATURE`: written
+        bare (read in deg C) with its reading in kelvin, else as hotter than gear teeth run.
+
+        Parameters
+        ----------
+        key : str
+            The table's name, ``"operation"``.
+
+        Returns
+        -------
+        list of str
+            One line, or none.
+        """
+        celsius = self.bulk_temperature
+        if celsius < HOT_BULK_TEMPERATURE:
+            return []
+        hot = ("hotter than gear teeth run (about 40-150 deg C; gear oils oxidise fast and "
+               f"near their flash points from about {HOT_BULK_TEMPERATURE:g} deg C), and the "
+               "contact temperatures add the flash temperature to it")
+        raw = self.bare("bulk_temperature")
+        if raw is None:
+            return [f"{key}.bulk_temperature: {celsius:.4g} deg C is {hot}; check the value"]
+        return [f"{key}.bulk_temperature: the bare number {raw:g} is read in deg C, {hot}; "
+                f"read in kelvin it is {raw - 273.15:.4g} deg C: write \"{raw:g} K\" if kelvin "
+                "was meant"]
 
     _speed = field_validator("speed", mode="before")(lambda cls, v: _rotational_speed(v))
     _bulk_temperature = field_validator("bulk_temperature", mode="before")(

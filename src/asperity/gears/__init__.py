@@ -2,7 +2,14 @@
 contact, Blok's flash temperature, and the steady EHL film, lambda and friction at every
 position (:func:`solve_path`)."""
 
-from .geometry import MIN_TIP_THICKNESS, GearPair, inverse_involute, involute
+from .geometry import (
+    MAX_TIP_RELIEF,
+    MIN_CONTACT_RATIO,
+    MIN_TIP_THICKNESS,
+    GearPair,
+    inverse_involute,
+    involute,
+)
 from .handoff import (
     LINE_MAX_SWEEPS,
     NODES_PER_CORRELATION,
@@ -24,6 +31,7 @@ from .path import (
     contact_problem,
     solve_path,
 )
+from .rack import MIN_TIP_CLEARANCE, form_roll_distance, root_diameter
 from .rating import NominalContactStress, nominal_contact_stress
 from .thermal import (
     FLASH_CONSTANTS,
@@ -34,11 +42,11 @@ from .thermal import (
 
 __all__ = [
     "BOUNDARY_LUBRICATION_LAMBDA", "FLASH_CONSTANTS", "LINE_MAX_SWEEPS",
-    "MIN_TIP_THICKNESS",
+    "MAX_TIP_RELIEF", "MIN_CONTACT_RATIO", "MIN_TIP_CLEARANCE", "MIN_TIP_THICKNESS",
     "NODES_PER_CORRELATION", "PLAUSIBLE_HERTZ_PRESSURE", "EHLMesh", "GearPair", "GearPathResult",
     "Kinematics", "NominalContactStress", "Thermal",
     "asperity_share", "composite_roughness", "contact_problem",
-    "flash_temperature",
+    "flash_temperature", "form_roll_distance", "root_diameter",
     "flooded_grid", "hertz_along_path", "involute", "inverse_involute", "kinematics",
     "load_per_length", "load_sharing", "mixed_friction", "nominal_contact_stress",
     "normal_force", "peclet_number", "point_index",
