@@ -8,11 +8,12 @@ from pydantic import Field, field_validator, model_validator
 
 from ..formatting import format_quantity
 from ..materials import Material
-from ..units import to_si
+from ..units import is_bare, to_si
 from .doubts import BareNumbers
 from .fields import CaseModel, Integer, Number, Quantity
 
-__all__ = ["MaterialSpec", "GridSpec", "STIFFEST_SOLID", "PSI_AMBIGUOUS"]
+__all__ = ["MaterialSpec", "GridSpec", "STIFFEST_SOLID", "PSI_AMBIGUOUS",
+           "SOFTEST_BARE_MODULUS"]
 
 #: Young's modulus of diamond, the stiffest solid (about 1.05-1.2 TPa), Pa: no body is stiffer,
 #: so a larger modulus is a unit mistake ("30e6 GPa" for "30e6 psi").
@@ -22,6 +23,11 @@ STIFFEST_SOLID = 1.2e12
 #: rubbers, soft polymers) or an engineering solid's in psi (1e5 psi a soft polymer, 1e7-3e7 psi
 #: the metals, 1.7e8 psi diamond): the number alone does not say which.
 PSI_AMBIGUOUS = (1e5, 2e8)
+
+#: Bare moduli below the ambiguous range, under 0.1 MPa (a bare ``206`` is 206 Pa), are
+#: refused: no solid of a contact case is that soft without the user saying so with the
+#: unit (a hydrogel's "20 kPa"), and the number is most often GPa or MPa meant.
+SOFTEST_BARE_MODULUS = PSI_AMBIGUOUS[0]
 
 
 class MaterialSpec(BareNumbers):
@@ -42,6 +48,25 @@ class MaterialSpec(BareNumbers):
     """Indentation hardness; contact pressures above it make the run warn that the elastic answer is
     not physical there, and in a dry contact a Hertz peak above 0.57 of it that the body yields
     beneath the surface (p0 = 1.6 Y with H = 2.8 Y)."""
+
+    @field_validator("youngs_modulus", mode="before")
+    @classmethod
+    def _bare_too_soft(cls, value):
+        """Refuse a bare modulus (read in Pa) below :data:`SOFTEST_BARE_MODULUS`:
+        ``youngs_modulus = 206`` meant as GPa was 206 Pa, a contact a thousand times wider
+        (a gear case ran to exit 3 with a lambda of -986, a tangential one to exit 0); the
+        line gives the readings to write."""
+        if not is_bare(value) or not 0 < float(value) < SOFTEST_BARE_MODULUS:
+            return value
+        number = f"{float(value):.6g}".replace("e+0", "e").replace("e+", "e")
+        readings = [f'"{number} {unit}"' for unit, scale in (("GPa", 1e9), ("MPa", 1e6))
+                    if SOFTEST_BARE_MODULUS <= float(value) * scale <= STIFFEST_SOLID]
+        raise ValueError(
+            f"expected a Young's modulus with its unit: the bare number {number} is read in "
+            f"Pa, {format_quantity(float(value), 'Pa')}, softer than "
+            f"{format_quantity(SOFTEST_BARE_MODULUS, 'Pa')} (the softest rubbers); write "
+            f"{' or '.join(readings) or 'the unit'} (steel is \"206 GPa\"), or \"{number} Pa\" "
+            "for a gel that soft")
 
     @field_validator("youngs_modulus")
     @classmethod
