@@ -39,7 +39,8 @@ __all__ = ["BLOWN_UP_FLOOR", "BLOWN_UP_RISE", "BLOWN_UP_SWEEPS", "DIVERGED", "LI
            "MIX_BELOW", "REFRESH_EVERY_SWEEP_BELOW", "SINGLE_REFRESH_NODES",
            "SINGLE_REFRESH_TOL", "UNDAMPED_BELOW",
            "UNDER_RELAXATION",
-           "FixedPointCheck", "StepOptions", "StepReport", "TimeStepper", "reynolds_operator"]
+           "FixedPointCheck", "StepOptions", "StepReport", "TimeStepper", "reynolds_operator",
+           "single_refresh"]
 
 #: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
 DIVERGED = 1e3
@@ -78,6 +79,12 @@ SINGLE_REFRESH_TOL = 1e-5
 #: overheads outweigh the cheaper transforms (131 x 29: 0.63 against 0.48 ms in double,
 #: 261 x 57: 0.62 against 0.72, 571 x 201: 3.8 against 5.6).
 SINGLE_REFRESH_NODES = 30_000
+
+
+def single_refresh(tol: float, nodes: int) -> bool:
+    """Whether a step relaxed to ``tol`` on a grid of ``nodes`` nodes refreshes its far field
+    in single precision (:data:`SINGLE_REFRESH_TOL`, :data:`SINGLE_REFRESH_NODES`)."""
+    return tol >= SINGLE_REFRESH_TOL and nodes >= SINGLE_REFRESH_NODES
 
 #: Residual of a refresh cycle below which the rest of the step refreshes the far field at
 #: every sweep instead of every ``refresh`` sweeps: the asperity-scale changes of the first
@@ -539,7 +546,7 @@ class TimeStepper:
         target = state.problem.load_integral
         refreshes_before = state.refreshes
         state.density_newton = opts.density_newton
-        state.single = tol >= SINGLE_REFRESH_TOL and state.P.size >= SINGLE_REFRESH_NODES
+        state.single = single_refresh(tol, state.P.size)
         state.start_iteration()
         state.damping = opts.damping
         state.relaxation = opts.relaxation
