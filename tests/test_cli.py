@@ -319,3 +319,20 @@ def test_a_command_line_click_cannot_parse_is_one_error_line(args, line):
 def test_asperity_alone_still_prints_its_help():
     result = runner.invoke(app, [])
     assert "Usage" in result.output and "error:" not in result.output
+
+
+def test_a_reference_beyond_its_tolerance_is_named_on_the_terminal(tmp_path):
+    """A user's own reference 60 % above the solution was a "differs" row of report.html
+    alone; the terminal now names it, and the run still exits 0 (a number that differs from
+    a reference is a finding, not a failure)."""
+    text = runner.invoke(app, ["example", "holmes-smooth-line"]).output
+    text += ('\n[reference]\nsource = "my calculation"\ncentral_film = "1 um"\n'
+             'tolerance = "5 %"\n')
+    case = tmp_path / "line.toml"
+    case.write_text(text)
+    result = runner.invoke(app, ["run", str(case), "--out", str(tmp_path / "out"), "--quiet"])
+    assert result.exit_code == 0, result.output
+    (line,) = [ln for ln in result.output.splitlines() if ln.startswith("differs:")]
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    error = summary["central_film_thickness_m"] / 1e-6 - 1
+    assert f"{100 * error:+.1f} %" in line and "(my calculation)" in line and "5 %" in line

@@ -259,6 +259,7 @@ def run(
             signal.signal(sig, handler)
         sys.unraisablehook = previous_hook
     _print_summary(outcome.summary, imperial)
+    _print_differences(outcome.comparisons, imperial)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
         err_console.print(f"warning: {line}", markup=False, highlight=False, soft_wrap=True)
@@ -296,6 +297,21 @@ def _stopped(exc: Interrupted, where: str, case: str, out: Path, quiet: bool):
                    f"continue with: {shlex.join(again + ['--resume'])}")
     err_console.print(f"stopped: {message}", markup=False, highlight=False, soft_wrap=True)
     raise typer.Exit(128 + exc.signum)
+
+
+def _print_differences(comparisons, imperial: bool = False) -> None:
+    """One line per comparison beyond its tolerance (the report's "differs" rows): a user's
+    own reference 20 % off was in report.html alone."""
+    from ..formatting import format_quantity
+
+    for c in comparisons:
+        if c.passed is False:
+            console.print(
+                f"differs: {c.quantity} {format_quantity(c.value, c.unit, imperial=imperial)} "
+                f"against {format_quantity(c.reference, c.unit, imperial=imperial)} "
+                f"({c.source}): {100 * c.relative_error:+.1f} %, beyond the "
+                f"{100 * c.tolerance:.3g} % tolerance", markup=False, highlight=False,
+                soft_wrap=True)
 
 
 def _print_summary(summary: dict, imperial: bool = False) -> None:
