@@ -124,6 +124,18 @@ def _read(file: Path, spacing, spacing_y, unit, x_unit, z_unit, missing, resampl
                          z_unit=z_unit, missing=missing, resample=resample)
 
 
+def _evaluated(reading, surface, cutoff, **options):
+    """:func:`~asperity.surfaces.texture.evaluate_texture` of ``surface``; an error it raises
+    with the doubt on the units read first, when they are in doubt
+    (:meth:`~asperity.surfaces.io.Reading.explained`)."""
+    from ..surfaces.texture import evaluate_texture
+
+    try:
+        return evaluate_texture(surface, cutoff, **options)
+    except InputError as err:
+        raise reading.explained(err) from None
+
+
 def _texture_json(file: Path, reading, texture) -> dict:
     from ..surfaces.texture import suffixed
 
@@ -226,7 +238,6 @@ def stats(
         bin_surface,
         large_map,
     )
-    from ..surfaces.texture import evaluate_texture
 
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
     surface, excluded, binned = bin_surface(reading.surface, bin_points, reading.excluded)
@@ -236,10 +247,8 @@ def stats(
         raise InputError("--bin", f"a block size that brings the map's {points} points within "
                          f"the free memory ({free / 1e9:.3g} GB at about {BYTES_PER_POINT} "
                          f"bytes a point; {large_map(points) or ''})", bin_points)
-    texture = evaluate_texture(surface, _length(cutoff, "--cutoff"),
-                               form_degree=form_degree,
-                               rmr_depth=_length(rmr_depth, "--rmr-depth"),
-                               exclude=excluded)
+    texture = _evaluated(reading, surface, _length(cutoff, "--cutoff"), form_degree=form_degree,
+                         rmr_depth=_length(rmr_depth, "--rmr-depth"), exclude=excluded)
     result = _texture_json(file, reading, texture)
     if binned:
         result["notes"].insert(len(reading.notes), binned)
@@ -421,15 +430,14 @@ def plot(
     import matplotlib.pyplot as plt
 
     from ..plotting.surfaces import plot_spectrum, plot_texture
-    from ..surfaces.texture import evaluate_texture
 
     reading = _read(file, spacing, spacing_y, unit, x_unit, z_unit, missing, resample)
     warnings = list(reading.warnings)
     if spectrum:
         fig = plot_spectrum(reading.surface, title=f"Power spectral density: {file.name}")
     else:
-        texture = evaluate_texture(reading.surface, _length(cutoff, "--cutoff"),
-                                   form_degree=form_degree, exclude=reading.excluded)
+        texture = _evaluated(reading, reading.surface, _length(cutoff, "--cutoff"),
+                             form_degree=form_degree, exclude=reading.excluded)
         warnings = _warnings(reading, texture)
         fig = plot_texture(texture, title=file.name)
     if not out.suffix:  # matplotlib writes a PNG to "<out>.png"; say so

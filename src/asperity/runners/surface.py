@@ -111,8 +111,9 @@ def _generated(spec):
         raise InputError("surface.path", f"a surface of at most {MAX_POINTS} points",
                          surface.z.shape)
     if np.abs(surface.z).max() > 1.0:
-        raise InputError("surface.path", "heights in metres (|z| <= 1 m); give the file's unit "
-                         "(unit, z_unit)", float(np.abs(surface.z).max()))
+        raise InputError("surface.path", "heights in metres (|z| <= 1 m); " + (
+            reading.unit_advice or "give the file's unit (unit, z_unit)"),
+            float(np.abs(surface.z).max()))
     return reading
 
 
@@ -149,17 +150,20 @@ def _surfaces(spec, progress) -> tuple[dict, list]:
     return made, turned
 
 
-def _iso_texture(case, surface, exclude):
+def _iso_texture(case, surface, reading):
     """The ISO texture evaluation of ``surface`` as ``asperity surface stats`` makes it, or None
-    and the warning saying why it could not be made."""
+    and the warning saying why it could not be made (the doubt on a file's units first, when
+    they are in doubt: :meth:`~asperity.surfaces.io.Reading.explained`)."""
     from ..surfaces.texture import evaluate_texture
 
     degree = case.evaluation.form_degree
     try:
-        return evaluate_texture(surface, case.evaluation.cutoff, exclude=exclude,
+        return evaluate_texture(surface, case.evaluation.cutoff,
+                                exclude=None if reading is None else reading.excluded,
                                 form_degree=1 if degree is None else degree), None
     except InputError as exc:
-        return None, (f"ISO texture parameters: not evaluated ({exc}); give evaluation.cutoff "
+        why = exc if reading is None else reading.explained(exc)
+        return None, (f"ISO texture parameters: not evaluated ({why}); give evaluation.cutoff "
                       "that the surface holds")
 
 
@@ -459,7 +463,19 @@ def _reference_ra(spec, surfaces, evaluated) -> list:
     return out
 
 
-def _figures(case, surfaces, evaluated, turned, window) -> dict:
+def _levelled(surface, evaluation):
+    """The surface as its parameters (``sa_m``, ``pq_m`` ...) are of: the form of
+    ``evaluation.form_degree`` removed when given, then the least-squares line or plane (the
+    mean when periodic), as :func:`~asperity.surfaces.roughness_parameters` levels it."""
+    if evaluation.form_degree is not None:
+        surface = s.remove_form(surface, evaluation.form_degree)
+    return surface.with_heights(s.residual_heights(surface.z, surface.periodic))
+
+
+def _figures(case, surfaces, evaluated, turned, window, masked=None) -> dict:
+    """The figures of a surface case: each drawn levelled (:func:`_levelled`), as its numbers
+    are of -- a measured trace's tilt was drawn in P and W while pq_m, wq_m were of the
+    levelled ones -- with the ``masked`` points of a file marked."""
     from ..plotting.surfaces import (
         plot_profiles,
         plot_spectrum,
@@ -469,28 +485,40 @@ def _figures(case, surfaces, evaluated, turned, window) -> dict:
 
     labels = list(surfaces)
     first = surfaces[labels[0]]
+    evaluation = case.evaluation
     figures = {}
+    level = "mean removed" if first.periodic else "least-squares " + (
+        "plane" if isinstance(first, s.Topography) else "line") + " removed"
     if isinstance(first, s.Topography):
-        figures["topography"] = (lambda: plot_topography(first, case.title),
-                                 "Height map of the surface.")
+        figures["topography"] = (lambda: plot_topography(
+            _levelled(first, evaluation), f"{case.title} ({level})", masked),
+            f"Height map of the surface, its {level.replace(' removed', '')} removed, as the "
+            "height parameters (sa_m, sq_m, ...) are of it"
+            + ("; masked points grey." if masked is not None else "."))
     else:
-        shown = surfaces
-        caption = "Profiles offset for clarity, metal below the curves."
+        shown = {k: _levelled(p, evaluation) for k, p in surfaces.items()}
+        caption = (f"Profiles ({level}, as their parameters are of them) offset for clarity, "
+                   "metal below the curves.")
         if case.surface.kind == "turned":
             span = min(first.length, 10 * case.surface.feed)
-            shown = {k: _trimmed_to(p, span) for k, p in surfaces.items()}
+            shown = {k: _trimmed_to(p, span) for k, p in shown.items()}
             caption = f"The first {span * 1e3:.3g} mm of each profile; " + caption
         if case.surface.kind == "builtin":
             caption += " Compare Holmes, Evans & Snidle (2005), Fig. 1."
-        figures["profiles"] = (lambda: plot_profiles(shown, title=case.title), caption)
+        figures["profiles"] = (lambda: plot_profiles(shown, title=f"{case.title} ({level})"),
+                               caption)
     ev = evaluated[labels[0]]
     if ev.waviness is not None:
         cut = case.evaluation.cutoff
-        split = {"primary": first, f"waviness, lambda_c = {cut * 1e3:.3g} mm": ev.waviness,
+        split = {f"primary, {level}": _levelled(first, evaluation),
+                 f"waviness, lambda_c = {cut * 1e3:.3g} mm, {level}": ev.waviness.with_heights(
+                     s.residual_heights(ev.waviness.z, first.periodic)),
                  "roughness": ev.roughness}
         figures["waviness"] = (lambda: plot_profiles(split, title=f"Gaussian filter: {labels[0]}"),
-                               "Primary profile, its waviness (the ISO 16610-21 Gaussian mean "
-                               "line) and roughness, offset for clarity.")
+                               f"Primary profile and its waviness (the ISO 16610-21 Gaussian "
+                               f"mean line), each with its {level.replace(' removed', '')} "
+                               "removed as pq_m and wq_m are of them, and the roughness, offset "
+                               "for clarity.")
     # One spectrum per surface; of a turned case only the first (the dataset holds them all).
     drawn = labels[:1] if case.surface.kind == "turned" else labels
     for label in drawn:
@@ -523,8 +551,7 @@ def run(case, progress=None) -> Outcome:
         reading = surfaces[spec.labels()[0]]
         surfaces[spec.labels()[0]] = reading.surface
     first = next(iter(surfaces))
-    texture, failed = _iso_texture(case, surfaces[first],
-                                   None if reading is None else reading.excluded)
+    texture, failed = _iso_texture(case, surfaces[first], reading)
     evaluated = {label: _evaluate(surf, case.evaluation) for label, surf in surfaces.items()}
     iso = _iso_headline(spec, case.evaluation, texture)
     if iso:
@@ -570,7 +597,8 @@ def run(case, progress=None) -> Outcome:
                      f"{case.evaluation.cutoff:.4g} m), {per}; pa/pq/pt are of the primary "
                      "profile and wa/wq/wt of the waviness.")
     dataset = _dataset(case, surfaces, evaluated, along)
-    figures = _figures(case, surfaces, evaluated, turned, window)
+    figures = _figures(case, surfaces, evaluated, turned, window,
+                       None if reading is None else reading.excluded)
     warnings = list(parabola)
     if reading is not None:
         notes.append(f"File read as {reading.style}.")

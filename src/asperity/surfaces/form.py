@@ -2,9 +2,9 @@
 
 The nominal form (a tilt, a cylinder's curvature) is the least-squares polynomial of a chosen
 degree in the coordinates -- a line or a plane for degree 1, in x and y of total degree at most
-``degree`` for a surface -- fitted to all points and subtracted. Coordinates are scaled to
-[-1, 1] before the fit so that high degrees stay well conditioned. A periodic surface has no
-form: only its mean is removed.
+``degree`` for a surface -- fitted to all points (to the measured ones only where missing
+points were filled) and subtracted. Coordinates are scaled to [-1, 1] before the fit so that
+high degrees stay well conditioned. A periodic surface has no form: only its mean is removed.
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ def _scaled(coord: np.ndarray) -> np.ndarray:
     return 2 * (coord - coord[0]) / span - 1 if span else np.zeros_like(coord)
 
 
-def remove_form(surface, degree: int = 1):
+def remove_form(surface, degree: int = 1, measured=None):
     """The surface minus its least-squares polynomial form of ``degree`` (0: the mean).
 
     Parameters
@@ -31,6 +31,10 @@ def remove_form(surface, degree: int = 1):
     surface : Profile or Topography
     degree : int
         0 mean, 1 line/plane, 2 parabola/quadric, ... (total degree in x and y for a surface).
+    measured : ndarray of bool, optional
+        The points the form is fitted to (default all): the measured ones of a surface whose
+        missing points were filled, so that the fill does not tilt the reference (ISO
+        25178-2's mean plane is of the measured points). The form is subtracted everywhere.
 
     Returns
     -------
@@ -41,22 +45,33 @@ def remove_form(surface, degree: int = 1):
     if not isinstance(surface, Profile | Topography):
         raise InputError("surface", "a Profile or a Topography", type(surface).__name__)
     z = surface.z
+    keep = _measured(measured, z.shape)
     if surface.periodic or degree == 0:
-        return surface.with_heights(z - z.mean())
+        return surface.with_heights(z - z[keep].mean())
     if isinstance(surface, Profile):
-        if degree >= z.size:
-            raise InputError("form_degree", f"a degree below the {z.size} points", degree)
-        fit = np.polynomial.Polynomial.fit(surface.x, z, degree)
+        if degree >= keep.sum():
+            raise InputError("form_degree", f"a degree below the {keep.sum()} points", degree)
+        fit = np.polynomial.Polynomial.fit(surface.x[keep], z[keep], degree)
         return surface.with_heights(z - fit(surface.x))
     X, Y = np.meshgrid(_scaled(surface.x), _scaled(surface.y), indexing="ij")
     vander = polynomial.polyvander2d(X.ravel(), Y.ravel(), [degree, degree])
     i, j = np.meshgrid(np.arange(degree + 1), np.arange(degree + 1), indexing="ij")
     terms = vander[:, (i + j).ravel() <= degree]
-    if terms.shape[1] >= z.size:
-        raise InputError("form_degree", f"a degree with fewer terms than the {z.size} points",
-                         degree)
-    coef = np.linalg.lstsq(terms, z.ravel(), rcond=None)[0]
+    if terms.shape[1] >= keep.sum():
+        raise InputError("form_degree", f"a degree with fewer terms than the {keep.sum()} "
+                         "points", degree)
+    coef = np.linalg.lstsq(terms[keep.ravel()], z[keep], rcond=None)[0]
     return surface.with_heights(z - (terms @ coef).reshape(z.shape))
+
+
+def _measured(measured, shape) -> np.ndarray:
+    """A mask of the points to fit to: ``measured``, or all points."""
+    if measured is None:
+        return np.ones(shape, bool)
+    keep = np.asarray(measured, bool)
+    if keep.shape != shape:
+        raise InputError("measured", f"a mask of the surface's shape {shape}", keep.shape)
+    return keep
 
 
 def principal_radii(topography: Topography) -> tuple[float, float, float]:

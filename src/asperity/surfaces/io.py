@@ -6,15 +6,16 @@ Formats (chosen by the file's suffix):
   columns, read by :mod:`asperity.surfaces.readers` -- the data block found after any metadata
   block, columns and units from column names (``x_um``, ``Height [nm]``) and header keys
   (``Unit: um``, ``Value units``, ``Width``, ``Z scale``), missing-value markers (``NaN``,
-  ``BAD``, ``***``). Without a unit, numbers are metres, with a warning when that is
-  implausible (:data:`PLAUSIBLE_HEIGHT`); a surface longer than :data:`PLAUSIBLE_LENGTH` is
+  ``BAD``, ``***``). Without a unit, numbers are metres (with a note), with a warning naming
+  the units that make the surface plausible when it is not so
+  (:mod:`asperity.surfaces.unit_advice`); a surface longer than :data:`PLAUSIBLE_LENGTH` is
   warned about whatever its unit came from, naming where (:attr:`Reading.units`). An x column
   rounded to its printed precision is taken as uniform (with a note); a non-uniform one is
   resampled by cubic spline on request.
 - Zygo MetroPro/Mx ASCII and XYZ data files and Wyko/Vision ASCII files (text suffixes,
   recognised by their first line): read by their fixed headers
   (:mod:`asperity.surfaces.readers.zygo`, :mod:`asperity.surfaces.readers.wyko`), in metres.
-- ``.npy``: a 1-D array of heights or a 2-D height matrix (needs a spacing).
+- ``.npy``: a 1-D array of real heights or a 2-D height matrix (needs a spacing).
 - ``.npz``: arrays ``z`` and optionally ``x``, ``y``, ``periodic`` (what :func:`write_surface`
   writes); without ``x`` a spacing is needed.
 - Any other suffix (``.x3p``, ``.sdf``, ``.sur``, ``.opd``, ``.plu``, ``.datx``, ...) is read by
@@ -36,6 +37,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from ..errors import InputError, check_positive
+from ..formatting import format_quantity
 from .missing import fill_missing
 from .parameters import residual_heights
 from .readers.layout import interpret
@@ -44,26 +46,24 @@ from .readers.units import parse_length
 from .readers.wyko import is_wyko, read_wyko
 from .readers.zygo import ZygoData, is_zygo, read_zygo
 from .topography import Profile, Topography
+from .unit_advice import (
+    FLAT_HEIGHT,
+    FLAT_SLOPE,
+    PLAUSIBLE_HEIGHT,
+    PLAUSIBLE_LENGTH,
+    PLAUSIBLE_SLOPE,
+    X_UNITS,
+    Scales,
+    doubts,
+    suggested_units,
+    unit_option,
+)
 
 __all__ = ["MAX_SPACING", "PLAUSIBLE_HEIGHT", "PLAUSIBLE_LENGTH", "PLAUSIBLE_SLOPE",
            "TEXT_SUFFIXES", "Reading", "read_measured", "read_surface", "unit_name",
            "write_surface"]
 
 TEXT_SUFFIXES = (".txt", ".csv", ".dat", ".asc", ".xyz")
-#: Peak-to-valley height (m) above which heights read without a unit are taken to be in another
-#: unit than metres, and the length (m) of a profile or side of a topography above which its x
-#: unit, wherever it came from, is doubted: a warning says so.
-PLAUSIBLE_HEIGHT = 1e-2
-PLAUSIBLE_LENGTH = 1.0
-#: RMS slope (Rdq, Sdq) above which the units are doubted (:meth:`Reading.slope_warnings`): a
-#: mean slope angle of 45 degrees, steeper than machined surfaces are and beyond the
-#: small-slope assumption of the half-space contact models.
-PLAUSIBLE_SLOPE = 1.0
-#: RMS slope and rms height (m) below both of which the units are doubted the other way: a
-#: surface that flat and that smooth (0.06 mrad, 5 nm) is an optical flat, not a machined
-#: one (lapped and polished steel: rms slopes 0.005-0.05, Sq 10 nm and more); a user's map in
-#: um read as nm came out Sq 0.5 nm, Sdq 1.2e-4, and filled its periodic cell in contact.
-FLAT_SLOPE, FLAT_HEIGHT = 1e-3, 5e-9
 #: Coarsest grid spacing (m) accepted from the user: two spacings per cut-off of ISO 4288's
 #: longest, 8 mm (the coarsest sampling a profile can be filtered at).
 MAX_SPACING = 4e-3
@@ -71,6 +71,9 @@ MAX_SPACING = 4e-3
 _UNIT_NAMES = {1.0: "m", 1e-3: "mm", 1e-6: "um", 1e-9: "nm", 1e-10: "angstrom", 0.0254: "in",
                2.54e-5: "mil", 2.54e-8: "uin"}
 _SMALLER = {1.0: "mm", 1e-3: "um", 1e-6: "nm"}
+_METRES = {name: factor for factor, name in X_UNITS}
+_NO_UNIT = ("no length unit makes the numbers plausible: check the file and give its units "
+            "(--x-unit, --z-unit; case file: x_unit, z_unit)")
 
 
 def _named(factor: float, names: dict) -> str | None:
@@ -139,6 +142,12 @@ class Reading:
     height_unit : float or None
         Metres per unit of the file's heights; None when they were read as metres for want of
         a unit.
+    unit_advice : str
+        When they were, and are implausible so: the units that make the surface plausible and
+        how to give them (:func:`~asperity.surfaces.unit_advice.suggested_units`); '' else.
+    x_unit : float or None
+        Metres per unit of the file's coordinates (or of the spacing); None when they were read
+        as metres for want of a unit, or are the format's own.
     """
 
     surface: Profile | Topography
@@ -150,6 +159,8 @@ class Reading:
     masked: bool = False
     units: str = ""
     height_unit: float | None = None
+    unit_advice: str = ""
+    x_unit: float | None = None
 
     @property
     def excluded(self) -> np.ndarray | None:
@@ -161,7 +172,10 @@ class Reading:
         :data:`PLAUSIBLE_SLOPE`: the units read (:attr:`units`) are then likely wrong -- heights
         in nm read as um give slopes 1000 times too steep; or when it is below
         :data:`FLAT_SLOPE` while the heights' rms is below :data:`FLAT_HEIGHT`: heights in um
-        read as nm give a surface 1000 times too flat."""
+        read as nm give a surface 1000 times too flat. None when the reader has doubted the
+        units already (:attr:`unit_advice`: its warnings name the units to give)."""
+        if self.unit_advice:
+            return ()
         rms = float(np.sqrt(np.nanmean(residual_heights(np.nan_to_num(self.surface.z),
                                                         self.surface.periodic) ** 2)))
         if value < FLAT_SLOPE and rms < FLAT_HEIGHT:
@@ -175,12 +189,32 @@ class Reading:
             return ()
         smaller = None if self.height_unit is None else _named(self.height_unit, _SMALLER)
         give = (f"if they are in {smaller}, give --z-unit {smaller} (case file: z_unit = "
-                f"\"{smaller}\")" if smaller else "give their unit: --z-unit (case file: z_unit)")
+                f"\"{smaller}\")" if smaller else
+                self.unit_advice or "give their unit: --z-unit (case file: z_unit)")
         return (f"{name}: rms slope {value:.4g} is above {PLAUSIBLE_SLOPE:g} (a mean slope "
                 "angle over 45 deg): steeper than any machined surface and outside the "
                 "small-slope assumption of the contact models, so the units read are likely "
                 f"wrong ({self.units}): check the heights' unit in the file's header; {give}; "
                 "or check the x unit (--x-unit)",)
+
+    def explained(self, error: InputError) -> InputError:
+        """``error`` (of evaluating the surface: a profile too short for any cut-off) with the
+        doubt on the units first when the surface is implausible in the units read
+        (:func:`~asperity.surfaces.unit_advice.doubts`), naming those that make it plausible:
+        a bare x (um), z (nm) profile read as a 2000 m trace was refused for its cut-off
+        without a word on the units. ``error`` itself when the units are not in doubt."""
+        scales = Scales.of(self.surface)
+        found = doubts(scales, self.x_unit is None)
+        if not found:
+            return error
+        lateral = any(d.startswith(("length", "spacing")) for d in found)
+        advice = _unit_advice(scales, self.x_unit or 1.0, self.height_unit or 1.0)
+        if not advice:  # no units make it plausible: they are not what is wrong
+            return error
+        return InputError("x" if lateral else "heights", "", problem=(
+            f"{_listed(found)} with the units read ({self.units}): implausible, the units are "
+            "likely wrong; "
+            f"{advice}; that is likely why it is refused: {error}"))
 
 
 @dataclass
@@ -215,8 +249,9 @@ def _missing(z: np.ndarray, missing: str, where: str, notes: list):
                      "measured neighbours")
     else:
         notes.append(f"masked {share} missing in the file: left out of the height, "
-                     f"material-ratio and volume parameters; filled by {method} only for the "
-                     "filters, slopes and spectra")
+                     f"material-ratio and volume parameters (and out of the form's fit); "
+                     f"filled by {method} only for the filters, slopes, spatial parameters "
+                     "and spectra")
     return z, count, lost
 
 
@@ -269,10 +304,8 @@ def _extent(surface) -> float:
     return max(n * h for n, h in zip(surface.shape, surface.spacing, strict=True))
 
 
-#: What to give when a text file's known x unit makes it implausibly long, and when an
-#: instrument file's own pixel size does (the unit of its numbers is the format's).
-_CHECK_X_UNIT = ("check that unit (um written under an 'X (mm)' header?) and give the right "
-                 "one: --x-unit um (case file: x_unit = \"um\") or the right spacing")
+#: What to give when an instrument file's own pixel size makes it implausibly long (the unit of
+#: its numbers is the format's).
 _CHECK_PIXEL = ("the pixel size written in the file is likely in another unit than its "
                 "format's (an exporter that wrote um where metres belong): give the right one, "
                 "--spacing \"0.5 um\" (case file: spacing = \"0.5 um\"), which replaces it")
@@ -286,30 +319,67 @@ def _pixel_indices(surface) -> bool:
 
 
 def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
-               check: str = _CHECK_X_UNIT):
-    """Warn when heights read without a unit are implausible in metres, or when the surface is
-    longer than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where;
-    ``check`` what to do then)."""
-    if not known[1] and np.ptp(surface.z) > PLAUSIBLE_HEIGHT:
-        warnings.append(f"heights: peak-to-valley {np.ptp(surface.z):.4g} m read as metres (the "
-                        f"file gives no unit) exceeds {PLAUSIBLE_HEIGHT * 1e3:g} mm; give the "
-                        "unit: --z-unit um (case file: z_unit = \"um\")")
-    length = _extent(surface)
-    if length <= PLAUSIBLE_LENGTH:
-        return
-    if not known[0] and _pixel_indices(surface):
-        warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit): its "
-                        "positions are whole steps of 1 from a whole number (pixel indices?), "
-                        "which no unit turns into lengths: write the positions as lengths "
-                        "(indices times the pixel size) with their unit in the column names, "
-                        "e.g. 'x_um y_um z_um'")
-    elif not known[0]:
-        warnings.append(f"x: length {length:.4g} m read as metres (the file gives no unit) "
-                        f"exceeds {PLAUSIBLE_LENGTH:g} m; give the unit: --x-unit um (case "
-                        "file: x_unit = \"um\")")
-    else:
-        warnings.append(f"x: length {length:.4g} m exceeds {PLAUSIBLE_LENGTH:g} m, longer than "
-                        f"a profilometer traces ({units}): {check}")
+               check: str | None = None, x_factor: float = 1.0) -> str:
+    """Warn when a surface read without a unit (``known``: whether the x and height units
+    were given or found) is implausible in metres (:func:`~.unit_advice.doubts`), naming the
+    units that make it plausible (:func:`~.unit_advice.suggested_units`), or when it is longer
+    than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where;
+    ``check`` what to do then, by default the x unit that makes it plausible; ``x_factor``:
+    metres per unit of the x read). Returns the advice ('' when none)."""
+    if all(known) and _extent(surface) <= PLAUSIBLE_LENGTH:
+        return ""  # the slopes are judged later (:meth:`Reading.slope_warnings`)
+    scales = Scales.of(surface)
+    found = doubts(scales, not known[0], short=False)
+    if not found:
+        return ""
+    lateral = [d for d in found if d.startswith(("length", "spacing"))]
+    vertical = [d for d in found if d not in lateral]
+    too_long = scales.length > PLAUSIBLE_LENGTH
+    indices = not known[0] and _pixel_indices(surface)  # which no unit makes lengths
+    doubted_x = (not known[0] or too_long) and not indices
+    advice = _unit_advice(scales, (x_factor if known[0] else 1.0) if doubted_x else None,
+                          None if known[1] else 1.0) or _NO_UNIT
+    if not known[1] and vertical:
+        warnings.append(f"heights: {_listed(vertical)} with the heights read as metres (the "
+                        f"file gives no unit): implausible; {advice}")
+    if indices and lateral:
+        warnings.append(f"x: length {scales.length:.4g} m read as metres (the file gives no "
+                        "unit): its positions are whole steps of 1 from a whole number (pixel "
+                        "indices?), which no unit turns into lengths: write the positions as "
+                        "lengths (indices times the pixel size) with their unit in the column "
+                        "names, e.g. 'x_um y_um z_um'")
+    elif not known[0] and lateral:
+        warnings.append(f"x: {_listed(lateral)} with the positions read as metres (the file "
+                        f"gives no unit): implausible; {advice}")
+    elif known[0] and too_long:
+        warnings.append(f"x: length {scales.length:.4g} m exceeds {PLAUSIBLE_LENGTH:g} m, "
+                        f"longer than a profilometer traces ({units}): "
+                        + (check or f"check that unit and give the right one or the right "
+                                    f"spacing; {advice}"))
+    return advice if not known[1] else ""
+
+
+def _listed(items: list[str]) -> str:
+    """``"a, b and c"``."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def _unit_advice(scales: Scales, x_factor: float | None, z_factor: float | None) -> str:
+    """What to give for the axes in doubt (``x_factor``, ``z_factor``: metres per unit read,
+    None for an axis not in doubt): the units that make the surface plausible, with the sizes
+    they give it; '' when no units do."""
+    pair = suggested_units(scales, x_factor, z_factor)
+    if pair is None or pair == (None, None):
+        return ""
+    x_name, z_name = pair
+    after = scales.scaled(1.0 if x_name is None else _METRES[x_name] / x_factor,
+                          1.0 if z_name is None else _METRES[z_name] / z_factor)
+    said = [f"x in {x_name}" if x_name else "", f"heights in {z_name}" if z_name else ""]
+    return (f"they are plausible with {' and '.join(w for w in said if w)} (length "
+            f"{format_quantity(after.length, 'm')}, spacing "
+            f"{format_quantity(after.spacing, 'm')}, rms height "
+            f"{format_quantity(after.rms, 'm')}, rms slope {after.slope:.3g}): give "
+            + unit_option(x_name, z_name))
 
 
 def _unit_text(what: str, given: float | None, found: float | None, source: str | None) -> str:
@@ -408,11 +478,18 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
         notes.append(f"heights in {unit_name(zf)}, from {lay.z_unit_source}")
     if lay.x is not None and lay.x_factor is not None and units.x is None:
         notes.append(f"x in {unit_name(lay.x_factor)}, from {lay.x_unit_source}")
+    if lay.x is not None and xf is None:
+        notes.append("x read as metres: the file gives no unit for its positions (give it: "
+                     "--x-unit; case file: x_unit)")
+    if zf is None:
+        notes.append("heights read as metres: the file gives no unit for them (give it: "
+                     "--z-unit; case file: z_unit)")
     if lay.x is not None:
         _ignored_spacing(given_spacing, surface, warnings)
-    _plausible(surface, known, described, warnings)
+    advice = _plausible(surface, known, described, warnings, x_factor=xf or 1.0)
     return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled, lost,
-                   missing == "mask", described, zf)
+                   missing == "mask", described, zf, advice,
+                   xf if xf is not None else 1.0 if known[0] else None)
 
 
 def _read_header_format(path: Path, spacing, units: _Units, missing: str) -> Reading:
@@ -444,7 +521,7 @@ def _read_header_format(path: Path, spacing, units: _Units, missing: str) -> Rea
     if from_header:
         _plausible(surface, (True, True), described, warnings, _CHECK_PIXEL)
     return Reading(surface, data.style, tuple(notes), tuple(warnings), filled, lost,
-                   missing == "mask", described, 1.0)
+                   missing == "mask", described, 1.0, x_unit=1.0)
 
 
 def _read_npz(path: Path, spacing, missing: str) -> Reading:
@@ -465,7 +542,19 @@ def _read_npz(path: Path, spacing, missing: str) -> Reading:
     else:
         surface = Topography(arrays["x"], arrays["y"], z, periodic)
     return Reading(surface, "numpy .npz (metres)", tuple(notes), (), filled, lost,
-                   missing == "mask", "x and heights in m, as .npz files hold them", 1.0)
+                   missing == "mask", "x and heights in m, as .npz files hold them", 1.0,
+                   x_unit=1.0)
+
+
+def _third_party_topography(reader, path: Path):
+    """``reader.read_topography`` of ``path``; a NetCDF file from an open stream, closed
+    after: scipy memory-maps a NetCDF file opened by name and warned 'Cannot close a
+    netcdf_file opened with mmap=True' when SurfaceTopography let it go (a stream is read
+    without mmap; the topography holds a copy of the heights)."""
+    if path.suffix.lower() != ".nc":
+        return reader.read_topography(str(path))
+    with open(path, "rb") as stream:
+        return reader.read_topography(stream)
 
 
 def _read_instrument(path: Path, spacing, units: _Units, missing: str,
@@ -479,7 +568,7 @@ def _read_instrument(path: Path, spacing, units: _Units, missing: str,
     notes: list[str] = []
     warnings: list[str] = []
     try:
-        topo = SurfaceTopography.read_topography(str(path))
+        topo = _third_party_topography(SurfaceTopography, path)
     except Exception as err:  # any failure of the third-party reader
         raise InputError(str(path), "a file SurfaceTopography can read", str(err)) from err
     if getattr(topo, "unit", None) is None:
@@ -518,7 +607,8 @@ def _read_instrument(path: Path, spacing, units: _Units, missing: str,
     if spacing is None:
         _plausible(surface, (True, True), described, warnings, _CHECK_PIXEL)
     return Reading(surface, f"{path.suffix} through SurfaceTopography", tuple(notes),
-                   tuple(warnings), filled, lost, missing == "mask", described, height_factor)
+                   tuple(warnings), filled, lost, missing == "mask", described, height_factor,
+                   x_unit=factor)
 
 
 def _check_coarse(spacing) -> None:
@@ -588,20 +678,34 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
     if suffix == ".npz":
         return _read_npz(path, spacing, missing)
     if suffix == ".npy":
-        try:
-            z = np.load(path, allow_pickle=False).astype(float)
-        except ValueError as err:
-            raise InputError(str(path), "a numeric .npy array", str(err)) from err
+        z = _npy_heights(path)
         notes: list[str] = []
         z = z * (1.0 if units.z is None else units.z)
         z, filled, lost = _missing(z, missing, str(path), notes)
         surface = _from_heights(z, spacing, str(path))
         warnings: list[str] = []
         described = "spacing as given; " + _unit_text("heights", units.z, None, None)
-        _plausible(surface, (True, units.z is not None), described, warnings)
+        advice = _plausible(surface, (True, units.z is not None), described, warnings)
         return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled,
-                       lost, missing == "mask", described, units.z)
+                       lost, missing == "mask", described, units.z, advice, 1.0)
     return _read_instrument(path, spacing, units, missing, resample)
+
+
+def _npy_heights(path: Path) -> np.ndarray:
+    """The real heights of a .npy file as floats; a complex, boolean, text or object array
+    refused (a complex one was taken with numpy's 'Casting complex values to real discards
+    the imaginary part' warning)."""
+    try:
+        z = np.load(path, allow_pickle=False)
+    except ValueError as err:
+        raise InputError(str(path), "a numeric .npy array", str(err)) from err
+    if np.iscomplexobj(z):
+        raise InputError(str(path), "real heights (a .npy of floats or integers)",
+                         f"a complex array ({z.dtype})")
+    if z.dtype.kind not in "iuf":
+        raise InputError(str(path), "a numeric .npy array of heights (floats or integers)",
+                         f"an array of dtype {z.dtype}")
+    return z.astype(float)
 
 
 def read_surface(path, spacing=None, **options):

@@ -262,7 +262,8 @@ def _form_warning(p: np.ndarray, r: np.ndarray, profile: Profile, cutoff: float,
 
 
 def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
-                     sampling_lengths=SAMPLING_LENGTHS, lambda_s="iso") -> ProfileFamilies:
+                     sampling_lengths=SAMPLING_LENGTHS, lambda_s="iso",
+                     exclude=None) -> ProfileFamilies:
     """P, W and R profiles of a trace (module docstring).
 
     Parameters
@@ -278,6 +279,9 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
     lambda_s : "iso", None or float
         Short-wave cut-off: ISO 3274's for the cut-off where the spacing allows (``"iso"``),
         none, or a length (m).
+    exclude : ndarray of bool, optional
+        Points left out of the form's fit (masked missing points, filled): the mean line of P
+        is that of the measured points, not tilted by the fill.
 
     Returns
     -------
@@ -289,7 +293,8 @@ def profile_families(profile: Profile, cutoff=None, *, form_degree=1,
     sampling_lengths = check_int("sampling_lengths", sampling_lengths, 1)
     notes: list[str] = []
     warnings: list[str] = []
-    p = remove_form(profile, form_degree).z
+    p = remove_form(profile, form_degree, None if exclude is None else
+                    ~np.asarray(exclude, bool)).z
     given = cutoff is not None
     if cutoff is None:
         cutoff = _iso4288_cutoff(p, profile, lambda_s, notes, warnings)

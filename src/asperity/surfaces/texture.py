@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .areal import AreaFamilies, areal_evaluation, areal_families
+from .areal import AreaFamilies, areal_evaluation, areal_families, measured_heights, small_grid
 from .material_ratio import relative_material_ratio, rk_parameters, section_height_difference
 from .profiles import ProfileFamilies, profile_families, profile_parameters
 from .topography import Profile, Topography
@@ -63,6 +63,9 @@ class TextureEvaluation:
     titles : dict of str to str
         Group key -> heading naming the standard and the filters.
     notes, warnings : tuple of str
+    excluded : ndarray of bool or None
+        The points of ``surface`` left out of the height parameters (masked missing points,
+        filled in ``surface`` and the families), for figures to mark.
     """
 
     surface: Profile | Topography
@@ -71,6 +74,7 @@ class TextureEvaluation:
     titles: dict
     notes: tuple[str, ...]
     warnings: tuple[str, ...]
+    excluded: np.ndarray | None = None
 
     @property
     def rms_slope(self) -> tuple[str, float]:
@@ -120,7 +124,7 @@ def shape_at_round_off(params: dict) -> tuple[str, ...]:
 
 
 def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
-    fam = profile_families(profile, cutoff, form_degree=form_degree)
+    fam = profile_families(profile, cutoff, form_degree=form_degree, exclude=exclude)
     params = profile_parameters(fam, exclude)
     round_off = shape_at_round_off(params)
     r = fam.evaluated("R")
@@ -143,16 +147,17 @@ def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> Textu
               + "; ISO 13565-2 Rk family)",
     }
     return TextureEvaluation(profile, fam, params, titles, fam.notes + round_off,
-                             fam.warnings + _depth_warnings(r, rmr_depth, "Rmr"))
+                             fam.warnings + _depth_warnings(r, rmr_depth, "Rmr"), exclude)
 
 
 def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
-    fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff)
+    fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff, exclude=exclude)
     params, spatial = areal_evaluation(fam, exclude)
-    z = fam.scale_limited.z
-    z = z if exclude is None else z[~fam.evaluated(exclude)]
+    z = measured_heights(fam.scale_limited.z, fam.evaluated(exclude))
+    _, material, small = small_grid(fam.scale_limited.shape, z.size)
     if rmr_depth is not None:
-        params["functional"]["Smr"] = relative_material_ratio(z, rmr_depth)
+        params["functional"]["Smr"] = (relative_material_ratio(z, rmr_depth) if material
+                                       else float("nan"))
     what = f"{fam.label} surface"
     titles = {
         "height": f"Height (ISO 25178-2), {what}",
@@ -165,7 +170,8 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
     return TextureEvaluation(topography, fam, params, titles, fam.notes + spatial,
-                             fam.warnings + _depth_warnings(z, rmr_depth, "Smr"))
+                             fam.warnings + _depth_warnings(z, rmr_depth, "Smr")
+                             + (() if small is None else (small,)), exclude)
 
 
 def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None,
