@@ -343,3 +343,36 @@ def test_plain_numbers_of_a_case_show_their_unit():
     assert _parameter(html, "operation.bulk_temperature") == "90 °C"
     assert _parameter(html, "thermal.conductivity") == "45 W/(m K), 45 W/(m K)"
     assert _parameter(html, "thermal.specific_heat") == "460 J/(kg K), 460 J/(kg K)"
+
+
+def test_parameters_leave_out_the_constants_of_laws_not_used(tmp_path):
+    """A rigid-isoviscous roller (Barus, alpha = 0, incompressible) listed Roelands' kappa and
+    chi and Dowson-Higginson's gamma and lambda, which its laws do not use; a constant the
+    case sets stays listed."""
+    path = tmp_path / "martin.toml"
+    text = '''analysis = "ehl-steady"
+title = "Rigid isoviscous roller (Martin)"
+reduced_modulus = "230 GPa"
+[contact]
+type = "line"
+radius = "10 mm"
+load_per_length = "1 kN/m"
+[speeds]
+u = "1 m/s"
+[lubricant]
+eta0 = "50 mPa s"
+alpha = "0 1/GPa"
+viscosity_model = "barus"
+density_model = "incompressible"
+'''
+    path.write_text(text)
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    html = (out / "report.html").read_text()
+    for key in ("lubricant.kappa", "lubricant.chi", "lubricant.gamma", "lubricant.lambda"):
+        assert _parameter(html, key) is None, key
+    assert _parameter(html, "lubricant.viscosity_model") == "barus"
+    path.write_text(text + 'chi = "5 1/GPa"\n')
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "--quiet"])
+    assert _parameter((out / "report.html").read_text(), "lubricant.chi") == "5 1/GPa"

@@ -208,6 +208,19 @@ class LubricantSpec(BareNumbers):
                 f'number is in Pa s); if mPa s (cP) were meant write "{value:g} mPa s", else '
                 f'"{value:g} Pa s" to confirm']
 
+    def unused_defaults(self, key: str = "lubricant") -> dict:
+        """The defaults of this table (named ``key``) that its laws do not use, as ``{key:
+        None}`` (:attr:`asperity.results.Outcome.chosen`: left out of the report's
+        parameters): Roelands' constants under Barus, Dowson-Higginson's for an
+        incompressible lubricant. Constants the case file sets stay listed."""
+        unused = []
+        if self.viscosity_model == "barus":
+            unused += ["kappa", "chi"]
+        if self.density_model == "incompressible":
+            unused += ["gamma", "lambda_"]
+        return {f"{key}.{self.model_fields[name].alias or name}": None for name in unused
+                if name not in self.model_fields_set}
+
     def lubricant(self) -> Lubricant:
         """The :class:`asperity.ehl.Lubricant` this table describes."""
         return Lubricant(

@@ -168,7 +168,7 @@ def run(case, progress=None) -> Outcome:
     if res.converged:
         trust += diagnostics.friction_undefined(
             res.friction_coefficient, float(lub.eta(res.max_pressure)), res.max_pressure)
-    chosen = chosen_mesh(case, problem, res.x, res.y)
+    chosen = chosen_mesh(case, problem, res.x, res.y) | case.lubricant.unused_defaults()
     if "levels" not in case.solver.model_fields_set:  # the grid sequence chosen with the mesh
         chosen["solver.levels"] = len(res.levels)
     return Outcome(ds, summary, figures, comparisons, converged=res.converged, notes=notes,

@@ -375,7 +375,7 @@ def run(case, progress=None, workdir=None, resume=False) -> Outcome:
     return Outcome(_dataset(case, problem, res), summary, figures, comparisons,
                    converged=res.converged, notes=notes,
                    warnings=[*file_warnings, *trust],  # the file's doubts explain the rest
-                   chosen=chosen_mesh(case, problem, x, y))
+                   chosen=chosen_mesh(case, problem, x, y) | case.lubricant.unused_defaults())
 
 
 def _plasticity(case, problem, res) -> tuple[list[str], list[str]]:
