@@ -46,7 +46,7 @@ from asperity.cases import load_case
 from asperity.ehl import solve_steady, solve_transient
 from asperity.ehl.kernels import CAVITATED, CONTACT
 from asperity.ehl.solver import EHLState
-from asperity.ehl.stepper import StepOptions, single_refresh
+from asperity.ehl.stepper import StepOptions
 from asperity.examples import example_text
 from asperity.memory import retain_freed_memory
 from asperity.runners import run_case
@@ -74,7 +74,6 @@ def last_state(prob, x, y, result, options: StepOptions):
     """An :class:`EHLState` at the run's last pressure, film and roughness, for timing."""
     state = EHLState(prob, x, y, options.implicit_near)
     state.damping = options.damping
-    state.single = single_refresh(options.tol, state.P.size)  # the precision a step refreshes in
     state.P = result.pressure / prob.p_hertz
     state.H = result.film / prob.film_scale
     state.roughness = -(result.surface1 + result.surface2) / prob.film_scale

@@ -192,12 +192,9 @@ def test_inlet_inside_the_pressure_build_up_warns():
     assert short.central_film < 0.6 * full.central_film
 
 
-@pytest.mark.parametrize("single", [False, True])
 @pytest.mark.parametrize("line", [False, True])
-def test_refresh_far_field_equals_direct_convolution(line, single):
-    """``efar`` from the Laplacian of D * P equals the direct sum f * P (interior, 1e-9; in
-    single precision 1e-6, the Laplacian's 1/dX^2 kept off its rounding), and the edge films
-    equal the integral film there (1e-12; 1e-6 of the largest film)."""
+def test_refresh_far_field_equals_direct_convolution(line):
+    """``efar`` from the Laplacian of D * P equals the direct sum f * P (interior, 1e-9)."""
     from asperity.ehl.solver import EHLState
     from asperity.elastic.convolution import Convolution
     from asperity.elastic.differential import (
@@ -211,10 +208,9 @@ def test_refresh_far_field_equals_direct_convolution(line, single):
     else:
         prob = gear_point()
         x, y = prob.grid(81, 33)
-    s = EHLState(prob, x, y, near=2, single=single)
+    s = EHLState(prob, x, y, near=2)
     rng = np.random.default_rng(0)
     s.P = rng.random(s.P.shape)
-    s.H0 = -0.3
     s.refresh()
     shape = s.P.shape
     if line:
@@ -230,7 +226,4 @@ def test_refresh_far_field_equals_direct_convolution(line, single):
     expected = s.laplacian(s.roughness) + prob.curvature + s.c * (f(s.P) - near)
     inner = (slice(1, -1), slice(None) if line else slice(1, -1))
     scale = np.abs(s.c * f(s.P)).max()
-    assert np.max(np.abs(s.efar[inner] - expected[inner])) < (1e-6 if single else 1e-9) * scale
-    film = s.film_from_pressure()
-    assert np.max(np.abs(s.H[s.edge] - film[s.edge])) < \
-        (1e-6 * np.abs(film).max() if single else 1e-12)
+    assert np.max(np.abs(s.efar[inner] - expected[inner])) < 1e-9 * scale

@@ -67,30 +67,6 @@ def test_fft_convolution_equals_direct_summation(periodic, shape, order):
     np.testing.assert_allclose(conv(load), direct, rtol=1e-10, atol=0)
 
 
-@pytest.mark.parametrize("shape", [(7, 5), (6, 10), (9, 1)])
-@pytest.mark.parametrize("even", [True, False])
-def test_edge_values_equal_direct_summation(shape, even):
-    """The convolution on the grid's edges from the load spectrum alone (odd and even padded
-    lengths along y, a line grid, a kernel that is not even), and in single precision."""
-    (nx, ny), dx, dy = shape, 2.0e-6, 3.0e-6
-    rng = np.random.default_rng(3)
-    load = rng.uniform(0.0, 1.0, (nx, ny))
-
-    def kernel(X, Y):
-        return love_integral(X, Y, dx, dy) * (1.0 if even else 1.0 + X / (7 * dx) + Y / dy)
-
-    direct = np.zeros((nx, ny))
-    for i, j, k, m in np.ndindex(nx, ny, nx, ny):
-        direct[i, j] += kernel((i - k) * dx, (j - m) * dy) * load[k, m]
-    conv = Convolution.from_coefficients(kernel, dx, dy, (nx, ny), False)
-    for operator, rtol in ((conv, 1e-12), (conv.single(), 1e-6)):
-        rows, columns = operator.edge_values(operator.spectrum_of(load))
-        scale = np.abs(direct).max()
-        np.testing.assert_allclose(rows, direct[[0, -1], :], rtol=0, atol=rtol * scale)
-        np.testing.assert_allclose(columns, direct[:, [0, -1]], rtol=0, atol=rtol * scale)
-    assert conv.single()(load).dtype == np.float32
-
-
 def test_periodic_operator_on_a_sinusoidal_pressure():
     """u = 2 p0 cos(q x) / (E* q) for p = p0 cos(q x) on a periodic half-space."""
     n, length, p0 = 64, 1e-3, 1e7

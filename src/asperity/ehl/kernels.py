@@ -575,27 +575,19 @@ def five_point_laplacian(w, dx2, dy2, two_d, out):
 
 
 @numba.njit(cache=True, parallel=True)
-def far_field(w, p, source, c_el, f_near, dx2, dy2, two_d, efar, summed=False):
+def far_field(w, p, source, c_el, f_near, dx2, dy2, two_d, efar):
     """The far-field term ``efar = source + c (Delta_h w - sum_{|k|<=K} f_k p_{i+k})`` of the
     deflection equation at every node, into ``efar``.
 
     ``w = D * p`` is the deflection sum, ``Delta_h`` its 5-point Laplacian
     (:func:`_laplacian_column`, zero on the edges) and ``f_near[k]`` the coefficients f_{k,0}
-    kept implicit by the sweeps, summed over the x-neighbours inside the grid. With
-    ``summed``, ``w`` is already the sum ``S = f * p = Delta_h (D * p)`` (taken as zero on the
-    edges, like the Laplacian). Fastest with all fields x-fastest (like those of
-    :class:`asperity.ehl.solver.EHLState`).
+    kept implicit by the sweeps, summed over the x-neighbours inside the grid. Fastest with
+    all fields x-fastest (like those of :class:`asperity.ehl.solver.EHLState`).
     """
     nx, ny = p.shape
     kn = f_near.size - 1
     for j in numba.prange(ny):
-        if summed:
-            edge_column = two_d and (j == 0 or j == ny - 1)
-            for i in range(nx):
-                interior = not edge_column and 0 < i < nx - 1
-                efar[i, j] = w[i, j] if interior else 0.0
-        else:
-            _laplacian_column(w, j, dx2, dy2, two_d, efar)
+        _laplacian_column(w, j, dx2, dy2, two_d, efar)
         for i in range(nx):
             near = f_near[0] * p[i, j]
             for k in range(1, kn + 1):

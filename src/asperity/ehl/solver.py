@@ -232,9 +232,6 @@ class EHLState:
     near : int
         Number K of pressure coefficients ``f_{k,0}``, ``1 <= |k| <= K``, kept implicit along x
         by the line relaxation (0: only the centre coefficient, the seed's point update).
-    single : bool
-        Whether :meth:`refresh` transforms in single precision (the attribute of that name;
-        off by default).
 
     Attributes
     ----------
@@ -269,7 +266,7 @@ class EHLState:
     rhs_t = _XFastest()
     efar = _XFastest()
 
-    def __init__(self, problem, x, y, near: int = 0, single: bool = False):
+    def __init__(self, problem, x, y, near: int = 0):
         self.problem = problem
         self.line = isinstance(problem, LineContact)
         self.x = np.asarray(x, dtype=float)
@@ -296,12 +293,6 @@ class EHLState:
             self.f_near = differential_coefficients(
                 np.arange(near + 1) * self.dX, 0.0, self.dX, self.dY
             )
-        #: Whether :meth:`refresh` transforms in single precision: its rounding, about 1e-7
-        #: of the far-field sum, sets a floor of about 2e-7 under the residual (a relaxation
-        #: to 1e-8 stalled at 2.4e-7), so only for tolerances well above it.
-        self.single = single
-        self._single = None  # the film kernel and its Laplacian f in single precision
-        self._spectrum = None  # the single-precision load spectrum's buffer, on first use
         Xg, Yg = np.meshgrid(self.X, self.Y, indexing="ij")
         ry_ratio = 0.0 if self.line else problem.rx / problem.ry
         self.geometry = 0.5 * Xg**2 + 0.5 * ry_ratio * Yg**2
@@ -329,18 +320,6 @@ class EHLState:
         self.edge[[0, -1], :] = True
         if not self.line:
             self.edge[:, [0, -1]] = True
-
-    def _sum_kernel(self, shape) -> Convolution:
-        """The convolution with the differential coefficients ``f = Delta_h D`` (the far-field
-        sum ``S = f * P`` of :meth:`refresh` in one convolution), taken at ``|x|, |y|`` so
-        that the even kernel's spectrum is real to the last bit."""
-        if self.line:
-            return Convolution.from_coefficients(
-                lambda X, Y: line_differential_coefficients(np.abs(X), self.dX), self.dX, 1.0,
-                shape, False)
-        return Convolution.from_coefficients(
-            lambda X, Y: differential_coefficients(np.abs(X), np.abs(Y), self.dX, self.dY),
-            self.dX, self.dY, shape, False)
 
     @property
     def film_kernel(self) -> Convolution:
@@ -391,46 +370,14 @@ class EHLState:
         exactly at the interior nodes, where ``efar`` is used: a refresh costs one forward and
         one inverse FFT and one compiled pass over the nodes
         (:func:`asperity.ehl.kernels.far_field`, into ``efar`` in place).
-
-        In single precision (``single``) the sum is transformed with the kernel ``f`` itself,
-        ``S = f * P``, since the 5-point Laplacian of a single-precision ``W`` would amplify
-        its rounding (1e-7 of W) by ``1/dX^2``: 3e-4 of S at the seed's spacing, enough to
-        keep a rough step's first sweep after each refresh above the tolerance (15.1 against
-        13.9 sweeps per step at 571 x 201, docs/ehl-transient.md, Cost). ``W`` is then
-        needed on the edges alone, which :meth:`Convolution.edge_values` gives from the same
-        forward transform.
         """
-        if self.single:
-            self._refresh_single()
-        else:
-            W = np.asfortranarray(self._d_conv(self.P))
-            far_field(W, self.P, self._source, self.c, self.f_near, self.dX**2, self.dY**2,
-                      not self.line, self.efar)
-            edge = self.edge  # the film at the edge nodes only (0.11 against 0.27 ms, 801 x 201)
-            self.H[edge] = self.H0 + self.geometry[edge] + self.roughness[edge] + self.c * W[edge]
+        W = np.asfortranarray(self._d_conv(self.P))
+        far_field(W, self.P, self._source, self.c, self.f_near, self.dX**2, self.dY**2,
+                  not self.line, self.efar)
+        edge = self.edge  # the film at the edge nodes only (0.11 against 0.27 ms, 801 x 201)
+        self.H[edge] = self.H0 + self.geometry[edge] + self.roughness[edge] + self.c * W[edge]
         self.refreshes += 1
         self._derivatives = None
-
-    def _refresh_single(self):
-        """:meth:`refresh` in single precision: one forward transform of P, the edge films
-        from it and the far-field sum ``S = f * P`` by one inverse transform."""
-        if self._single is None:
-            self._single = (self._d_conv.single(), self._sum_kernel(self.P.shape).single())
-        film, summed = self._single
-        if self._spectrum is None:
-            self._spectrum = np.empty(summed.spectrum.shape, dtype=summed.spectrum.dtype)
-        spectrum = summed.spectrum_of(self.P, out=self._spectrum)
-        rows, columns = film.edge_values(spectrum)
-        spectrum *= summed.even_spectrum  # in place: f is even (taken at |x|, |y|)
-        S = np.asfortranarray(summed.inverse(spectrum))
-        far_field(S, self.P, self._source, self.c, self.f_near, self.dX**2, self.dY**2,
-                  not self.line, self.efar, True)
-        ends = [0, -1]
-        self.H[ends, :] = self.H0 + self.geometry[ends, :] + self.roughness[ends, :] \
-            + self.c * rows
-        if not self.line:
-            self.H[:, ends] = self.H0 + self.geometry[:, ends] + self.roughness[:, ends] \
-                + self.c * columns
 
     def film_from_pressure(self) -> np.ndarray:
         """The integral film H0 + geometry + phi + c D*P (for checks and initial guesses)."""

@@ -36,11 +36,8 @@ from .solver import (
 )
 
 __all__ = ["BLOWN_UP_FLOOR", "BLOWN_UP_RISE", "BLOWN_UP_SWEEPS", "DIVERGED", "LINE_REFRESH",
-           "MIX_BELOW", "REFRESH_EVERY_SWEEP_BELOW", "SINGLE_REFRESH_NODES",
-           "SINGLE_REFRESH_TOL", "UNDAMPED_BELOW",
-           "UNDER_RELAXATION",
-           "FixedPointCheck", "StepOptions", "StepReport", "TimeStepper", "reynolds_operator",
-           "single_refresh"]
+           "MIX_BELOW", "REFRESH_EVERY_SWEEP_BELOW", "UNDAMPED_BELOW", "UNDER_RELAXATION",
+           "FixedPointCheck", "StepOptions", "StepReport", "TimeStepper", "reynolds_operator"]
 
 #: A step whose pressure exceeds this many Hertz pressures is taken as diverged.
 DIVERGED = 1e3
@@ -65,26 +62,6 @@ BLOWN_UP_SWEEPS = 20
 #: asperity-scale errors of the new step (changes of order p_h) are relaxed by then and what
 #: is left is the slow smooth part (:meth:`TimeStepper.relax`).
 MIX_BELOW = 1e-2
-
-#: Least tolerance a step relaxes with the far field refreshed in single precision
-#: (:attr:`EHLState.single`): its rounding puts a floor of about 2e-7 under the residual, so
-#: tighter relaxations (a step solved to 1e-8 to test the fixed-point check; that check
-#: itself at a hundredth of a tolerance below 1e-3) refresh in double precision. At the
-#: seed's spacing a refresh costs about 30 % less in single precision and a rough step
-#: takes the same sweeps (13.90 per step on the benchmark's 40 rough steps at 571 x 201,
-#: docs/ehl-transient.md, "Cost").
-SINGLE_REFRESH_TOL = 1e-5
-
-#: Fewest nodes of a grid whose refresh runs in single precision: below it the calls'
-#: overheads outweigh the cheaper transforms (131 x 29: 0.63 against 0.48 ms in double,
-#: 261 x 57: 0.62 against 0.72, 571 x 201: 3.8 against 5.6).
-SINGLE_REFRESH_NODES = 30_000
-
-
-def single_refresh(tol: float, nodes: int) -> bool:
-    """Whether a step relaxed to ``tol`` on a grid of ``nodes`` nodes refreshes its far field
-    in single precision (:data:`SINGLE_REFRESH_TOL`, :data:`SINGLE_REFRESH_NODES`)."""
-    return tol >= SINGLE_REFRESH_TOL and nodes >= SINGLE_REFRESH_NODES
 
 #: Residual of a refresh cycle below which the rest of the step refreshes the far field at
 #: every sweep instead of every ``refresh`` sweeps: the asperity-scale changes of the first
@@ -546,7 +523,6 @@ class TimeStepper:
         target = state.problem.load_integral
         refreshes_before = state.refreshes
         state.density_newton = opts.density_newton
-        state.single = single_refresh(tol, state.P.size)
         state.start_iteration()
         state.damping = opts.damping
         state.relaxation = opts.relaxation

@@ -17,7 +17,6 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-import numba
 import numpy as np
 import scipy.fft as sfft
 
@@ -67,18 +66,6 @@ class Convolution:
         self.spectrum = spectrum
         self._work = None  # __call__'s buffer, on first use
         self._even = None  # even_spectrum, on first use
-        self._edge_phases = None  # edge_values' Fourier phases, on first use
-
-    @property
-    def dtype(self) -> np.dtype:
-        """The real type loads are transformed in: float64, or float32 for :meth:`single`."""
-        return np.dtype(np.float32 if self.spectrum.dtype == np.complex64 else np.float64)
-
-    def single(self) -> Convolution:
-        """The same convolution computed in single precision (float32 loads, complex64
-        spectra): about half the time of a double-precision one, relative rounding errors
-        of order 1e-7 of the largest value instead of 1e-16."""
-        return Convolution(self.spectrum.astype(np.complex64), self.shape, self.periodic)
 
     @classmethod
     def from_coefficients(cls, coefficient, dx: float, dy: float, shape, periodic: bool):
@@ -106,9 +93,9 @@ class Convolution:
         shape) the x-transforms run in place in it and it is returned.
         """
         if self.periodic:
-            return sfft.rfft2(np.asarray(load, dtype=self.dtype), workers=-1)
+            return sfft.rfft2(load, workers=-1)
         (nx, _), (fx, fy) = self.shape, self.fft_shape
-        rows = sfft.rfft(np.asarray(load, dtype=self.dtype), n=fy, axis=1, workers=-1)
+        rows = sfft.rfft(load, n=fy, axis=1, workers=-1)
         if out is None:
             return sfft.fft(rows, n=fx, axis=0, overwrite_x=True, workers=-1)
         out[:nx] = rows
@@ -132,8 +119,7 @@ class Convolution:
         Non-periodic: after the inverse transforms along x only the ``nx`` rows of the grid are
         transformed back along y (the rows that are cropped away are never formed).
         """
-        even = self.even_spectrum
-        return self.inverse(load_spectrum * (self.spectrum if even is None else even))
+        return self.inverse(load_spectrum * self.spectrum)
 
     def inverse(self, product: np.ndarray) -> np.ndarray:
         """Field on the grid from a spectrum on the FFT grid (inverse FFT, crop), as in
@@ -144,45 +130,6 @@ class Convolution:
         columns = sfft.ifft(product, axis=0, overwrite_x=True, workers=-1)[: self.shape[0]]
         return sfft.irfft(columns, n=self.fft_shape[1], axis=1, workers=-1)[:, : self.shape[1]]
 
-    def edge_values(self, load_spectrum: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The convolution on the grid's edges only, from a load spectrum (non-periodic).
-
-        Returns ``(rows, columns)``: ``u[[0, nx-1], :]`` and ``u[:, [0, ny-1]]``. The inverse
-        transform is evaluated at those nodes alone, by sums over the modes (two small matrix
-        products and transforms of two rows and two columns) instead of the full inverse of
-        :meth:`inverse`: with ``Z`` the product of the load's and the kernel's spectra
-        (``rfft`` layout along y, ``m`` the y-modes ``1..fy//2``),
-        ``u[i, j] = ifft_x(g_j)[i]``, ``g_j[k] = (Z[k, 0] + A[k, j] + conj(A[-k, j])) / fy``,
-        ``A[k, j] = sum_m w_m Z[k, m] exp(2 pi i m j / fy)``, ``w_m = 1/2`` for the Nyquist
-        mode of an even ``fy`` and 1 otherwise (the y-modes of negative frequency being the
-        conjugates of those at ``-k``, the spectrum of a real field).
-        """
-        if self.periodic:
-            raise ValueError("edge values are for non-periodic convolutions")
-        (nx, ny), (fx, fy) = self.shape, self.fft_shape
-        kernel = self.even_spectrum
-        if kernel is None:  # a kernel that is not even: its complex product first
-            load_spectrum = load_spectrum * self.spectrum
-            kernel = np.ones(self.spectrum.shape, dtype=self.dtype)
-        dtype = self.spectrum.dtype
-        if self._edge_phases is None:
-            modes = np.arange(load_spectrum.shape[1])
-            weight = np.where(2 * modes == fy, 0.5, 1.0)
-            weight[0] = 0.0  # the mean mode, counted once in g
-            self._edge_phases = (
-                np.exp(2j * np.pi * np.arange(fx) * (nx - 1) / fx).astype(dtype),
-                np.stack([weight, weight * np.exp(2j * np.pi * modes * (ny - 1) / fy)],
-                         axis=1).astype(dtype))
-        last_row, column_phases = self._edge_phases
-        ends = np.empty((2, load_spectrum.shape[1]), dtype=dtype)
-        a = np.empty((fx, 2), dtype=dtype)
-        mean = np.empty(fx, dtype=dtype)
-        _edge_sums(load_spectrum, kernel, last_row, column_phases, ends, a, mean)
-        rows = sfft.irfft(ends / fx, n=fy, axis=1)[:, :ny]
-        g = (mean[:, None] + a + np.conj(a[(-np.arange(fx)) % fx])) / fy
-        columns = np.real(sfft.ifft(g, axis=0)[:nx])
-        return rows, columns
-
     def __call__(self, load: np.ndarray) -> np.ndarray:
         """Convolve: the displacement due to ``load`` on the grid.
 
@@ -192,58 +139,17 @@ class Convolution:
         complex arrays: 4.7 against 6.5 ms on 801 x 201 cells (an EHL refresh). The buffer
         makes an instance not re-entrant: one thread per instance.
         """
-        load = np.asarray(load, dtype=self.dtype)
+        load = np.asarray(load, dtype=float)
         if load.shape != self.shape:
             raise ValueError(f"load of shape {load.shape} on a grid of shape {self.shape}")
         if self.periodic:
             return self.from_spectrum(self.spectrum_of(load))
         if self._work is None:
-            self._work = np.empty(self.spectrum.shape, dtype=self.spectrum.dtype)
+            self._work = np.empty(self.spectrum.shape, dtype=complex)
         work = self.spectrum_of(load, out=self._work)
         even = self.even_spectrum
         work *= self.spectrum if even is None else even
         return self.inverse(work)
-
-
-@numba.njit(cache=True, fastmath=True)  # reassociated sums: vectorised
-def _edge_sums(load_spectrum, kernel, last_row, column_phases, ends, a, mean):
-    """The sums of :meth:`Convolution.edge_values` in one pass over the product ``Z`` of
-    the spectra, in double precision: ``ends[0] = sum_k Z[k]``, ``ends[1] = sum_k Z[k]
-    last_row[k]``, ``a[k] = sum_m Z[k, m] column_phases[m]`` and ``mean[k] = Z[k, 0]``.
-
-    In real arithmetic on a row of ``Z`` at a time, which the compiler vectorises (0.17
-    against 0.73 ms in complex arithmetic on the 1152 x 203 modes of the seed's spacing).
-    """
-    fx, modes = load_spectrum.shape
-    first_re, first_im = np.zeros(modes), np.zeros(modes)
-    last_re, last_im = np.zeros(modes), np.zeros(modes)
-    c0_re, c0_im = column_phases[:, 0].real.astype(np.float64), column_phases[:, 0].imag.astype(
-        np.float64)
-    c1_re, c1_im = column_phases[:, 1].real.astype(np.float64), column_phases[:, 1].imag.astype(
-        np.float64)
-    z_re, z_im = np.empty(modes), np.empty(modes)
-    for k in range(fx):
-        r_re, r_im = last_row[k].real, last_row[k].imag
-        for m in range(modes):
-            z_re[m] = load_spectrum[k, m].real * kernel[k, m]
-            z_im[m] = load_spectrum[k, m].imag * kernel[k, m]
-        s0_re = s0_im = s1_re = s1_im = 0.0
-        for m in range(modes):
-            x, y = z_re[m], z_im[m]
-            first_re[m] += x
-            first_im[m] += y
-            last_re[m] += x * r_re - y * r_im
-            last_im[m] += x * r_im + y * r_re
-            s0_re += x * c0_re[m] - y * c0_im[m]
-            s0_im += x * c0_im[m] + y * c0_re[m]
-            s1_re += x * c1_re[m] - y * c1_im[m]
-            s1_im += x * c1_im[m] + y * c1_re[m]
-        a[k, 0] = complex(s0_re, s0_im)
-        a[k, 1] = complex(s1_re, s1_im)
-        mean[k] = complex(z_re[0], z_im[0])
-    for m in range(modes):
-        ends[0, m] = complex(first_re[m], first_im[m])
-        ends[1, m] = complex(last_re[m], last_im[m])
 
 
 def _periodic_wavevectors(shape, dx: float, dy: float):
