@@ -218,7 +218,8 @@ class LubricantSpec(BareNumbers):
             unused += ["kappa", "chi"]
         if self.density_model == "incompressible":
             unused += ["gamma", "lambda_"]
-        return {f"{key}.{self.model_fields[name].alias or name}": None for name in unused
+        fields = type(self).model_fields
+        return {f"{key}.{fields[name].alias or name}": None for name in unused
                 if name not in self.model_fields_set}
 
     def lubricant(self) -> Lubricant:
