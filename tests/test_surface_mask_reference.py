@@ -95,3 +95,21 @@ def test_masked_profile_mean_line_is_fitted_to_the_measured_points():
     fam = profile_families(Profile(x, z), 0.25e-3, lambda_s=None, exclude=lost)
     line = np.polyval(np.polyfit(x[~lost], z[~lost], 1), x)
     assert np.allclose(fam.primary.z, z - line, rtol=0, atol=1e-15)
+
+
+def test_a_masked_surface_runs_headline_heights_are_of_the_measured_points(tmp_path):
+    """An ``analysis = "surface"`` case of the map: its sa_m ... sv_m keys were of the filled
+    map (Ssk 0.4812); they are now those of the measured points, as the iso_* keys are."""
+    from asperity.cases import load_case
+    from asperity.runners import run_case
+
+    z, blob = _map_with_blob()
+    path = _write(tmp_path / "blob.txt", z, blob)
+    ref = _reference(z, blob)
+    case = load_case(f'analysis = "surface"\ntitle = "blob"\n[surface]\nkind = "file"\n'
+                     f'path = "{path}"\nmissing = "mask"\n')
+    summary = run_case(case, workdir=tmp_path / "out").summary
+    for key, value in ref.items():
+        got = summary[key.lower() + "_m"] if key in ("Sa", "Sq", "Sp", "Sv") \
+            else summary[key.lower()]
+        assert got == pytest.approx(value, rel=1e-6, abs=1e-15), key

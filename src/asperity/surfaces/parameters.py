@@ -23,6 +23,7 @@ from .topography import Profile, Topography
 
 __all__ = [
     "PowerSpectrum",
+    "amplitude_moments",
     "acf_decay_lengths",
     "autocorrelation_length",
     "power_spectrum",
