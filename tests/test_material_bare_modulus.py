@@ -86,3 +86,15 @@ def test_the_threshold_is_the_ambiguous_ranges_lower_end():
     assert load_case(TANGENTIAL.format(e1='"20 kPa"')).body1.youngs_modulus == 20e3
     assert load_case(TANGENTIAL.format(e1="2.1e11")).body1.youngs_modulus == 2.1e11
     assert load_case(TANGENTIAL.format(e1='"206 GPa"')).body1.youngs_modulus == 206e9
+
+
+def test_a_bare_modulus_in_mpa_is_offered_its_mpa_reading():
+    """``youngs_modulus = 210000`` (steel in MPa, as data sheets give it) was offered the psi
+    reading (1.448 GPa) and the soft body only; 210000 MPa = 210 GPa is now named too. 3e7,
+    whose MPa reading (30 TPa) is stiffer than diamond, is not offered it."""
+    from asperity.cases.bodies import MaterialSpec
+
+    (line,) = MaterialSpec(youngs_modulus=210000, poisson_ratio=0.3).unit_doubts("body1")
+    assert "in MPa 210 GPa" in line and '"210000 MPa"' in line and "1.448 GPa" in line
+    (line,) = MaterialSpec(youngs_modulus=3e7, poisson_ratio=0.3).unit_doubts("body1")
+    assert "MPa for a modulus" not in line and "in MPa" not in line

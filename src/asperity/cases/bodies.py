@@ -102,10 +102,14 @@ class MaterialSpec(BareNumbers):
             return []
         as_psi = to_si(f"{raw!r} psi", "pressure", "")
         number = f"{raw:.6g}".replace("e+0", "e").replace("e+", "e")
+        # 210000 is steel's modulus in MPa, as a data sheet gives it, as often as anything
+        in_mpa = 1e8 <= raw * 1e6 <= STIFFEST_SOLID
+        mpa = (f", in MPa {format_quantity(raw * 1e6, 'Pa')}" if in_mpa else "")
+        mpa_advice = f'"{number} MPa" for a modulus given in MPa, ' if in_mpa else ""
         return [f"{key}.youngs_modulus: the bare number {number} is read in Pa, "
                 f"{format_quantity(raw, 'Pa')} (a rubber's or a soft polymer's modulus); read "
-                f"in psi it would be {format_quantity(as_psi, 'Pa')}; write the unit: "
-                f'"{number} psi" for a metal or a ceramic given in psi, '
+                f"in psi it would be {format_quantity(as_psi, 'Pa')}{mpa}; write the unit: "
+                f'"{number} psi" for a modulus given in psi, {mpa_advice}'
                 f'"{format_quantity(raw, "Pa")}" to confirm the soft body']
 
     @model_validator(mode="before")
