@@ -919,6 +919,16 @@ def test_a_power_given_as_the_torque_is_refused_with_the_torque_it_means(power, 
     assert f'torque = "{torque:.4g} N m"' in str(err.value) and "power" in str(err.value)
 
 
+def test_a_power_key_in_place_of_the_torque_is_refused_with_the_torque_it_means():
+    """``power = "22 kW"`` beside the speed read "operation.torque: missing"; it now gets the
+    torque, by hand 22 kW at 1470 rpm = 22e3 / (1470 2 pi / 60) = 142.9 N m."""
+    text = GEAR_CASE.replace('torque = "302 N m"', 'power = "22 kW"')
+    assert text != GEAR_CASE
+    with pytest.raises(InputError) as err:
+        load_case(text.replace('speed = "2170 rpm"', 'speed = "1470 rpm"'))
+    assert 'torque = "142.9 N m"' in str(err.value) and "'22 kW'" in str(err.value)
+
+
 @pytest.mark.parametrize("pitch, per_inch", [("8 1/in", 8.0), ("10 per inch", 10.0)])
 def test_a_diametral_pitch_given_as_the_module_is_refused_with_the_module(pitch, per_inch):
     """An imperial user writes the diametral pitch P (teeth per inch of pitch diameter) as the

@@ -385,10 +385,12 @@ class OperationSpec(BareNumbers):
     def _not_a_power(cls, data):
         """A power given as the torque ("50 kW", "30 hp") is refused with the torque it means
         at the pinion speed, T = P / omega (the unit check named only the dimension:
-        "expected a quantity convertible to N*m, got '50 kW'")."""
+        "expected a quantity convertible to N*m, got '50 kW'"), and so is a ``power`` key in
+        place of the torque (it read "operation.torque: missing")."""
         if not isinstance(data, dict):
             return data
-        watts = _power(data.get("torque"))
+        key = "torque" if "torque" in data or "power" not in data else "power"
+        watts = _power(data.get(key))
         if watts is None:
             return data
         try:
@@ -398,7 +400,7 @@ class OperationSpec(BareNumbers):
         else:
             give = (f"\"{watts / omega:.4g} N m\" (T = P / omega at the pinion speed "
                     f"{data['speed']})")
-        raise ValueError(f"a torque in operation.torque, not the power {data['torque']!r} "
+        raise ValueError(f"a torque in operation.torque, not the power {data[key]!r} "
                          f"({watts / 1e3:.4g} kW): give torque = {give}")
 
 
