@@ -176,6 +176,10 @@ class LubricantSpec(BareNumbers):
         if self.density_model != "dowson-higginson":
             return self
         gamma, lam = self.gamma, self.lambda_
+        if lam > DH_LAMBDA_MAX:
+            raise ValueError(f"expected a Dowson-Higginson lambda of at most "
+                             f"{DH_LAMBDA_MAX * 1e9:g} 1/GPa (the law's: {DH_LAMBDA * 1e9:g} "
+                             f"1/GPa; a bare number is in 1/Pa), got {lam * 1e9:g} 1/GPa")
         if gamma < lam:
             raise ValueError(
                 f"expected gamma >= lambda for the Dowson-Higginson density (1 + gamma p) / "
@@ -183,10 +187,6 @@ class LubricantSpec(BareNumbers):
                 "the density would fall with pressure (the law's constants: gamma = "
                 f"{DH_GAMMA * 1e9:g}, lambda = {DH_LAMBDA * 1e9:g} 1/GPa; for no compression "
                 'write density_model = "incompressible")')
-        if lam > DH_LAMBDA_MAX:
-            raise ValueError(f"expected a Dowson-Higginson lambda of at most "
-                             f"{DH_LAMBDA_MAX * 1e9:g} 1/GPa (the law's: {DH_LAMBDA * 1e9:g} "
-                             f"1/GPa; a bare number is in 1/Pa), got {lam * 1e9:g} 1/GPa")
         if gamma > DH_LIMIT_RATIO_MAX * lam:
             ratio = "unbounded" if lam == 0 else f"{gamma / lam:.3g}"
             raise ValueError(

@@ -217,7 +217,8 @@ def barus_viscosity(p, eta0, alpha):
     ndarray
         Viscosity, Pa s, shaped like ``p``.
     """
-    return _barus(np.asarray(p, dtype=float), eta0, alpha)
+    with np.errstate(over="ignore"):  # beyond about 1e308 Pa s the law's value is inf
+        return _barus(np.asarray(p, dtype=float), eta0, alpha)
 
 
 def roelands_index(eta0, alpha, kappa=ROELANDS_KAPPA, chi=ROELANDS_CHI):

@@ -1202,8 +1202,11 @@ def _relax_line_or_newton(state, method, line, polish=False, **relax):
     solved = False
     for P, H0 in ((relaxed[0], relaxed[2]),) if converged else (start, relaxed[::2]):
         state.P, state.H0 = P, H0
-        solved = solve_line_newton(state, target,
-                                   max_steps=POLISH_STEPS if converged else NEWTON_STEPS)
+        # the Newton step tests its rows and iterates for finite values itself; an overflowed
+        # viscosity's zero flow factors made numpy warn at every division (alpha 999 1/GPa)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            solved = solve_line_newton(state, target,
+                                       max_steps=POLISH_STEPS if converged else NEWTON_STEPS)
         if solved:
             break
     if solved:

@@ -145,8 +145,10 @@ def centre_line_profiles(x, pressure, film, a, hertz_pressure=None, title="Centr
                   xytext=(-90, 25), textcoords="offset points", fontsize=8,
                   arrowprops={"arrowstyle": "->", "lw": 0.8})
     top = 3.0 * float(np.median(h_um[inside])) if inside.any() else float(h_um.max())
-    ax_h.set(xlabel="x / a  (entrainment ->)", ylabel=f"film ({h_unit})",
-             ylim=(0.0, max(top, 1.2 * float(h_um.min()), 1e-9)))
+    ax_h.set(xlabel="x / a  (entrainment ->)", ylabel=f"film ({h_unit})")
+    limit = max(top, 1.2 * float(h_um.min()), 1e-9)
+    if np.isfinite(limit):  # a blown-up, unconverged film (NaN, inf) keeps matplotlib's own
+        ax_h.set_ylim(0.0, limit)
     for ax in (ax_p, ax_h):
         ax.axvspan(-1.0, 1.0, color="0.92", zorder=0, label="Hertz width")
     ax_p.legend(loc="upper left", fontsize=8)

@@ -162,7 +162,8 @@ def run(case, progress=None) -> Outcome:
                          film_solved=res.converged)
     collapse = diagnostics.ehl_film_collapse(res.film, estimate, _hertz_zone(problem, res))
     trust += collapse
-    if not collapse and _sheared_piezoviscous(problem, res):
+    if not collapse and np.isfinite(res.friction_coefficient) \
+            and _sheared_piezoviscous(problem, res):
         # a collapsed film's friction is the collapse's, not the Newtonian law's
         trust += diagnostics.newtonian_traction(res.friction_coefficient, lub.newtonian)
     if res.converged:
