@@ -93,3 +93,25 @@ def test_a_surface_case_draws_its_map_levelled(tmp_path):
                                                        rel=1e-9)
     assert np.sqrt(np.mean(drawn**2)) == pytest.approx(out.summary["sq_m"], rel=1e-9)
     assert "least-squares plane removed" in ax.get_title()
+
+
+def test_a_masked_surface_case_draws_its_map_levelled_on_the_measured_points(tmp_path):
+    """With a dropout masked, the map was drawn less the filled map's plane while sq_m is of
+    the measured points' plane (rms 2.002098e-7 drawn against 2.002056e-7): the drawn
+    measured pixels are now those heights, against numpy's lstsq on the measured points."""
+    x, y, z = _map()
+    tilt = z + 2e-3 * x[:, None] - 1e-3 * y[None, :]
+    ix, iy = np.meshgrid(np.arange(x.size), np.arange(y.size), indexing="ij")
+    blob = (ix - 20) ** 2 + (iy - 20) ** 2 < 12**2
+    np.savez(tmp_path / "map.npz", x=x, y=y, z=np.where(blob, np.nan, tilt))
+    out = _case(tmp_path, 'path = "map.npz"\nmissing = "mask"\n')
+    drawn = np.ma.compressed(out.figures["topography"][0]().axes[0].collections[0].get_array())
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    keep = ~blob
+    a = np.c_[np.ones(keep.sum()), X[keep], Y[keep]]
+    coef, *_ = np.linalg.lstsq(a, tilt[keep], rcond=None)
+    reference = tilt[keep] - a @ coef
+    rms = np.sqrt(np.mean((drawn * 1e-6) ** 2))
+    assert drawn.size == keep.sum()
+    assert rms == pytest.approx(np.sqrt(np.mean(reference**2)), rel=1e-9)
+    assert rms == pytest.approx(out.summary["sq_m"], rel=1e-9)

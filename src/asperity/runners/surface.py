@@ -475,12 +475,17 @@ def _reference_ra(spec, surfaces, evaluated) -> list:
     return out
 
 
-def _levelled(surface, evaluation):
+def _levelled(surface, evaluation, masked=None):
     """The surface as its parameters (``sa_m``, ``pq_m`` ...) are of: the form of
     ``evaluation.form_degree`` removed when given, then the least-squares line or plane (the
-    mean when periodic), as :func:`~asperity.surfaces.roughness_parameters` levels it."""
+    mean when periodic), as :func:`~asperity.surfaces.roughness_parameters` levels it; both
+    fitted to the measured points of a map whose points ``masked`` were filled, as
+    :func:`_evaluate` fits them."""
+    measured = None if masked is None or not isinstance(surface, s.Topography) else ~masked
     if evaluation.form_degree is not None:
-        surface = s.remove_form(surface, evaluation.form_degree)
+        surface = s.remove_form(surface, evaluation.form_degree, measured=measured)
+    if measured is not None:
+        return s.remove_form(surface, 0 if surface.periodic else 1, measured=measured)
     return surface.with_heights(s.residual_heights(surface.z, surface.periodic))
 
 
@@ -503,7 +508,7 @@ def _figures(case, surfaces, evaluated, turned, window, masked=None) -> dict:
         "plane" if isinstance(first, s.Topography) else "line") + " removed"
     if isinstance(first, s.Topography):
         figures["topography"] = (lambda: plot_topography(
-            _levelled(first, evaluation), f"{case.title} ({level})", masked),
+            _levelled(first, evaluation, masked), f"{case.title} ({level})", masked),
             f"Height map of the surface, its {level.replace(' removed', '')} removed, as the "
             "height parameters (sa_m, sq_m, ...) are of it"
             + ("; masked points grey." if masked is not None else "."))
@@ -522,7 +527,7 @@ def _figures(case, surfaces, evaluated, turned, window, masked=None) -> dict:
     ev = evaluated[labels[0]]
     if ev.waviness is not None:
         cut = case.evaluation.cutoff
-        split = {f"primary, {level}": _levelled(first, evaluation),
+        split = {f"primary, {level}": _levelled(first, evaluation, masked),
                  f"waviness, lambda_c = {cut * 1e3:.3g} mm, {level}": ev.waviness.with_heights(
                      s.residual_heights(ev.waviness.z, first.periodic)),
                  "roughness": ev.roughness}
