@@ -145,3 +145,19 @@ def test_a_matrix_with_axes_in_mm_and_no_x_unit_has_a_note_and_advice(tmp_path):
     assert fixed.surface.spacing == pytest.approx((0.8e-6, 0.8e-6))
     assert not fixed.warnings
     assert not any(n.startswith("x read as metres") for n in fixed.notes)
+
+
+def test_a_short_trace_in_units_the_user_gave_is_not_advised_other_units(tmp_path):
+    """A 100 um AFM trace at 10 nm steps, read with --x-unit um --z-unit nm as the user
+    says: too short for the shortest ISO 4288 cut-off (0.16 mm), which the error says; it
+    was told its units were "likely wrong" and to give --x-unit mm --z-unit um, 1000 times
+    off on both axes."""
+    x = np.arange(10000) * 0.01
+    z = 20 * np.sin(2 * np.pi * x / 7) + np.random.default_rng(1).normal(0, 5, x.size)
+    path = tmp_path / "afm.txt"
+    np.savetxt(path, np.c_[x, z])
+    result = CliRunner().invoke(app, ["surface", "stats", str(path), "--x-unit", "um",
+                                      "--z-unit", "nm"])
+    assert result.exit_code == 2
+    assert "0.16 mm" in result.output and "--cutoff" in result.output
+    assert "likely wrong" not in result.output and "--x-unit mm" not in result.output

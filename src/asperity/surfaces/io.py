@@ -205,7 +205,9 @@ class Reading:
         without a word on the units. ``error`` itself when the units are not in doubt."""
         scales = Scales.of(self.surface)
         found = doubts(scales, self.x_unit is None)
-        if not found:
+        if not found or (self.x_unit is not None and not doubts(scales, False, short=False)):
+            # only short, in an x unit the user gave: a short trace, not a unit slip (a 100 um
+            # AFM line read in um and nm was told to give mm and um)
             return error
         lateral = any(d.startswith(("length", "spacing")) for d in found)
         advice = _unit_advice(scales, self.x_unit or 1.0, self.height_unit or 1.0)
