@@ -15,6 +15,7 @@ option``, exit code 2, and a second line naming the command's ``--help``.
 
 from __future__ import annotations
 
+import math
 import os
 import shlex
 import signal
@@ -309,9 +310,15 @@ def _print_differences(comparisons, imperial: bool = False) -> None:
             console.print(
                 f"differs: {c.quantity} {format_quantity(c.value, c.unit, imperial=imperial)} "
                 f"against {format_quantity(c.reference, c.unit, imperial=imperial)} "
-                f"({c.source}): {100 * c.relative_error:+.1f} %, beyond the "
+                f"({c.source}): {_percent(c.relative_error)}, beyond the "
                 f"{100 * c.tolerance:.3g} % tolerance", markup=False, highlight=False,
                 soft_wrap=True)
+
+
+def _percent(relative: float) -> str:
+    """A relative difference in percent, ``n/a`` where it is not a number (a zero
+    reference), as the report's comparison table writes it."""
+    return f"{100 * relative:+.1f} %" if math.isfinite(relative) else "n/a"
 
 
 def _print_summary(summary: dict, imperial: bool = False) -> None:

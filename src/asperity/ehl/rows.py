@@ -46,7 +46,8 @@ def doubled_rows(problem, nx: int, ny: int, width: float, dx: float,
     aspect : float
         Least ``dY / dX`` of the finer cells (``MIN_CELL_ASPECT``, 3, the default mesh's;
         the steady runner asks for :data:`asperity.ehl.solver.FINE_CELL_ASPECT`, 6, as its
-        mesh advice does: a ball at M = 1822, k = 0.32 diverged on 4.1 dX).
+        mesh advice does: a ball at M = 1822, k = 0.32 diverged on 4.1 dX; and 1.5 for
+        contacts up to M = 300, :data:`asperity.runners.ehl_steady.SIDE_LOBE_SHORT_ASPECT`).
 
     Returns
     -------

@@ -54,9 +54,11 @@ SIDE_LOBE_MAX_NODES = 200_000
 #: Moes M up to which :func:`side_lobe_rows` doubles the rows down to cells
 #: ``dY >= SIDE_LOBE_SHORT_ASPECT dX`` instead of ``FINE_CELL_ASPECT dX``: a user's steel ball
 #: on glass (M = 213, L = 5.5) and a slow ball-on-disc (M = 183) converged on cells of 1.6
-#: and 1.2 dX (10-21 s), where their default meshes' minimum films were 45 % and 30 % too
-#: thin and no doubling kept 6 dX; the short cells that diverged were those of heavier
-#: contacts (M = 611 on 3-4 dX, M = 1822 on 4.1 dX, docs/ehl-robustness.md).
+#: dX (19-23 s; a user's 1.2 dX too), where their default meshes' minimum films were 45 % and
+#: 30 % too thin and no doubling kept 6 dX; the short cells that diverged were those of
+#: heavier contacts (M = 611 on 3-4 dX, M = 1822 on 4.1 dX, docs/ehl-robustness.md). Cells
+#: under Y_LINES_BELOW = 3 dX that do not converge are relaxed again with y-line sweeps, and
+#: a re-solve that does not converge is not taken.
 SIDE_LOBE_SHORT_CELLS_M = 300.0
 SIDE_LOBE_SHORT_ASPECT = 1.5
 
