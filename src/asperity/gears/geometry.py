@@ -65,6 +65,7 @@ import numpy as np
 
 from ..errors import InputError, check_positive
 from .rack import (
+    BASIC_RACK_CLEARANCE,
     BASIC_RACK_DEDENDUM,
     BASIC_RACK_ROOT_RADIUS,
     MIN_TIP_CLEARANCE,
@@ -203,7 +204,7 @@ def _check_tip_clearance(rack: dict, da, aw: float, mn: float, internal: bool):
         mate = 1 - i
         root = rack["df"][mate]
         fits = tip_for_clearance(aw, root, 0.0, internal)
-        standard = tip_for_clearance(aw, root, 0.25 * mn, internal)
+        standard = tip_for_clearance(aw, root, BASIC_RACK_CLEARANCE * mn, internal)
         owner, other = ("ring", "pinion") if internal else (name, ("pinion", "wheel")[mate])
         formula = ("r_a2 - a - r_f1" if internal else
                    f"a - r_a{i + 1} - r_f{mate + 1}")
@@ -212,9 +213,10 @@ def _check_tip_clearance(rack: dict, da, aw: float, mn: float, internal: bool):
             f"{fits * 1e3:.4f} mm, the {'smallest' if internal else 'largest'} that clears the "
             f"{other}'s root circle: {da[i] * 1e3:.4f} mm leaves a tip clearance {formula} = "
             f"{c * 1e3:.4g} mm, against the {other}'s root diameter d_f{mate + 1} = "
-            f"d{mate + 1} - 2 m_n (1.25 - x{mate + 1}) = {root * 1e3:.4f} mm of the ISO 53 "
-            "profile A basic rack (dedendum h_fP = 1.25 m_n, assumed: the case gives no cutter); "
-            f"{standard * 1e3:.4f} mm leaves the basic rack's clearance 0.25 m_n"),
+            f"d{mate + 1} - 2 m_n ({BASIC_RACK_DEDENDUM:g} - x{mate + 1}) = {root * 1e3:.4f} mm "
+            f"of the ISO 53 profile A basic rack (dedendum h_fP = {BASIC_RACK_DEDENDUM:g} m_n, "
+            f"assumed: the case gives no cutter); {standard * 1e3:.4f} mm leaves the basic "
+            f"rack's clearance {BASIC_RACK_CLEARANCE:g} m_n"),
             f"{da[i] * 1e3:.4f} mm")
 
 
@@ -575,16 +577,19 @@ class GearPair:
             mate = 1 - i
             owner, other = ("ring", "pinion") if self.internal else (
                 ("pinion", "wheel")[i], ("pinion", "wheel")[mate])
-            better = tip_for_clearance(self.aw, self.df[mate], 0.25 * mn, self.internal)
+            better = tip_for_clearance(self.aw, self.df[mate], BASIC_RACK_CLEARANCE * mn,
+                                       self.internal)
             lines.append(
                 f"{self._tip_key()}: the {owner} tip clears the {other}'s root circle by "
                 f"{c * 1e3:.4g} mm = {c / mn:.3g} m_n, below {MIN_TIP_CLEARANCE:g} m_n (design "
-                f"software's usual minimum; ISO 53's basic rack gives 0.25 m_n): the {other}'s "
+                f"software's usual minimum; ISO 53's basic rack gives {BASIC_RACK_CLEARANCE:g} "
+                f"m_n): the {other}'s "
                 f"root diameter {self.df[mate] * 1e3:.4f} mm is that of the ISO 53 profile A "
-                "basic rack (dedendum 1.25 m_n; a deeper-cutting tool leaves more room), and "
+                f"basic rack (dedendum {BASIC_RACK_DEDENDUM:g} m_n; a deeper-cutting tool leaves "
+                "more room), and "
                 "tolerances, thermal growth and the oil squeezed from the root need the room; "
                 f"a {owner} tip diameter of {better * 1e3:.4f} mm leaves "
-                "0.25 m_n")
+                f"{BASIC_RACK_CLEARANCE:g} m_n")
         return lines
 
     def _fillet_warnings(self) -> list[str]:

@@ -26,12 +26,17 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["BASIC_RACK_DEDENDUM", "BASIC_RACK_ROOT_RADIUS", "MIN_TIP_CLEARANCE",
+__all__ = ["BASIC_RACK_CLEARANCE", "BASIC_RACK_DEDENDUM", "BASIC_RACK_ROOT_RADIUS",
+           "MIN_TIP_CLEARANCE",
            "form_roll_distance", "root_diameter", "tip_for_clearance", "tip_for_form"]
 
 #: Dedendum h_fP of the ISO 53:1998 profile A basic rack, in normal modules (profiles A, B and
 #: C: 1.25; D: 1.4).
 BASIC_RACK_DEDENDUM = 1.25
+
+#: Tip clearance c_P of the ISO 53:1998 basic rack, in normal modules: its dedendum less its
+#: addendum h_aP = 1 m_n.
+BASIC_RACK_CLEARANCE = BASIC_RACK_DEDENDUM - 1.0
 
 #: Root fillet radius rho_fP of the ISO 53:1998 profile A basic rack, in normal modules
 #: (B: 0.3, C: 0.25, D: 0.39).

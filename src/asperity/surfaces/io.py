@@ -189,8 +189,7 @@ class Reading:
             return ()
         smaller = None if self.height_unit is None else _named(self.height_unit, _SMALLER)
         give = (f"if they are in {smaller}, give --z-unit {smaller} (case file: z_unit = "
-                f"\"{smaller}\")" if smaller else
-                self.unit_advice or "give their unit: --z-unit (case file: z_unit)")
+                f"\"{smaller}\")" if smaller else "give their unit: --z-unit (case file: z_unit)")
         return (f"{name}: rms slope {value:.4g} is above {PLAUSIBLE_SLOPE:g} (a mean slope "
                 "angle over 45 deg): steeper than any machined surface and outside the "
                 "small-slope assumption of the contact models, so the units read are likely "
