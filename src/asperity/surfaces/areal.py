@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import scipy.fft
@@ -46,8 +47,9 @@ from .parameters import acf_decay_lengths, roughness_parameters
 from .profiles import height_moments
 from .topography import Topography
 
-__all__ = ["AreaFamilies", "areal_evaluation", "areal_families", "areal_parameters", "form_left_in",
-           "measured_heights", "small_grid", "texture_aspect_ratio", "texture_direction"]
+__all__ = ["AreaFamilies", "ArealEvaluation", "areal_evaluation", "areal_families",
+           "areal_parameters", "form_left_in", "measured_heights", "small_grid",
+           "texture_aspect_ratio", "texture_direction"]
 
 #: ACF threshold s of Sal and Str (ISO 25178-2 default).
 ACF_THRESHOLD = 0.2
@@ -305,12 +307,28 @@ def texture_direction(topography: Topography) -> float:
 
 def areal_parameters(families: AreaFamilies, exclude=None) -> dict[str, dict[str, float]]:
     """ISO 25178-2 parameters of the scale-limited surface (:func:`areal_evaluation`'s)."""
-    return areal_evaluation(families, exclude)[0]
+    return areal_evaluation(families, exclude).parameters
 
 
-def areal_evaluation(families: AreaFamilies, exclude=None) -> tuple[dict, tuple[str, ...]]:
+class ArealEvaluation(NamedTuple):
+    """What :func:`areal_evaluation` returns."""
+
+    #: Parameters by group (see :func:`areal_evaluation`).
+    parameters: dict[str, dict[str, float]]
+    #: Notes on them: Str an upper bound, Sal and Str undefined, the filled map used.
+    notes: tuple[str, ...]
+    #: The heights the height, material-ratio and volume parameters are of (m; measured
+    #: points only, from their own mean: :func:`measured_heights`).
+    heights: np.ndarray
+    #: Whether there are enough of them for the material-ratio parameters (:func:`small_grid`).
+    material: bool
+    #: The warning of a grid too small for some parameters, None when it is not.
+    small: str | None
+
+
+def areal_evaluation(families: AreaFamilies, exclude=None) -> ArealEvaluation:
     """ISO 25178-2 parameters of the scale-limited surface, grouped as the standard groups them,
-    and the notes on them (Str an upper bound, Sal and Str undefined, the filled map used).
+    with the notes on them and the heights they are of.
 
     Parameters
     ----------
@@ -324,17 +342,16 @@ def areal_evaluation(families: AreaFamilies, exclude=None) -> tuple[dict, tuple[
 
     Returns
     -------
-    dict
-        ``height``: Sa Sq Ssk Sku Sp Sv Sz (from the mean plane of the scale-limited surface);
-        ``hybrid``: Sdq Sdr; ``spatial``: Sal Str Std (degrees); ``functional``: Sk Spk Svk
-        Smr1 Smr2 Sdc (C(20 %) - C(80 %)); ``volume``: Vmp Vmc Vvc Vvv (m^3/m^2).
-    tuple of str
-        The notes.
+    ArealEvaluation
+        Its ``parameters``: ``height``: Sa Sq Ssk Sku Sp Sv Sz (from the mean plane of the
+        scale-limited surface); ``hybrid``: Sdq Sdr; ``spatial``: Sal Str Std (degrees);
+        ``functional``: Sk Spk Svk Smr1 Smr2 Sdc (C(20 %) - C(80 %)); ``volume``: Vmp Vmc Vvc
+        Vvv (m^3/m^2).
     """
     surface = families.scale_limited
     slopes = roughness_parameters(surface)
     z = measured_heights(surface.z, families.evaluated(exclude))
-    spatial_ok, material_ok = small_grid(surface.shape, z.size)[:2]
+    spatial_ok, material_ok, small = small_grid(surface.shape, z.size)
     sal, str_value, note = (_decay(surface, ACF_THRESHOLD) if spatial_ok else
                             (math.nan, math.nan, None))
     notes = () if note is None else (note,)
@@ -343,7 +360,7 @@ def areal_evaluation(families: AreaFamilies, exclude=None) -> tuple[dict, tuple[
                   f"its {surface.z.size - z.size} masked points filled (harmonic "
                   "interpolation); the height, material-ratio and volume parameters are of "
                   f"the {z.size} measured points, from their own mean plane",)
-    return {
+    return ArealEvaluation({
         "height": height_moments(z, "S"),
         "hybrid": {"Sdq": slopes["Sdq"], "Sdr": slopes["Sdr"]},
         "spatial": {"Sal": sal, "Str": str_value,
@@ -351,7 +368,7 @@ def areal_evaluation(families: AreaFamilies, exclude=None) -> tuple[dict, tuple[
         "functional": ({**rk_parameters(z, "S"), "Sdc": section_height_difference(z)}
                        if material_ok else dict.fromkeys(_FUNCTIONAL, math.nan)),
         "volume": volume_parameters(z) if material_ok else dict.fromkeys(_VOLUME, math.nan),
-    }, notes
+    }, notes, z, material_ok, small)
 
 
 _FUNCTIONAL = ("Sk", "Spk", "Svk", "Smr1", "Smr2", "Sdc")

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .areal import AreaFamilies, areal_evaluation, areal_families, measured_heights, small_grid
+from .areal import AreaFamilies, areal_evaluation, areal_families
 from .material_ratio import relative_material_ratio, rk_parameters, section_height_difference
 from .profiles import ProfileFamilies, profile_families, profile_parameters
 from .topography import Profile, Topography
@@ -152,12 +152,11 @@ def _profile(profile: Profile, cutoff, form_degree, rmr_depth, exclude) -> Textu
 
 def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> TextureEvaluation:
     fam = areal_families(topography, form_degree=form_degree, l_filter=cutoff, exclude=exclude)
-    params, spatial = areal_evaluation(fam, exclude)
-    z = measured_heights(fam.scale_limited.z, fam.evaluated(exclude))
-    _, material, small = small_grid(fam.scale_limited.shape, z.size)
+    evaluation = areal_evaluation(fam, exclude)
+    params, z = evaluation.parameters, evaluation.heights
     if rmr_depth is not None:
-        params["functional"]["Smr"] = (relative_material_ratio(z, rmr_depth) if material
-                                       else float("nan"))
+        params["functional"]["Smr"] = (relative_material_ratio(z, rmr_depth)
+                                       if evaluation.material else float("nan"))
     what = f"{fam.label} surface"
     titles = {
         "height": f"Height (ISO 25178-2), {what}",
@@ -169,9 +168,10 @@ def _area(topography: Topography, cutoff, form_degree, rmr_depth, exclude) -> Te
                       + f"), {what}",
         "volume": f"Volume (ISO 25178-2, p = 10 %, q = 80 %), {what}",
     }
-    return TextureEvaluation(topography, fam, params, titles, fam.notes + spatial,
-                             fam.warnings + _depth_warnings(z, rmr_depth, "Smr")
-                             + (() if small is None else (small,)), exclude)
+    small = () if evaluation.small is None else (evaluation.small,)
+    return TextureEvaluation(topography, fam, params, titles, fam.notes + evaluation.notes,
+                             fam.warnings + _depth_warnings(z, rmr_depth, "Smr") + small,
+                             exclude)
 
 
 def evaluate_texture(surface, cutoff=None, *, form_degree=1, rmr_depth=None,
