@@ -86,3 +86,16 @@ def test_the_figure_of_a_thin_map_draws_its_spectrum_and_keeps_its_colour_bar_cl
     assert label.x0 > map_box.x1 and bar.get_window_extent(renderer).x0 >= map_box.x1
     titles = [a.get_title() for a in fig.axes]
     assert any(t.startswith("S-F: 150 points, too few for the Sk construction") for t in titles)
+
+
+def test_the_figure_of_a_wide_strip_is_stretched_and_says_so():
+    """50 x 3 points of 0.5 um: 25 um wide, 1.5 um tall, 16.7 times wider than tall; drawn to
+    scale the strip was a line. Drawn 5 times wider than tall: y stretched 16.7 / 5 = 3.3
+    times, its page aspect (y unit over x unit) 3.33."""
+    h = 0.5e-6
+    x, y = (np.arange(50) + 0.5) * h, (np.arange(3) + 0.5) * h
+    z = 0.1e-6 * np.random.default_rng(5).normal(size=(50, 3))
+    fig = plot_texture(evaluate_texture(Topography(x, y, z)), title="strip")
+    surface_ax = fig.axes[0]
+    assert "stretched 3.3 times" in surface_ax.get_ylabel()
+    assert surface_ax.get_aspect() == pytest.approx(25.0 / 1.5 / 5.0, rel=1e-9)

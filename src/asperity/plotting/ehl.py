@@ -64,7 +64,7 @@ def contour_maps(x, y, pressure, film, a, b, central_film, title="Steady EHL"):
     """
     xa, ya = np.asarray(x) / a, np.asarray(y) / a
     X, Y = np.meshgrid(xa, ya, indexing="ij")
-    aspect = map_aspect(xa, ya)
+    aspect = map_aspect(np.ptp(xa), np.ptp(ya))
     tall = aspect * float(np.ptp(ya) / max(np.ptp(xa), 1e-12))  # height / width of a panel
     height = float(np.clip(3.4 * tall, 2.4, 7.5))
     width = float(np.clip(height / tall, 2.0, 4.5))

@@ -211,7 +211,7 @@ def plot_flow_vectors(result, problem, arrows=(14, 12)):
 def _map_figure(xa, ya):
     """A figure for a map over x/a, y/a, sized to the domain's shape as drawn, and the axes'
     aspect (:func:`~asperity.plotting.style.map_aspect`: to scale unless very tall)."""
-    aspect = map_aspect(xa, ya)
+    aspect = map_aspect(np.ptp(xa), np.ptp(ya))
     tall = aspect * float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
     height = float(np.clip(3.6 * tall, 2.4, 5.5))
     width = float(np.clip(height / tall, 2.2, 6.0))

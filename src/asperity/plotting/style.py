@@ -13,7 +13,8 @@ __all__ = ["MAX_MAP_ASPECT", "hertz_outline", "map_aspect", "map_ylabel", "new_f
 
 #: Tallest height-to-width ratio of a contour map drawn to scale. A taller domain (a long
 #: ellipse: a ball bearing's race contact, b/a = 5-10, on its default domain 4 a by 4 b) is
-#: drawn with its y-axis compressed to this ratio, and its y label says by how much; drawn to
+#: drawn with its y-axis compressed to this ratio (a domain that much wider than tall, a
+#: thin measured strip, stretched), and its y label says by how much; drawn to
 #: scale, a user's 6205 inner-race contact (b/a = 9.5) was a strip a sixth as wide as its
 #: colour bar. The seed's gear contact (b/a = 3.9) is drawn to scale.
 MAX_MAP_ASPECT = 5.0
@@ -31,16 +32,23 @@ def hertz_outline(ax, b_over_a: float = 1.0, label: str | None = None):
     ax.plot(np.cos(t), b_over_a * np.sin(t), "k-", lw=2.2, label=label)
 
 
-def map_aspect(xa, ya) -> float:
-    """Axes aspect (page length of a unit of y over that of a unit of x) for a map over the
-    node coordinates ``xa``, ``ya`` (in the same unit): 1, drawn to scale, unless the domain
-    is more than :data:`MAX_MAP_ASPECT` times taller than wide, then that ratio over the
-    domain's."""
-    tall = float(np.ptp(ya) / max(np.ptp(xa), 1e-12))
-    return 1.0 if tall <= MAX_MAP_ASPECT else MAX_MAP_ASPECT / tall
+def map_aspect(width: float, height: float) -> float:
+    """Axes aspect (page length of a unit of y over that of a unit of x) for a map ``width``
+    wide and ``height`` tall (in the same unit): 1, drawn to scale, unless one side is more
+    than :data:`MAX_MAP_ASPECT` times the other; then y is compressed (stretched) so that the
+    map is drawn that many times taller (wider) than wide (tall)."""
+    tall = float(height / max(width, 1e-300))
+    if tall > MAX_MAP_ASPECT:
+        return MAX_MAP_ASPECT / tall
+    if tall < 1.0 / MAX_MAP_ASPECT:
+        return 1.0 / (MAX_MAP_ASPECT * tall)
+    return 1.0
 
 
 def map_ylabel(aspect: float, label: str = "y / a") -> str:
     """The y label of a map drawn with ``aspect`` (:func:`map_aspect`): ``label``, with the
-    compression named when the map is not to scale."""
-    return label if aspect == 1.0 else f"{label}  (compressed {1.0 / aspect:.2g} times)"
+    compression (stretch) named when the map is not to scale."""
+    if aspect == 1.0:
+        return label
+    return (f"{label}  (compressed {1.0 / aspect:.2g} times)" if aspect < 1.0 else
+            f"{label}  (stretched {aspect:.2g} times)")

@@ -11,7 +11,7 @@ from ..surfaces.machining import TurnedSurface, roughness_along
 from ..surfaces.material_ratio import equivalent_line, material_ratio_curve, rk_parameters
 from ..surfaces.parameters import power_spectrum
 from ..surfaces.topography import Profile, Topography
-from .style import MAX_MAP_ASPECT, new_figure, plt
+from .style import map_aspect, map_ylabel, new_figure, plt
 
 __all__ = ["plot_families", "plot_material_ratio", "plot_profiles", "plot_spectrum",
            "plot_surface", "plot_texture", "plot_topography", "plot_turning_roughness"]
@@ -57,10 +57,12 @@ def _draw_map(ax, topography: Topography, title: str, masked=None):
     """A height map (µm) over x, y in um (fields under :data:`MAP_IN_UM`) or mm, x to the
     right and y up, with its colour bar beside it: the colour bar is an inset of the map's
     axes, so that it stays against the map when the map is narrower than its cell. It is
-    drawn to scale unless one side is more than :data:`MAX_MAP_ASPECT` times the other
-    (:func:`_map_aspect`: a 3 x 50 map was a sliver under its colour bar's label, its x ticks
-    on top of each other). Points ``masked`` (not measured: filled for the filters) are drawn
-    in :data:`MASKED_COLOUR`, left out of the colour scale, and the title counts them."""
+    drawn to scale unless one side is more than
+    :data:`~asperity.plotting.style.MAX_MAP_ASPECT` times the other
+    (:func:`~asperity.plotting.style.map_aspect`: a 3 x 50 map was a sliver under its colour
+    bar's label, its x ticks on top of each other). Points ``masked`` (not measured: filled
+    for the filters) are drawn in :data:`MASKED_COLOUR`, left out of the colour scale, and the
+    title counts them."""
     scale, unit = (1e6, "µm") if max(np.ptp(topography.x), np.ptp(topography.y)) < MAP_IN_UM \
         else (1e3, "mm")
     heights = topography.z.T * 1e6
@@ -71,25 +73,12 @@ def _draw_map(ax, topography: Topography, title: str, masked=None):
                  "only for the filters)")
     mesh = ax.pcolormesh(topography.x * scale, topography.y * scale, heights, shading="auto",
                          cmap=cmap)
-    aspect, stretch = _map_aspect(topography)
-    ax.set(xlabel=f"x ({unit})", ylabel=f"y ({unit}{stretch})", title=title, aspect=aspect)
+    aspect = map_aspect(*(n * h for n, h in zip(topography.shape, topography.spacing,
+                                                 strict=True)))
+    ax.set(xlabel=f"x ({unit})", ylabel=map_ylabel(aspect, f"y ({unit})"), title=title,
+           aspect=aspect)
     ax.figure.colorbar(mesh, cax=ax.inset_axes([1.03, 0.0, 0.035, 1.0]), label="height (µm)")
     return mesh
-
-
-def _map_aspect(topography: Topography) -> tuple[float, str]:
-    """The axes aspect of a map and what the y label adds: 1 and '' (to scale) unless one side
-    is more than :data:`MAX_MAP_ASPECT` times the other; then y is compressed or stretched
-    to that ratio, and the label says by how much."""
-    extent = [n * h for n, h in zip(topography.shape, topography.spacing, strict=True)]
-    tall = extent[1] / extent[0]
-    if tall > MAX_MAP_ASPECT:
-        aspect = MAX_MAP_ASPECT / tall
-        return aspect, f"; compressed {1 / aspect:.2g} times"
-    if tall < 1 / MAX_MAP_ASPECT:
-        aspect = 1 / (MAX_MAP_ASPECT * tall)
-        return aspect, f"; stretched {aspect:.2g} times"
-    return 1.0, ""
 
 
 def _log_q_axis(ax, q) -> None:
