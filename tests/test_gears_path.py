@@ -651,6 +651,63 @@ def test_figures_step_at_b_and_d_and_say_what_they_draw():
     assert rise == ["flash temperature rise (K)"]
 
 
+def test_the_two_pair_side_of_b_and_d_is_solved_and_drawn_as_a_step():
+    """With ``two_pair_sides`` the films, lambda, friction and temperatures step at B and D as
+    the load does: the two-pair side is solved at B's (D's) radii and speeds with 2/3 of the
+    single-pair load (ISO/TR 13989-1). Its film is thicker (less load), and its flash
+    temperature over its friction coefficient is (2/3)^(3/4) of the node's: Blok's
+    temperature rise grows as mu p_H |u1 - u2| sqrt(a) ~ mu w'^(3/4) at the same radius and
+    speeds (p_H ~ w'^(1/2), a ~ w'^(1/2)). The film curve then holds both values at B's and
+    D's roll angles, without the break drawn where the side is not solved."""
+    from asperity.gears.loading import load_jumps
+    from asperity.plotting.gear import film_figure
+
+    res = solve_path(FZG, FZG.path(5), pinion_speed=OMEGA, torque=302.0, body1=STEEL,
+                     body2=STEEL, lubricant=EYRING, roughness=0.42e-6,
+                     mesh=EHLMesh(nx=97, levels=1), two_pair_sides=True)
+    side = res.two_pair_side
+    jumps = load_jumps(FZG, res.kin.rho1)
+    assert [j.index for j in jumps] == [1, 3] and side.converged.all()
+    assert side.share == pytest.approx([2 / 3, 2 / 3], rel=1e-9)
+    for k, jump in enumerate(jumps):
+        i = jump.index
+        assert side.load[k] == pytest.approx(2 / 3 * res.load[i], rel=1e-9)
+        assert side.kin.u1[k] == pytest.approx(res.kin.u1[i], rel=1e-9)
+        assert side.kin.reduced_radius[k] == pytest.approx(res.kin.reduced_radius[i], rel=1e-9)
+        assert side.minimum_film[k] > 1.02 * res.minimum_film[i]
+        assert side.central_film[k] > 1.02 * res.central_film[i]
+        blok = ((side.flash_temperature[k] / res.flash_temperature[i])
+                / (side.friction[k] / res.friction[i]))
+        assert blok == pytest.approx((2 / 3) ** 0.75, rel=1e-6)
+    fig = film_figure(res, "t")
+    (central,) = [line for line in fig.axes[0].get_lines()
+                  if line.get_label() == "central film (solver)"]
+    x, y = central.get_xdata(), central.get_ydata()
+    assert x.size == 7 and not np.isnan(y).any()
+    rb1 = FZG.rb[0]
+    for k, key in enumerate("BD"):
+        both = y[np.abs(x - math.degrees(FZG.points[key] / rb1)) < 1e-9]
+        i = jumps[k].index
+        assert sorted(both) == pytest.approx(sorted([res.central_film[i] * 1e6,
+                                                     side.central_film[k] * 1e6]), rel=1e-12)
+
+
+@pytest.mark.slow
+def test_the_film_step_at_b_follows_the_dowson_higginson_load_exponent():
+    """On 513 nodes (estimated central-film error 0.8 %) the minimum film on the two-pair
+    side of B over that on B is Dowson-Higginson's (2/3)^-0.13 = 1.0541 within 1 % (1.0507
+    measured; 1.0504 on 1025 nodes). Newtonian Barus oil, incompressible: the formula's
+    assumptions. On the default 129 nodes the ratio is 1.108: the heavier single-pair load
+    is under-resolved more, which the path's ``ehl.nx`` line reports."""
+    oil = Lubricant(viscosity=0.0166, pressure_viscosity=1.7e-8, viscosity_model="barus",
+                    compressible=False)
+    res = solve_path(FZG, [FZG.points["B"]], pinion_speed=OMEGA, torque=302.0, body1=STEEL,
+                     body2=STEEL, lubricant=oil, roughness=0.42e-6, two_pair_sides=True,
+                     mesh=EHLMesh(nx=513))
+    ratio = res.two_pair_side.minimum_film[0] / res.minimum_film[0]
+    assert ratio == pytest.approx((2 / 3) ** -0.13, rel=0.01)
+
+
 def _dowson_higginson_by_hand(w, radius, speed, eta0, alpha):
     """Dowson-Higginson (1977) minimum film of a line contact, steel on steel, m."""
     e_prime = 206e9 / (1 - 0.3**2)

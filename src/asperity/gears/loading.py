@@ -21,6 +21,7 @@ eps_alpha b / cos beta_b).
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -29,7 +30,8 @@ from ..errors import check_positive
 from ..materials import Material
 from .geometry import GearPair
 
-__all__ = ["hertz_along_path", "load_per_length", "load_sharing", "normal_force"]
+__all__ = ["LoadJump", "hertz_along_path", "load_jumps", "load_per_length", "load_sharing",
+           "normal_force"]
 
 
 def load_sharing(pair: GearPair, rho1) -> np.ndarray:
@@ -49,6 +51,40 @@ def load_sharing(pair: GearPair, rho1) -> np.ndarray:
                         np.where(rho > pts["D"], x_e + (1.0 - x_a - x_e) * fall, 1.0))
     weight = min(pair.overlap_ratio, 1.0)
     return (1.0 - weight) * spur + weight / pair.contact_ratio
+
+
+class LoadJump(NamedTuple):
+    """A jump of the load sharing at B or D where a path position lies on it."""
+
+    #: Index of the position on B or D.
+    index: int
+    #: Side of the two-pair values: -1 before B, +1 after D.
+    side: float
+    #: X at the position (single-pair contact, B and D included).
+    share: float
+    #: X on the two-pair side of the jump.
+    outside: float
+    #: A position (m from T1) on the two-pair side, 1e-12 base pitches from B or D: its
+    #: radii and speeds are those of B or D, its load the two-pair one.
+    rho: float
+
+
+def load_jumps(pair: GearPair, rho1) -> list[LoadJump]:
+    """The jumps of :func:`load_sharing` at B and D where a position of ``rho1`` (m) lies on
+    them (as :meth:`GearPair.path` places them), B's first; none where X does not jump (a
+    helical pair with ``eps_beta >= 1``, a contact ratio of 2 or more)."""
+    rho = np.atleast_1d(np.asarray(rho1, dtype=float))
+    pts, jumps = pair.points, []
+    for key, side in (("B", -1.0), ("D", 1.0)):
+        hits = np.flatnonzero(np.abs(rho - pts[key]) <= 1e-12 * pair.t1t2)
+        if not hits.size:
+            continue
+        outside_rho = pts[key] + side * 1e-12 * pair.pbt
+        at, outside = load_sharing(pair, np.array([pts[key], outside_rho]))
+        if at > 0 and abs(outside - at) > 1e-9 * at:
+            jumps.append(LoadJump(int(hits[0]), side, float(at), float(outside),
+                                  float(outside_rho)))
+    return jumps
 
 
 def normal_force(pair: GearPair, torque: float) -> float:

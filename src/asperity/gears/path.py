@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -28,7 +28,7 @@ from ..errors import InputError
 from ..materials import Material
 from .geometry import GearPair
 from .kinematics import Kinematics, kinematics
-from .loading import hertz_along_path, load_sharing
+from .loading import hertz_along_path, load_jumps, load_sharing
 from .mixed import asperity_share, mixed_friction
 from .thermal import (
     LOW_PECLET_OVERESTIMATE,
@@ -173,6 +173,9 @@ class GearPathResult:
     ``nodes`` the node count along x of each solve (0 where unloaded; :func:`position_mesh`),
     ``mesh_error`` the estimated relative error of its central film on that mesh
     (:func:`film_mesh_error`; 0 where unloaded).
+    ``two_pair_side`` (where asked for) is the path result on the two-pair side of each
+    load-sharing jump at B and D (:func:`~asperity.gears.loading.load_jumps`, in their
+    order): the same radii and speeds, the two-pair load; None where not solved.
     With a Newtonian lubricant (no Eyring stress) ``ehl_friction`` is NaN, and so are
     ``friction`` and the temperatures wherever the film carries part of the load: a
     ``lubricant.tau0`` line among ``warnings``, or among ``notes`` where no loaded point's
@@ -207,6 +210,7 @@ class GearPathResult:
     line: bool
     warnings: list = field(default_factory=list)
     notes: list = field(default_factory=list)
+    two_pair_side: GearPathResult | None = None
 
     def critical(self) -> dict:
         """Index of the minimum lambda, maximum flash temperature and maximum Hertz pressure
@@ -336,7 +340,8 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
                body2: Material, lubricant: Lubricant, roughness: float,
                thermal: Thermal = Thermal(), mesh: EHLMesh = EHLMesh(),
                boundary_friction: float = 0.1, boundary_lambda: float = 1.0,
-               full_film_lambda: float = 3.0, progress=None) -> GearPathResult:
+               full_film_lambda: float = 3.0, two_pair_sides: bool = False,
+               progress=None) -> GearPathResult:
     """Solve the steady EHL contact at each position ``rho1`` and derive lambda, friction and
     flash temperature (module notes).
 
@@ -359,6 +364,10 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     mesh : EHLMesh
     boundary_friction, boundary_lambda, full_film_lambda : float
         The mixed-friction rule of :mod:`asperity.gears.mixed`.
+    two_pair_sides : bool
+        Also solve the two-pair side of the load-sharing jumps at B and D where a position
+        lies on them (:attr:`GearPathResult.two_pair_side`), so that the film, lambda,
+        friction and temperature curves can step there as the load does.
     progress : callable, optional
         ``progress(done, total, description)`` after each solve.
 
@@ -372,6 +381,7 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
     kin = kinematics(pair, rho1, pinion_speed)
     n = kin.rho1.size
     share = load_sharing(pair, kin.rho1)
+    jumps = load_jumps(pair, kin.rho1) if two_pair_sides else []
     a, b, p_hz, load = hertz_along_path(pair, kin.rho1, torque, kin.reduced_radius, body1,
                                         body2)
     out = {key: np.full(n, np.nan) for key in (
@@ -397,7 +407,7 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
             out["fc"][i], out["fm"][i], names = _formulas(problem, lubricant)
             converged[i], sweeps[i] = res.converged, res.total_sweeps
         if progress is not None:
-            progress(i + 1, n, f"EHL at path point {i + 1} of {n}")
+            progress(i + 1, n + len(jumps), f"EHL at path point {i + 1} of {n}")
     loaded = load > 0
     # a film of zero or less is no solution of the smooth contact, whatever the residual says
     # (a torque typed in N m for kN m: p_H 43 GPa, h_min -1.3 nm, "converged")
@@ -486,7 +496,7 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
                      f"there, for the {thermal.profile} source by {size} at Pe = {lowest:.2g} "
                      f"({over[1.0]:.0%} at Pe = 1, {over[0.3]:.0%} at Pe = 0.3) against "
                      "Jaeger's exact moving band source, so treat those values as upper bounds")
-    return GearPathResult(
+    result = GearPathResult(
         pair=pair, kin=kin, share=share, load=load, hertz_a=a, hertz_b=b, hertz_pressure=p_hz,
         max_pressure=out["pmax"], central_film=out["hc"], minimum_film=out["hm"],
         formula_central=out["fc"], formula_minimum=out["fm"], formula_names=names,
@@ -496,3 +506,31 @@ def solve_path(pair: GearPair, rho1, *, pinion_speed: float, torque: float, body
         sweeps=sweeps, nodes=nodes, mesh_error=mesh_error, line=not pair.crowned, warnings=notes,
         notes=remarks,
     )
+    if jumps:
+        side = _two_pair_side(result, jumps, progress, pinion_speed=pinion_speed,
+                              torque=torque, body1=body1, body2=body2, lubricant=lubricant,
+                              roughness=roughness, thermal=thermal, mesh=mesh,
+                              boundary_friction=boundary_friction,
+                              boundary_lambda=boundary_lambda,
+                              full_film_lambda=full_film_lambda)
+        result = replace(result, two_pair_side=side)
+    return result
+
+
+def _two_pair_side(result: GearPathResult, jumps, progress, **inputs) -> GearPathResult:
+    """The path result at the two-pair side of ``jumps`` (:func:`solve_path` with the same
+    ``inputs``), a line among ``result.warnings`` for each side whose solve did not converge
+    (its curves are drawn broken there)."""
+    n = result.load.size
+    report = None if progress is None else (
+        lambda done, total, _: progress(n + done, n + total,
+                                        f"EHL on the two-pair side of B/D ({done} of {total})"))
+    side = solve_path(result.pair, [jump.rho for jump in jumps], progress=report, **inputs)
+    for jump, converged in zip(jumps, side.converged, strict=True):
+        if not converged:
+            point = "B" if jump.side < 0 else "D"
+            result.warnings.append(
+                f"EHL solve on the two-pair side of {point} (load sharing {jump.outside:.3g}) "
+                "did not converge: the film, lambda, friction and temperature curves are "
+                "broken there; refine [ehl] nx/levels or raise max_sweeps")
+    return side

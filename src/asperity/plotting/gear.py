@@ -5,8 +5,9 @@ B-D is shaded unless the overlap ratio reaches 1 (the load is then shared unifor
 shading has a legend entry. The load sharing of a spur pair jumps at B and D (ISO/TR 13989-1:
 2/3 outside, 1 on B..D); the load and Hertz pressure are drawn with the value on both sides of
 each jump at the same roll angle, so the jump is a step and not a ramp to the neighbouring node;
-the films, lambda, friction and temperatures, solved at the nodes only, are drawn with their
-line broken across each jump.
+the films, lambda, friction and temperatures step there too where the path result holds the
+solves of the two-pair sides (``solve_path(..., two_pair_sides=True)``, as ``asperity run``
+solves them), and are drawn with their line broken across each jump where it does not.
 Temperatures are drawn in deg C (bulk and contact temperature), with the flash temperature rise
 (K) as the axis on the right, so that one axis never mixes the two. Positions whose EHL solve
 did not converge are crossed out (red x, with a legend entry) on the film, lambda, friction
@@ -19,11 +20,11 @@ import math
 
 import numpy as np
 
-from ..gears.loading import load_sharing
+from ..gears.loading import load_jumps
 from ..gears.path import BOUNDARY_LUBRICATION_LAMBDA
 from .style import new_figure
 
-__all__ = ["broken_curve", "conditions_figure", "film_figure", "friction_temperature_figure",
+__all__ = ["conditions_figure", "film_figure", "friction_temperature_figure", "solved_curve",
            "step_curve"]
 
 BAND_LABEL = "single tooth contact B-D"
@@ -58,21 +59,10 @@ def _angle(result):
     return np.degrees(result.kin.roll_angle)
 
 
-def _jumps(result) -> list[tuple[int, float, float, float]]:
-    """The load-sharing jumps at B and D where a path node lies on them (as
-    :meth:`GearPair.path` places them): (node index, side of the two-pair values: -1 before
-    B, +1 after D, X at the node, X on the two-pair side)."""
-    pair, rho = result.pair, result.kin.rho1
-    pts = pair.points
-    jumps = []
-    for key, side in (("B", -1.0), ("D", 1.0)):
-        hits = np.flatnonzero(np.abs(rho - pts[key]) <= 1e-12 * pair.t1t2)
-        if not hits.size:
-            continue
-        at, outside = load_sharing(pair, np.array([pts[key], pts[key] + side * 1e-12 * pair.pbt]))
-        if at > 0 and abs(outside - at) > 1e-9 * at:
-            jumps.append((int(hits[0]), side, float(at), float(outside)))
-    return jumps
+def _jumps(result):
+    """The load-sharing jumps at the result's positions on B and D
+    (:func:`~asperity.gears.loading.load_jumps`)."""
+    return load_jumps(result.pair, result.kin.rho1)
 
 
 def step_curve(result, values, exponent: float = 1.0):
@@ -97,29 +87,44 @@ def step_curve(result, values, exponent: float = 1.0):
     (ndarray, ndarray)
         Roll angles and values, with the duplicated points inserted.
     """
-    return _inserted(result, values,
-                     lambda angle, value, at, outside: (angle, value * (outside / at) ** exponent))
+    def point(k, jump, angle, value):
+        return angle, value * (jump.outside / jump.share) ** exponent
+
+    return _inserted(result, values, point)
 
 
-def broken_curve(result, values):
-    """Roll angles (deg) and ``values`` (one per path position) with the line broken across
-    the load-sharing jumps at B and D: a NaN point between the node on B and the one before
-    it, and between the node on D and the one after it.
+def solved_curve(result, name: str, scale: float = 1.0):
+    """Roll angles (deg) and ``getattr(result, name) * scale`` (a value the EHL solves give,
+    one per path position: films, lambda, friction, temperatures) with the load-sharing jumps
+    at B and D as steps where the two-pair side is solved, else with the line broken there.
 
-    For values that the EHL solves give only at the nodes (films, lambda, friction,
-    temperatures): a line from the last two-pair node to the single-pair node on B drew a
-    ramp where the load, and with it the film, jumps.
+    Where ``result.two_pair_side`` holds a converged solve of the jump's two-pair side
+    (:func:`asperity.gears.solve_path` with ``two_pair_sides``), a second point at the roll
+    angle of B (D) carries its value; otherwise a NaN point breaks the line between the node
+    on B and the one before it (between D and the one after it): drawn node to node, a line
+    from the last two-pair node to the single-pair node on B drew a ramp where the load, and
+    with it the film, jumps.
     """
-    return _inserted(result, values, lambda *_: (np.nan, np.nan))
+    values = np.asarray(getattr(result, name), dtype=float) * scale
+    side = result.two_pair_side
+
+    def point(k, jump, angle, value):
+        if side is None or not side.converged[k]:
+            return np.nan, np.nan
+        return angle, float(getattr(side, name)[k]) * scale
+
+    return _inserted(result, values, point)
 
 
 def _inserted(result, values, point):
     """Roll angles and ``values`` with one point inserted at each jump of :func:`_jumps`, on
-    its two-pair side: ``point(angle, value, X_node, X_outside)`` gives it from the node's."""
+    its two-pair side: ``point(k, jump, angle, value)`` gives it from the k-th jump and its
+    node's angle and value."""
     x = list(_angle(result))
     y = list(np.asarray(values, dtype=float))
-    inserts = [(i if side < 0 else i + 1, *point(x[i], y[i], at, outside))
-               for i, side, at, outside in _jumps(result)]
+    inserts = [(jump.index if jump.side < 0 else jump.index + 1,
+                *point(k, jump, x[jump.index], y[jump.index]))
+               for k, jump in enumerate(_jumps(result))]
     for pos, angle, value in sorted(inserts, reverse=True):
         x.insert(pos, angle)
         y.insert(pos, value)
@@ -133,13 +138,13 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
     ``"sigma = sqrt(Ra1² + Ra2²)"``); its value in um is added.
     """
     fig, (ax, ax2) = new_figure(6.4, 6.0, nrows=2, sharex=True)
-    ax.plot(*broken_curve(result, result.central_film * 1e6), "C0-o", ms=3,
+    ax.plot(*solved_curve(result, "central_film", 1e6), "C0-o", ms=3,
             label="central film (solver)")
-    ax.plot(*broken_curve(result, result.minimum_film * 1e6), "C1-o", ms=3,
+    ax.plot(*solved_curve(result, "minimum_film", 1e6), "C1-o", ms=3,
             label="minimum film (solver)")
-    ax.plot(*broken_curve(result, result.formula_central * 1e6), "C0--",
+    ax.plot(*solved_curve(result, "formula_central", 1e6), "C0--",
             label=f"central ({result.formula_names[0]})")
-    ax.plot(*broken_curve(result, result.formula_minimum * 1e6), "C1--",
+    ax.plot(*solved_curve(result, "formula_minimum", 1e6), "C1--",
             label=f"minimum ({result.formula_names[1]})")
     _cross_unconverged(ax, result, result.central_film * 1e6, label=True)
     _cross_unconverged(ax, result, result.minimum_film * 1e6)
@@ -147,7 +152,7 @@ def film_figure(result, title, sigma_label: str = "sigma the composite roughness
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
     ax.set_title(title, pad=14)
-    ax2.plot(*broken_curve(result, result.specific_film), "C2-o", ms=3)
+    ax2.plot(*solved_curve(result, "specific_film"), "C2-o", ms=3)
     _cross_unconverged(ax2, result, result.specific_film)
     ax2.axhline(1.0, color="C3", lw=0.8, ls="--", label="lambda = 1")
     if np.nanmin(result.specific_film) < 1.0:
@@ -208,15 +213,15 @@ def friction_temperature_figure(result, title, bulk_temperature, newtonian=False
     if newtonian:
         ax.plot([], [], " ", label="EHL traction left out (Newtonian: no lubricant.tau0)")
     else:
-        ax.plot(*broken_curve(result, result.ehl_friction), "C0--",
+        ax.plot(*solved_curve(result, "ehl_friction"), "C0--",
                 label="EHL traction (Eyring)")
-    ax.plot(*broken_curve(result, result.friction), "C0-o", ms=3, label="with boundary share")
+    ax.plot(*solved_curve(result, "friction"), "C0-o", ms=3, label="with boundary share")
     _cross_unconverged(ax, result, result.friction, label=True)
     ax.set_ylabel("friction coefficient")
     _mark_points(ax, result, band_label=True)
     ax.legend(fontsize=7)
     ax.set_title(title, pad=14)
-    ax2.plot(*broken_curve(result, result.contact_temperature), "C3-o", ms=3,
+    ax2.plot(*solved_curve(result, "contact_temperature"), "C3-o", ms=3,
              label="contact temperature = bulk + flash")
     ax2.axhline(bulk_temperature, color="0.4", lw=0.8, ls="--", label="bulk temperature")
     _cross_unconverged(ax2, result, result.contact_temperature)

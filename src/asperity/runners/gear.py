@@ -77,7 +77,8 @@ def solve(case, progress=None) -> tuple[GearPathResult, float]:
         thermal=case.thermal_model(), mesh=case.ehl.mesh(),
         boundary_friction=case.friction.boundary,
         boundary_lambda=case.friction.boundary_lambda,
-        full_film_lambda=case.friction.full_film_lambda, progress=progress)
+        full_film_lambda=case.friction.full_film_lambda, two_pair_sides=True,
+        progress=progress)
     return result, time.perf_counter() - start
 
 
@@ -258,7 +259,8 @@ def outcome(case, result: GearPathResult, seconds: float) -> Outcome:
                       "Central and minimum film from the steady EHL solver (solid) and the "
                       "film formulas (dashed), and lambda = h_min / sigma (sigma the composite "
                       "roughness named on the axis), against the pinion roll angle; A-E "
-                      "marked, single tooth contact B-D shaded."),
+                      "marked, single tooth contact B-D shaded; at B and D both sides of the "
+                      "load-sharing jump are solved and drawn."),
         "path_conditions": (lambda: conditions_figure(result, title),
                             "Load and Hertz pressure (stepping at B and D, where the load "
                             "sharing jumps), rolling and sliding speeds and the reduced radius "
