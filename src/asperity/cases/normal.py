@@ -69,9 +69,12 @@ class NormalLoading(CaseModel):
 
     load: Quantity("force", gt=0) | None = None
     """Normal load (give this or approach)."""
-    approach: Quantity("length", gt=0) | None = None
-    """Rigid-body approach of the two bodies (give this or load); with roughness, measured from
-    the roughness's mean plane through the apex, not from first contact."""
+    approach: Quantity("length") | None = None
+    """Rigid-body approach of the two bodies (give this or load): without roughness from first
+    contact (> 0); with roughness from the roughness's mean plane through the apex, not from
+    first contact, so negative where the rough surfaces touch before that plane is reached
+    (a rough flat in partial contact). It must exceed the approach of first contact and, on a
+    periodic grid, stay below the mean undeformed gap (full contact needs ``load``)."""
 
     @model_validator(mode="after")
     def _one(self):

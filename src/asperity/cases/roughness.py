@@ -10,6 +10,7 @@ its own start, and a grid longer than the file is refused (:func:`roughness_on_g
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
@@ -22,6 +23,7 @@ from ..errors import InputError
 from ..formatting import format_quantity
 from ..surfaces.recipe import SurfaceRecipe, Waviness, build_surface, build_surface_record
 from ..surfaces.topography import Profile
+from ..surfaces.unit_advice import PLAUSIBLE_HEIGHT
 from .fields import CaseModel, Integer, Number, Quantity, existing_file
 
 __all__ = ["DEFAULT_FORM_DEGREE", "FormKeys", "GridRoughness", "KIND_KEYS", "MeasuredFile",
@@ -398,8 +400,10 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
         raise _file_error(exc, spec, label) from None
     name = Path(spec.path).name
     surf, read = built.surface, built.reading.surface
+    _refuse_implausible_heights(read, built.reading, f"{label}.path ({name})")
     xs = _from_start(surf.x, len(x), dx, surf.periodic, "x", f"{label}.path ({name})")
     notes, warnings = built.file_report(f"{label}.path", name)
+    warnings = tuple(_in_case_keys(w, label) for w in warnings)
     notes = list(notes)
     origin = _file_origin(read.x)
     if origin != 0.0:
@@ -419,6 +423,39 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
                      f"cell centres ({cells} apart) from the file's points ({apart} apart)")
     return GridRoughness(spec.scale * z, spacing, tuple(notes), warnings,
                          spec.scale * built.rms_slope[1])
+
+
+def _in_case_keys(text: str, table: str) -> str:
+    """``text`` (a surface reader's advice) with its options as the case file's keys of
+    ``table``: ``give --z-unit nm (case file: z_unit = "nm")`` reads ``give roughness.z_unit
+    = "nm"``, ``(--x-unit, --z-unit; case file: x_unit, z_unit)`` reads
+    ``(roughness.x_unit, roughness.z_unit)``, ``--spacing "1 um"`` reads
+    ``roughness.spacing = "1 um"``. The reader's advice
+    names the command line's options, which a case file does not have."""
+    def keys(match):
+        return ", ".join(f"{table}.{item.strip()}" for item in match.group(1).split(", "))
+
+    text = re.sub(r"--[xz]-unit \S+(?: and --[xz]-unit \S+)? \(case file: ([^)]*)\)", keys,
+                  text)
+    text = re.sub(r"\(--[^;()]*; case file: ([^)]*)\)", lambda m: f"({keys(m)})", text)
+    return re.sub(r'--spacing ("[^"]*")', rf"{table}.spacing = \1", text)
+
+
+def _refuse_implausible_heights(read, reading, where: str):
+    """Refuse a measured map whose peak-to-valley height is above
+    :data:`~asperity.surfaces.unit_advice.PLAUSIBLE_HEIGHT` in the units read: no roughness is
+    that high, so the units are wrong (heights in nm read as metres gave a sphere on a
+    2182 m map, 8738 GPa and exit 0), and a contact solved on it means nothing. The reader's
+    advice, when it has one, names the unit that makes the heights plausible."""
+    height = float(np.nanmax(read.z) - np.nanmin(read.z))
+    if not height > PLAUSIBLE_HEIGHT:
+        return
+    advice = reading.unit_advice or "give the heights' unit (z_unit)"
+    advice = _in_case_keys(advice, where.split(".")[0])
+    raise InputError(where, "", problem=(
+        f"heights with a peak-to-valley of {format_quantity(height, 'm')} in the units read "
+        f"({reading.units}), above {format_quantity(PLAUSIBLE_HEIGHT, 'm')}: no roughness is "
+        f"that high, so the units are wrong; {advice}"))
 
 
 def _length(value: float) -> str:

@@ -13,6 +13,7 @@ from ..cases.roughness import roughness_on_grid, undeformed_gap
 from ..contact import hertz_point, solve_normal
 from ..contact.greenwood_tripp import greenwood_tripp_sphere, summit_parameters
 from ..contact.spots import contact_spots
+from ..errors import InputError
 from ..formatting import format_quantity
 from ..materials import contact_modulus
 from ..references import cite
@@ -62,12 +63,38 @@ def _greenwood_tripp_rows(case, res, x, y, heights, e_star):
                   "load_rms_radius_m": rms}
 
 
+def _check_approach(approach: float, gap0: np.ndarray, periodic: bool, rough: bool):
+    """Refuse a ``loading.approach`` at which the bodies do not touch (at or below the first
+    contact: 0 for smooth bodies, ``min(gap0)`` for rough ones, whose approach is measured
+    from the roughness's mean plane, so below 0) or, on a periodic grid, at or beyond the mean
+    undeformed gap, where they are in full contact, which only load control solves. A rough
+    flat in partial contact has a negative approach; a rule of ``> 0`` refused every one."""
+    first = float(gap0.min()) if rough else 0.0  # smooth: Hertz's apex, cell-centred or not
+    mean = float(gap0.mean())
+    if abs(mean) < 1e-9 * float(np.ptp(gap0)):
+        mean = 0.0  # the mean plane of the heights, to round-off
+    got = format_quantity(approach, "m")
+    if not approach > first:
+        where = (f"the rough surfaces first touch at {format_quantity(first, 'm')}, measured "
+                 "from the roughness's mean plane through the apex" if rough else
+                 "the smooth bodies first touch at 0")
+        raise InputError("loading.approach", f"more than {format_quantity(first, 'm')} ({where};"
+                         " below it they do not touch)", got)
+    if periodic and not approach < mean:
+        raise InputError("loading.approach", f"less than the mean undeformed gap "
+                         f"{format_quantity(mean, 'm')} of a periodic contact (from there on the "
+                         "surfaces are in full contact, which needs load control: "
+                         "loading.load)", got)
+
+
 def run(case, progress=None) -> Outcome:
     """Solve the case's normal contact; compare with Hertz when the surfaces are smooth."""
     x, y = case.grid.coordinates()
     body1, body2 = case.body1.material(), case.body2.material()
     rough = None if case.roughness is None else roughness_on_grid(case.roughness, x, y)
     gap0 = undeformed_gap(*case.geometry.radii(), x, y, None if rough is None else rough.heights)
+    if case.loading.approach is not None:
+        _check_approach(case.loading.approach, gap0, case.grid.periodic, rough is not None)
     callback = None
     if progress is not None:
         def callback(iteration, residual):

@@ -1,0 +1,111 @@
+"""Approach control of rough contacts from a case file, a periodic strip's mesh check and a
+measured map in the wrong height unit.
+
+References: Westergaard's periodic contact of a sinusoid (Johnson 1985, section 13.3): full
+contact at p* = pi E* g / lambda for heights g cos(2 pi x / lambda), a contact of width
+2a with sin^2(pi a / lambda) = p / p*, and the mean separation
+g [1 - (p/p*)(1 - ln(p/p*))] at a mean pressure p (the strip is flat along y). A rough
+flat's approach is measured from the roughness's mean plane, so in partial contact it is
+minus the mean separation: a negative number, which the case file used to refuse (and a
+positive one too: no approach could be given at all).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from asperity.cases import load_case
+from asperity.errors import InputError
+from asperity.runners import run_case
+
+E, NU = 210e9, 0.3
+E_STAR = E / (2 * (1 - NU**2))
+WAVELENGTH, AMPLITUDE = 100e-6, 0.5e-6
+
+
+def _strip(tmp_path, approach=None, load=None, ny=8):
+    """A 1-D sinusoid (two wavelengths, 256 cells along x) pressed by a flat, periodic."""
+    nx = 256
+    h = 2 * WAVELENGTH / nx
+    x = (np.arange(nx) + 0.5) * h
+    z = AMPLITUDE * np.cos(2 * np.pi * x / WAVELENGTH)[:, None] * np.ones((1, ny))
+    np.save(tmp_path / "sine.npy", z)
+    loading = {"approach": approach} if approach is not None else {"load": load}
+    return load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": E, "poisson_ratio": NU},
+        "body2": {"youngs_modulus": E, "poisson_ratio": NU}, "geometry": {"shape": "flat"},
+        "loading": loading,
+        "grid": {"nx": nx, "ny": ny, "x_extent": nx * h, "y_extent": ny * h,
+                 "periodic": True},
+        "roughness": {"kind": "file", "path": str(tmp_path / "sine.npy"), "spacing": h}})
+
+
+def test_a_rough_flat_under_approach_control_carries_westergaards_load(tmp_path):
+    """At the approach -g [1 - q (1 - ln q)] with q = 1/4 (-201.7 nm) the mean pressure is
+    q p* = 453.1 MPa within 1 %, and the contact covers (2/pi) asin(sqrt(q)) = 1/3 of the
+    period within four cells of 256 (each of the two contacts' edges within a cell)."""
+    q = 0.25
+    p_star = math.pi * E_STAR * AMPLITUDE / WAVELENGTH
+    separation = AMPLITUDE * (1 - q * (1 - math.log(q)))
+    out = run_case(_strip(tmp_path, approach=f"{-separation * 1e9:.4f} nm"))
+    area = 2 * WAVELENGTH * 8 * (2 * WAVELENGTH / 256)
+    assert out.summary["load_n"] / area == pytest.approx(q * p_star, rel=0.01)
+    fraction = out.summary["contact_area_m2"] / area
+    assert fraction == pytest.approx(2 / math.pi * math.asin(math.sqrt(q)), abs=4 / 256)
+    assert out.summary["approach_m"] == pytest.approx(-separation, rel=1e-9)
+    # the strip spans its whole periodic y: no semi-axis along y to resolve (8 rows of 8
+    # cells were told "8 cells per semi-axis along y ... mesh-dependent")
+    assert not [w for w in out.warnings if w.startswith("mesh:")]
+
+
+def test_an_approach_at_which_a_rough_flat_is_in_full_or_no_contact_is_refused(tmp_path):
+    """From the mean plane a rough flat is in full contact at approach 0 and first touches
+    at minus the amplitude: a positive approach needs load control, one below -0.5 um does
+    not touch. Both name loading.approach and what to give."""
+    with pytest.raises(InputError) as info:
+        run_case(_strip(tmp_path, approach="10 nm"))
+    message = str(info.value)
+    assert message.startswith("loading.approach: expected less than the mean undeformed gap 0 m")
+    assert "loading.load" in message and "10 nm" in message
+    with pytest.raises(InputError) as info:
+        run_case(_strip(tmp_path, approach="-0.6 um"))
+    message = str(info.value)
+    assert message.startswith("loading.approach: expected more than -")
+    assert "first touch" in message and "mean plane" in message
+
+
+def test_a_smooth_ball_needs_a_positive_approach(tmp_path):
+    case = load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
+        "loading": {"approach": "-1 um"},
+        "grid": {"nx": 32, "ny": 32, "x_extent": "0.4 mm", "y_extent": "0.4 mm"}})
+    with pytest.raises(InputError) as info:
+        run_case(case)
+    assert str(info.value).startswith(
+        "loading.approach: expected more than 0 m (the smooth bodies first touch at 0")
+
+
+def test_heights_in_nm_read_as_metres_are_refused_in_a_contact_case(tmp_path):
+    """A map of nm heights (rms 300 nm) without a unit is read as metres: 1.8 km peak to
+    valley. It ran to 8738 GPa and exit 0 with a warning; it is refused, and told the case
+    file's key, roughness.z_unit, not the command line's --z-unit."""
+    n, h = 64, 0.5e-6
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(1).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * (6e-6) ** 2 / 8) * np.fft.fft2(noise)))
+    z *= 300.0 / z.std()  # nm, smooth on the 0.5 um points (rms slope about 0.1 in nm)
+    np.save(tmp_path / "nm.npy", z)
+    case = load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
+        "loading": {"load": "1 N"},
+        "grid": {"nx": 64, "ny": 64, "x_extent": "32 um", "y_extent": "32 um"},
+        "roughness": {"kind": "file", "path": str(tmp_path / "nm.npy"), "spacing": "0.5 um"}})
+    with pytest.raises(InputError) as info:
+        run_case(case)
+    message = str(info.value)
+    assert message.startswith("roughness.path (nm.npy): heights with a peak-to-valley of")
+    assert 'roughness.z_unit = "nm"' in message and "--z-unit" not in message
