@@ -109,3 +109,20 @@ def test_heights_in_nm_read_as_metres_are_refused_in_a_contact_case(tmp_path):
     message = str(info.value)
     assert message.startswith("roughness.path (nm.npy): heights with a peak-to-valley of")
     assert 'roughness.z_unit = "nm"' in message and "--z-unit" not in message
+
+
+def test_a_profile_as_contact_roughness_is_said_to_be_ridges_across_the_grid(tmp_path):
+    """A 1-D trace under a ball is repeated at every y: ridges, whose pressure map a user
+    saw without a word on why."""
+    x = np.arange(2000) * 0.5e-6
+    z = 0.2e-6 * np.sin(2 * np.pi * x / 40e-6)
+    np.save(tmp_path / "trace.npy", z)
+    case = load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
+        "loading": {"load": "5 N"},
+        "grid": {"nx": 64, "ny": 64, "x_extent": "0.25 mm", "y_extent": "0.25 mm"},
+        "roughness": {"kind": "file", "path": str(tmp_path / "trace.npy"), "spacing": "0.5 um"}})
+    out = run_case(case)
+    assert any(n.startswith("roughness.path (trace.npy): a profile along x, repeated at every y")
+               for n in out.notes)

@@ -84,6 +84,21 @@ def test_a_quantity_of_a_related_kind_says_what_it_is(text, dimension, hint):
         to_si(text, dimension, "f")
 
 
+@pytest.mark.parametrize("text, dimension, converted", [
+    ("50 kg", "force", "'50 kgf' or 50 kg x 9.81 m/s^2 = 490.3 N"),
+    ("2.5 lb", "force", "'2.5 lbf' or 2.5 lb x 9.81 m/s^2 = 11.12 N"),
+    ("320 cSt", "viscosity", "320 cSt x 850 kg/m^3 (a mineral oil's) = 272 mPa s"),
+    ("3000 rpm", "speed", "3000 rpm on a 50 mm radius = 15.71 m/s")])
+def test_the_conversion_offered_is_of_the_users_own_number(text, dimension, converted):
+    """The hint converts what the user wrote: 50 kg was told "its weight is '15 kgf' or
+    15 kg x 9.81 = 147 N", a fixed example. By hand: 50 x 9.80665 = 490.3 N,
+    2.5 x 0.45359 x 9.80665 = 11.12 N, 320e-6 m^2/s x 850 kg/m^3 = 0.272 Pa s,
+    3000 / 60 x 2 pi x 0.05 = 15.71 m/s."""
+    with pytest.raises(InputError) as info:
+        to_si(text, dimension, "f")
+    assert converted in str(info.value)
+
+
 @pytest.mark.parametrize("text", ["73 degC", "150 degF"])
 def test_a_temperature_for_another_quantity_is_called_a_temperature(text):
     """'73 degC' for a modulus was refused as "a number with a known unit", as if degC were

@@ -112,14 +112,30 @@ def unit_of(value) -> str | None:
     return unit or None
 
 
-#: (SI unit wanted, dimension given) -> what the given quantity probably is, and what to write.
+def _kinematic_hint(q, written: str) -> str:
+    dynamic = q.to("m**2/s").magnitude * 850.0 * 1e3  # mPa s at a mineral oil's 850 kg/m^3
+    return ("this is a kinematic viscosity: the dynamic viscosity is it times the density, "
+            f"{written} x 850 kg/m^3 (a mineral oil's) = {dynamic:.4g} mPa s")
+
+
+def _mass_hint(q, written: str) -> str:
+    unit = unit_of(written) or ""
+    return (f"a mass: its weight is '{q.magnitude:g} {unit}f' or {written} x 9.81 m/s^2 = "
+            f"{q.to('kg').magnitude * 9.80665:.4g} N")
+
+
+def _rotation_hint(q, written: str) -> str:
+    return ("a rotational speed: the surface speed is it times the radius, "
+            f"{written} on a 50 mm radius = {q.to('1/s').magnitude * 2 * math.pi * 0.05:.4g} "
+            "m/s")
+
+
+#: (SI unit wanted, dimension given) -> what the given quantity probably is, and what to write
+#: (from the quantity as read and as written).
 _MISTAKEN = {
-    ("Pa*s", "[length] ** 2 / [time]"): "this is a kinematic viscosity: the dynamic viscosity "
-                                        "is it times the density, 100 cSt x 850 kg/m^3 = "
-                                        "85 mPa s",
-    ("N", "[mass]"): "a mass: its weight is '15 kgf' or 15 kg x 9.81 m/s^2 = 147 N",
-    ("m/s", "1 / [time]"): "a rotational speed: the surface speed is it times the radius, "
-                           "1500 rpm on a 50 mm radius = 7.85 m/s",
+    ("Pa*s", "[length] ** 2 / [time]"): _kinematic_hint,
+    ("N", "[mass]"): _mass_hint,
+    ("m/s", "1 / [time]"): _rotation_hint,
 }
 
 #: Units that count whole turns. pint makes each 2 pi radians, so that "1500 rpm" is 157 Hz and a
@@ -172,7 +188,7 @@ def _parse(text: str, si_unit: str, field: str) -> float:
     if q.dimensionality != want.dimensionality:
         hint = _MISTAKEN.get((si_unit, str(q.dimensionality)))
         raise InputError(field, f"a quantity convertible to {si_unit or 'a pure number'}"
-                         + (f" ({hint})" if hint else ""), text)
+                         + (f" ({hint(q, text.strip())})" if hint else ""), text)
     try:
         return float(q.to(want.units).magnitude)
     except (pint.errors.PintError, TypeError, ValueError):

@@ -411,6 +411,10 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
                      f"{_length(origin)} lies at the grid's lower edge")
     if isinstance(surf, Profile):
         z = _on_grid(surf, xs, ys)
+        if len(y) > 1:
+            notes.append(f"{label}.path ({name}): a profile along x, repeated at every y: "
+                         "ridges across the grid (a lay along y, as of a turned or ground "
+                         "surface measured across it), not an isotropic surface")
     else:
         z = _on_grid(surf, xs, _from_start(surf.y, len(y), dy, surf.periodic, "y",
                                            f"{label}.path ({name})"))
