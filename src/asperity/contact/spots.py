@@ -32,14 +32,15 @@ class ContactSpots:
         """Number of spots."""
         return int(self.cells.size)
 
-    def load_median_cells(self) -> float:
+    def load_median_cells(self) -> int:
         """Cells of the spot at the load's median: half the load is carried by spots of this
-        many cells or fewer (0 with no spot)."""
+        many cells or fewer (0 with no spot). A count, so an int: as a float it printed with
+        four digits, 65540 cells of a 65536-cell grid."""
         if self.count == 0 or not self.loads.sum() > 0:
-            return 0.0
+            return 0
         order = np.argsort(self.cells, kind="stable")
         share = np.cumsum(self.loads[order]) / self.loads.sum()
-        return float(self.cells[order][np.searchsorted(share, 0.5)])
+        return int(self.cells[order][np.searchsorted(share, 0.5)])
 
     def load_share_below(self, cells: float) -> float:
         """Share of the load carried by spots of fewer than ``cells`` cells."""
