@@ -25,7 +25,11 @@ Formats (chosen by the file's suffix):
 Missing points are refused, or filled on request (:mod:`asperity.surfaces.missing`). Without
 coordinates in the file, positions are the cell centres ``(i + 1/2) * spacing``; a spacing given
 coarser than :data:`MAX_SPACING` is refused (a plain number is metres: ``--spacing 1`` is a
-metre). The rules are written out for users in docs/surfaces.md.
+metre), and one that makes the surface implausible is named with the spacing that would not
+(:func:`~asperity.surfaces.unit_advice.suggested_spacing`). A header spacing with a comma
+between digits is a decimal comma in a file whose data use them
+(:func:`~.readers.header_sizes.text_layout`). The rules are written out for users in
+docs/surfaces.md.
 """
 
 from __future__ import annotations
@@ -40,8 +44,7 @@ from ..errors import InputError, check_positive
 from ..formatting import format_quantity
 from .missing import fill_missing
 from .parameters import residual_heights
-from .readers.layout import interpret
-from .readers.text import read_table
+from .readers.header_sizes import check_header_spacing, header_factor, length_text, text_layout
 from .readers.units import parse_length
 from .readers.wyko import is_wyko, read_wyko
 from .readers.zygo import ZygoData, is_zygo, read_zygo
@@ -55,6 +58,7 @@ from .unit_advice import (
     X_UNITS,
     Scales,
     doubts,
+    suggested_spacing,
     suggested_units,
     unit_option,
 )
@@ -148,6 +152,9 @@ class Reading:
     x_unit : float or None
         Metres per unit of the file's coordinates (or of the spacing); None when they were read
         as metres for want of a unit, or are the format's own.
+    spacing_given : bool
+        Whether the grid spacing is the one the user gave (a file without positions): the
+        warnings that doubt the units then name it too (:func:`_spacing_advice`).
     """
 
     surface: Profile | Topography
@@ -161,6 +168,7 @@ class Reading:
     height_unit: float | None = None
     unit_advice: str = ""
     x_unit: float | None = None
+    spacing_given: bool = False
 
     @property
     def excluded(self) -> np.ndarray | None:
@@ -190,11 +198,18 @@ class Reading:
         smaller = None if self.height_unit is None else _named(self.height_unit, _SMALLER)
         give = (f"if they are in {smaller}, give --z-unit {smaller} (case file: z_unit = "
                 f"\"{smaller}\")" if smaller else "give their unit: --z-unit (case file: z_unit)")
+        heights = f"check the heights' unit in the file's header; {give}"
+        lateral = "or check the x unit (--x-unit)"
+        if self.spacing_given:
+            scales = Scales.of(self.surface)
+            lateral = ("or " + _spacing_advice(scales, self.surface) if suggested_spacing(scales)
+                       else "or check the spacing given (--spacing)")
+            if _spacing_doubted(scales):
+                heights, lateral = lateral[3:], "or " + heights
         return (f"{name}: rms slope {value:.4g} is above {PLAUSIBLE_SLOPE:g} (a mean slope "
                 "angle over 45 deg): steeper than any machined surface and outside the "
                 "small-slope assumption of the contact models, so the units read are likely "
-                f"wrong ({self.units}): check the heights' unit in the file's header; {give}; "
-                "or check the x unit (--x-unit)",)
+                f"wrong ({self.units}): {heights}; {lateral}",)
 
     def explained(self, error: InputError) -> InputError:
         """``error`` (of evaluating the surface: a profile too short for any cut-off) with the
@@ -209,7 +224,10 @@ class Reading:
             # AFM line read in um and nm was told to give mm and um)
             return error
         lateral = any(d.startswith(("length", "spacing")) for d in found)
-        advice = _unit_advice(scales, self.x_unit or 1.0, self.height_unit or 1.0)
+        advice = _unit_advice(scales, None if self.spacing_given else self.x_unit or 1.0,
+                              self.height_unit or 1.0)
+        if self.spacing_given:  # an x unit would not change it: the spacing given might
+            advice = _or_spacing(advice, scales, self.surface)
         if not advice:  # no units make it plausible: they are not what is wrong
             return error
         return InputError("x" if lateral else "heights", "", problem=(
@@ -224,12 +242,24 @@ class _Units:
 
     x: float | None
     z: float | None
+    #: The x unit as given alone (``x_unit``), for the note that ignores it.
+    x_named: str | None = None
 
     @classmethod
     def of(cls, unit, x_unit, z_unit):
         both = None if unit is None else parse_length(unit, "unit")
         return cls(both if x_unit is None else parse_length(x_unit, "x_unit"),
-                   both if z_unit is None else parse_length(z_unit, "z_unit"))
+                   both if z_unit is None else parse_length(z_unit, "z_unit"), x_unit)
+
+    def ignored_x(self, what: str, notes: list) -> None:
+        """Note that the x unit given alone is not used for ``what`` (a file without positions
+        whose spacing is given): the spacing given carries its own unit. It was dropped
+        without a word (``--x-unit mm`` with ``--spacing`` on a .npy)."""
+        if self.x_named is not None:
+            notes.append(f"x_unit {self.x_named!r} ignored: {what} has no positions for it to "
+                         "apply to, and the spacing given has its own unit (a plain number is "
+                         f"metres): give it there, e.g. --spacing \"0.5 {self.x_named}\" (case "
+                         f"file: spacing = \"0.5 {self.x_named}\")")
 
 
 def _missing(z: np.ndarray, missing: str, where: str, notes: list):
@@ -320,13 +350,16 @@ def _pixel_indices(surface) -> bool:
 
 
 def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
-               check: str | None = None, x_factor: float = 1.0) -> str:
+               check: str | None = None, x_factor: float = 1.0,
+               spacing_given: bool = False) -> str:
     """Warn when a surface read without a unit (``known``: whether the x and height units
     were given or found) is implausible in metres (:func:`~.unit_advice.doubts`), naming the
     units that make it plausible (:func:`~.unit_advice.suggested_units`), or when it is longer
     than :data:`PLAUSIBLE_LENGTH` whatever its unit came from (``units`` says where;
     ``check`` what to do then, by default the x unit that makes it plausible; ``x_factor``:
-    metres per unit of the x read). Returns the advice ('' when none)."""
+    metres per unit of the x read). With ``spacing_given`` (the user's spacing, of a file
+    without positions) the spacing is doubted instead of an x unit, which it would not change
+    (:func:`_spacing_advice`). Returns the advice ('' when none)."""
     if all(known) and _extent(surface) <= PLAUSIBLE_LENGTH:
         return ""  # the slopes are judged later (:meth:`Reading.slope_warnings`)
     scales = Scales.of(surface)
@@ -337,12 +370,17 @@ def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
     vertical = [d for d in found if d not in lateral]
     too_long = scales.length > PLAUSIBLE_LENGTH
     indices = not known[0] and _pixel_indices(surface)  # which no unit makes lengths
-    doubted_x = (not known[0] or too_long) and not indices
+    doubted_x = (not known[0] or too_long) and not indices and not spacing_given
     advice = _unit_advice(scales, (x_factor if known[0] else 1.0) if doubted_x else None,
-                          None if known[1] else 1.0) or _NO_UNIT
+                          None if known[1] else 1.0)
+    if spacing_given:
+        advice = _or_spacing(advice, scales, surface)
+    advice = advice or _NO_UNIT
     if not known[1] and vertical:
+        given = (f" and the spacing as given ({_spacing_given_text(surface)})"
+                 if spacing_given else "")
         warnings.append(f"heights: {_listed(vertical)} with the heights read as metres (the "
-                        f"file gives no unit): implausible; {advice}")
+                        f"file gives no unit){given}: implausible; {advice}")
     if indices and lateral:
         warnings.append(f"x: length {scales.length:.4g} m read as metres (the file gives no "
                         "unit): its positions are whole steps of 1 from a whole number (pixel "
@@ -358,6 +396,47 @@ def _plausible(surface, known: tuple[bool, bool], units: str, warnings: list,
                         + (check or f"check that unit and give the right one or the right "
                                     f"spacing; {advice}"))
     return advice if not known[1] else ""
+
+
+def _spacing_given_text(surface) -> str:
+    """``"0.5 nm"`` or ``"0.5 nm x 0.8 nm"``: a surface's grid spacing, as the user gives it."""
+    dx, dy = np.broadcast_to(np.atleast_1d(surface.spacing), 2).tolist()
+    return length_text(dx) if np.isclose(dx, dy) else f"{length_text(dx)} x {length_text(dy)}"
+
+
+def _spacing_doubted(scales: Scales) -> bool:
+    """Whether a spacing given is itself outside what instruments sample at
+    (:data:`~.unit_advice.FINEST_SPACING` to :data:`~.unit_advice.COARSEST_SPACING`): it is then
+    named first among the suspects."""
+    return any(d.startswith("spacing") for d in doubts(scales, True, short=False))
+
+
+def _spacing_advice(scales: Scales, surface) -> str:
+    """The spacing to give that makes the surface plausible, its heights kept
+    (:func:`~.unit_advice.suggested_spacing`), with the sizes it gives; '' when none does."""
+    factor = suggested_spacing(scales)
+    if factor is None:
+        return ""
+    after = scales.scaled(factor, 1.0)
+    dx, dy = (np.broadcast_to(np.atleast_1d(surface.spacing), 2) * factor).tolist()
+    option = f"--spacing \"{length_text(dx)}\"" + (
+        f" --spacing-y \"{length_text(dy)}\"" if not np.isclose(dx, dy) else "")
+    return (f"the spacing given ({_spacing_given_text(surface)}) may be wrong: the surface is "
+            f"plausible with {option} ({factor:g} times it: length "
+            f"{format_quantity(after.length, 'm')}, spacing {format_quantity(after.spacing, 'm')}"
+            f", rms height {format_quantity(after.rms, 'm')}, rms slope {after.slope:.3g}) "
+            f"(case file: spacing = \"{length_text(dx)}\")")
+
+
+def _or_spacing(advice: str, scales: Scales, surface) -> str:
+    """``advice`` on the units and the spacing advice (:func:`_spacing_advice`), the spacing
+    first when it is itself implausible (:func:`_spacing_doubted`): a given 0.5 nm pixel for
+    0.5 um was advised --z-unit mm alone, which made heights of Sq 0.3 um 0.3 nm."""
+    spacing = _spacing_advice(scales, surface)
+    if not (advice and spacing):
+        return advice or spacing
+    return (f"{spacing}; or {advice}" if _spacing_doubted(scales) else
+            f"{advice}; or {spacing}")
 
 
 def _listed(items: list[str]) -> str:
@@ -432,10 +511,10 @@ def _ignored_spacing(given, surface, warnings: list) -> None:
 
 
 def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool) -> Reading:
-    lay = interpret(read_table(path), str(path))
     given_spacing = spacing
     notes: list[str] = []
     warnings: list[str] = []
+    lay, sizes = text_layout(path, units.x, spacing, notes, warnings)
     xf = units.x if units.x is not None else lay.x_factor
     zf = units.z if units.z is not None else lay.z_factor
     for name, given, found in (("x", units.x, lay.x_factor), ("z", units.z, lay.z_factor)):
@@ -462,9 +541,9 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
         surface = Topography(xs, ys, z, lay.periodic)
     else:
         if lay.spacing is not None:
-            factor = lay.spacing_factor or (1.0 if xf is None else xf)
-            header = [v * factor for v in lay.spacing]
+            header = [v * header_factor(lay, units.x) for v in lay.spacing]
             if spacing is None:
+                check_header_spacing(header, z.ndim, sizes, path)
                 spacing = header
                 xf = xf or lay.spacing_factor
             else:
@@ -487,10 +566,14 @@ def _read_text(path: Path, spacing, units: _Units, missing: str, resample: bool)
                      "--z-unit; case file: z_unit)")
     if lay.x is not None:
         _ignored_spacing(given_spacing, surface, warnings)
-    advice = _plausible(surface, known, described, warnings, x_factor=xf or 1.0)
+    used = lay.x is None and given_spacing is not None
+    if used:
+        units.ignored_x("this file", notes)
+    advice = _plausible(surface, known, described, warnings, x_factor=xf or 1.0,
+                        spacing_given=used)
     return Reading(surface, f"text: {lay.style}", tuple(notes), tuple(warnings), filled, lost,
                    missing == "mask", described, zf, advice,
-                   xf if xf is not None else 1.0 if known[0] else None)
+                   xf if xf is not None else 1.0 if known[0] else None, used)
 
 
 def _read_header_format(path: Path, spacing, units: _Units, missing: str) -> Reading:
@@ -684,11 +767,13 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
         z = z * (1.0 if units.z is None else units.z)
         z, filled, lost = _missing(z, missing, str(path), notes)
         surface = _from_heights(z, spacing, str(path))
+        units.ignored_x("a .npy", notes)
         warnings: list[str] = []
         described = "spacing as given; " + _unit_text("heights", units.z, None, None)
-        advice = _plausible(surface, (True, units.z is not None), described, warnings)
+        advice = _plausible(surface, (True, units.z is not None), described, warnings,
+                            spacing_given=True)
         return Reading(surface, "numpy .npy heights", tuple(notes), tuple(warnings), filled,
-                       lost, missing == "mask", described, units.z, advice, 1.0)
+                       lost, missing == "mask", described, units.z, advice, 1.0, True)
     return _read_instrument(path, spacing, units, missing, resample)
 
 

@@ -12,7 +12,8 @@ their least-squares plane (line), by forward differences. :func:`suggested_units
 length units a file is written in, commonest first, for the axes whose unit is in doubt and
 returns the first that makes the surface plausible; the advice the reader gives names it
 (heights in nm with ``--spacing "1 um"`` are advised ``--z-unit nm``, a Talysurf trace with x in
-mm ``--x-unit mm``), not always um.
+mm ``--x-unit mm``), not always um. :func:`suggested_spacing` does the same for a spacing the
+user gave, which no unit of the file changes (a 0.5 nm pixel meant as 0.5 um).
 """
 
 from __future__ import annotations
@@ -27,7 +28,8 @@ from .topography import Profile
 
 __all__ = ["COARSEST_SPACING", "FINEST_SPACING", "FLAT_HEIGHT", "FLAT_SLOPE", "PLAUSIBLE_HEIGHT",
            "PLAUSIBLE_LENGTH", "PLAUSIBLE_SLOPE", "SHORTEST_PROFILE", "X_UNITS", "Z_UNITS",
-           "Scales", "doubts", "suggested_units", "unit_option"]
+           "SPACING_FACTORS", "Scales", "doubts", "suggested_spacing", "suggested_units",
+           "unit_option"]
 
 #: Peak-to-valley height (m) above which heights are taken to be in another unit than read,
 #: and the length (m) of a profile or side of a topography above which its x unit is doubted.
@@ -51,6 +53,9 @@ FINEST_SPACING, COARSEST_SPACING = 1e-9, 50e-6
 #: unit and name).
 X_UNITS = ((1e-6, "um"), (1e-3, "mm"), (1e-9, "nm"), (1.0, "m"))
 Z_UNITS = ((1e-6, "um"), (1e-9, "nm"), (1e-3, "mm"), (1.0, "m"))
+#: Factors tried on a spacing the user gave, the slips of its unit first (nm for um, um for
+#: mm, and the other way round).
+SPACING_FACTORS = (1e3, 1e-3, 1e6, 1e-6)
 
 
 @dataclass(frozen=True)
@@ -160,6 +165,25 @@ def suggested_units(scales: Scales, x_factor: float | None,
             if not doubts(trial, x_factor is not None):
                 return x_name, z_name
     return None
+
+
+def suggested_spacing(scales: Scales) -> float | None:
+    """The factor on a spacing given by the user that makes a surface plausible, its heights
+    kept.
+
+    Parameters
+    ----------
+    scales : Scales
+        Of the surface as read, with the spacing given.
+
+    Returns
+    -------
+    float or None
+        The first of :data:`SPACING_FACTORS` whose spacing passes :func:`doubts` with the
+        spacing held to :data:`FINEST_SPACING` and :data:`COARSEST_SPACING`; None when none
+        does (heights 1000 times too large stay too high whatever the spacing).
+    """
+    return next((f for f in SPACING_FACTORS if not doubts(scales.scaled(f, 1.0))), None)
 
 
 def unit_option(x_name: str | None = None, z_name: str | None = None) -> str:

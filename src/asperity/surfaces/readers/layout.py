@@ -46,7 +46,7 @@ from ...errors import InputError
 from .text import TextTable, is_number, printed_resolution
 from .units import length_factor, unit_of_name
 
-__all__ = ["Layout", "interpret"]
+__all__ = ["SIZE_KEYS", "Layout", "interpret"]
 
 _X_WORDS = ("x", "lateral", "position", "distance", "horizontal", "length", "scan", "pos")
 _Y_WORDS = ("y",)
@@ -69,6 +69,9 @@ _Y_SPACING_KEYS = ("y spacing", "dy", "scale y", "y increment", "y resolution", 
                    "y step", "y scale")
 _WIDTH_KEYS = ("width", "x length", "x size", "image width", "x range")
 _HEIGHT_KEYS = ("y length", "y size", "image height", "y range")
+#: The header keys of a spacing or a size: the entries a decimal comma changes
+#: (:mod:`.header_sizes`).
+SIZE_KEYS = _SPACING_KEYS + _Y_SPACING_KEYS + _WIDTH_KEYS + _HEIGHT_KEYS
 _MISSING_KEYS = ("no data value", "nodata", "no data", "invalid value", "undefined value",
                  "missing value", "bad value", "void value", "nodata value")
 _QUANTITY = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")

@@ -38,8 +38,8 @@ import numpy as np
 from ...errors import InputError
 from .units import length_factor
 
-__all__ = ["MISSING_TOKENS", "TextTable", "header_pairs", "normalise_key", "is_number",
-           "printed_resolution", "read_table"]
+__all__ = ["MISSING_TOKENS", "TextTable", "file_lines", "header_pairs", "normalise_key",
+           "is_number", "printed_resolution", "read_table"]
 
 #: Field values that instruments write for a point they could not measure (lower case).
 MISSING_TOKENS = frozenset({"", "nan", "-nan", "+nan", "bad", "nd", "n/a", "na", "***", "*",
@@ -159,7 +159,9 @@ def header_pairs(lines: list[str]) -> dict[str, str]:
     return pairs
 
 
-def _lines(path: Path) -> list[str]:
+def file_lines(path: Path) -> list[str]:
+    """The lines of a text file, decoded as :func:`read_table` decodes it (refused when
+    binary)."""
     raw = path.read_bytes()
     if b"\x00" in raw[:4096] and not raw.startswith((b"\xff\xfe", b"\xfe\xff")):
         raise InputError(str(path), "a text file (this one is binary; a binary format needs "
@@ -287,7 +289,7 @@ def read_table(path: Path) -> TextTable:
         file and line), words after the data block or in a data line just above it
         (:func:`_refuse_cut_block`), a binary file.
     """
-    lines = _lines(path)
+    lines = file_lines(path)
     parsed = [None if _COMMENT.match(line) else _row(line) for line in lines]
     last = max((i for i, p in enumerate(parsed) if p is not None), default=None)
     if last is None:
