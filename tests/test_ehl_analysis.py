@@ -747,7 +747,7 @@ def test_a_refused_default_mesh_names_the_domain_to_set_with_the_nodes():
                       message)
     assert match and float(match.group(1)) == pytest.approx(-2.5)
     assert float(match.group(3)) == -float(match.group(2)) == 2.0
-    assert "or set grid.nx and grid.ny)" in message
+    assert "or set grid.nx and grid.ny: at most " in message
     case = load_case({**slow, "grid": {"nx": 513, "ny": 129}})  # nodes alone keep the domain
     problem = case.problem()
     (lo, _), _ = case.solve_options(problem)["domain"]
@@ -813,7 +813,7 @@ def test_a_nearly_rigid_contact_on_a_small_domain_is_reported():
     share = (1 - 1.6 / reach) ** 2
     assert f"the domain reaches {reach:.3g} l" in line
     assert f"has (1 - 1.6/S)^2 of its film: {100 * share:.3g} %" in line
-    assert "take the rigid-isoviscous film of the comparison rows" in line
+    assert "take the Brewe-Hamrock-Taylor minimum film (rigid-isoviscous) row" in line
     # its pressure varies over l, not the Hertz zone: a/dx = 1.8 is not a mesh too coarse
     # (the Hertz-zone check asked for nx >= 661 x 594 before); dy = 0.14 l is fine
     assert not [w for w in out.warnings if w.startswith("mesh")]

@@ -858,7 +858,8 @@ RIGID_SPACING = 0.2
 
 
 def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: float,
-                     a: float, b: float | None, max_bound: float = 100.0) -> list[str]:
+                     a: float, b: float | None, max_bound: float = 100.0,
+                     rigid_row: str | None = None) -> list[str]:
     """A nearly rigid contact on a domain too small for its slowly decaying pressure.
 
     Where ``l = sqrt(2 Rx hc)`` exceeds :data:`RIGID_LENGTH` Hertz semi-axes the contact is
@@ -892,6 +893,11 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
     max_bound : float
         The farthest domain bound a case takes, in semi-axes (``cases.ehl.MAX_BOUND``): the
         advice stays within it.
+    rigid_row : str, optional
+        The comparison row that gives the film of an unbounded rigid-isoviscous contact
+        (Martin's, Brewe-Hamrock-Taylor's), offered instead of a larger domain; None where the
+        run shows none (a piezoviscous-rigid contact, which was told to "take the
+        rigid-isoviscous film of the comparison rows" there were none of).
 
     Returns
     -------
@@ -942,8 +948,9 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
         advised = {"x_min": -need, "x_max": x_max * a} | (
             {} if line else {"y_min": -need, "y_max": need})
         advice = (f"for 5 % set x_min <= {-need / a:.3g}{sides}, x_max >= {x_max:.3g} (a coarse "
-                  "mesh serves: the pressure varies over l), or take the rigid-isoviscous film "
-                  "of the comparison rows")
+                  "mesh serves: the pressure varies over l)"
+                  + (f", or take the {rigid_row} row, an unbounded domain's" if rigid_row
+                     else ""))
     else:
         widest = max_bound * (a if line else min(a, b)) / length
         advised = {"x_min": -max_bound * a, "x_max": x_max * a} | (
@@ -952,15 +959,16 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
                 else (1.0 - RIGID_REACH / widest) ** 2)
         bounds = "x_min" if line else "x_min, y_min, y_max"
         at = f"-{max_bound:g}" if line else f"-{max_bound:g}, -{max_bound:g}, {max_bound:g}"
+        beyond = f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case takes"
+        instead = (f"take the {rigid_row} row, an unbounded domain's" if rigid_row else
+                   f"read the film as about {_pct(1.0 - share)} low")
         if reach >= widest * (1.0 - 1e-6) and outlet >= RIGID_OUTLET:  # already there
-            advice = (f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case "
-                      "takes, which this domain reaches: take the rigid-isoviscous film of "
-                      "the comparison rows, an unbounded domain's")
+            advice = f"{beyond}, which this domain reaches: {instead}"
         else:
-            advice = (f"5 % needs {need / a:.3g} a, beyond the {max_bound:g} semi-axes a case "
-                      f"takes, where the film would be {_pct(kept)} of it: take the "
-                      f"rigid-isoviscous film of the comparison rows (or {bounds} at {at} and "
-                      f"x_max >= {x_max:.3g}, on a coarse mesh, for that share)")
+            advice = (f"{beyond}, where the film would be {_pct(kept)} of it: set {bounds} at "
+                      f"{at} and x_max >= {x_max:.3g}, on a coarse mesh, for that share"
+                      + (f", or take the {rigid_row} row, an unbounded domain's" if rigid_row
+                         else ""))
     return [*lines, DomainAdvice(f"{text}; {advice}", **advised)]
 
 

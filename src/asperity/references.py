@@ -539,6 +539,13 @@ RIGID_SHARE_NOTES = {
         "0.02 %, lies 0.75 and 0.60 times the fit at shares 0.95 and 1.64 (soft ellipses "
         "k = 3.4 and 9.3, M = 18 and 33, L = 0) on the default domain, and 0.85 and 0.79 "
         "times it on a domain converged in its inlet and sides"),
+    ("moes_central_film_m", True): (
+        "; not a check here: the fit's rigid-isoviscous term is {share:.2g} of the "
+        "elastic-isoviscous term it is added to (above {limit:g}): a contact that hardly "
+        "deforms, where the fit tends to its H_RI = 3/M, a film of 6 eta0 u R / w', 22 % above "
+        "the exact rigid-isoviscous film of a cylinder, Martin's 4.9 eta0 u R / w' (a user's "
+        "roller at M = 0.59: the solver's 321.8 nm against the fit's 416.1 and Martin's "
+        "305.9 nm)"),
     ("moes_central_film_m", False): (
         "; not a check here: the fit's rigid-isoviscous term is {share:.2g} of its "
         "piezoviscous part (above {limit:g}), where the fit adds the two; an independent "
@@ -564,15 +571,17 @@ def fit_rigid_share(problem) -> float:
     (:func:`asperity.ehl.formulas.moes_line_parts`,
     :func:`asperity.ehl.formulas.nijenbanning_parts`). ``H_RI / piezo`` in a piezoviscous
     contact (``alpha p_h > ISOVISCOUS``); at L -> 0 ``H_RI / H_EI00`` for Nijenbanning's fit,
-    which is then its isoviscous part ``(H_RI^(3/2) + H_EI00^(3/2))^(2/3)`` alone, and 0 for
-    Moes' (measured within 2.5-4.2 % there, :data:`_LOW_L_NOTES`)."""
+    which is then its isoviscous part ``(H_RI^(3/2) + H_EI00^(3/2))^(2/3)`` alone, and
+    ``H_RI / H_EI`` for Moes', whose isoviscous part ``(H_RI^(7/3) + H_EI^(7/3))^(3/7)`` is
+    then the fit (measured within 2.5-4.2 % where ``H_EI`` dominates, :data:`_LOW_L_NOTES`;
+    its ``H_RI = 3/M`` is 22 % above the exact rigid-isoviscous film, Martin's)."""
     lub = problem.lubricant
     isoviscous = lub.pressure_viscosity * problem.p_hertz <= ISOVISCOUS
     args = (problem.mean_speed, lub.viscosity, lub.pressure_viscosity, problem.reduced_modulus)
     if isinstance(problem, LineContact):
-        if isoviscous:
-            return 0.0
         parts = formulas.moes_line(problem.load_per_length, problem.radius, *args).dimensionless
+        if isoviscous:
+            return parts["H_RI"] / parts["H_EI"]
     else:
         parts = formulas.nijenbanning_point(problem.load, problem.rx, problem.ry,
                                             *args).dimensionless

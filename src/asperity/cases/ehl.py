@@ -36,6 +36,7 @@ Example (the smooth gear-disk contact of Holmes et al. 2005, Table 1)::
 
 from __future__ import annotations
 
+import math
 from typing import Annotated, Literal
 
 from pydantic import BeforeValidator, Field, field_validator, model_validator
@@ -88,10 +89,13 @@ def check_node_count(nx: int, ny: int, chosen: bool, domain=None):
             (x0, x1), y_bounds = domain
             where = f", on its domain x = {x0:.3g} a..{x1:.3g} a" + (
                 "" if y_bounds is None else f", y = {y_bounds[0]:.3g} b..{y_bounds[1]:.3g} b")
+        shrink = math.sqrt(MAX_NODES / (nx * ny))
+        fit_nx, fit_ny = (max(3, 2 * math.floor((n - 1) * shrink / 2) + 1) for n in (nx, ny))
         why = "" if not chosen else (
             f" (the default mesh {nx} x {ny} for the contact's film and the surfaces' "
             f"features{where}; check the lubricant's and the contact's units, or set grid.nx "
-            f"and grid.ny)")
+            f"and grid.ny: at most {fit_nx} x {fit_ny} in the same proportions, the finer the "
+            "better)")
         raise ValueError(f"expected at most {MAX_NODES} nodes, got {nx * ny}{why}")
 
 

@@ -443,7 +443,7 @@ def moes_line_parts(M, L):
     Returns
     -------
     tuple of ndarray
-        ``(h_ri, iso, piezo, s)``.
+        ``(h_ri, h_ei, iso, piezo, s)``.
     """
     M = np.asarray(M, dtype=float)
     L = np.asarray(L, dtype=float)
@@ -452,7 +452,7 @@ def moes_line_parts(M, L):
     h_rp = 1.287 * L ** (2.0 / 3.0)
     h_ep = 1.311 * M**-0.125 * L**0.75
     s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
-    return h_ri, _power_mean(h_ri, h_ei, 7.0 / 3.0), _power_mean(h_rp, h_ep, -3.5), s
+    return h_ri, h_ei, _power_mean(h_ri, h_ei, 7.0 / 3.0), _power_mean(h_rp, h_ep, -3.5), s
 
 
 def moes_line_film(M, L):
@@ -471,7 +471,7 @@ def moes_line_film(M, L):
     ndarray
         H.
     """
-    _, iso, piezo, s = moes_line_parts(M, L)
+    _, _, iso, piezo, s = moes_line_parts(M, L)
     return (iso**s + piezo**s) ** (1.0 / s)
 
 
@@ -483,18 +483,18 @@ def moes_line(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus)
     Returns
     -------
     FilmThickness
-        ``central`` in m, with M, L, H, the rigid-isoviscous asymptote ``H_RI`` and the fit's
-        two parts ``H_iso``, ``H_piezo`` (:func:`moes_line_parts`).
+        ``central`` in m, with M, L, H, the rigid- and elastic-isoviscous asymptotes ``H_RI``,
+        ``H_EI`` and the fit's two parts ``H_iso``, ``H_piezo`` (:func:`moes_line_parts`).
     """
     g = moes_groups(load_per_length, radius, mean_speed, eta0, alpha, reduced_modulus, line=True)
     h = float(moes_line_film(g.M, g.L))
-    h_ri, iso, piezo, _ = moes_line_parts(g.M, g.L)
+    h_ri, h_ei, iso, piezo, _ = moes_line_parts(g.M, g.L)
     return FilmThickness(
         central=h * g.film_scale,
         minimum=None,
         formula="Moes",
-        dimensionless={"M": g.M, "L": g.L, "H": h, "H_RI": float(h_ri), "H_iso": float(iso),
-                       "H_piezo": float(piezo)},
+        dimensionless={"M": g.M, "L": g.L, "H": h, "H_RI": float(h_ri), "H_EI": float(h_ei),
+                       "H_iso": float(iso), "H_piezo": float(piezo)},
     )
 
 

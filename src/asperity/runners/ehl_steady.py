@@ -384,6 +384,19 @@ def chosen_mesh(case, problem, x, y) -> dict:
     return chosen
 
 
+#: The comparison rows of an unbounded rigid-isoviscous contact's film, by summary key.
+RIGID_ROWS = {"martin_minimum_film_m": "Martin minimum film (rigid-isoviscous)",
+              "brewe_hamrock_taylor_minimum_film_m":
+                  "Brewe-Hamrock-Taylor minimum film (rigid-isoviscous)"}
+
+
+def _rigid_row(problem) -> str | None:
+    """The comparison row among :data:`RIGID_ROWS` the run shows, None where it shows none (a
+    piezoviscous-rigid contact)."""
+    shown = film_formulas(problem)
+    return next((label for key, label in RIGID_ROWS.items() if key in shown), None)
+
+
 def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
                  film_solved=True, check_hardness=True) -> list[str]:
     """Trust checks of an EHL solution: inlet, sides, mesh (cells per semi-axis, then the
@@ -417,7 +430,11 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     rigid = float(np.max(pressure)) < diagnostics.RIGID_PRESSURE * hz.p_max
     mesh = [] if rigid else diagnostics.ehl_mesh(x, y, hz.a, b)
     fit = []
-    if b is not None and not lines:  # the pressure is back to ambient: still starved?
+    # still starved, with the pressure back to ambient? Hamrock & Dowson's fit is of EHL
+    # contacts: a nearly rigid one's reach is ehl_rigid_domain's (a light ball was told a
+    # 12.9 % loss and x_min <= -160.5 a, beyond the bounds a case takes, beside that line's
+    # 87 % loss)
+    if b is not None and not lines and not rigid:
         fit = diagnostics.ehl_inlet_length(x[0], hz.a, problem.rx, central_film,
                                            solved=film_solved)
     default_inlet = problem.default_domain()[0][0]
@@ -433,7 +450,7 @@ def ehl_warnings(case, problem, pressure, x, y, central_film, smooth_film=None,
     if b is not None:
         lines += diagnostics.ehl_sides(pressure, y, b, hz.p_max)
     lines += diagnostics.ehl_rigid_domain(pressure, x, y, problem.rx, central_film, hz.p_max,
-                                          hz.a, b, MAX_BOUND)
+                                          hz.a, b, MAX_BOUND, _rigid_row(problem))
     if b is not None and not mesh and diagnostics.SIDE_PROBE_PRESSURE < \
             diagnostics.side_pressure(pressure, y, b) / hz.p_max <= diagnostics.BOUNDARY_PRESSURE:
         lines += diagnostics.ehl_side_film(side_probe(problem, x, y), b)

@@ -1,0 +1,71 @@
+"""A lightly loaded roller (an unloaded-zone roller of a bearing: R = 4.167 mm, 10 N/mm,
+5 m/s, 30 mPa s): what a nearly rigid line contact is compared with and told.
+
+References, by hand: Martin's (1916) rigid-isoviscous film of a cylinder,
+h = 4.896 eta0 u R / w' (u the mean speed); Moes' (1992) rigid-isoviscous asymptote
+H_RI = 3/M, which is a film of 6 eta0 u R / w', 22 % above Martin's by construction
+(6 / 4.896 = 1.2255).
+"""
+
+import pytest
+
+from asperity.cases import load_case
+from asperity.cases.ehl import check_node_count
+from asperity.runners import run_case
+
+ROLLER = """
+analysis = "ehl-steady"
+[body1]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[body2]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[contact]
+type = "line"
+radius = "4.16667 mm"
+load_per_length = "10 N/mm"
+[speeds]
+u = "5 m/s"
+xi = 0.0
+[lubricant]
+eta0 = "0.03 Pa s"
+"""
+ISOVISCOUS = ROLLER + 'alpha = "0.1 1/GPa"\nviscosity_model = "barus"\n' \
+                      'density_model = "incompressible"\n'
+
+
+def test_an_isoviscous_rigid_roller_is_not_checked_against_moes_rigid_asymptote():
+    """M = 0.59, L = 0.1: Moes' fit is mostly its rigid term here, 416 nm, and the run printed
+    "differs: -22.6 %" against a film 5 % above Martin's. Martin's film is shown, the Moes
+    row is not a check, and the domain line offers the Martin row by name."""
+    martin = 4.896 * 0.03 * 5.0 * 4.16667e-3 / 1e4
+    out = run_case(load_case(ISOVISCOUS))
+    assert out.summary["martin_minimum_film_m"] == pytest.approx(martin, rel=2e-3)
+    # the fit adds its elastic-isoviscous term to 3/M: above 6/4.896 of Martin's
+    assert out.summary["moes_central_film_m"] / martin > 6 / 4.896
+    # elastic and inlet effects of M = 0.59: a few per cent above the rigid film
+    assert 1.0 < out.summary["minimum_film_thickness_m"] / martin < 1.1
+    (moes,) = [c for c in out.comparisons if "Moes" in c.source]
+    assert moes.tolerance is None and "22 % above" in moes.note
+    (domain,) = [w for w in out.warnings if w.startswith("domain:")]
+    assert "take the Martin minimum film (rigid-isoviscous) row" in domain
+
+
+def test_a_piezoviscous_rigid_roller_is_not_told_to_take_a_row_it_does_not_have():
+    """alpha = 20 1/GPa (L = 19): no rigid-isoviscous row is shown, and the domain line
+    used to say "or take the rigid-isoviscous film of the comparison rows"."""
+    out = run_case(load_case(ROLLER + 'alpha = "20 1/GPa"\n'))
+    assert "martin_minimum_film_m" not in out.summary
+    (domain,) = [w for w in out.warnings if w.startswith("domain:")]
+    assert "rigid-isoviscous film" not in domain and "row" not in domain
+    assert "set x_min <=" in domain
+
+
+def test_a_default_mesh_over_the_node_limit_is_told_the_largest_mesh_of_its_proportions():
+    """A 2 N ball's default mesh (3113 x 233) exceeds 801 x 201 x 4 nodes; the line now
+    names 2933 x 219: both odd, 642,327 nodes, the proportions kept to 0.3 %."""
+    with pytest.raises(ValueError) as info:
+        check_node_count(3113, 233, True)
+    assert "at most 2933 x 219 in the same proportions" in str(info.value)
+    assert 2933 * 219 <= 801 * 201 * 4 and 2933 / 219 == pytest.approx(3113 / 233, rel=3e-3)
