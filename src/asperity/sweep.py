@@ -25,23 +25,28 @@ dimension, labelled points)::
     values = [["C", "C"], ["A", "A"]]
     labels = ["C-C", "A-A"]            # optional; default the values joined by "-"
 
-Each case runs in its own folder ``OUT/cases/NNNN`` (``summary.json`` and ``result.nc``) and is
-marked done by ``status.json`` written last, so an interrupted study resumes where it stopped and
-never runs a finished case twice. A failing case is recorded with its error and does not stop the
-others. The scalars of all cases are combined into ``OUT/study.nc`` with the swept parameters as
-dimensions (``mode = "cross"``) or along a ``case`` dimension (``mode = "zip"``), units and long
-names on every variable; ``OUT/report.html`` plots the results against the axes
-(``OUT/study.png``) and lists the cases.
+Each case runs in its own folder ``OUT/cases/NNNN`` (``input.json``, written first, then
+``summary.json`` and ``result.nc``) and is marked done by ``status.json`` written last; both
+record the case's input fingerprint (:func:`case_fingerprint`, the SHA-256 of the merged case)
+and the asperity version. Run again, a study reuses a finished case only where its folder holds
+a run of the same input, runs again the cases whose input changed (a warning says how many),
+and refuses an output folder of another study, or one whose cases record no input. A failing
+case is recorded with its error and does not stop the others. The scalars of all cases are combined
+into ``OUT/study.nc`` with the swept parameters as dimensions (``mode = "cross"``) or along a
+``case`` dimension (``mode = "zip"``), units and long names on every variable; ``OUT/report.html``
+plots the results against the axes (``OUT/study.png``) and lists the cases.
 """
 
 from __future__ import annotations
 
 import copy
 import difflib
+import hashlib
 import itertools
 import json
 import math
 import re
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -51,11 +56,13 @@ import xarray as xr
 from .errors import InputError
 from .formatting import cf_units, describe_key
 from .report import write_study_report
-from .results import atomic_path, write_json, write_netcdf
+from .results import write_json, write_netcdf
 from .units import DIMENSIONS, is_bare, to_si, unit_of
 
-__all__ = ["RANGE_KEYS", "THREAD_VARIABLES", "Study", "case_status", "combine",
-           "convergence_message", "estimated_seconds", "load_study", "local_cluster", "run_one",
+__all__ = ["CASE_FILES", "INPUT_FILE", "NAMING_KEYS", "RANGE_KEYS", "THREAD_VARIABLES",
+           "ResumePlan", "Study", "case_fingerprint", "case_status", "combine",
+           "convergence_message", "discard_case", "estimated_seconds", "input_record",
+           "load_study", "local_cluster", "recorded_input", "resume_plan", "run_one",
            "run_study"]
 
 #: The keys of an axis's ``range`` table.
@@ -488,9 +495,12 @@ def load_study(path: str | Path) -> Study:
 def run_one(case: dict, folder: str) -> dict:
     """Run one case into ``folder``; return its status (done, summary, or the error).
 
-    Runs in a Dask worker. Errors are caught and recorded, never raised. A long-running case
-    (a transient EHL run) checkpoints into ``folder`` and, run again after an interruption,
-    goes on from its last checkpoint with the same final numbers.
+    Runs in a Dask worker. Errors are caught and recorded, never raised. The case's input is
+    recorded first (``input.json``: its :func:`case_fingerprint`, the asperity version and the
+    case), and its status (``status.json``, written last) carries the same fingerprint. A
+    long-running case (a transient EHL run) checkpoints into ``folder`` and, run again after an
+    interruption with the same input, goes on from its last checkpoint with the same final
+    numbers; a folder that holds another input's results or checkpoint starts afresh.
     """
     from .cases import load_case
     from .results import write_outcome
@@ -498,6 +508,10 @@ def run_one(case: dict, folder: str) -> dict:
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
+    record = input_record(case)
+    if recorded_input(folder) != record:
+        discard_case(folder)  # never resume, nor report, another input's run
+    write_json({**record, "case": case}, folder / INPUT_FILE)
     try:
         outcome = run_case(load_case(case), workdir=folder,
                            resume=(folder / "checkpoint.npz").is_file())
@@ -508,8 +522,162 @@ def run_one(case: dict, folder: str) -> dict:
             status["convergence"] = convergence_message(outcome)
     except Exception as exc:  # recorded for the study, the other cases go on
         status = {"state": "failed", "error": f"{type(exc).__name__}: {exc}"}
-    write_json(status, folder / "status.json")
+    write_json({**status, **record}, folder / "status.json")
     return status
+
+
+#: The file of a case folder that records the input it runs, written before the run starts.
+INPUT_FILE = "input.json"
+
+#: The files a run writes into its case folder (:func:`discard_case` removes only these).
+CASE_FILES = ("status.json", "summary.json", "result.nc", "checkpoint.npz", INPUT_FILE)
+
+#: Top-level case keys left out of :func:`case_fingerprint`: text that names the case (the
+#: study writes the base file's path into the description) and changes no result.
+NAMING_KEYS = ("title", "description")
+
+
+def case_fingerprint(case: dict) -> str:
+    """SHA-256 of a case as it runs: the canonical JSON of the merged case dict (the base case
+    with the axis values applied), keys sorted, without its :data:`NAMING_KEYS`.
+
+    Parameters
+    ----------
+    case : dict
+        A case as the study holds it (ready for ``load_case``).
+    """
+    data = {k: v for k, v in case.items() if k not in NAMING_KEYS}
+    text = json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=False,
+                      default=str)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def input_record(case: dict) -> dict:
+    """What a case folder records of the run's input: ``input_sha256`` (the
+    :func:`case_fingerprint`) and ``asperity_version``."""
+    from . import __version__
+
+    return {"input_sha256": case_fingerprint(case), "asperity_version": __version__}
+
+
+def recorded_input(folder: str | Path) -> dict | None:
+    """The :func:`input_record` a case folder holds (from ``status.json`` where the case
+    finished, else from ``input.json``), or None where it records none (an empty folder, or
+    one written by an asperity that did not record inputs)."""
+    folder = Path(folder)
+    status = case_status(folder)
+    if status is None:
+        try:
+            status = json.loads((folder / INPUT_FILE).read_text(encoding="utf-8"))
+        except (FileNotFoundError, json.JSONDecodeError):
+            return None
+    if not isinstance(status, dict) or "input_sha256" not in status:
+        return None
+    return {k: status.get(k) for k in ("input_sha256", "asperity_version")}
+
+
+def discard_case(folder: str | Path) -> None:
+    """Remove what a run wrote into a case folder (:data:`CASE_FILES`; nothing else)."""
+    for name in CASE_FILES:
+        (Path(folder) / name).unlink(missing_ok=True)
+
+
+def _holds_files(folder: Path) -> bool:
+    return any((folder / name).is_file() for name in CASE_FILES)
+
+
+@dataclass(frozen=True)
+class ResumePlan:
+    """What running a study into an output folder does with its case folders.
+
+    Attributes
+    ----------
+    reused : tuple
+        Ids of the cases finished (done, converged or not) with the input they have now:
+        kept as they are.
+    todo : tuple
+        Ids of the cases to run: not run yet, stopped, failed, or run with another input.
+    changed : tuple
+        Ids (among ``todo``) of the cases whose folder holds a run of another input (or of
+        another asperity version): its files are removed before the case runs again.
+    """
+
+    reused: tuple
+    todo: tuple
+    changed: tuple
+
+    def line(self) -> str:
+        """The resume part of the line said before a study runs (``", 3 to run (5 done before;
+        2 run again because their input changed)"``); empty where nothing ran before."""
+        if not (self.reused or self.changed):
+            return ""
+        again = (f"; {len(self.changed)} run again because their input changed"
+                 if self.changed else "")
+        return f", {len(self.todo)} to run ({len(self.reused)} done before{again})"
+
+
+def resume_plan(study: Study, out: str | Path) -> ResumePlan:
+    """Match a study's cases with the case folders of ``out`` by their input, not their number.
+
+    A finished case is reused only where its folder records the case's
+    :func:`input_record` (:func:`case_fingerprint` and asperity version).
+
+    Raises
+    ------
+    InputError
+        ``--out``: where ``out`` holds another study (another title in its ``study.json``), or
+        case folders that record no input (written by an earlier asperity), which cannot be
+        matched with this study's cases.
+    """
+    out = Path(out)
+    _check_same_study(study, out)
+    reused, todo, changed, unknown = [], [], [], []
+    for cid, case, _ in study.cases:
+        folder = out / "cases" / cid
+        record = recorded_input(folder)
+        if record is None:
+            (unknown if _holds_files(folder) else todo).append(cid)
+            continue
+        if record != input_record(case):
+            changed.append(cid)
+            todo.append(cid)
+        elif (case_status(folder) or {}).get("state") == "done":
+            reused.append(cid)
+        else:
+            todo.append(cid)
+    if unknown:
+        raise InputError("--out", "", problem=f"{out / 'cases'} holds {len(unknown)} case "
+                         f"folder{'s' * (len(unknown) != 1)} ({_ids(unknown)}) that record no "
+                         "input (written by an earlier asperity), so they cannot be matched "
+                         f"with this study's cases; give a new --out, or delete {out / 'cases'}"
+                         " to run every case again")
+    return ResumePlan(tuple(reused), tuple(todo), tuple(changed))
+
+
+def _rerun_line(plan: ResumePlan, out: Path) -> str:
+    """The warning that cases of ``out`` run again because their input changed."""
+    n = len(plan.changed)
+    return (f"{n} case{'s' * (n != 1)} of {out} ({_ids(list(plan.changed))}) "
+            f"{'run' if n != 1 else 'runs'} again: {'their' if n != 1 else 'its'} input (or the "
+            "asperity version) changed since the earlier run, whose results are removed")
+
+
+def _ids(ids: list, limit: int = 5) -> str:
+    """Case ids for a message: the first ``limit`` of them, and how many more."""
+    shown = ", ".join(ids[:limit])
+    return shown + (f" and {len(ids) - limit} more" if len(ids) > limit else "")
+
+
+def _check_same_study(study: Study, out: Path) -> None:
+    """Refuse an output folder whose ``study.json`` names another study."""
+    try:
+        title = json.loads((out / "study.json").read_text(encoding="utf-8")).get("title")
+    except (FileNotFoundError, json.JSONDecodeError, AttributeError):
+        return
+    if title is not None and title != study.title:
+        raise InputError("--out", "", problem=f"{out} holds the study {title!r}, not "
+                         f"{study.title!r}; give a new --out, or delete {out} to run "
+                         f"{study.title!r} there")
 
 
 _UNCONVERGED = re.compile(r"\b(?:did|does|do|could) not converge|\bnot converged|"
@@ -623,21 +791,37 @@ def estimated_seconds(case: dict) -> float | None:
 def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> xr.Dataset:
     """Run the study's unfinished cases on Dask and combine all results.
 
+    A case folder of ``out`` is reused only where it holds a finished run of the case's input
+    as it is now (:func:`resume_plan`); a case whose input changed runs again, with a warning
+    that says how many did.
+
     Parameters
     ----------
     study : Study
     out : path
-        Output folder; ``cases/NNNN`` per case, ``study.nc``, ``study.png`` and
-        ``report.html``.
+        Output folder; ``cases/NNNN`` per case, ``study.json``, ``study.nc``, ``study.png``
+        and ``report.html``.
     client : dask.distributed.Client, optional
         Where to run; ``None`` runs the cases one after the other in this process.
     progress : callable, optional
         ``progress(done, total, description)``.
+
+    Raises
+    ------
+    InputError
+        ``--out``: for an output folder of another study, or one whose case folders record no
+        input (:func:`resume_plan`); nothing runs.
     """
     out = Path(out)
-    todo = [(cid, case) for cid, case, _ in study.cases
-            if (case_status(out / "cases" / cid) or {}).get("state") != "done"]
-    total, done = len(study.cases), len(study.cases) - len(todo)
+    plan = resume_plan(study, out)
+    for cid in plan.changed:
+        discard_case(out / "cases" / cid)
+    if plan.changed:
+        warnings.warn(_rerun_line(plan, out), stacklevel=2)
+    _write_study_record(study, out)
+    cases = dict((cid, case) for cid, case, _ in study.cases)
+    todo = [(cid, cases[cid]) for cid in plan.todo]
+    total, done = len(study.cases), len(plan.reused)
     if progress:
         progress(done, total, f"{study.title}: {done} of {total} cases done")
     if client is None:
@@ -660,10 +844,19 @@ def run_study(study: Study, out: str | Path, *, client=None, progress=None) -> x
     ds = combine(study, out)
     write_netcdf(ds, out / "study.nc")
     write_study_report(ds, out)
-    with atomic_path(out / "study.json") as tmp:
-        tmp.write_text(json.dumps({"title": study.title, "mode": study.mode,
-                                   "cases": [c for c, _, _ in study.cases]}, indent=2))
     return ds
+
+
+def _write_study_record(study: Study, out: Path) -> None:
+    """Write ``OUT/study.json``: the study's title, mode and base, and each case's id and
+    input fingerprint (before any case runs, so that a stopped study names itself)."""
+    from . import __version__
+
+    out.mkdir(parents=True, exist_ok=True)
+    write_json({"title": study.title, "mode": study.mode, "base": study.base,
+                "asperity_version": __version__, "cases": [c for c, _, _ in study.cases],
+                "inputs": {cid: case_fingerprint(case) for cid, case, _ in study.cases}},
+               out / "study.json")
 
 
 _ANGLES = {"radian", "degree", "arcminute", "arcsecond", "turn", "revolution", "gradian"}

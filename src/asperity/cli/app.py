@@ -369,7 +369,8 @@ def show_examples(out: Console) -> None:
             if ex.source:
                 text.append(f"\nSource: {ex.source}", style="dim")
             out.print(Padding(text, (0, 0, 0, 6)), highlight=False)
-    out.print("\n[bold]parameter studies[/] (asperity sweep NAME)", highlight=False)
+    out.print("\n[bold]parameter studies[/] (asperity example NAME prints one, asperity sweep "
+              "NAME runs it)", highlight=False)
     for name, description in list_studies():
         out.print(Padding(Text(name, style="bold cyan"), (0, 0, 0, 2)), highlight=False)
         out.print(Padding(Text(description), (0, 0, 0, 6)), highlight=False)
@@ -378,15 +379,18 @@ def show_examples(out: Console) -> None:
 @app.command()
 @guarded
 def example(
-    name: Annotated[str, typer.Argument(help="Example name (see asperity examples).")],
+    name: Annotated[str, typer.Argument(help="Example or study name (see asperity examples).")],
     out: Annotated[Path | None, typer.Option(
         "--out", help="Write NAME.toml and the data it names into this folder.")] = None,
 ):
-    """Print a built-in example as TOML (save it, edit it, run it), or write it to --out."""
-    from ..examples import example_text, write_example
+    """Print a built-in example or parameter study as TOML, or write it to --out.
+
+    Save it, edit it, then run it: asperity run (an example) or asperity sweep (a study).
+    """
+    from ..examples import builtin_text, write_example
 
     if out is None:
-        sys.stdout.write(example_text(name))
+        sys.stdout.write(builtin_text(name)[1])
         return
     for path in write_example(name, out):
         console.print(f"wrote {path}")
@@ -503,10 +507,26 @@ def _run_sweep(spec, out, serial, scheduler, workers, quiet, run_study, local_cl
 
         logging.getLogger("distributed").setLevel(logging.ERROR)  # after its own set-up
         if scheduler:
-            with Client(scheduler) as client:
+            with _connect(scheduler) as client:
                 return run_study(spec, out, client=client, progress=progress)
         with local_cluster(workers) as cluster, Client(cluster) as client:
             return run_study(spec, out, client=client, progress=progress)
+
+
+def _connect(scheduler: str):
+    """A Dask client of the scheduler at ``scheduler``; one that cannot be reached (or an
+    address that is none) is bad input naming --scheduler (it read "error: file: Timed out
+    trying to connect ... after 30 s")."""
+    from dask.distributed import Client
+
+    try:
+        return Client(scheduler)
+    except (OSError, ValueError, TypeError) as exc:
+        detail = " ".join(str(exc).split()) or type(exc).__name__
+        raise InputError("--scheduler", "", problem=f"could not connect to a Dask scheduler at "
+                         f"{scheduler} ({detail}); give the address of a running one "
+                         "(tcp://HOST:8786) or leave --scheduler out for a local "
+                         "cluster") from None
 
 
 def _sweep_plan(spec, out: Path) -> str:
@@ -514,14 +534,13 @@ def _sweep_plan(spec, out: Path) -> str:
     analysis estimates it, their expected time on 2 cores (a line, not a question: CI has no
     stdin)."""
     from ..formatting import format_duration
-    from ..sweep import case_status, estimated_seconds
+    from ..sweep import estimated_seconds, resume_plan
 
-    todo = [case for cid, case, _ in spec.cases
-            if (case_status(out / "cases" / cid) or {}).get("state") != "done"]
+    plan = resume_plan(spec, out)  # refuses another study's folder before anything starts
+    cases = {cid: case for cid, case, _ in spec.cases}
+    todo = [cases[cid] for cid in plan.todo]
     total = len(spec.cases)
-    line = f"{spec.title}: {total} case{'s' * (total != 1)} ({spec.mode})"
-    if len(todo) < total:
-        line += f", {len(todo)} to run ({total - len(todo)} done before)"
+    line = f"{spec.title}: {total} case{'s' * (total != 1)} ({spec.mode})" + plan.line()
     seconds = [estimated_seconds(case) for case in todo]
     known = [t for t in seconds if t is not None]
     if known:
