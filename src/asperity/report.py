@@ -29,8 +29,9 @@ from .formatting import (
 )
 from .results import Outcome, atomic_path
 
-__all__ = ["REFERENCES", "render_report", "render_study_report", "study_references",
-           "study_status", "study_variables", "write_report", "write_study_report"]
+__all__ = ["MESH_ERROR", "NOT_CONVERGED", "REFERENCES", "WARNED", "render_report",
+           "render_study_report", "study_case_marks", "study_references", "study_status",
+           "study_variables", "write_report", "write_study_report"]
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:2rem auto;
@@ -41,6 +42,7 @@ table{border-collapse:collapse;margin:.5rem 0;font-size:.92rem}
 td,th{border:1px solid #d0d7de;padding:.25rem .6rem;text-align:right}
 th{background:#f6f8fa} td.l,th.l{text-align:left}
 .pass{color:#1a7f37;font-weight:600} .fail{color:#cf222e;font-weight:600}
+.caution{color:#bc4c00;font-weight:600}
 .info{color:#57606a} figure{margin:1rem 0;display:inline-block;vertical-align:top;max-width:100%}
 figure img{max-width:520px;border:1px solid #d0d7de} figcaption{font-size:.85rem;color:#57606a;
 max-width:520px} .note{background:#f6f8fa;border:1px solid #d0d7de;padding:.5rem .8rem;
@@ -69,6 +71,27 @@ HEADLINE_KEYS = (
     "minimum_lambda", "minimum_film_m",
     "maximum_flash_temperature_k", "maximum_hertz_pressure_pa",
 )
+
+#: A study's figure draws these after the headline keys, before the other results: the film
+#: and lambda at the pitch point of a gear, which show how the mesh's middle changes.
+_STUDY_FIRST = ("pitch_minimum_film_m", "pitch_lambda")
+
+#: A study's figure draws these last, where panels are left: forces that follow the swept
+#: torque by statics (the normal force and ISO's F_t are the torque over a radius).
+_STUDY_LAST = ("normal_force_n", "iso_nominal_tangential_force_n")
+
+#: The mark of a study's case that ran to the end without converging: its numbers are not a
+#: solution (red crosses in the figure, apart from the line).
+NOT_CONVERGED = "not converged"
+
+#: The mark of a case with a warning that its minimum film is not resolved by the mesh, its
+#: estimated error over 100 % (:mod:`asperity.diagnostics`): a hollow square in the figure.
+MESH_ERROR = "mesh error over 100 %"
+
+#: The mark of a case with other warnings: a hollow circle in the figure.
+WARNED = "with warnings"
+
+_MESH_OVER_100 = re.compile(r"estimated error over 100 %")
 
 #: Bookkeeping of the solver, listed after the physical results (where a load path reaches
 #: gross slip, path_gross_slip and path_gross_slip_step, is a result: it stays with them).
@@ -342,8 +365,9 @@ def write_report(title: str, case: dict, outcome: Outcome, files: dict, path, *,
 
 
 def study_variables(ds, limit: int = 9) -> list[str]:
-    """The numeric results of a study that vary from case to case: headline quantities first,
-    solver bookkeeping, repeats of a swept value and second copies of a quantity (the same
+    """The numeric results of a study that vary from case to case: headline quantities first
+    (then a gear's pitch film and lambda; its normal force and F_t, which follow the torque,
+    last), solver bookkeeping, repeats of a swept value and second copies of a quantity (the same
     long name: a fraction and its percent) left out, and so are the closed-form references
     drawn beside a result in its panel (:func:`study_references`: Hertz's maximum pressure
     beside the maximum pressure, not a panel of its own).
@@ -373,8 +397,9 @@ def study_variables(ds, limit: int = 9) -> list[str]:
         if finite.size and np.ptp(finite) > 1e-12 * max(np.max(np.abs(finite)), 1e-300) and \
                 not any(_repeats_axis(var, ds[a]) for a in axes):
             numeric.append(str(name))
-    ranked = [k for k in HEADLINE_KEYS if k in numeric] + [
-        k for k in numeric if k not in HEADLINE_KEYS]
+    first = [k for k in (*HEADLINE_KEYS, *_STUDY_FIRST) if k in numeric]
+    ranked = first + [k for k in numeric if k not in first and k not in _STUDY_LAST] + [
+        k for k in _STUDY_LAST if k in numeric]
     # one of a quantity stored twice (a fraction and its percent): the first by rank
     seen, kept = set(), []
     for k in ranked:
@@ -462,6 +487,7 @@ def _cases_table(ds, variables) -> str:
                            axis_units[a][1] if axis_units[a] else "") for a in axes)
     head += "".join(_header(html.escape(describe_key(v)[0]), units[v][1]) for v in variables)
     rows = []
+    marks = study_case_marks(ds)
     for n, index in enumerate(np.ndindex(*ds["state"].shape)):
         sel = dict(zip(dims, index, strict=True))
         cells = []
@@ -483,27 +509,35 @@ def _cases_table(ds, variables) -> str:
             if math.isfinite(spread):  # its standard error, in the column's unit
                 text += f" ± {format_number(spread * units[v][0], 2)}"
             cells.append(text)
-        state = str(ds["state"].isel(sel).values)
-        error = str(ds["error"].isel(sel).values)
-        if state == "done" and _not_converged(ds, sel):
-            state = "not converged"
-            if "convergence" in ds:  # the case's own reason (its run's message)
-                error = str(ds["convergence"].isel(sel).values)
-        if "warnings" in ds and str(ds["warnings"].isel(sel).values):
-            count = len(str(ds["warnings"].isel(sel).values).split("\n"))
-            more = f"{count} warning{'s' * (count > 1)} (below)"
-            if not error:
-                error = more
-            elif state == "not converged":
-                error = f"{error} ({more})"
-        badge = ("<span class=pass>done</span>" if state == "done" else
-                 f"<span class=fail>{html.escape(state)}</span>")
+        state, error, badge = _case_state(ds, sel, str(marks.values[index]))
         rows.append(f"<tr><td>{n:04d}</td>" + "".join(f"<td>{html.escape(c)}</td>"
                                                        for c in cells)
                     + f"<td>{badge}</td><td class=l>{html.escape(error)}</td></tr>")
     return (f"<table><tr><th>case</th>{head}<th>state</th><th class=l>error or warnings</th>"
             "</tr>"
             f"{''.join(rows)}</table>")
+
+
+def _case_state(ds, sel, mark: str) -> tuple[str, str, str]:
+    """(state, error or warnings, badge in HTML) of the case at ``sel`` in the table of
+    cases, its ``mark`` (:func:`study_case_marks`) as the figure draws it: ``not converged``
+    with its run's reason, ``done, mesh error over 100 %`` or ``done, with warnings`` with
+    their count."""
+    state = str(ds["state"].isel(sel).values)
+    error = str(ds["error"].isel(sel).values)
+    if mark == NOT_CONVERGED:
+        state = NOT_CONVERGED
+        if "convergence" in ds:  # the case's own reason (its run's message)
+            error = str(ds["convergence"].isel(sel).values)
+    elif mark:
+        state = f"done, {mark}"
+    if "warnings" in ds and str(ds["warnings"].isel(sel).values):
+        count = len(str(ds["warnings"].isel(sel).values).split("\n"))
+        more = f"{count} warning{'s' * (count > 1)} (below)"
+        error = f"{error} ({more})" if error else more
+    kind = ("pass" if state == "done" else "caution" if state.startswith("done, ")
+            else "fail")
+    return state, error, f"<span class={kind}>{html.escape(state)}</span>"
 
 
 def _breakable(key: str) -> str:
@@ -516,6 +550,45 @@ def _not_converged(ds, sel) -> bool:
     """Whether the case at ``sel`` ran to the end without converging (False where the study
     file predates the ``converged`` record)."""
     return "converged" in ds and float(ds["converged"].isel(sel).values) == 0.0
+
+
+def study_case_marks(ds):
+    """The mark of each case of a study, as its figure draws it and its table names it.
+
+    :data:`NOT_CONVERGED` for a case that ran to the end without converging, else
+    :data:`MESH_ERROR` for one warned that its minimum film's estimated mesh error is over
+    100 %, else :data:`WARNED` for one with any other warning, else ``""`` (a clean case, and
+    a failed or missing one, which has no numbers to draw).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``study.nc`` (:func:`asperity.sweep.combine`).
+
+    Returns
+    -------
+    xarray.DataArray
+        Strings, on the dimensions of ``ds["state"]``.
+    """
+    import numpy as np
+
+    marks = np.full(ds["state"].shape, "", dtype=object)
+    dims = list(ds["state"].dims)
+    for index in np.ndindex(*ds["state"].shape):
+        marks[index] = _case_mark(ds, dict(zip(dims, index, strict=True)))
+    return ds["state"].copy(data=marks.astype(str))
+
+
+def _case_mark(ds, sel) -> str:
+    """The mark of the case at ``sel`` (:func:`study_case_marks`)."""
+    if str(ds["state"].isel(sel).values) != "done":
+        return ""
+    if _not_converged(ds, sel):
+        return NOT_CONVERGED
+    text = str(ds["warnings"].isel(sel).values) if "warnings" in ds else ""
+    if _MESH_OVER_100.search(text):
+        return MESH_ERROR
+    return WARNED if text else ""
 
 
 def _case_warnings(ds) -> list[tuple[str, list[str]]]:
@@ -597,8 +670,10 @@ def render_study_report(ds, figure_png: bytes | None = None) -> str:
     figure = ("<p class=info>No result varies from case to case.</p>" if figure_png is None else
               '<figure><img style="max-width:100%" alt="study" src="data:image/png;base64,'
               f'{base64.b64encode(figure_png).decode("ascii")}"><figcaption>Each result '
-              "against the first axis (one line per value of the other axes).</figcaption>"
-              "</figure>")
+              "against the first axis (one line per value of the other axes). Red crosses, "
+              "apart from the line: cases that did not converge (not a solution); hollow "
+              "squares: a mesh error over 100 % of the minimum film; hollow circles: other "
+              "warnings (as the table of cases says).</figcaption></figure>")
     axes = ", ".join(html.escape(ds[a].attrs.get("long_name", a))
                      for a in ds.attrs.get("axes", "").split(",") if a)
     return f"""<!DOCTYPE html>

@@ -355,5 +355,5 @@ def first_error(exc: ValidationError, prefix: str = "", model: type[BaseModel] |
     msg = msg.removeprefix("expected ").removeprefix("Input should be ")
     if msg.startswith(("greater", "less")):
         msg = "a value " + msg
-    got = err.get("input")
-    return InputError(field, msg, None if isinstance(got, dict | list) else got)
+    got = err.get("input")  # a list as written ([10, 20] for a load); a table left out
+    return InputError(field, msg, None if isinstance(got, dict) else got)

@@ -188,10 +188,12 @@ class GearSpec(CaseModel):
     @field_validator("teeth", mode="before")
     @classmethod
     def _ring_second(cls, value):
-        """Refuse in words a negative pinion (the pinion of an internal pair is the external
+        """Refuse in words a value that is not a pair (one count read "expected a valid
+        tuple, got 25"), a negative pinion (the pinion of an internal pair is the external
         gear, the ring the wheel) and a ring of fewer than 5 teeth."""
-        if isinstance(value, list | tuple) and len(value) == 2 and all(
-                isinstance(z, int | float) and not isinstance(z, bool) for z in value):
+        if not (isinstance(value, list | tuple) and len(value) == 2):
+            raise ValueError("expected a pair [pinion, wheel] of tooth counts such as [25, 50]")
+        if all(isinstance(z, int | float) and not isinstance(z, bool) for z in value):
             if value[0] < 0:
                 raise ValueError(
                     "expected [pinion, wheel] with the pinion external (> 0): an internal pair "

@@ -3,6 +3,9 @@
 Each file carries ``title``, ``description`` and ``source`` keys; ``long_running = true`` marks
 full-size paper reproductions that take much longer than a minute.
 
+``asperity example NAME`` prints a built-in example or, where no example has the name, a
+built-in study (:func:`builtin_text`), to copy and edit.
+
 Data shipped with the examples (``data/``) is named in case files as ``builtin:NAME``
 (``path = "builtin:ground-profile.csv"``), which resolves wherever the case file is;
 :func:`write_example` writes an example with its data beside it, the path made relative.
@@ -18,8 +21,8 @@ from pathlib import Path
 
 from ..errors import InputError
 
-__all__ = ["BUILTIN_PREFIX", "DEFAULT_EXAMPLE", "Example", "builtin_data", "example_text",
-           "list_examples", "list_studies", "study_text", "write_example"]
+__all__ = ["BUILTIN_PREFIX", "DEFAULT_EXAMPLE", "Example", "builtin_data", "builtin_text",
+           "example_text", "list_examples", "list_studies", "study_text", "write_example"]
 
 #: Prefix of the names of data files shipped with asperity (``builtin:ground-profile.csv``).
 BUILTIN_PREFIX = "builtin:"
@@ -47,23 +50,43 @@ def _files(folder: str = ""):
     return sorted((p for p in root.iterdir() if p.name.endswith(".toml")), key=lambda p: p.name)
 
 
-def _text(name: str, folder: str, field: str, expected: str) -> str:
+def _find(name: str, folder: str) -> str | None:
+    """The TOML text of ``NAME.toml`` among the examples (``folder=""``) or the studies."""
     for path in _files(folder):
         if path.name == f"{name}.toml":
             return path.read_text(encoding="utf-8")
-    names = [p.name.removesuffix(".toml") for p in _files(folder)]
+    return None
+
+
+def _names(folder: str) -> list[str]:
+    """The names of the built-in examples (``folder=""``) or studies."""
+    return [p.name.removesuffix(".toml") for p in _files(folder)]
+
+
+def _missing(name: str, field: str, names: list[str], expected: str, kind: str = ""):
+    """Raise the :class:`InputError` of a name that is none of ``names``: the name meant where
+    one reads like it, else ``expected``; ``kind`` names what was looked for (``field``)."""
+    kind = kind or field
     listed = "asperity examples lists them"
     if Path(name).is_dir():
         raise InputError(field, "", problem=f"{name} is a folder; give a .toml file in it or "
-                                            f"the name of a built-in {field} ({listed})")
+                                            f"the name of a built-in {kind} ({listed})")
     by_lower = {n.lower(): n for n in names}
     close = ([name.lower()] if name.lower() in by_lower else
              difflib.get_close_matches(name.lower(), list(by_lower), n=3, cutoff=0.75))
     if close:
         meant = " or ".join(by_lower[n] for n in close)
-        raise InputError(field, "", problem=f"no built-in {field} {name!r}; did you mean "
+        raise InputError(field, "", problem=f"no built-in {kind} {name!r}; did you mean "
                                             f"{meant}? ({listed})")
-    raise InputError(field, f"{expected}{', '.join(names)}", name)
+    raise InputError(field, expected, name)
+
+
+def _text(name: str, folder: str, field: str, expected: str) -> str:
+    text = _find(name, folder)
+    if text is None:
+        names = _names(folder)
+        _missing(name, field, names, f"{expected}{', '.join(names)}")
+    return text
 
 
 def list_examples() -> list[Example]:
@@ -82,6 +105,24 @@ def list_examples() -> list[Example]:
 def example_text(name: str) -> str:
     """The TOML text of a built-in example."""
     return _text(name, "", "example", "one of: ")
+
+
+def builtin_text(name: str) -> tuple[str, str]:
+    """The kind (``"example"`` or ``"study"``) and TOML text of a built-in example or, where
+    no example has the name, a built-in study (what ``asperity example NAME`` prints).
+
+    Raises
+    ------
+    InputError
+        ``example``: for a name of neither, with the names that read like it or all of them.
+    """
+    for folder, kind in (("", "example"), ("studies", "study")):
+        text = _find(name, folder)
+        if text is not None:
+            return kind, text
+    examples, studies = _names(""), _names("studies")
+    _missing(name, "example", examples + studies, f"an example ({', '.join(examples)}) or a "
+             f"study ({', '.join(studies)})", kind="example or study")
 
 
 def list_studies() -> list[tuple[str, str]]:
@@ -111,12 +152,15 @@ def builtin_data(name: str) -> Path:
 
 
 def write_example(name: str, folder) -> list[Path]:
-    """Write example ``name`` to ``folder/NAME.toml`` with the shipped data it names beside it.
+    """Write example (or study) ``name`` to ``folder/NAME.toml`` with the shipped data it
+    names beside it.
 
     Every ``"builtin:FILE"`` in the case becomes ``"FILE"``, which a case file resolves relative
-    to its own folder, and FILE is copied there. Returns the paths written, the case first.
+    to its own folder, and FILE is copied there. A built-in study names its base by the
+    built-in example's name, which ``asperity sweep`` finds from any folder. Returns the paths
+    written, the case first.
     """
-    text = example_text(name)
+    _, text = builtin_text(name)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     written = [folder / f"{name}.toml"]
