@@ -150,6 +150,21 @@ def test_bad_study_is_one_line(tmp_path):
         _study(tmp_path, "")
 
 
+def test_zip_axes_of_unequal_length_and_key_with_keys_say_what_is_wrong(tmp_path):
+    """"axis: expected axes of equal length" named neither the axes nor their lengths; key
+    beside keys read "expected lists of 2 values, one per key"."""
+    zipped = ('[[axis]]\nkey = "loading.load"\nvalues = ["5 N", "10 N", "20 N"]\n'
+              '[[axis]]\nkey = "geometry.rx"\nvalues = ["5 mm", "10 mm"]\n')
+    with pytest.raises(InputError) as info:
+        _study(tmp_path, zipped, mode="zip")
+    assert "loading.load: 3, geometry.rx: 2" in str(info.value)
+    both = ('[[axis]]\nkey = "loading.load"\nkeys = ["loading.load", "geometry.rx"]\n'
+            'values = [["5 N", "5 mm"]]\n')
+    with pytest.raises(InputError) as info:
+        _study(tmp_path, both)
+    assert str(info.value).startswith("axis[0]: give key") and "not both" in str(info.value)
+
+
 @pytest.mark.parametrize("range_text, field", [
     ('{start = 1, stop = 5, num = 2.5, unit = "N"}', "axis[0].range.num"),   # ran 2 cases
     ('{start = 1, stop = 5, num = 1, unit = "N"}', "axis[0].range.num"),     # ran 1 N only

@@ -198,6 +198,9 @@ def _axis(ax, i: int) -> tuple:
     if unknown:
         raise InputError(f"axis[{i}].{sorted(unknown)[0]}", "",
                          problem="unknown key (check the spelling)")
+    if "key" in ax and "keys" in ax:
+        raise InputError(f"axis[{i}]", "", problem="give key (one swept key) or keys (several "
+                         "swept together), not both")
     if isinstance(ax.get("key"), str) and "keys" not in ax:
         return ax.get("name", ax["key"]).replace(".", "__"), (ax["key"],), _axis_values(ax, i), \
             None
@@ -465,7 +468,9 @@ def load_study(path: str | Path) -> Study:
         raise InputError("axis", "at least one [[axis]] table with key and values")
     axes = [_axis(ax, i) for i, ax in enumerate(axes_spec)]
     if mode == "zip" and len({len(ax[2]) for ax in axes}) != 1:
-        raise InputError("axis", "axes of equal length for mode = \"zip\"")
+        lengths = ", ".join(f"{'/'.join(ax[1])}: {len(ax[2])}" for ax in axes)
+        raise InputError("axis", "axes of equal length for mode = \"zip\" (one case per "
+                         "position along them)", lengths)
     units = _check_axes(axes, _base_keys(base_case), mode, base_case)
     positions = (zip(*(range(len(ax[2])) for ax in axes), strict=True) if mode == "zip"
                  else itertools.product(*(range(len(ax[2])) for ax in axes)))
