@@ -336,3 +336,19 @@ def test_a_reference_beyond_its_tolerance_is_named_on_the_terminal(tmp_path):
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     error = summary["central_film_thickness_m"] / 1e-6 - 1
     assert f"{100 * error:+.1f} %" in line and "(my calculation)" in line and "5 %" in line
+
+
+def test_unit_doubts_are_said_before_the_solve_and_once(tmp_path):
+    """A bare 210000 modulus (meant in MPa, read in Pa) was warned about only after the
+    solve, 163 s into a bearing user's run; the doubt needs no solve. It comes before the
+    summary, and is not repeated after it."""
+    case = tmp_path / "c.toml"
+    case.write_text('analysis = "normal"\n[body1]\nyoungs_modulus = 210000\n'
+                    '[body2]\nyoungs_modulus = "210 GPa"\n[geometry]\nshape = "sphere"\n'
+                    'rx = "10 mm"\n[loading]\nload = "1 N"\n[grid]\nnx = 32\nny = 32\n'
+                    'x_extent = "0.4 mm"\ny_extent = "0.4 mm"\n')
+    result = runner.invoke(app, ["run", str(case), "--out", str(tmp_path / "o"), "-q"])
+    text = result.output
+    doubt = [line for line in text.splitlines() if line.startswith("warning: body1.youngs")]
+    assert len(doubt) == 1, text
+    assert text.index(doubt[0]) < text.index("wrote ")

@@ -210,6 +210,7 @@ def run(
 ):
     """Run a case: write result.nc, summary.json, figures and report.html to OUT."""
     from ..cases import load_case
+    from ..cases.doubts import unit_doubts
     from ..examples import DEFAULT_EXAMPLE, example_text
     from ..runners import run_case
     from .progress import progress_bar
@@ -222,6 +223,11 @@ def run(
     model = load_case(Path(case) if is_file else example_text(case))
     _check_out_dir(out)
     console.print(f"[bold]{model.title}[/bold] ({model.analysis})")
+    # the doubts on the units need no solve: said before it (a bare 210000 modulus, read as
+    # 210 kPa, was said after a 163 s solve), and not again after it
+    early = unit_doubts(model)
+    for line in early:
+        err_console.print(f"warning: {line}", markup=False, highlight=False, soft_wrap=True)
     where = {"description": "the start"}
     pending = []  # a signal whose exception landed where Python ignores it (a weakref callback)
 
@@ -263,7 +269,9 @@ def run(
     _print_differences(outcome.comparisons, imperial)
     console.print(f"wrote {len(files)} files to {out}/ (report: {files['report']})")
     for line in outcome.warnings:
-        err_console.print(f"warning: {line}", markup=False, highlight=False, soft_wrap=True)
+        if line not in early:
+            err_console.print(f"warning: {line}", markup=False, highlight=False,
+                              soft_wrap=True)
     if not outcome.converged:  # the run's own reason, with the key to change where it has one
         from ..sweep import convergence_message
 
