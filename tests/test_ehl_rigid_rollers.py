@@ -69,3 +69,17 @@ def test_a_default_mesh_over_the_node_limit_is_told_the_largest_mesh_of_its_prop
         check_node_count(3113, 233, True)
     assert "at most 2933 x 219 in the same proportions" in str(info.value)
     assert 2933 * 219 <= 801 * 201 * 4 and 2933 / 219 == pytest.approx(3113 / 233, rel=3e-3)
+
+
+def test_a_bare_light_load_per_length_is_doubted():
+    """load_per_length = 1000 (meant 1000 N/mm) ran as 1 N/mm without a word; 1 N/mm is
+    1000 N/m, below the 10 N/mm of the lightest rolling-element line loads."""
+    from asperity.cases.doubts import unit_doubts
+
+    case = load_case(ROLLER.replace('load_per_length = "10 N/mm"', "load_per_length = 1000")
+                     + 'alpha = "20 1/GPa"\n')
+    (line,) = unit_doubts(case)
+    assert line.startswith("contact.load_per_length: the bare number 1000 is read in N/m, "
+                           "1 N/mm")
+    assert '"1000 N/mm"' in line
+    assert unit_doubts(load_case(ROLLER + 'alpha = "20 1/GPa"\n')) == []

@@ -54,6 +54,7 @@ from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 
 __all__ = [
     "ALPHA_MAX",
+    "BARE_LINE_LOAD",
     "MAX_NODES",
     "MAX_NX",
     "MAX_NY",
@@ -237,6 +238,12 @@ class LubricantSpec(BareNumbers):
         )
 
 
+#: Load per length (N/m) below which a bare ``load_per_length`` is doubted: 10 N/mm, the
+#: lightest rolling-element line load (an unloaded-zone roller; gear and cam contacts carry
+#: 100-2000 N/mm); a bare number is N/m, and N/mm is how such loads are written.
+BARE_LINE_LOAD = 1e4
+
+
 class ContactSpec(CurvedBody):
     """``[contact]``: shape and load.
 
@@ -281,6 +288,21 @@ class ContactSpec(CurvedBody):
     def line(self) -> bool:
         """True for a line contact."""
         return self.type == "line"
+
+    def unit_doubts(self, key: str) -> list[str]:
+        """The radii's doubts (:meth:`CurvedBody.unit_doubts`) and a line where
+        ``load_per_length`` was written as a bare number below :data:`BARE_LINE_LOAD` N/m:
+        a bearing user's ``load_per_length = 1000``, meant in N/mm, ran as 1 N/mm without a
+        word, where the radius and eta0 beside it were doubted."""
+        lines = super().unit_doubts(key)
+        value = self.bare("load_per_length")
+        if value is not None and value < BARE_LINE_LOAD:
+            lines.append(
+                f"{key}.load_per_length: the bare number {value:g} is read in N/m, "
+                f"{format_quantity(value * 1e-3, 'N')}/mm, a light line load (a bare number is "
+                f'in the key\'s SI unit); if N/mm were meant write "{value:g} N/mm", else '
+                f'"{value:g} N/m" to confirm')
+        return lines
 
 
 class SpeedSpec(CaseModel):
