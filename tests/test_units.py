@@ -107,3 +107,10 @@ def test_a_temperature_for_another_quantity_is_called_a_temperature(text):
         to_si(text, "pressure", "body2.youngs_modulus")
     assert str(info.value) == (f"body2.youngs_modulus: expected a quantity convertible to Pa "
                                f"(this is a temperature), got '{text}'")
+
+
+@pytest.mark.parametrize("text", ["30 mPas", "0.03 Pas", "30 cp", "30 cps", "30 mPa.s"])
+def test_viscosities_written_without_the_space_are_read_as_meant(text):
+    """A bearing user's "30 mPas" and "0.03 Pas" were refused with no hint, and "30 cp"
+    (pint: candlepower) too; each is 30 mPa s."""
+    assert to_si(text, "viscosity", "lubricant.eta0") == pytest.approx(0.03, rel=1e-12)

@@ -162,12 +162,20 @@ def _check_one_number(text: str, field: str) -> None:
                          "separator), then its unit (e.g. '12.5 mm')", text)
 
 
+#: Viscosity units as people write them without the space pint needs (lower case, dots
+#: dropped) -> as pint reads them: "30 mPas" (pint: an error), "30 cp" (pint: candlepower).
+_VISCOSITY_SPELLINGS = {"pas": "Pa*s", "mpas": "mPa*s", "cp": "cP", "cps": "cP"}
+
+
 def _parse(text: str, si_unit: str, field: str) -> float:
     import pint
 
     ureg = registry()
     _check_one_number(text, field)
     read = text.strip()
+    unit = unit_of(read)
+    if si_unit == "Pa*s" and unit and unit.lower().replace(".", "") in _VISCOSITY_SPELLINGS:
+        read = read[:-len(unit)] + _VISCOSITY_SPELLINGS[unit.lower().replace(".", "")]
     if si_unit != "rad":  # turns are counts: "0.127 mm/rev" is 0.127 mm, "1500 rpm" 25 Hz;
         read = _TURNS.sub("1", re.sub(r"\b(rpm|rps)\b", lambda m: _PER_TURN[m[1]], read))
         read = re.sub(r"\bmils?\b", "thou", read)  # and a mil is a thousandth of an inch
