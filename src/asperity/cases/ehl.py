@@ -55,6 +55,8 @@ from .fields import CaseHeader, CaseModel, Integer, Number, Quantity
 __all__ = [
     "ALPHA_MAX",
     "BARE_LINE_LOAD",
+    "ELLIPTICITY_FIT",
+    "ELLIPTICITY_POWER",
     "MAX_NODES",
     "MAX_NX",
     "MAX_NY",
@@ -63,6 +65,7 @@ __all__ = [
     "EHLGridSpec",
     "EHLSteadyCase",
     "LubricantSpec",
+    "SWAPPED_ELLIPTICITY",
     "SolverSpec",
     "SpeedSpec",
     "check_node_count",
@@ -238,6 +241,13 @@ class LubricantSpec(BareNumbers):
         )
 
 
+#: Hamrock & Brewe's (1983) fit of the Hertz ellipticity, ``b/a = 1.0339 (ry/rx)^0.636``,
+#: and the b/a below which a point contact's radii are doubted as swapped: a ball across its
+#: groove (the issue's robustness table spans b/a = 0.25-8; a user's swapped rx, ry gave
+#: 0.105 and a collapsed film after 148 s).
+ELLIPTICITY_FIT, ELLIPTICITY_POWER = 1.0339, 0.636
+SWAPPED_ELLIPTICITY = 0.25
+
 #: Load per length (N/m) below which a bare ``load_per_length`` is doubted: 10 N/mm, the
 #: lightest rolling-element line load (an unloaded-zone roller; gear and cam contacts carry
 #: 100-2000 N/mm); a bare number is N/m, and N/mm is how such loads are written.
@@ -254,16 +264,29 @@ class ContactSpec(CurvedBody):
 
     type: Literal["point", "line"] = "point"
     """"point" (rx, ry, load) or "line" (radius or rx, load_per_length)."""
-    rx: Quantity("length", gt=0) | None = None
+    rx: Quantity("length") | None = None
     """Radius of relative curvature along x, the entrainment direction."""
-    ry: Quantity("length", gt=0) | None = None
+    ry: Quantity("length") | None = None
     """Radius of relative curvature along y (point contact)."""
-    radius: Quantity("length", gt=0) | None = None
+    radius: Quantity("length") | None = None
     """Radius of relative curvature of a line contact (or give rx)."""
     load: Quantity("force", gt=0) | None = None
     """Normal load of a point contact."""
     load_per_length: Quantity("force_per_length", gt=0) | None = None
     """Load per unit length of a line contact (e.g. "527 kN/m")."""
+
+    @field_validator("rx", "ry", "radius")
+    @classmethod
+    def _relative_radius(cls, value):
+        """A radius of relative curvature > 0, saying how a concave surface enters it: a
+        ball's groove (ry = -6.24 mm) was refused as "expected more than 0 m"."""
+        if value is not None and not value > 0:
+            raise ValueError(
+                "expected a radius of relative curvature > 0: the two surfaces' curvatures "
+                "combine, 1/R = 1/r1 + 1/r2, a concave one (a groove, an outer race) with its "
+                "radius negative; e.g. a 6 mm ball in a 6.24 mm groove: ry = 1/(1/6 - 1/6.24) "
+                "mm = 156 mm")
+        return value
 
     @model_validator(mode="after")
     def _complete(self):
@@ -295,6 +318,15 @@ class ContactSpec(CurvedBody):
         a bearing user's ``load_per_length = 1000``, meant in N/mm, ran as 1 N/mm without a
         word, where the radius and eta0 beside it were doubted."""
         lines = super().unit_doubts(key)
+        if self.type == "point" and self.rx and self.ry:
+            k = ELLIPTICITY_FIT * (self.ry / self.rx) ** ELLIPTICITY_POWER
+            if k < SWAPPED_ELLIPTICITY:
+                lines.append(
+                    f"{key}.rx, {key}.ry: the contact ellipse is about {1 / k:.3g} times longer "
+                    f"along the entrainment (x) than across it (b/a = {k:.2g}, ry < rx), as "
+                    "few rolling contacts are; rx is the radius along the rolling direction, "
+                    "ry across it (a ball in its groove: ry from the groove, the larger one): "
+                    "check that they are not swapped")
         value = self.bare("load_per_length")
         if value is not None and value < BARE_LINE_LOAD:
             lines.append(

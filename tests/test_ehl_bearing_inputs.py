@@ -1,5 +1,6 @@
-"""A lightly loaded roller (an unloaded-zone roller of a bearing: R = 4.167 mm, 10 N/mm,
-5 m/s, 30 mPa s): what a nearly rigid line contact is compared with and told.
+"""A rolling-bearing engineer's inputs: a lightly loaded roller (an unloaded-zone roller:
+R = 4.167 mm, 10 N/mm, 5 m/s, 30 mPa s), what a nearly rigid line contact is compared with
+and told; a ball in its groove with its radii swapped or its groove's radius negative.
 
 References, by hand: Martin's (1916) rigid-isoviscous film of a cylinder,
 h = 4.896 eta0 u R / w' (u the mean speed); Moes' (1992) rigid-isoviscous asymptote
@@ -83,3 +84,43 @@ def test_a_bare_light_load_per_length_is_doubted():
                            "1 N/mm")
     assert '"1000 N/mm"' in line
     assert unit_doubts(load_case(ROLLER + 'alpha = "20 1/GPa"\n')) == []
+
+
+BALL = """
+analysis = "ehl-steady"
+[body1]
+youngs_modulus = "210 GPa"
+[body2]
+youngs_modulus = "210 GPa"
+[contact]
+rx = "{rx}"
+ry = "{ry}"
+load = "500 N"
+[speeds]
+u = "8 m/s"
+[lubricant]
+eta0 = "0.02 Pa s"
+alpha = "20 1/GPa"
+"""
+
+
+def test_a_ball_with_its_radii_swapped_is_doubted_before_the_solve():
+    """A 12 mm ball on a 40 mm race in a 0.52 D groove: rx = 1/(1/6 + 1/20) = 4.615 mm along
+    the rolling, ry = 1/(1/6 - 1/6.24) = 156 mm across. Swapped, b/a = 1.0339 (4.615/156)^0.636
+    = 0.11 (Hamrock & Brewe's fit): the run took 148 s to a collapsed film. As given, the
+    ellipse is b/a = 9.1 and nothing is doubted."""
+    from asperity.cases.doubts import unit_doubts
+
+    swapped = load_case(BALL.format(rx="156 mm", ry="4.615385 mm"))
+    (line,) = unit_doubts(swapped)
+    assert line.startswith("contact.rx, contact.ry: the contact ellipse is about 9.08 times")
+    assert "b/a = 0.11" in line and "swapped" in line
+    assert unit_doubts(load_case(BALL.format(rx="4.615385 mm", ry="156 mm"))) == []
+
+
+def test_a_negative_groove_radius_is_told_how_a_concave_surface_enters():
+    with pytest.raises(ValueError) as info:
+        load_case(BALL.format(rx="4.615385 mm", ry="-6.24 mm"))
+    message = str(info.value)
+    assert message.startswith("contact.ry: expected a radius of relative curvature > 0")
+    assert "1/(1/6 - 1/6.24)" in message and "156 mm" in message
