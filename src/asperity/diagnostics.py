@@ -38,6 +38,7 @@ __all__ = [
     "SIDE_PROBE_PRESSURE",
     "STARVED_FILM_LOSS",
     "RIGID_FILM_LOSS",
+    "RIGID_MARGIN",
     "RIGID_PRESSURE",
     "RIGID_OUTLET",
     "RIGID_REACH",
@@ -857,6 +858,11 @@ RIGID_OUTLET = 0.5
 RIGID_SPACING = 0.2
 
 
+#: Factor on the domain a nearly rigid contact is advised (:func:`ehl_rigid_domain`): its
+#: film grows on the larger domain, and with it ``l = sqrt(2 Rx hc)``.
+RIGID_MARGIN = 1.1
+
+
 def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: float,
                      a: float, b: float | None, max_bound: float = 100.0,
                      rigid_row: str | None = None) -> list[str]:
@@ -942,7 +948,10 @@ def ehl_rigid_domain(pressure, x, y, rx: float, central_film: float, p_hertz: fl
             f"rigid {body} has {law}: {_pct(share)} (limit {_pct(1.0 - RIGID_FILM_LOSS)})"
             + (f", and its outlet at {outlet:.2g} l cuts the pressure short of its exit"
                if outlet < RIGID_OUTLET else ""))
-    x_max = max(RIGID_OUTLET * length, float(x[-1])) / a
+    # advised with RIGID_MARGIN: on the larger domain the film, and with it l, grows (a
+    # roller told x_min <= -22.7 was, on it, told -22.8)
+    need *= RIGID_MARGIN
+    x_max = max(RIGID_MARGIN * RIGID_OUTLET * length, float(x[-1])) / a
     sides = "" if line else f", y_min <= {-need / b:.3g}, y_max >= {need / b:.3g}"
     if need <= max_bound * (a if line else min(a, b)):
         advised = {"x_min": -need, "x_max": x_max * a} | (
