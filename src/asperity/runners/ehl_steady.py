@@ -38,7 +38,7 @@ from ..references import (
 from ..results import Outcome, variable
 
 __all__ = ["SIDE_LOBE_MAX_NODES", "SIDE_LOBE_SHORT_ASPECT", "SIDE_LOBE_SHORT_CELLS_M",
-           "STALLED_WITHIN", "chosen_mesh", "ehl_warnings",
+           "STALLED_WITHIN", "TESTED_M", "beyond_tested_range", "chosen_mesh", "ehl_warnings",
            "isoviscous_line_advice", "relaxed_cells", "run", "side_lobe_rows", "stall_advice"]
 
 #: A steady solve that stopped before its sweep limit with a residual below this many times
@@ -147,7 +147,8 @@ def run(case, progress=None) -> Outcome:
                      f"({counted}residual {res.residual:.2e}); the numbers above are not "
                      "trustworthy."
                      + (f" {cells[0]}" if cells else
-                        isoviscous_line_advice(problem, res) or stall_advice(case, res)))
+                        isoviscous_line_advice(problem, res) or stall_advice(case, res))
+                     + beyond_tested_range(problem))
     elif not line and res.y_lines:
         notes += _cell_advice(problem, res)
     if res.converged and res.soft_retry:
@@ -274,6 +275,22 @@ def isoviscous_line_advice(problem, res) -> str:
             f"does not converge on {res.x.size} nodes: its Poiseuille flow relaxes over about "
             f"nx^2 sweeps; on at most grid.nx = {NEWTON_MAX_NODES} nodes the solver finishes "
             "it by Newton's method (converged at M = 30-118).")
+
+
+#: The largest Moes M of the robustness table the defaults converge on (issue 17:
+#: M = 10-1000; docs/ehl-robustness.md).
+TESTED_M = 1000.0
+
+
+def beyond_tested_range(problem) -> str:
+    """Where an unconverged contact's Moes M is beyond :data:`TESTED_M`, a sentence saying
+    so (a heavy slow roller at M = 4937 was told only to raise max_sweeps)."""
+    if not problem.M > TESTED_M:
+        return ""
+    return (f" Its Moes M = {problem.M:.3g} is beyond the M <= {TESTED_M:g} the default mesh and "
+            "relaxation are tested on (docs/ehl-robustness.md): its Hertzian pressure needs a "
+            "finer mesh and more levels (grid.nx, solver.levels), and a check of the load, "
+            "speed and viscosity units first.")
 
 
 def _isoviscous_line(problem) -> bool:
