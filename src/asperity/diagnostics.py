@@ -400,9 +400,9 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
 
     The semi-axes are half the number of grid columns (rows) the contact occupies, so for a
     rough contact they are those of the apparent contact, not of single asperity contacts. An
-    axis the contact spans from end to end is not judged: a periodic strip (the contact of a
-    1-D waviness, the same at every y) has no semi-axis along it, and was told its 16 rows
-    resolved it by 8 cells.
+    axis along which the contact does not change is not judged: a periodic strip (the
+    contact of a 1-D waviness, the same at every y) has no semi-axis along it, and was told
+    its 16 rows resolved it by 8 cells.
 
     Parameters
     ----------
@@ -444,12 +444,11 @@ def contact_resolution(contact, x, y, min_cells: float = MIN_CELLS_PER_SEMI_AXIS
         n = c.shape[axis]
         if n < 3:
             continue
-        spanned = np.count_nonzero(c.any(axis=1 - axis))
-        if spanned == n:
-            # the contact spans the whole axis (a periodic strip, or a domain too small,
-            # which the edge check reports): it has no semi-axis along it to resolve
+        if np.all(c == c.take([0], axis=axis)):
+            # the same at every position along the axis (a periodic strip): no semi-axis
+            # along it to resolve
             continue
-        cells = 0.5 * spanned
+        cells = 0.5 * np.count_nonzero(c.any(axis=1 - axis))
         if cells < min_cells:
             need = math.ceil(n * min_cells / cells)
             measured = None if file_spacing is None or axis >= len(file_spacing) \

@@ -55,11 +55,14 @@ SIDE_LOBE_MAX_NODES = 200_000
 #: ``dY >= SIDE_LOBE_SHORT_ASPECT dX`` instead of ``FINE_CELL_ASPECT dX``: a user's steel ball
 #: on glass (M = 213, L = 5.5) and a slow ball-on-disc (M = 183) converged on cells of 1.6
 #: dX (19-23 s; a user's 1.2 dX too), where their default meshes' minimum films were 45 % and
-#: 30 % too thin and no doubling kept 6 dX; the short cells that diverged were those of
-#: heavier contacts (M = 611 on 3-4 dX, M = 1822 on 4.1 dX, docs/ehl-robustness.md). Cells
+#: 30 % too thin and no doubling kept 6 dX. Session 48: on the default x spacing 161 rows
+#: (about 1.6 dX) also converged at M = 367, 538, 611 and 1008 (steel balls at 80 N and a
+#: ball on glass at 20 N, 6-20 s), where 41 rows gave minimum films of 20.9, 0.64, 0.0009 and
+#: 0.0014 nm against 63.8, 39.1, 11.6 and 16.9 nm; the short cells that diverged were on finer
+#: x spacings (M = 611 on 865 x 289, 3 dX; M = 1822 on 4.1 dX, docs/ehl-robustness.md). Cells
 #: under Y_LINES_BELOW = 3 dX that do not converge are relaxed again with y-line sweeps, and
 #: a re-solve that does not converge is not taken.
-SIDE_LOBE_SHORT_CELLS_M = 300.0
+SIDE_LOBE_SHORT_CELLS_M = 1000.0
 SIDE_LOBE_SHORT_ASPECT = 1.5
 
 
