@@ -126,3 +126,28 @@ def test_a_profile_as_contact_roughness_is_said_to_be_ridges_across_the_grid(tmp
     out = run_case(case)
     assert any(n.startswith("roughness.path (trace.npy): a profile along x, repeated at every y")
                for n in out.notes)
+
+
+def test_a_grid_coarser_than_its_file_is_told_one_mesh_for_the_file_and_the_spots(tmp_path):
+    """A 256 x 256 map of 1 um points on a 64 x 64 grid (4 um cells), pressed to a few tens
+    of per cent of contact: the roughness line asks for grid.nx >= 256 (every measured
+    point) and the spot line asked for fewer (a user's: nx >= 242 beside nx >= 512), two
+    advices for one grid. The spot line now asks for the grid that takes every point."""
+    n, h = 256, 1e-6
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(2).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * (4e-6) ** 2 / 8) * np.fft.fft2(noise)))
+    np.save(tmp_path / "map.npy", 0.2e-6 * z / z.std())
+    case = load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "flat"},
+        "loading": {"load": "100 N"},
+        "grid": {"nx": 64, "ny": 64, "x_extent": n * h, "y_extent": n * h, "periodic": True},
+        "roughness": {"kind": "file", "path": str(tmp_path / "map.npy"), "spacing": h}})
+    out = run_case(case)
+    (rough,) = [w for w in out.warnings if "coarser than the file's points" in w]
+    assert "grid.nx >= 256" in rough
+    (spots,) = [w for w in out.warnings if w.startswith("mesh: half the load")]
+    assert "use nx >= 256 and ny >= 256 on the same extents, which also takes every measured" \
+        in spots

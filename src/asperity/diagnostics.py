@@ -513,8 +513,19 @@ def spot_resolution(spots, x, y, min_cells: float = MIN_CELLS_PER_SPOT,
     factor = math.sqrt(min_cells / median)
     need = [(name, math.ceil(len(coord) * factor), len(coord) * _spacing(coord))
             for name, coord in (("x", x), ("y", y)) if len(coord) > 1]
+    every = ""
+    if file_spacing is not None:
+        # a grid coarser than the file's points drops roughness: the spots' grid is then at
+        # least the one that takes every point (a user was told nx >= 242 here and
+        # nx >= 512 by the roughness line)
+        points = [math.ceil(extent / h * (1 - 1e-9)) for (_, _, extent), h
+                  in zip(need, file_spacing, strict=False)]
+        if any(p > n for p, (_, n, _) in zip(points, need, strict=False)):
+            every = ", which also takes every measured point"
+            need = [(name, max(n, p), extent) for (name, n, extent), p
+                    in zip(need, points + [0] * (len(need) - len(points)), strict=True)]
     advice = "use " + " and ".join(f"n{name} >= {n}" for name, n, _ in need) + \
-        " on the same extents and check that the real contact area no longer moves"
+        f" on the same extents{every}, and check that the real contact area no longer moves"
     if file_spacing is not None:
         coarse = [name for (name, n, extent), h in zip(need, file_spacing, strict=False)
                   if extent / n < h * (1 - 1e-9)]
