@@ -233,3 +233,24 @@ def test_str_of_a_lay_is_said_to_be_an_upper_bound(angle):
     assert abs((direction - angle + 90) % 180 - 90) <= 2
     iso = gaussian_topography((200e-6, 160e-6), H, 0.3e-6, 10e-6, seed=3)
     assert not any(n.startswith(("Str = ", "Sal, Str")) for n in evaluate_texture(iso).notes)
+
+
+def test_the_lay_direction_of_an_isotropic_surface_is_noted_as_undefined():
+    """Std of a user's isotropic map (Str 79.8 %) was printed as 90.66 deg without a word.
+    A surface with Str above 0.5 (ISO 25178-2: nearly isotropic) gets a note; a ground one,
+    ridges along y (Str a few per cent), does not."""
+    from asperity.surfaces.texture import evaluate_texture
+
+    n, h = 128, 1e-6
+    rng = np.random.default_rng(7)
+    q = 2 * np.pi * np.fft.fftfreq(n, h)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    smooth = np.exp(-(qx**2 + qy**2) * (5e-6) ** 2 / 8)
+    z = np.real(np.fft.ifft2(smooth * np.fft.fft2(rng.standard_normal((n, n))))) * 1e-7
+    x = (np.arange(n) + 0.5) * h
+    iso = evaluate_texture(Topography(x, x, z / z.std() * 1e-7, periodic=True))
+    assert iso.groups["spatial"]["Str"] > 0.5
+    assert any(note.startswith("Std: the surface is isotropic") for note in iso.notes)
+    ridges = np.tile(z[:, :1], (1, n))  # every row the same: ridges along y
+    ground = evaluate_texture(Topography(x, x, ridges / ridges.std() * 1e-7, periodic=True))
+    assert not any(note.startswith("Std:") for note in ground.notes)

@@ -47,9 +47,14 @@ from .parameters import acf_decay_lengths, roughness_parameters
 from .profiles import height_moments
 from .topography import Topography
 
-__all__ = ["AreaFamilies", "ArealEvaluation", "areal_evaluation", "areal_families",
+__all__ = ["ISOTROPIC_STR", "AreaFamilies", "ArealEvaluation", "areal_evaluation",
+           "areal_families",
            "areal_parameters", "form_left_in", "measured_heights", "small_grid",
            "texture_aspect_ratio", "texture_direction"]
+
+#: Str above which a surface is isotropic (ISO 25178-2's guide: above 0.5 nearly isotropic,
+#: below 0.3 strongly anisotropic), and its Std (lay direction) is noted as undefined.
+ISOTROPIC_STR = 0.5
 
 #: ACF threshold s of Sal and Str (ISO 25178-2 default).
 ACF_THRESHOLD = 0.2
@@ -355,6 +360,10 @@ def areal_evaluation(families: AreaFamilies, exclude=None) -> ArealEvaluation:
     sal, str_value, note = (_decay(surface, ACF_THRESHOLD) if spatial_ok else
                             (math.nan, math.nan, None))
     notes = () if note is None else (note,)
+    if str_value > ISOTROPIC_STR:
+        notes += (f"Std: the surface is isotropic (Str = {100 * str_value:.3g} % > "
+                  f"{100 * ISOTROPIC_STR:g} %), so it has no lay for Std to give the direction of; "
+                  "its value is the strongest direction of the spectrum, which noise sets",)
     if z.size < surface.z.size:
         notes += (f"Sdq, Sdr, Sal, Str and Std need the whole grid: they are of the map with "
                   f"its {surface.z.size - z.size} masked points filled (harmonic "
