@@ -522,19 +522,33 @@ def _run_sweep(spec, out, serial, scheduler, workers, quiet, run_study, local_cl
 
 
 def _connect(scheduler: str):
-    """A Dask client of the scheduler at ``scheduler``; one that cannot be reached (or an
-    address that is none) is bad input naming --scheduler (it read "error: file: Timed out
-    trying to connect ... after 30 s")."""
+    """A Dask client of the scheduler at ``scheduler``; an address that is none, or a TCP
+    scheduler that does not answer, is bad input naming --scheduler (it read "error: file:
+    Timed out trying to connect ... after 30 s"). The address is checked before a client is
+    made: a client that fails to connect stays dask's scheduler and, collected at exit,
+    waits a minute for its own close."""
+    import socket
+
     from dask.distributed import Client
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    def refused(detail):
+        return InputError("--scheduler", "", problem=f"could not connect to a Dask scheduler "
+                          f"at {scheduler} ({detail}); give the address of a running one "
+                          "(tcp://HOST:8786) or leave --scheduler out for a local cluster")
 
     try:
-        return Client(scheduler)
+        protocol, location = parse_address(scheduler)
+        if protocol in ("tcp", "tls"):
+            host, port = parse_host_port(location)
+            socket.create_connection((host, port), timeout=SCHEDULER_TIMEOUT).close()
     except (OSError, ValueError, TypeError) as exc:
-        detail = " ".join(str(exc).split()) or type(exc).__name__
-        raise InputError("--scheduler", "", problem=f"could not connect to a Dask scheduler at "
-                         f"{scheduler} ({detail}); give the address of a running one "
-                         "(tcp://HOST:8786) or leave --scheduler out for a local "
-                         "cluster") from None
+        raise refused(" ".join(str(exc).split()) or type(exc).__name__) from None
+    return Client(scheduler)
+
+
+#: Seconds --scheduler's address is given to answer (:func:`_connect`).
+SCHEDULER_TIMEOUT = 5.0
 
 
 def _sweep_plan(spec, out: Path) -> str:
