@@ -24,6 +24,16 @@ E_STAR = E / (2 * (1 - NU**2))
 WAVELENGTH, AMPLITUDE = 100e-6, 0.5e-6
 
 
+def _gaussian_map(n: int, spacing: float, correlation: float, seed: int) -> np.ndarray:
+    """An n x n periodic Gaussian random map of unit rms with a Gaussian spectrum of
+    correlation length ``correlation`` (m)."""
+    q = 2 * np.pi * np.fft.fftfreq(n, spacing)
+    qx, qy = np.meshgrid(q, q, indexing="ij")
+    noise = np.random.default_rng(seed).standard_normal((n, n))
+    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * correlation**2 / 8) * np.fft.fft2(noise)))
+    return z / z.std()
+
+
 def _strip(tmp_path, approach=None, load=None, ny=8):
     """A 1-D sinusoid (two wavelengths, 256 cells along x) pressed by a flat, periodic."""
     nx = 256
@@ -91,12 +101,7 @@ def test_heights_in_nm_read_as_metres_are_refused_in_a_contact_case(tmp_path):
     """A map of nm heights (rms 300 nm) without a unit is read as metres: 1.8 km peak to
     valley. It ran to 8738 GPa and exit 0 with a warning; it is refused, and told the case
     file's key, roughness.z_unit, not the command line's --z-unit."""
-    n, h = 64, 0.5e-6
-    q = 2 * np.pi * np.fft.fftfreq(n, h)
-    qx, qy = np.meshgrid(q, q, indexing="ij")
-    noise = np.random.default_rng(1).standard_normal((n, n))
-    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * (6e-6) ** 2 / 8) * np.fft.fft2(noise)))
-    z *= 300.0 / z.std()  # nm, smooth on the 0.5 um points (rms slope about 0.1 in nm)
+    z = 300.0 * _gaussian_map(64, 0.5e-6, 6e-6, seed=1)  # nm, rms slope about 0.1 in nm
     np.save(tmp_path / "nm.npy", z)
     case = load_case({
         "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
@@ -134,11 +139,7 @@ def test_a_grid_coarser_than_its_file_is_told_one_mesh_for_the_file_and_the_spot
     point) and the spot line asked for fewer (a user's: nx >= 242 beside nx >= 512), two
     advices for one grid. The spot line now asks for the grid that takes every point."""
     n, h = 256, 1e-6
-    q = 2 * np.pi * np.fft.fftfreq(n, h)
-    qx, qy = np.meshgrid(q, q, indexing="ij")
-    noise = np.random.default_rng(2).standard_normal((n, n))
-    z = np.real(np.fft.ifft2(np.exp(-(qx**2 + qy**2) * (4e-6) ** 2 / 8) * np.fft.fft2(noise)))
-    np.save(tmp_path / "map.npy", 0.2e-6 * z / z.std())
+    np.save(tmp_path / "map.npy", 0.2e-6 * _gaussian_map(n, h, 4e-6, seed=2))
     case = load_case({
         "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
         "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "flat"},
