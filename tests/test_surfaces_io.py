@@ -11,6 +11,7 @@ from asperity.surfaces import (
     Topography,
     gaussian_profile,
     gaussian_topography,
+    read_measured,
     read_surface,
     residual_heights,
     roughness_parameters,
@@ -270,3 +271,19 @@ def test_results_after_the_data_are_a_footer(tmp_path):
     path.write_text('"X(um)","Z(um)"\n' + body + '"100.00","NoValue"\n')
     with pytest.raises(InputError, match=r"sj\.csv:202: expected numbers only, got 'NoValue'"):
         read_measured(path)
+
+
+def test_a_users_npz_in_um_takes_the_units_given_and_is_doubted_without_them(tmp_path):
+    """A user's own .npz (x, y, z in um, as their numpy wrote it): x_unit and z_unit were
+    ignored without a word, and read as metres the 50 um map was 50 m long with 0.6 m
+    heights, silently. The units given apply; without them the units are doubted, with the
+    units that make it plausible."""
+    x, y = np.arange(100) * 0.5, np.arange(80) * 0.5
+    z = 0.3 * np.sin(x[:, None] / 3) * np.cos(y[None, :] / 4)
+    np.savez(tmp_path / "um.npz", x=x, y=y, z=z)
+    read = read_measured(tmp_path / "um.npz", x_unit="um", z_unit="um")
+    assert read.surface.spacing == pytest.approx((0.5e-6, 0.5e-6), rel=1e-12)
+    assert np.ptp(read.surface.z) == pytest.approx(np.ptp(z) * 1e-6, rel=1e-12)
+    assert read.warnings == ()
+    doubted = read_measured(tmp_path / "um.npz")
+    assert doubted.warnings and "--x-unit um and --z-unit um" in doubted.warnings[0]

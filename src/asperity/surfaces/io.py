@@ -608,26 +608,40 @@ def _read_header_format(path: Path, spacing, units: _Units, missing: str) -> Rea
                    missing == "mask", described, 1.0, x_unit=1.0)
 
 
-def _read_npz(path: Path, spacing, missing: str) -> Reading:
+def _read_npz(path: Path, spacing, units: _Units, missing: str) -> Reading:
+    """A .npz of arrays ``z`` and optionally ``x``, ``y``, ``periodic``, in metres as
+    :func:`write_surface` writes them, or in the units given (``x_unit``, ``z_unit``, ``unit``;
+    they were ignored without a word)."""
     with np.load(path, allow_pickle=False) as f:
         arrays = {k: f[k] for k in f.files}
     if "z" not in arrays:
         raise InputError(str(path), "an array named 'z' (and optionally 'x', 'y')",
                          sorted(arrays))
     notes: list[str] = []
-    z, filled, lost = _missing(np.asarray(arrays["z"], float), missing, str(path), notes)
+    zf = 1.0 if units.z is None else units.z
+    xf = 1.0 if units.x is None else units.x
+    z, filled, lost = _missing(np.asarray(arrays["z"], float) * zf, missing, str(path), notes)
     periodic = bool(arrays.get("periodic", False))
     if "x" not in arrays:
         surface = _from_heights(z, spacing, str(path), periodic=periodic)
+        units.ignored_x("a .npz without x", notes)
     elif z.ndim == 1:
-        surface = Profile(arrays["x"], z, periodic)
+        surface = Profile(np.asarray(arrays["x"], float) * xf, z, periodic)
     elif "y" not in arrays:
         raise InputError(str(path), "an array 'y' with the 2-D heights 'z'")
     else:
-        surface = Topography(arrays["x"], arrays["y"], z, periodic)
-    return Reading(surface, "numpy .npz (metres)", tuple(notes), (), filled, lost,
-                   missing == "mask", "x and heights in m, as .npz files hold them", 1.0,
-                   x_unit=1.0)
+        surface = Topography(np.asarray(arrays["x"], float) * xf,
+                             np.asarray(arrays["y"], float) * xf, z, periodic)
+    given = [name for name, factor in (("x", units.x), ("heights", units.z))
+             if factor is not None]
+    described = (f"{' and '.join(given)} in the units given, the rest in m" if given else
+                 "x and heights in m, as .npz files hold them")
+    warnings: list[str] = []
+    advice = _plausible(surface, (units.x is not None, units.z is not None), described,
+                        warnings)
+    return Reading(surface, "numpy .npz" + ("" if given else " (metres)"), tuple(notes),
+                   tuple(warnings), filled, lost, missing == "mask", described, zf, advice,
+                   x_unit=xf)
 
 
 def _third_party_topography(reader, path: Path):
@@ -760,7 +774,7 @@ def read_measured(path, spacing=None, *, unit=None, x_unit=None, z_unit=None,
             return _read_header_format(path, spacing, units, missing)
         return _read_text(path, spacing, units, missing, resample)
     if suffix == ".npz":
-        return _read_npz(path, spacing, missing)
+        return _read_npz(path, spacing, units, missing)
     if suffix == ".npy":
         z = _npy_heights(path)
         notes: list[str] = []
