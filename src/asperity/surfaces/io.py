@@ -17,7 +17,8 @@ Formats (chosen by the file's suffix):
   (:mod:`asperity.surfaces.readers.zygo`, :mod:`asperity.surfaces.readers.wyko`), in metres.
 - ``.npy``: a 1-D array of real heights or a 2-D height matrix (needs a spacing).
 - ``.npz``: arrays ``z`` and optionally ``x``, ``y``, ``periodic`` (what :func:`write_surface`
-  writes); without ``x`` a spacing is needed.
+  writes), in metres unless ``x_unit`` / ``z_unit`` are given; without ``x`` a spacing is
+  needed.
 - Any other suffix (``.x3p``, ``.sdf``, ``.sur``, ``.opd``, ``.plu``, ``.datx``, ...) is read by
   ``SurfaceTopography.read_topography`` when that optional package is installed
   (``pip install 'asperity[instruments]'``), converted to metres.
