@@ -152,3 +152,31 @@ def test_a_grid_coarser_than_its_file_is_told_one_mesh_for_the_file_and_the_spot
     (spots,) = [w for w in out.warnings if w.startswith("mesh: half the load")]
     assert "use nx >= 256 and ny >= 256 on the same extents, which also takes every measured" \
         in spots
+
+
+def test_a_transient_run_refuses_a_map_whose_heights_are_in_another_unit(tmp_path):
+    """A ground map written in nm under a 'Z (um)' header: Sdq 13.7 as read. The transient
+    run warned, then diverged at step 3 with advice on the time step (exit 3). It is refused
+    before the solve, naming the file's key."""
+    n, h = 300, 2e-6
+    x, y = np.arange(n) * h, np.arange(40) * h
+    rng = np.random.default_rng(4)
+    ridges = np.convolve(rng.standard_normal(n + 20), np.ones(8) / 8, "same")[10:-10]
+    z_nm = 150.0 * ridges / ridges.std()  # nm: ridges across x, the same at every y
+    X, Y = np.meshgrid(x * 1e6, y * 1e6, indexing="ij")
+    rows = np.c_[X.ravel(), Y.ravel(), np.repeat(z_nm, y.size)]
+    np.savetxt(tmp_path / "map.csv", rows, delimiter=",", fmt="%.5f",
+               header="X (um),Y (um),Z (um)", comments="")
+    case = load_case({
+        "analysis": "ehl-transient", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"},
+        "contact": {"type": "point", "rx": "6.35 mm", "ry": "6.35 mm", "load": "30 N"},
+        "speeds": {"u": "0.5 m/s", "xi": 0.2},
+        "lubricant": {"eta0": "0.05 Pa s", "alpha": "20 1/GPa"},
+        "surface2": {"kind": "file", "path": str(tmp_path / "map.csv")},
+        "time": {"counting_steps": 20}})
+    with pytest.raises(InputError) as info:
+        run_case(case)
+    message = str(info.value)
+    assert message.startswith("surface2.path (map.csv): heights with an rms slope Sdq = ")
+    assert "the units are wrong" in message

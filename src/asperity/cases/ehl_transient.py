@@ -45,7 +45,14 @@ from ..surfaces.recipe import SurfaceBuild, build_surface_record
 from ..surfaces.topography import Topography
 from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
 from .fields import CaseModel, Integer, Number, Quantity
-from .roughness import FormKeys, SurfaceKeys, WavinessSpec, named_in_table, surface_recipe
+from .roughness import (
+    FormKeys,
+    SurfaceKeys,
+    WavinessSpec,
+    named_in_table,
+    refuse_implausible_file,
+    surface_recipe,
+)
 
 __all__ = ["MAX_FEATURE_SLOPE", "EHLTransientCase", "MovingSurfaceSpec", "TimeSpec",
            "TransientSolverSpec"]
@@ -474,6 +481,9 @@ class EHLTransientCase(EHLCaseBase):
                 built = spec.build_record(length, spacing, y, dx, warmup_travel=travel)
             except InputError as exc:  # the generator's key, named in the case's table
                 raise named_in_table(exc, f"surface{k}", spec) from None
+            if built is not None and spec.kind == "file":
+                refuse_implausible_file(built, f"surface{k}.path ({Path(spec.path).name})",
+                                        f"surface{k}")
             if built is not None and spec.kind == "file" and not built.surface.periodic:
                 _check_trace_length(f"surface{k}.path", spec.path, built.surface,
                                     abs(u) * dt * total, warmup, total - warmup)

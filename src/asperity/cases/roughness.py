@@ -26,10 +26,11 @@ from ..surfaces.topography import Profile
 from ..surfaces.unit_advice import PLAUSIBLE_HEIGHT
 from .fields import CaseModel, Integer, Number, Quantity, existing_file
 
-__all__ = ["DEFAULT_FORM_DEGREE", "FormKeys", "GridRoughness", "KIND_KEYS", "MeasuredFile",
+__all__ = ["DEFAULT_FORM_DEGREE", "REFUSED_SLOPE", "FormKeys", "GridRoughness", "KIND_KEYS",
+           "MeasuredFile",
            "RoughnessSpec", "SurfaceKeys", "WavinessSpec", "length_unit", "measured_file",
-           "named_in_table", "roughness_on_grid", "surface_heights", "surface_recipe",
-           "undeformed_gap"]
+           "named_in_table", "refuse_implausible_file", "roughness_on_grid", "surface_heights",
+           "surface_recipe", "undeformed_gap"]
 
 #: Degree of the least-squares form removed from a measured file by default (its mean line or
 #: plane: the offset and tilt of an unlevelled scan), as ``asperity surface stats`` does.
@@ -400,7 +401,7 @@ def _measured_on_grid(spec: RoughnessSpec, x, y, label: str) -> GridRoughness:
         raise _file_error(exc, spec, label) from None
     name = Path(spec.path).name
     surf, read = built.surface, built.reading.surface
-    _refuse_implausible_heights(read, built.reading, f"{label}.path ({name})")
+    refuse_implausible_file(built, f"{label}.path ({name})", label)
     xs = _from_start(surf.x, len(x), dx, surf.periodic, "x", f"{label}.path ({name})")
     notes, warnings = built.file_report(f"{label}.path", name)
     warnings = tuple(_in_case_keys(w, label) for w in warnings)
@@ -445,21 +446,49 @@ def _in_case_keys(text: str, table: str) -> str:
     return re.sub(r'--spacing ("[^"]*")', rf"{table}.spacing = \1", text)
 
 
-def _refuse_implausible_heights(read, reading, where: str):
-    """Refuse a measured map whose peak-to-valley height is above
-    :data:`~asperity.surfaces.unit_advice.PLAUSIBLE_HEIGHT` in the units read: no roughness is
-    that high, so the units are wrong (heights in nm read as metres gave a sphere on a
-    2182 m map, 8738 GPa and exit 0), and a contact solved on it means nothing. The reader's
-    advice, when it has one, names the unit that makes the heights plausible."""
-    height = float(np.nanmax(read.z) - np.nanmin(read.z))
-    if not height > PLAUSIBLE_HEIGHT:
+#: RMS slope (Sdq, Rdq) above which a measured file is refused in a case: ten times the
+#: reader's :data:`~asperity.surfaces.unit_advice.PLAUSIBLE_SLOPE`, a mean slope angle of 84
+#: degrees, which no measured roughness has (heights in um read as nm: Sdq 13.7; a .npy in um
+#: read as metres: 1.4e4); between 1 and 10 the reader's warning stands.
+REFUSED_SLOPE = 10.0
+
+
+def refuse_implausible_file(built, where: str, table: str) -> None:
+    """Refuse a measured file whose heights cannot be in the units read: a peak-to-valley
+    above :data:`~asperity.surfaces.unit_advice.PLAUSIBLE_HEIGHT` (no roughness is that high)
+    or an rms slope above :data:`REFUSED_SLOPE`. A contact or EHL run on it means nothing
+    (heights in nm read as metres gave a sphere on a 2182 m map 8738 GPa, exit 0; a transient
+    run on heights in um read as nm diverged at step 3 with advice on the time step). The
+    reader's advice, when it has one, names the units that make the heights plausible, as the
+    case file's keys of ``table``.
+
+    Parameters
+    ----------
+    built : asperity.surfaces.recipe.SurfaceBuild
+        The surface built from the file (with its reading).
+    where : str
+        The key and file, ``"roughness.path (map.npy)"``.
+    table : str
+        The case's table of the file (``"roughness"``, ``"surface1"``).
+    """
+    reading = built.reading
+    z = reading.surface.z
+    height = float(np.nanmax(z) - np.nanmin(z))
+    name, slope = built.rms_slope
+    if height > PLAUSIBLE_HEIGHT:
+        found = (f"a peak-to-valley of {format_quantity(height, 'm')} in the units read "
+                 f"({reading.units}), above {format_quantity(PLAUSIBLE_HEIGHT, 'm')}")
+    elif slope > REFUSED_SLOPE:
+        found = (f"an rms slope {name} = {slope:.4g} in the units read ({reading.units}), above "
+                 f"{REFUSED_SLOPE:g}")
+    else:
         return
-    advice = reading.unit_advice or "give the heights' unit (z_unit)"
-    advice = _in_case_keys(advice, where.split(".")[0])
+    advice = reading.unit_advice or next(iter(reading.slope_warnings(name, slope)),
+                                         "give the heights' unit (z_unit)")
+    advice = _in_case_keys(advice, table)
     raise InputError(where, "", problem=(
-        f"heights with a peak-to-valley of {format_quantity(height, 'm')} in the units read "
-        f"({reading.units}), above {format_quantity(PLAUSIBLE_HEIGHT, 'm')}: no roughness is "
-        f"that high, so the units are wrong; {advice}"))
+        f"heights with {found}: no measured roughness is like that, so the units are wrong; "
+        f"{advice}"))
 
 
 def _length(value: float) -> str:
