@@ -910,3 +910,18 @@ def test_the_row_solve_of_a_line_contact_refreshes_at_every_sweep():
     assert StepOptions.for_problem(reducer, method="point").refresh == 3
     assert StepOptions.for_problem(point).refresh == 3
     assert StepOptions.for_problem(reducer, refresh=4).refresh == 4
+
+
+def test_a_feature_lead_beyond_200_half_widths_is_refused():
+    """lead = "1 m" for a 30 um dent scheduled 1,229,809 counting steps without a word."""
+    import re
+
+    from asperity.cases import load_case
+    from asperity.errors import InputError
+    from asperity.examples import example_text
+
+    text = example_text("dent-rolling")
+    assert "half_width" in text
+    with pytest.raises(InputError) as info:
+        load_case(re.sub(r"(half_width = [^\n]*\n)", r'\1lead = "1 m"\n', text, count=1))
+    assert "lead: expected a lead of at most 200 half-widths" in str(info.value)

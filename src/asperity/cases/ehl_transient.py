@@ -54,8 +54,8 @@ from .roughness import (
     surface_recipe,
 )
 
-__all__ = ["MAX_FEATURE_SLOPE", "EHLTransientCase", "MovingSurfaceSpec", "TimeSpec",
-           "TransientSolverSpec"]
+__all__ = ["MAX_FEATURE_SLOPE", "MAX_LEAD_HALF_WIDTHS", "EHLTransientCase",
+           "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
 
 #: Largest slope of a single feature's flank, ``pi A / (2 w)`` for the cosine-squared cap of
 #: amplitude A and half-width w (:mod:`asperity.surfaces.features`), that a case takes: the
@@ -64,6 +64,11 @@ __all__ = ["MAX_FEATURE_SLOPE", "EHLTransientCase", "MovingSurfaceSpec", "TimeSp
 #: and 30 um in half-width: 0.08). A user's amplitude written as a bare number (0.25, read as
 #: 0.25 m, meant 0.25 um) sloped by 2.6e4 and was taken without a word.
 MAX_FEATURE_SLOPE = 0.25
+
+#: Farthest a feature's ``lead`` may place it upstream of the inlet, in half-widths: the
+#: default puts it one half-width plus the warm-up's travel away (a few to tens of them); a
+#: user's ``lead = "1 m"`` for a 30 um dent scheduled 1.2 million steps without a word.
+MAX_LEAD_HALF_WIDTHS = 200.0
 
 
 class MovingSurfaceSpec(FormKeys, SurfaceKeys):
@@ -131,6 +136,16 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
                            "amplitude's unit (a bare number is metres: write \"0.25 um\")")
                 detail = InitErrorDetails(type=PydanticCustomError("value_error", message),
                                           loc=("amplitude",), input=self.amplitude)
+                raise ValidationError.from_exception_data("case", [detail])
+            if self.lead is not None and self.lead > MAX_LEAD_HALF_WIDTHS * self.half_width:
+                message = (f"expected a lead of at most {MAX_LEAD_HALF_WIDTHS:g} half-widths "
+                           f"({MAX_LEAD_HALF_WIDTHS * self.half_width * 1e3:.4g} mm): the run "
+                           "lasts until the feature has crossed the contact, and "
+                           f"{self.lead * 1e3:.4g} mm upstream that is many thousands of steps "
+                           "of smooth film; leave lead out (the feature then enters as counting "
+                           "starts) or check its unit (a bare number is metres)")
+                detail = InitErrorDetails(type=PydanticCustomError("value_error", message),
+                                          loc=("lead",), input=self.lead)
                 raise ValidationError.from_exception_data("case", [detail])
         return self
 
