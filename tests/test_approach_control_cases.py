@@ -97,20 +97,25 @@ def test_a_smooth_ball_needs_a_positive_approach(tmp_path):
         "loading.approach: expected more than 0 m (the smooth bodies first touch at 0")
 
 
+def _ball_on(path, load: str, extent: str):
+    """A 10 mm steel ball pressed on the measured file ``path`` (0.5 um points), 64 x 64
+    cells over ``extent`` square."""
+    return load_case({
+        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
+        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
+        "loading": {"load": load},
+        "grid": {"nx": 64, "ny": 64, "x_extent": extent, "y_extent": extent},
+        "roughness": {"kind": "file", "path": str(path), "spacing": "0.5 um"}})
+
+
 def test_heights_in_nm_read_as_metres_are_refused_in_a_contact_case(tmp_path):
     """A map of nm heights (rms 300 nm) without a unit is read as metres: 1.8 km peak to
     valley. It ran to 8738 GPa and exit 0 with a warning; it is refused, and told the case
     file's key, roughness.z_unit, not the command line's --z-unit."""
     z = 300.0 * _gaussian_map(64, 0.5e-6, 6e-6, seed=1)  # nm, rms slope about 0.1 in nm
     np.save(tmp_path / "nm.npy", z)
-    case = load_case({
-        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
-        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
-        "loading": {"load": "1 N"},
-        "grid": {"nx": 64, "ny": 64, "x_extent": "32 um", "y_extent": "32 um"},
-        "roughness": {"kind": "file", "path": str(tmp_path / "nm.npy"), "spacing": "0.5 um"}})
     with pytest.raises(InputError) as info:
-        run_case(case)
+        run_case(_ball_on(tmp_path / "nm.npy", "1 N", "32 um"))
     message = str(info.value)
     assert message.startswith("roughness.path (nm.npy): heights with a peak-to-valley of")
     assert 'roughness.z_unit = "nm"' in message and "--z-unit" not in message
@@ -122,13 +127,7 @@ def test_a_profile_as_contact_roughness_is_said_to_be_ridges_across_the_grid(tmp
     x = np.arange(2000) * 0.5e-6
     z = 0.2e-6 * np.sin(2 * np.pi * x / 40e-6)
     np.save(tmp_path / "trace.npy", z)
-    case = load_case({
-        "analysis": "normal", "body1": {"youngs_modulus": "210 GPa"},
-        "body2": {"youngs_modulus": "210 GPa"}, "geometry": {"shape": "sphere", "rx": "10 mm"},
-        "loading": {"load": "5 N"},
-        "grid": {"nx": 64, "ny": 64, "x_extent": "0.25 mm", "y_extent": "0.25 mm"},
-        "roughness": {"kind": "file", "path": str(tmp_path / "trace.npy"), "spacing": "0.5 um"}})
-    out = run_case(case)
+    out = run_case(_ball_on(tmp_path / "trace.npy", "5 N", "0.25 mm"))
     assert any(n.startswith("roughness.path (trace.npy): a profile along x, repeated at every y")
                for n in out.notes)
 
