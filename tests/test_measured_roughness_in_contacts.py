@@ -108,15 +108,18 @@ def test_form_degree_zero_removes_the_mean_only(tmp_path):
 def test_heights_in_nm_declared_um_are_doubted(tmp_path):
     """A trace whose heights are in nm under a 'z_um' column: its rms slope (Rdq, forward
     differences) is 2 pi A / (sqrt(2) lambda) = 0.0178 as measured and 1000 times that as
-    read, above the plausible 1. The contact case says so and names z_unit, as ``asperity
-    surface stats`` does; the same trace in um is silent."""
+    read, above the plausible 1 and (session 48) the 10 at which a contact case refuses the
+    file. It says so and names roughness.z_unit, as ``asperity surface stats`` names
+    --z-unit; the same trace in um is silent."""
     x = H * np.arange(N)
     nm = _trace(tmp_path, _cosine(x) * 1e3, name="trace.csv")  # nm values in a um column
     assert nm.exists()
-    doubt = [w for w in _run(tmp_path, SPHERE).warnings if "Rdq: rms slope" in w]
-    assert len(doubt) == 1 and doubt[0].startswith("roughness.path: Rdq: rms slope")
-    assert 'z_unit = "nm"' in doubt[0]
-    rdq = float(doubt[0].split("rms slope ")[1].split()[0])
+    with pytest.raises(InputError) as info:
+        _run(tmp_path, SPHERE)
+    doubt = str(info.value)
+    assert doubt.startswith("roughness.path (trace.csv): heights with an rms slope Rdq = ")
+    assert 'roughness.z_unit = "nm"' in doubt and "--x-unit" not in doubt
+    rdq = float(doubt.split("Rdq = ")[1].split()[0])
     assert rdq == pytest.approx(1e3 * 2 * np.pi * AMPLITUDE / (np.sqrt(2) * WAVELENGTH),
                                 rel=0.01)
     _trace(tmp_path, _cosine(x), name="trace.csv")
@@ -277,7 +280,8 @@ def test_a_moving_surface_file_reports_its_units_and_doubts_them(tmp_path):
     """A bearing engineer's race trace in a transient line contact: the notes name the units
     read and the form removed; heights in nm under a 'z_um' column (Rdq 1000 times the
     cosine's 2 pi A / (sqrt(2) lambda) = 0.0178) are doubted first, naming surface2.path and
-    z_unit (before, the run diverged at step 31 with advice on the inlet and the time step)."""
+    z_unit (before, the run diverged at step 31 with advice on the inlet and the time step);
+    since session 48 the file is refused (Rdq above 10)."""
     x = H * np.arange(N)
     _trace(tmp_path, OFFSET + TILT * x + _cosine(x))
     out = _run(tmp_path, ROLLER)
@@ -287,10 +291,13 @@ def test_a_moving_surface_file_reports_its_units_and_doubts_them(tmp_path):
     assert any("offset 14.5 um" in n and "tilt 5 mrad" in n for n in named)
     assert not any("rms slope" in w for w in out.warnings)
     _trace(tmp_path, (OFFSET + TILT * x + _cosine(x)) * 1e3)
-    first = _run(tmp_path, ROLLER).warnings[0]
-    assert first.startswith("surface2.path: Rdq: rms slope") and 'z_unit = "nm"' in first
+    with pytest.raises(InputError) as info:
+        _run(tmp_path, ROLLER)
+    first = str(info.value)
+    assert first.startswith("surface2.path (trace.csv): heights with an rms slope Rdq = ")
+    assert 'surface2.z_unit = "nm"' in first
     # of the levelled heights: the cosine's alone, the tilt removed with the mean line
-    assert float(first.split("rms slope ")[1].split()[0]) == pytest.approx(
+    assert float(first.split("Rdq = ")[1].split()[0]) == pytest.approx(
         1e3 * 2 * np.pi * AMPLITUDE / (np.sqrt(2) * WAVELENGTH), rel=0.01)
 
 

@@ -443,6 +443,7 @@ def _in_case_keys(text: str, table: str) -> str:
     text = re.sub(r"--[xz]-unit \S+(?: and --[xz]-unit \S+)? \(case file: ([^)]*)\)", keys,
                   text)
     text = re.sub(r"\(--[^;()]*; case file: ([^)]*)\)", lambda m: f"({keys(m)})", text)
+    text = re.sub(r"\(--([xz])-unit\)", rf"({table}.\1_unit)", text)
     return re.sub(r'--spacing ("[^"]*")', rf"{table}.spacing = \1", text)
 
 
