@@ -27,10 +27,11 @@ STEEL = Material(210e9, 0.3)
 
 
 def _bump(**changes):
-    """The bump example with tables replaced or added (``{"grid": {...}}``)."""
+    """The bump example with tables replaced or added (``{"grid": {...}}``); a table given
+    with its ``kind`` is replaced whole (a smooth surface takes none of the bump's keys)."""
     data = tomllib.loads(example_text("bump-ball-on-disc"))
     for table, keys in changes.items():
-        data[table] = {**data.get(table, {}), **keys}
+        data[table] = dict(keys) if "kind" in keys else {**data.get(table, {}), **keys}
     return load_case(data)
 
 
@@ -925,3 +926,19 @@ def test_a_feature_lead_beyond_200_half_widths_is_refused():
     with pytest.raises(InputError) as info:
         load_case(re.sub(r"(half_width = [^\n]*\n)", r'\1lead = "1 m"\n', text, count=1))
     assert "lead: expected a lead of at most 200 half-widths" in str(info.value)
+
+
+@pytest.mark.parametrize("surface, key", [
+    ({"kind": "smooth", "amplitude": "0.1 um"}, "surface2.amplitude"),
+    ({"kind": "feature", "feature": "bump", "amplitude": "0.05 um", "half_width": "30 um",
+      "rms": "0.1 um"}, "surface2.rms"),
+    ({"kind": "builtin", "profile": "A", "half_width": "30 um"}, "surface2.half_width"),
+])
+def test_a_key_the_surface_kind_does_not_use_is_refused(surface, key):
+    """rms on a feature surface gave results identical to its absence while the report's
+    table listed "surface1.rms 100 nm"; amplitude on a smooth surface was taken likewise."""
+    from asperity.errors import InputError
+
+    with pytest.raises(InputError) as info:
+        _bump(surface2=surface)
+    assert str(info.value).startswith(f"{key}: expected no ")

@@ -46,6 +46,7 @@ from ..surfaces.topography import Topography
 from .ehl import EHLCaseBase, EHLGridSpec, check_node_count
 from .fields import CaseModel, Integer, Number, Quantity
 from .roughness import (
+    KIND_KEYS,
     FormKeys,
     SurfaceKeys,
     WavinessSpec,
@@ -54,7 +55,7 @@ from .roughness import (
     surface_recipe,
 )
 
-__all__ = ["MAX_FEATURE_SLOPE", "MAX_LEAD_HALF_WIDTHS", "EHLTransientCase",
+__all__ = ["FEATURE_KEYS", "MAX_FEATURE_SLOPE", "MAX_LEAD_HALF_WIDTHS", "EHLTransientCase",
            "MovingSurfaceSpec", "TimeSpec", "TransientSolverSpec"]
 
 #: Largest slope of a single feature's flank, ``pi A / (2 w)`` for the cosine-squared cap of
@@ -64,6 +65,11 @@ __all__ = ["MAX_FEATURE_SLOPE", "MAX_LEAD_HALF_WIDTHS", "EHLTransientCase",
 #: and 30 um in half-width: 0.08). A user's amplitude written as a bare number (0.25, read as
 #: 0.25 m, meant 0.25 um) sloped by 2.6e4 and was taken without a word.
 MAX_FEATURE_SLOPE = 0.25
+
+#: The keys of a single feature (``kind = "feature"``), refused on the other kinds: a user's
+#: ``amplitude`` on a smooth surface, or ``rms`` on a feature one, were taken without a word
+#: (the report's table showed the unused ``surface1.rms``).
+FEATURE_KEYS = ("feature", "amplitude", "half_width", "lead")
 
 #: Farthest a feature's ``lead`` may place it upstream of the inlet, in half-widths: the
 #: default puts it one half-width plus the warm-up's travel away (a few to tens of them); a
@@ -125,7 +131,16 @@ class MovingSurfaceSpec(FormKeys, SurfaceKeys):
     def _required(self):
         self.check_kind({"builtin": ("profile",), "ground": ("ra",), "self-affine": ("hurst",),
                          "gaussian": ("rms", "correlation_length"), "file": ("path",),
-                         "feature": ("feature", "amplitude", "half_width")})
+                         "feature": ("feature", "amplitude", "half_width")},
+                        {**KIND_KEYS, "feature": set(), "smooth": set()})
+        if self.kind != "feature":
+            for key in FEATURE_KEYS:
+                if getattr(self, key) is not None:
+                    message = (f"expected no {key} for kind = \"{self.kind}\" (it is a single "
+                               "feature's: kind = \"feature\")")
+                    detail = InitErrorDetails(type=PydanticCustomError("value_error", message),
+                                              loc=(key,), input=getattr(self, key))
+                    raise ValidationError.from_exception_data("case", [detail])
         if self.kind == "feature":
             slope = 0.5 * np.pi * self.amplitude / self.half_width
             if slope > MAX_FEATURE_SLOPE:
